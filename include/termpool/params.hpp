@@ -1,0 +1,56 @@
+#pragma once
+/// \file
+/// Physical constants and model choices of the simulator.
+
+namespace termpool {
+
+/// How two balls exchange momentum at contact.
+enum class CollisionModel {
+    physical, ///< restitution e_b plus ball-ball friction u_b (cut- and spin-induced throw)
+    ideal,    ///< the seed's elastic, frictionless impulse along the line of centres
+};
+
+/// How a ball leaves a cushion or a pocket jaw.
+enum class CushionModel {
+    physical, ///< impulse at the cushion nose with restitution e_c and friction f_c, spin-aware
+    ideal,    ///< the seed's mirror reflection: normal velocity flips, the rest is kept
+};
+
+/// How a ball slows down on the cloth.
+enum class FrictionKind {
+    physical, ///< sliding, rolling and spinning with u_s, u_r, u_sp (default)
+    decay,    ///< seed model: speed shrinks by e^(-K t); no spin
+    constant, ///< seed model: constant deceleration A; no spin
+    combined, ///< seed model: whichever of decay and constant slows more; no spin
+};
+
+/// The cloth model and, for the seed's models, their constants.
+struct FrictionModel {
+    FrictionKind kind = FrictionKind::physical; ///< which model
+    double decay_rate = 0;                      ///< K in 1/s (decay, combined)
+    double deceleration = 0;                    ///< A in m/s^2 (constant, combined)
+    double rest_speed = 0.005;                  ///< seed models: below this speed a ball stops
+};
+
+/// Everything the simulator needs besides the table and the balls.
+struct PhysicsParams {
+    double ball_radius = 0.028575;      ///< R
+    double ball_mass = 0.170;           ///< default mass m of a ball
+    double sliding_friction = 0.2;      ///< u_s, ball-cloth while sliding
+    double rolling_friction = 0.01;     ///< u_r, rolling resistance
+    double spin_friction = 0.0127;      ///< u_sp, z-spin decays at 5 g u_sp / (2 R)
+    double ball_restitution = 0.95;     ///< e_b
+    double ball_friction = 0.05;        ///< u_b, ball-ball
+    double cushion_restitution = 0.85;  ///< e_c
+    double cushion_friction = 0.2;      ///< f_c
+    double cushion_height_ratio = 0.635; ///< cushion nose height as a fraction of 2R
+    double gravity = 9.81;              ///< g
+    /// Below this approach speed (m/s) collisions are elastic. Real restitution tends to 1 at low
+    /// speed, and it keeps balls pressed together by friction from bouncing ever more often.
+    double elastic_below_speed = 0.005;
+    CollisionModel collision = CollisionModel::physical; ///< ball-ball model
+    CushionModel cushion = CushionModel::physical;       ///< ball-cushion and ball-jaw model
+    FrictionModel friction;                              ///< cloth model
+};
+
+} // namespace termpool

@@ -1,0 +1,31 @@
+#pragma once
+/// \file
+/// Standard racks.
+
+#include <cstdint>
+#include <optional>
+#include <termpool/ball.hpp>
+#include <termpool/params.hpp>
+#include <termpool/table.hpp>
+#include <vector>
+
+namespace termpool {
+
+/// Which game's rack.
+enum class RackType {
+    eight_ball, ///< triangle of 15, the 8 in the centre, a solid and a stripe in the back corners
+    nine_ball,  ///< diamond of 9, the 1 at the apex, the 9 in the centre
+};
+
+/// Gap between neighbouring balls in a rack (m); real racks are rarely perfectly frozen.
+inline constexpr double rack_gap = 0.0002;
+/// Largest displacement of a ball from its rack spot when a seed jitters the rack (m).
+inline constexpr double rack_jitter = 0.0001;
+
+/// The object balls racked with the apex on the foot spot and the cue ball on the head spot.
+/// Without a seed the order is fixed; with one, the free positions are shuffled and every ball
+/// is moved by up to `rack_jitter`.
+std::vector<Ball> make_rack(const Table& table, const PhysicsParams& params, RackType type,
+                            std::optional<std::uint64_t> seed = std::nullopt);
+
+} // namespace termpool

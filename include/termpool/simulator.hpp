@@ -1,0 +1,107 @@
+#pragma once
+/// \file
+/// The event-based simulator: a World holds a table and balls and is stepped from event to
+/// event. Every event time is solved for exactly; there is no frame rate.
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <termpool/ball.hpp>
+#include <termpool/event.hpp>
+#include <termpool/params.hpp>
+#include <termpool/table.hpp>
+#include <vector>
+
+namespace termpool {
+
+/// A cue strike: how the cue ball leaves the tip.
+struct Strike {
+    double speed = 0;     ///< cue-ball speed v, m/s (0..20)
+    double angle_deg = 0; ///< direction phi, degrees counter-clockwise from +x
+    double side = 0;      ///< tip offset a as a fraction of R, + = right english, |a| <= 0.5
+    double follow = 0;    ///< tip offset b as a fraction of R, + = follow, - = draw, |b| <= 0.5
+};
+
+/// Largest cue-ball speed the simulator accepts, m/s.
+inline constexpr double max_strike_speed = 20.0;
+
+/// The cue ball's state right after the tip leaves it (point-impact model: spin magnitude
+/// 5 v offset / (2 R)).
+Ball strike_cue_ball(const Ball& cue, const Strike& strike, const PhysicsParams& params);
+
+/// The recorded motion of a shot, from which the state at any time can be sampled.
+class Trajectory {
+public:
+    /// One piece of a ball's motion: its state at `start`, valid until the next piece.
+    struct Piece {
+        double start; ///< seconds since the strike
+        Ball ball;    ///< the state at `start`
+    };
+    /// An empty trajectory for the given model.
+    Trajectory(PhysicsParams params, std::size_t ball_count);
+    /// Appends a piece for ball slot `index`; pieces of a slot come in time order.
+    void add(std::size_t index, double start, const Ball& ball);
+    /// The state of every ball at `time` (seconds since the strike), without re-simulating.
+    std::vector<Ball> sample(double time) const;
+    /// The pieces of ball slot `index`.
+    const std::vector<Piece>& pieces(std::size_t index) const { return pieces_[index]; }
+
+private:
+    PhysicsParams params_;
+    std::vector<std::vector<Piece>> pieces_;
+};
+
+/// Everything a finished shot produced.
+struct ShotResult {
+    std::vector<Event> events;   ///< in time order
+    std::vector<Ball> balls;     ///< final state, in the order the world was given
+    double rest_time = 0;        ///< when the last ball stopped
+    bool event_limit_hit = false; ///< true if the shot was cut short by `World::max_events`
+};
+
+/// A table with balls on it, advanced event by event.
+class World {
+public:
+    /// Safety limit on events per shot; a shot that reaches it is stopped and flagged.
+    static constexpr std::size_t max_events = 200000;
+
+    /// A world at time 0. Ball ids must be unique; balls must not overlap.
+    World(const Table& table, const PhysicsParams& params, std::vector<Ball> balls);
+    ~World();
+    /// Worlds are values: copying one copies its state.
+    World(const World& other);
+    /// Copy assignment.
+    World& operator=(const World& other);
+    /// Move construction.
+    World(World&&) noexcept;
+    /// Move assignment.
+    World& operator=(World&&) noexcept;
+
+    /// Strikes the cue ball (id 0) at the current time. Returns false if there is none.
+    bool strike(const Strike& strike);
+    /// Advances to the next event and resolves it. Returns nothing once every ball is at rest.
+    std::optional<Event> step();
+    /// Current time, seconds.
+    double time() const;
+    /// The balls at the current time.
+    std::vector<Ball> balls() const;
+    /// True when nothing moves or spins.
+    bool at_rest() const;
+    /// Records every ball's motion into a Trajectory from now on.
+    void record(bool on);
+    /// The recorded motion (empty unless `record(true)` was called before stepping).
+    const Trajectory& trajectory() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+/// Strikes the cue ball and steps the world until every ball is at rest.
+ShotResult simulate_shot(const Table& table, const PhysicsParams& params, std::vector<Ball> balls,
+                         const Strike& strike, Trajectory* trajectory = nullptr);
+
+/// Kinetic energy of a ball, translation plus rotation (solid sphere), J.
+double kinetic_energy(const Ball& ball, double radius);
+
+} // namespace termpool

@@ -1,0 +1,82 @@
+#pragma once
+/// \file
+/// Table geometry: playing surface, cushions, pocket jaws and capture lines.
+///
+/// Origin at the corner of the cushion noses where x = 0 and y = 0, x along the long side.
+/// Pockets are numbered counter-clockwise from the origin: 1 (0,0), 2 (L/2,0), 3 (L,0),
+/// 4 (L,W), 5 (L/2,W), 6 (0,W).
+
+#include <array>
+#include <termpool/vec.hpp>
+
+namespace termpool {
+
+/// The three common table sizes (playing surface between the cushion noses).
+enum class TableSize {
+    seven_foot, ///< 1.98 x 0.99 m
+    eight_foot, ///< 2.34 x 1.17 m
+    nine_foot,  ///< 2.54 x 1.27 m (default)
+};
+
+/// A straight piece of cushion rubber. Balls approach it from the side `normal` points to.
+struct CushionSegment {
+    Vec2 start;  ///< one end
+    Vec2 end;    ///< the other end
+    Vec2 normal; ///< unit normal pointing towards the playing area
+    int pocket;  ///< 0 for a rail, else the pocket (1..6) whose jaw this is
+};
+
+/// One pocket: its mouth, jaws and the line behind which a ball centre is captured.
+struct Pocket {
+    int number = 0;        ///< 1..6
+    Vec2 position;         ///< nominal position (the table corner or the middle of a long side)
+    Vec2 capture_point;    ///< a point on the capture line
+    Vec2 capture_normal;   ///< unit normal of the capture line, pointing towards the table
+    Vec2 region_min;       ///< box holding the jaws and the mouth, for quick rejection
+    Vec2 region_max;       ///< upper corner of that box
+};
+
+/// A table: the playing surface and everything a ball can hit or fall into.
+struct Table {
+    TableSize size = TableSize::nine_foot; ///< nominal size
+    double length = 2.54;                  ///< L, along x
+    double width = 1.27;                   ///< W, along y
+    /// The six rails (index 0..5) followed by the twelve jaws (two per pocket).
+    std::array<CushionSegment, 18> cushions{};
+    /// The twelve points where a rail turns into a jaw, with the pocket each belongs to.
+    std::array<Vec2, 12> jaw_points{};
+    /// Pocket number (1..6) of each jaw point.
+    std::array<int, 12> jaw_point_pocket{};
+    /// The six pockets, index 0 is pocket 1.
+    std::array<Pocket, 6> pockets{};
+
+    /// The foot spot (3L/4, W/2), where the apex ball of a rack sits.
+    Vec2 foot_spot() const { return {0.75 * length, 0.5 * width}; }
+    /// The head spot (L/4, W/2), where a rack places the cue ball.
+    Vec2 head_spot() const { return {0.25 * length, 0.5 * width}; }
+    /// x of the head string; the kitchen is x <= this.
+    double head_string_x() const { return 0.25 * length; }
+};
+
+/// Geometry of the pocket mouths (WPA): widths between the points of the jaws, the angle between
+/// rail and jaw measured through the rubber, and the depth behind the mouth line at which a
+/// ball's centre is over the hole.
+struct PocketSpec {
+    double corner_mouth = 0.114;          ///< m
+    double side_mouth = 0.127;            ///< m
+    double corner_jaw_angle_deg = 142;    ///< degrees
+    double side_jaw_angle_deg = 104;      ///< degrees
+    double corner_capture_depth = 0.03;   ///< m behind the mouth line
+    double side_capture_depth = 0.02;     ///< m behind the mouth line
+};
+
+/// Builds the table of the given size for balls of radius `ball_radius`.
+Table make_table(TableSize size, double ball_radius = 0.028575, const PocketSpec& spec = {});
+
+/// Name of a table size as used on the command line ("9ft").
+const char* table_size_name(TableSize size);
+
+/// True when a ball of radius `radius` centred at `p` lies on the playing surface.
+bool on_playing_surface(const Table& table, Vec2 p, double radius);
+
+} // namespace termpool

@@ -1,0 +1,118 @@
+#include "core/collision.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/motion.hpp"
+
+namespace termpool::core {
+namespace {
+
+double effective_restitution(double restitution, double approach_speed, const PhysicsParams& p) {
+    return approach_speed < p.elastic_below_speed ? 1.0 : restitution;
+}
+
+double moment_of_inertia(double mass, double radius) { return 0.4 * mass * radius * radius; }
+
+// Friction impulse at a contact whose points slip at `slip` (3D), limited by Coulomb's law and by
+// the impulse that stops the slip. `inverse_mass_tangent` is the slip change per unit impulse.
+Vec3 friction_impulse(Vec3 slip, double normal_impulse, double friction,
+                      double inverse_mass_tangent) {
+    const double slip_speed = std::sqrt(dot(slip, slip));
+    if (slip_speed == 0) return {};
+    const double stick = slip_speed / inverse_mass_tangent;
+    const double magnitude = std::min(friction * normal_impulse, stick);
+    return slip * (-magnitude / slip_speed);
+}
+
+} // namespace
+
+void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& p) {
+    const double R = p.ball_radius;
+    const Vec2 n = normalized(b.position - a.position);
+    const double approach = dot(a.velocity - b.velocity, n);
+    const double inv_a = 1.0 / a.mass, inv_b = 1.0 / b.mass;
+    const bool ideal = p.collision == CollisionModel::ideal;
+
+    if (approach > 0) {
+        const double e = ideal ? 1.0 : effective_restitution(p.ball_restitution, approach, p);
+        const double normal_impulse = (1 + e) * approach / (inv_a + inv_b);
+        a.velocity -= n * (normal_impulse * inv_a);
+        b.velocity += n * (normal_impulse * inv_b);
+
+        if (!ideal && p.ball_friction > 0) {
+            // Slip of the two surfaces at the contact, including the vertical part that top and
+            // bottom spin make; only the tangential part matters.
+            const Vec3 n3 = lift(n);
+            const Vec3 va = lift(a.velocity) + cross(a.angular_velocity, n3 * R);
+            const Vec3 vb = lift(b.velocity) + cross(b.angular_velocity, n3 * -R);
+            Vec3 slip = va - vb;
+            slip = slip - n3 * dot(slip, n3);
+            const double inverse_tangent = 3.5 * (inv_a + inv_b);
+            const Vec3 impulse =
+                friction_impulse(slip, normal_impulse, p.ball_friction, inverse_tangent);
+            // The vertical part of the impulse would lift or press the balls; the cloth takes it.
+            a.velocity += planar(impulse) * inv_a;
+            b.velocity -= planar(impulse) * inv_b;
+            const Vec3 torque = cross(n3 * R, impulse);
+            a.angular_velocity += torque * (1.0 / moment_of_inertia(a.mass, R));
+            b.angular_velocity += torque * (1.0 / moment_of_inertia(b.mass, R));
+        }
+    }
+    const double separation = dot(b.velocity - a.velocity, n);
+    if (separation < min_separation_speed) {
+        const double extra = (min_separation_speed - separation) / (inv_a + inv_b);
+        a.velocity -= n * (extra * inv_a);
+        b.velocity += n * (extra * inv_b);
+    }
+    settle_motion_state(a, p);
+    settle_motion_state(b, p);
+}
+
+void resolve_cushion(Ball& ball, Vec2 towards, const PhysicsParams& p) {
+    const double R = p.ball_radius;
+    const double m = ball.mass;
+    const double approach = dot(ball.velocity, towards);
+    const bool slow = approach < p.elastic_below_speed;
+
+    if (approach > 0 && (p.cushion == CushionModel::ideal || slow)) {
+        ball.velocity -= towards * (2 * approach);
+    } else if (approach > 0) {
+        // The cushion nose touches the ball above its equator, at angle theta.
+        const double sin_theta = std::clamp(2 * p.cushion_height_ratio - 1, -1.0, 1.0);
+        const double cos_theta = std::sqrt(1 - sin_theta * sin_theta);
+        const Vec3 arm = lift(towards * (R * cos_theta), R * sin_theta); // centre to contact
+        const Vec3 push = arm * (-1.0 / R); // direction of the cushion's push on the ball
+        const Vec3 contact_velocity = lift(ball.velocity) + cross(ball.angular_velocity, arm);
+        const double closing = -dot(contact_velocity, push);
+        const double normal_impulse = (1 + p.cushion_restitution) * m * closing;
+        Vec3 slip = contact_velocity - push * dot(contact_velocity, push);
+        const Vec3 impulse = push * normal_impulse +
+                             friction_impulse(slip, normal_impulse, p.cushion_friction, 3.5 / m);
+        ball.velocity += planar(impulse) * (1.0 / m);
+        ball.angular_velocity += cross(arm, impulse) * (1.0 / moment_of_inertia(m, R));
+    }
+
+    if (slow && !is_seed_friction(p)) {
+        // A slow contact with spin that drives the ball back into the cushion would repeat
+        // without end; the cloth's friction takes out that part of the slip at once (this only
+        // removes energy).
+        const Vec2 slip = slip_velocity(ball, R);
+        const double pressing = dot(slip, towards);
+        if (pressing < 0) {
+            const Vec2 impulse = towards * (-2.0 * m / 7.0 * pressing);
+            ball.velocity += impulse * (1.0 / m);
+            const Vec3 torque = cross(Vec3{0, 0, -R}, lift(impulse));
+            ball.angular_velocity += torque * (1.0 / moment_of_inertia(m, R));
+        }
+        const double still_approaching = dot(ball.velocity, towards);
+        if (still_approaching > 0) ball.velocity -= towards * (2 * still_approaching);
+    }
+
+    const double separation = -dot(ball.velocity, towards);
+    if (separation < min_separation_speed)
+        ball.velocity -= towards * (min_separation_speed - separation);
+    settle_motion_state(ball, p);
+}
+
+} // namespace termpool::core

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <array>
+
+namespace termpool::core {
+
+/// Polynomial of degree <= 4 in t: c[0] + c[1] t + c[2] t^2 + c[3] t^3 + c[4] t^4.
+/// Used as the "gap" function between two moving objects (positive = apart); any leading
+/// coefficients may be zero, so the same type carries degree 0..4.
+struct Polynomial4 {
+    /// Coefficients in ascending powers of t (c[k] multiplies t^k).
+    std::array<double, 5> c{};
+
+    /// Value at t (Horner's scheme).
+    [[nodiscard]] constexpr double evaluate(double t) const noexcept {
+        return (((c[4] * t + c[3]) * t + c[2]) * t + c[1]) * t + c[0];
+    }
+
+    /// First derivative d/dt at t.
+    [[nodiscard]] constexpr double derivative(double t) const noexcept {
+        return ((4.0 * c[4] * t + 3.0 * c[3]) * t + 2.0 * c[2]) * t + c[1];
+    }
+
+    /// Second derivative d^2/dt^2 at t.
+    [[nodiscard]] constexpr double second_derivative(double t) const noexcept {
+        return (12.0 * c[4] * t + 6.0 * c[3]) * t + 2.0 * c[2];
+    }
+
+    /// Coefficients of the first derivative, as a polynomial of degree <= 3 (c[4] == 0).
+    [[nodiscard]] constexpr Polynomial4 derivative_polynomial() const noexcept {
+        return Polynomial4{{c[1], 2.0 * c[2], 3.0 * c[3], 4.0 * c[4], 0.0}};
+    }
+};
+
+/// Roots of a quadratic a t^2 + b t + c in ascending order (0, 1 or 2), numerically stable.
+///
+/// Writes the real roots to roots[0..n) in ascending order and returns n. Degenerates are
+/// handled: a == 0 gives the linear root -c/b (n = 1), a == b == 0 gives n = 0 (also for the
+/// all-zero polynomial, whose "every t is a root" has no finite answer). A double root (zero
+/// discriminant) is reported once (n = 1). The discriminant is computed with an error-free
+/// product when b^2 and 4ac nearly cancel, so near-tangent cases are decided from the exact
+/// coefficients rather than from rounding noise; coefficients are rescaled by a power of two
+/// when huge or tiny so b^2 cannot overflow or underflow. Coefficients must be finite.
+int solve_quadratic(double a, double b, double c, double roots[2]) noexcept;
+
+/// Earliest time t in [0, horizon] at which f(t) <= 0 while f is decreasing, i.e. the infimum of
+/// S = { t in [0, horizon] : f(t) <= 0 and f'(t) < 0 }, or +infinity when S is empty.
+///
+/// f is a gap function (positive = apart), so this is the first moment two objects touch while
+/// approaching. Conventions the caller can rely on:
+/// - f(0) <= 0 and f decreasing at 0 (f'(0) < 0, or f'(0) == 0 with the first nonzero higher
+///   derivative negative) returns exactly 0.0.
+/// - A slight overlap that is opening (f(0) < 0, f'(0) > 0) is skipped; if f later turns down
+///   while still <= 0 the turning point (local maximum) is returned, otherwise the next
+///   descending root.
+/// - Grazing contacts (f touches 0 with f' == 0 and does not go below) may return either the
+///   touch time or +infinity; a time where f is clearly positive is never returned.
+/// - A descending root is located to the precision f can be evaluated in double: within a few
+///   ulps when well conditioned, and in general where |f| is at rounding level (about 4 eps times
+///   sum |c_k| t^k). Where the side is known, the time just before contact (f >= 0) is preferred.
+/// - Degenerate f (degree < 4, f == 0) is handled; f == 0 yields +infinity.
+/// - horizon < 0 or NaN yields +infinity; horizon == +infinity searches all t >= 0.
+///   Coefficients must be finite. No allocation, no recursion, bounded iteration count.
+double first_contact_time(const Polynomial4& f, double horizon) noexcept;
+
+}  // namespace termpool::core

@@ -1,0 +1,94 @@
+#include <cmath>
+#include <numbers>
+#include <termpool/rack.hpp>
+#include <termpool/random.hpp>
+#include <utility>
+
+namespace termpool {
+namespace {
+
+// Spots of a triangle (rows of 1..5) or diamond (1,2,3,2,1) with the apex on the foot spot,
+// rows growing away from the head of the table.
+std::vector<Vec2> rack_spots(const Table& table, double spacing, RackType type) {
+    const int rows_eight[] = {1, 2, 3, 4, 5};
+    const int rows_nine[] = {1, 2, 3, 2, 1};
+    const int* rows = type == RackType::eight_ball ? rows_eight : rows_nine;
+    const Vec2 apex = table.foot_spot();
+    const double row_step = spacing * std::numbers::sqrt3 / 2;
+    std::vector<Vec2> spots;
+    for (int r = 0; r < 5; ++r) {
+        for (int j = 0; j < rows[r]; ++j)
+            spots.push_back({apex.x + r * row_step, apex.y + (j - (rows[r] - 1) / 2.0) * spacing});
+    }
+    return spots;
+}
+
+template <class T> void shuffle(std::vector<T>& v, Random& rng) {
+    for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.below(i)]);
+}
+
+// Ball numbers in spot order.
+std::vector<int> rack_order(RackType type, std::optional<std::uint64_t> seed) {
+    if (type == RackType::nine_ball) {
+        std::vector<int> order{1, 2, 3, 4, 9, 5, 6, 7, 8};
+        if (seed) {
+            Random rng(*seed);
+            std::vector<int> free{2, 3, 4, 5, 6, 7, 8};
+            shuffle(free, rng);
+            std::size_t k = 0;
+            for (int& n : order)
+                if (n != 1 && n != 9) n = free[k++];
+        }
+        return order;
+    }
+    // Spot 4 is the centre of the third row; spots 10 and 14 are the back corners.
+    std::vector<int> order{1, 9, 2, 10, 8, 3, 11, 4, 12, 5, 6, 13, 14, 7, 15};
+    if (!seed) return order;
+    Random rng(*seed);
+    std::vector<int> solids{1, 2, 3, 4, 5, 6, 7}, stripes{9, 10, 11, 12, 13, 14, 15};
+    shuffle(solids, rng);
+    shuffle(stripes, rng);
+    const bool solid_left = rng.below(2) == 0;
+    order[10] = solid_left ? solids.back() : stripes.back();
+    order[14] = solid_left ? stripes.back() : solids.back();
+    solids.pop_back();
+    stripes.pop_back();
+    std::vector<int> rest = solids;
+    rest.insert(rest.end(), stripes.begin(), stripes.end());
+    shuffle(rest, rng);
+    std::size_t k = 0;
+    for (std::size_t s = 0; s < order.size(); ++s)
+        if (s != 4 && s != 10 && s != 14) order[s] = rest[k++];
+    return order;
+}
+
+} // namespace
+
+std::vector<Ball> make_rack(const Table& table, const PhysicsParams& params, RackType type,
+                            std::optional<std::uint64_t> seed) {
+    const std::vector<Vec2> spots = rack_spots(table, 2 * params.ball_radius + rack_gap, type);
+    const std::vector<int> order = rack_order(type, seed);
+    // The jitter uses its own stream so that it does not change the order for a seed.
+    Random jitter(seed.value_or(0) ^ 0x5eedf00dULL);
+    std::vector<Ball> balls;
+    Ball cue;
+    cue.id = 0;
+    cue.mass = params.ball_mass;
+    cue.position = table.head_spot();
+    balls.push_back(cue);
+    for (std::size_t s = 0; s < spots.size(); ++s) {
+        Ball b;
+        b.id = order[s];
+        b.mass = params.ball_mass;
+        b.position = spots[s];
+        if (seed) {
+            const double angle = jitter.uniform(0, 2 * std::numbers::pi);
+            const double radius = rack_jitter * std::sqrt(jitter.uniform());
+            b.position += unit_from_angle(angle) * radius;
+        }
+        balls.push_back(b);
+    }
+    return balls;
+}
+
+} // namespace termpool

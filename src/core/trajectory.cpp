@@ -1,0 +1,37 @@
+#include <algorithm>
+#include <termpool/simulator.hpp>
+
+#include "core/motion.hpp"
+
+namespace termpool {
+
+Trajectory::Trajectory(PhysicsParams params, std::size_t ball_count)
+    : params_(params), pieces_(ball_count) {}
+
+void Trajectory::add(std::size_t index, double start, const Ball& ball) {
+    std::vector<Piece>& list = pieces_[index];
+    // A later piece at the same instant replaces the earlier one (several events at one time).
+    if (!list.empty() && list.back().start == start) {
+        list.back().ball = ball;
+        return;
+    }
+    list.push_back({start, ball});
+}
+
+std::vector<Ball> Trajectory::sample(double time) const {
+    std::vector<Ball> out;
+    out.reserve(pieces_.size());
+    for (const std::vector<Piece>& list : pieces_) {
+        if (list.empty()) continue;
+        // The last piece that started at or before `time`.
+        auto it = std::upper_bound(list.begin(), list.end(), time,
+                                   [](double t, const Piece& p) { return t < p.start; });
+        const Piece& piece = it == list.begin() ? list.front() : *std::prev(it);
+        const double limit = core::time_to_transition(piece.ball, params_);
+        const double dt = std::clamp(time - piece.start, 0.0, limit);
+        out.push_back(core::advance(piece.ball, dt, params_));
+    }
+    return out;
+}
+
+} // namespace termpool

@@ -1,0 +1,449 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <termpool/simulator.hpp>
+
+#include "core/collision.hpp"
+#include "core/contact_time.hpp"
+#include "core/motion.hpp"
+
+namespace termpool {
+namespace {
+
+using core::Path;
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+bool moves(const Ball& b) {
+    return b.state == MotionState::sliding || b.state == MotionState::rolling;
+}
+
+// What a ball will do next on its own, against the table (pair contacts are kept apart).
+enum class BoundaryKind { none, transition, rail, jaw_line, jaw_point, capture };
+
+struct BoundaryEvent {
+    double time = infinity;
+    BoundaryKind kind = BoundaryKind::none;
+    int feature = 0; // rail or jaw segment index into Table::cushions, jaw point, or pocket index
+};
+
+// A ball's current piece of motion, from `start` to `end` (absolute times).
+struct Slot {
+    Ball ball;             // state at `start`
+    double start = 0;
+    double end = infinity; // next transition
+    Vec2 acceleration;     // physical model: constant over the piece
+    Vec2 box_min, box_max; // box of the centre's path over the piece
+};
+
+struct Box {
+    Vec2 min, max;
+};
+
+// Range of x0 + v t + a t^2 / 2 over [0, T].
+void extend_range(double x0, double v, double a, double T, double& lo, double& hi) {
+    auto at = [&](double t) { return x0 + v * t + 0.5 * a * t * t; };
+    lo = hi = x0;
+    const double end = at(T);
+    lo = std::min(lo, end);
+    hi = std::max(hi, end);
+    if (a != 0) {
+        const double t_turn = -v / a;
+        if (t_turn > 0 && t_turn < T) {
+            lo = std::min(lo, at(t_turn));
+            hi = std::max(hi, at(t_turn));
+        }
+    }
+}
+
+bool boxes_within(Vec2 a_min, Vec2 a_max, Vec2 b_min, Vec2 b_max, double margin) {
+    return a_min.x - margin <= b_max.x && b_min.x - margin <= a_max.x &&
+           a_min.y - margin <= b_max.y && b_min.y - margin <= a_max.y;
+}
+
+} // namespace
+
+struct World::Impl {
+    Table table;
+    PhysicsParams params;
+    std::vector<Slot> slots;
+    std::vector<BoundaryEvent> boundary;
+    std::vector<double> pair_time; // [i * n + j], i < j
+    double now = 0;
+    std::size_t events = 0;
+    std::vector<Event> pending; // reported by the next step before anything is simulated
+    bool recording = false;
+    Trajectory trajectory;
+
+    Impl(const Table& t, const PhysicsParams& p, std::vector<Ball> balls)
+        : table(t), params(p), trajectory(p, balls.size()) {
+        slots.resize(balls.size());
+        boundary.resize(balls.size());
+        pair_time.assign(balls.size() * balls.size(), infinity);
+        for (std::size_t i = 0; i < balls.size(); ++i) set_slot(i, balls[i]);
+        for (std::size_t i = 0; i < slots.size(); ++i) refresh(i, i);
+    }
+
+    std::size_t count() const { return slots.size(); }
+    bool seed_model() const { return core::is_seed_friction(params); }
+
+    Ball state_now(std::size_t i) const {
+        const Slot& s = slots[i];
+        return core::advance(s.ball, std::min(now, s.end) - s.start, params);
+    }
+
+    Path path_now(std::size_t i) const {
+        const Slot& s = slots[i];
+        const double t = now - s.start;
+        return {s.ball.position + s.ball.velocity * t + s.acceleration * (0.5 * t * t),
+                s.ball.velocity + s.acceleration * t, s.acceleration, s.end - now};
+    }
+
+    void set_slot(std::size_t i, const Ball& ball) {
+        Slot& s = slots[i];
+        s.ball = ball;
+        s.start = now;
+        const double duration = core::time_to_transition(ball, params);
+        s.end = now + duration;
+        s.acceleration = seed_model() ? Vec2{} : core::physical_acceleration(ball, params);
+        if (!moves(ball)) {
+            s.box_min = s.box_max = ball.position;
+        } else if (seed_model()) {
+            const Ball last = core::advance(ball, duration, params);
+            s.box_min = {std::min(ball.position.x, last.position.x),
+                         std::min(ball.position.y, last.position.y)};
+            s.box_max = {std::max(ball.position.x, last.position.x),
+                         std::max(ball.position.y, last.position.y)};
+        } else {
+            extend_range(ball.position.x, ball.velocity.x, s.acceleration.x, duration,
+                         s.box_min.x, s.box_max.x);
+            extend_range(ball.position.y, ball.velocity.y, s.acceleration.y, duration,
+                         s.box_min.y, s.box_max.y);
+        }
+        if (recording) trajectory.add(i, now, ball);
+    }
+
+    double& pair(std::size_t i, std::size_t j) {
+        return i < j ? pair_time[i * count() + j] : pair_time[j * count() + i];
+    }
+
+    // Recomputes everything that depends on the motion of ball i; `other` is a ball that changed
+    // in the same event, whose pair with i is computed only once.
+    void refresh(std::size_t i, std::size_t other) {
+        boundary[i] = next_boundary(i);
+        for (std::size_t k = 0; k < count(); ++k) {
+            if (k == i || (k == other && k < i)) continue;
+            pair(i, k) = now + pair_contact(i, k);
+        }
+    }
+
+    // ---- contacts between two balls -------------------------------------------------------
+
+    double pair_contact(std::size_t i, std::size_t k) const {
+        const Slot& a = slots[i];
+        const Slot& b = slots[k];
+        if (a.ball.state == MotionState::pocketed || b.ball.state == MotionState::pocketed)
+            return infinity;
+        if (!moves(a.ball) && !moves(b.ball)) return infinity;
+        const double diameter = 2 * params.ball_radius;
+        if (!boxes_within(a.box_min, a.box_max, b.box_min, b.box_max, diameter)) return infinity;
+        const double horizon = std::min(a.end, b.end) - now;
+        if (seed_model()) return seed_pair_contact(i, k, horizon);
+        return core::path_path_contact_time(path_now(i), path_now(k), diameter, horizon);
+    }
+
+    double seed_pair_contact(std::size_t i, std::size_t k, double horizon) const {
+        const Ball a = state_now(i), b = state_now(k);
+        const double diameter = 2 * params.ball_radius;
+        auto gap = [&](double t) {
+            const Ball pa = core::advance(a, t, params), pb = core::advance(b, t, params);
+            const Vec2 d = pb.position - pa.position;
+            const double dist = length(d);
+            return std::pair{dist - diameter, dot(d, pb.velocity - pa.velocity) / dist};
+        };
+        auto bound = [&](double t) {
+            return length(core::advance(a, t, params).velocity) +
+                   length(core::advance(b, t, params).velocity);
+        };
+        return core::advance_until_contact(gap, bound, horizon);
+    }
+
+    // ---- contacts with the table ------------------------------------------------------------
+
+    BoundaryEvent next_boundary(std::size_t i) const {
+        const Slot& s = slots[i];
+        BoundaryEvent best;
+        if (!moves(s.ball)) {
+            if (s.ball.state == MotionState::spinning) best = {s.end, BoundaryKind::transition, 0};
+            return best;
+        }
+        best = {s.end, BoundaryKind::transition, 0};
+        const double R = params.ball_radius;
+        const double horizon = s.end - now;
+        auto consider = [&](double dt, BoundaryKind kind, int feature) {
+            if (now + dt < best.time) best = {now + dt, kind, feature};
+        };
+
+        if (seed_model()) {
+            const Ball b = state_now(i);
+            for (int c = 0; c < 18; ++c) {
+                const CushionSegment& seg = table.cushions[c];
+                if (seg.pocket != 0 && !near_pocket(s, seg.pocket - 1)) continue;
+                consider(seed_segment_contact(b, seg, horizon), c < 6 ? BoundaryKind::rail
+                                                                      : BoundaryKind::jaw_line,
+                         c);
+            }
+            for (int p = 0; p < 6; ++p) {
+                if (!near_pocket(s, p)) continue;
+                const Pocket& pocket = table.pockets[p];
+                consider(seed_line_contact(b, pocket.capture_point, pocket.capture_normal, horizon),
+                         BoundaryKind::capture, p);
+            }
+            return best;
+        }
+
+        const Path path = path_now(i);
+        for (int c = 0; c < 6; ++c) {
+            const CushionSegment& seg = table.cushions[c];
+            if (!box_reaches_line(s, seg.start, seg.normal, R)) continue;
+            const double dt = core::path_line_contact_time(path, seg.start, seg.normal, R, horizon);
+            if (now + dt < best.time && hits_segment(path, dt, seg)) consider(dt, BoundaryKind::rail, c);
+        }
+        for (int p = 0; p < 6; ++p) {
+            if (!near_pocket(s, p)) continue;
+            for (int side = 0; side < 2; ++side) {
+                const int c = 6 + 2 * p + side;
+                const CushionSegment& seg = table.cushions[c];
+                const double dt =
+                    core::path_line_contact_time(path, seg.start, seg.normal, R, horizon);
+                if (now + dt < best.time && hits_segment(path, dt, seg))
+                    consider(dt, BoundaryKind::jaw_line, c);
+                const int point = 2 * p + side;
+                consider(core::path_point_contact_time(path, table.jaw_points[point], R, horizon),
+                         BoundaryKind::jaw_point, point);
+            }
+            const Pocket& pocket = table.pockets[p];
+            consider(core::path_line_contact_time(path, pocket.capture_point,
+                                                  pocket.capture_normal, 0, horizon),
+                     BoundaryKind::capture, p);
+        }
+        return best;
+    }
+
+    bool near_pocket(const Slot& s, int p) const {
+        const Pocket& pocket = table.pockets[p];
+        return boxes_within(s.box_min, s.box_max, pocket.region_min, pocket.region_max,
+                            params.ball_radius);
+    }
+
+    // Whether any point of the slot's box is within `offset` of the line (rails are axis-aligned,
+    // but this works for any line).
+    static bool box_reaches_line(const Slot& s, Vec2 point, Vec2 normal, double offset) {
+        const Vec2 corner{normal.x > 0 ? s.box_min.x : s.box_max.x,
+                          normal.y > 0 ? s.box_min.y : s.box_max.y};
+        return dot(corner - point, normal) <= offset;
+    }
+
+    static bool hits_segment(const Path& path, double dt, const CushionSegment& seg) {
+        if (!(dt < infinity)) return false;
+        const Vec2 at = path.position + path.velocity * dt + path.acceleration * (0.5 * dt * dt);
+        const Vec2 along = seg.end - seg.start;
+        const double u = dot(at - seg.start, along);
+        return u >= 0 && u <= length_squared(along);
+    }
+
+    double seed_segment_contact(const Ball& b, const CushionSegment& seg, double horizon) const {
+        const double R = params.ball_radius;
+        auto gap = [&](double t) {
+            const Ball moved = core::advance(b, t, params);
+            const Vec2 d = moved.position - closest_on_segment(seg, moved.position);
+            const double dist = length(d);
+            return std::pair{dist - R, dot(d, moved.velocity) / dist};
+        };
+        auto bound = [&](double t) { return length(core::advance(b, t, params).velocity); };
+        return core::advance_until_contact(gap, bound, horizon);
+    }
+
+    double seed_line_contact(const Ball& b, Vec2 point, Vec2 normal, double horizon) const {
+        auto gap = [&](double t) {
+            const Ball moved = core::advance(b, t, params);
+            return std::pair{dot(moved.position - point, normal), dot(moved.velocity, normal)};
+        };
+        auto bound = [&](double t) { return length(core::advance(b, t, params).velocity); };
+        return core::advance_until_contact(gap, bound, horizon);
+    }
+
+    static Vec2 closest_on_segment(const CushionSegment& seg, Vec2 p) {
+        const Vec2 along = seg.end - seg.start;
+        const double u = std::clamp(dot(p - seg.start, along) / length_squared(along), 0.0, 1.0);
+        return seg.start + along * u;
+    }
+
+    // ---- stepping ---------------------------------------------------------------------------
+
+    std::optional<Event> step() {
+        if (!pending.empty()) {
+            const Event e = pending.front();
+            pending.erase(pending.begin());
+            return e;
+        }
+        std::size_t best_i = 0, best_j = 0;
+        double best = infinity;
+        bool is_pair = false;
+        for (std::size_t i = 0; i < count(); ++i) {
+            if (boundary[i].time < best) {
+                best = boundary[i].time;
+                best_i = i;
+                is_pair = false;
+            }
+        }
+        for (std::size_t i = 0; i < count(); ++i) {
+            for (std::size_t j = i + 1; j < count(); ++j) {
+                if (pair_time[i * count() + j] < best) {
+                    best = pair_time[i * count() + j];
+                    best_i = i;
+                    best_j = j;
+                    is_pair = true;
+                }
+            }
+        }
+        if (!(best < infinity)) return std::nullopt;
+        if (++events > max_events) return std::nullopt;
+        now = std::max(now, best);
+        return is_pair ? resolve_pair(best_i, best_j) : resolve_boundary(best_i);
+    }
+
+    Event resolve_pair(std::size_t i, std::size_t j) {
+        Ball a = state_now(i), b = state_now(j);
+        core::resolve_ball_ball(a, b, params);
+        set_slot(i, a);
+        set_slot(j, b);
+        refresh(i, j);
+        refresh(j, i);
+        return {now, EventKind::ball_ball, std::min(a.id, b.id), std::max(a.id, b.id)};
+    }
+
+    Event resolve_boundary(std::size_t i) {
+        const BoundaryEvent be = boundary[i];
+        Ball b = state_now(i);
+        Event event{now, EventKind::stopped, b.id, 0};
+        switch (be.kind) {
+        case BoundaryKind::transition:
+            b = core::apply_transition(b, params);
+            event.kind = b.state == MotionState::rolling    ? EventKind::rolling
+                         : b.state == MotionState::spinning ? EventKind::spinning
+                         : b.state == MotionState::sliding  ? EventKind::sliding
+                                                            : EventKind::stopped;
+            break;
+        case BoundaryKind::rail:
+        case BoundaryKind::jaw_line: {
+            const CushionSegment& seg = table.cushions[be.feature];
+            const Vec2 towards = seed_model()
+                                     ? normalized(closest_on_segment(seg, b.position) - b.position)
+                                     : -seg.normal;
+            core::resolve_cushion(b, towards, params);
+            event.kind = be.kind == BoundaryKind::rail ? EventKind::cushion : EventKind::jaw;
+            event.other = be.kind == BoundaryKind::rail ? be.feature : seg.pocket;
+            break;
+        }
+        case BoundaryKind::jaw_point:
+            core::resolve_cushion(b, normalized(table.jaw_points[be.feature] - b.position),
+                                  params);
+            event.kind = EventKind::jaw;
+            event.other = table.jaw_point_pocket[be.feature];
+            break;
+        case BoundaryKind::capture:
+            b.state = MotionState::pocketed;
+            b.pocket = be.feature + 1;
+            b.velocity = {};
+            b.angular_velocity = {};
+            event.kind = EventKind::pocket;
+            event.other = b.pocket;
+            break;
+        case BoundaryKind::none: break;
+        }
+        set_slot(i, b);
+        refresh(i, i);
+        return event;
+    }
+
+    void strike(const Strike& strike, std::size_t cue) {
+        Ball b = strike_cue_ball(state_now(cue), strike, params);
+        set_slot(cue, b);
+        refresh(cue, cue);
+        if (moves(b))
+            pending.push_back({now, b.state == MotionState::rolling ? EventKind::rolling
+                                                                    : EventKind::sliding,
+                               b.id, 0});
+    }
+};
+
+World::World(const Table& table, const PhysicsParams& params, std::vector<Ball> balls)
+    : impl_(std::make_unique<Impl>(table, params, std::move(balls))) {}
+World::~World() = default;
+World::World(const World& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
+World& World::operator=(const World& other) {
+    if (this != &other) impl_ = std::make_unique<Impl>(*other.impl_);
+    return *this;
+}
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+bool World::strike(const Strike& strike) {
+    for (std::size_t i = 0; i < impl_->count(); ++i) {
+        const Ball& b = impl_->slots[i].ball;
+        if (b.id == 0 && b.state != MotionState::pocketed) {
+            impl_->strike(strike, i);
+            return true;
+        }
+    }
+    return false;
+}
+
+std::optional<Event> World::step() { return impl_->step(); }
+double World::time() const { return impl_->now; }
+
+std::vector<Ball> World::balls() const {
+    std::vector<Ball> out;
+    out.reserve(impl_->count());
+    for (std::size_t i = 0; i < impl_->count(); ++i) out.push_back(impl_->state_now(i));
+    return out;
+}
+
+bool World::at_rest() const {
+    return std::all_of(impl_->slots.begin(), impl_->slots.end(), [](const Slot& s) {
+        return s.ball.state == MotionState::stationary || s.ball.state == MotionState::pocketed;
+    });
+}
+
+void World::record(bool on) {
+    impl_->recording = on;
+    if (on) {
+        for (std::size_t i = 0; i < impl_->count(); ++i)
+            impl_->trajectory.add(i, impl_->now, impl_->state_now(i));
+    }
+}
+
+const Trajectory& World::trajectory() const { return impl_->trajectory; }
+
+ShotResult simulate_shot(const Table& table, const PhysicsParams& params, std::vector<Ball> balls,
+                         const Strike& strike, Trajectory* trajectory) {
+    World world(table, params, std::move(balls));
+    if (trajectory) world.record(true);
+    world.strike(strike);
+    ShotResult result;
+    while (const auto event = world.step()) result.events.push_back(*event);
+    result.event_limit_hit = !world.at_rest();
+    result.rest_time = world.time();
+    result.balls = world.balls();
+    if (trajectory) *trajectory = world.trajectory();
+    return result;
+}
+
+double kinetic_energy(const Ball& b, double radius) {
+    if (b.state == MotionState::pocketed) return 0;
+    const double inertia = 0.4 * b.mass * radius * radius;
+    return 0.5 * b.mass * length_squared(b.velocity) +
+           0.5 * inertia * dot(b.angular_velocity, b.angular_velocity);
+}
+
+} // namespace termpool
