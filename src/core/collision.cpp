@@ -25,6 +25,62 @@ Vec3 friction_impulse(Vec3 slip, double normal_impulse, double friction,
     return slip * (-magnitude / slip_speed);
 }
 
+// Two balls that meet slower than `elastic_below_speed` while the cloth drives one into the other
+// (a ball with top spin catching up with the one ahead) would bounce ever more often, each
+// slide-to-roll transition taking a little more of their relative speed. In reality they stay
+// pressed together until both roll at one speed: the cloth acts at each ball's contact point, so
+// the pair's angular momentum about those points along the line of centres is what survives.
+// The push is resolved at once to that end state; it only removes energy.
+void resolve_push(Ball& a, Ball& b, Vec2 n, const PhysicsParams& p) {
+    const double R = p.ball_radius;
+    const Vec2 roll_axis = perpendicular(n); // spin about it rolls a ball along n
+    auto rolling_momentum = [&](const Ball& ball) {
+        return ball.mass * (dot(ball.velocity, n) + 0.4 * R * dot(planar(ball.angular_velocity), roll_axis));
+    };
+    const double common = (rolling_momentum(a) + rolling_momentum(b)) / (1.4 * (a.mass + b.mass));
+    for (Ball* ball : {&a, &b}) {
+        ball->velocity += n * (common - dot(ball->velocity, n));
+        const double spin = dot(planar(ball->angular_velocity), roll_axis);
+        ball->angular_velocity += lift(roll_axis * (common / R - spin));
+    }
+}
+
+// Turns a ball's velocity and horizontal spin together (so neither its energy nor its slip speed
+// changes) until its velocity along n is `target`, as far as its speed allows.
+void turn_towards(Ball& ball, Vec2 n, double target) {
+    const double speed = length(ball.velocity);
+    if (speed == 0) return;
+    target = std::clamp(target, -speed, speed);
+    const Vec2 t = perpendicular(n);
+    const double sideways = std::sqrt(std::max(0.0, speed * speed - target * target));
+    const Vec2 turned = n * target + t * std::copysign(sideways, dot(ball.velocity, t));
+    const double angle = std::atan2(cross(ball.velocity, turned), dot(ball.velocity, turned));
+    const double c = std::cos(angle), s = std::sin(angle);
+    const Vec2 w = planar(ball.angular_velocity);
+    ball.velocity = turned;
+    ball.angular_velocity.x = c * w.x - s * w.y;
+    ball.angular_velocity.y = s * w.x + c * w.y;
+}
+
+// After a push two balls rolling in different directions are still pressed together by their
+// rolling resistance, and would meet again and again. They part at `push_parting_speed`, the
+// parting taken from their sideways motion by turning it, which costs no energy.
+void part_pushed_balls(Ball& a, Ball& b, Vec2 n) {
+    const double needed = push_parting_speed - dot(b.velocity - a.velocity, n);
+    if (needed <= 0) return;
+    const double room_b = length(b.velocity) - dot(b.velocity, n);
+    const double room_a = length(a.velocity) + dot(a.velocity, n);
+    double share_b = std::min(needed / 2, room_b);
+    const double share_a = std::min(needed - share_b, room_a);
+    share_b = std::min(needed - share_a, room_b);
+    turn_towards(b, n, dot(b.velocity, n) + share_b);
+    turn_towards(a, n, dot(a.velocity, n) - share_a);
+}
+
+bool pressed_together(const Ball& a, const Ball& b, Vec2 n, const PhysicsParams& p) {
+    return dot(physical_acceleration(a, p) - physical_acceleration(b, p), n) > 0;
+}
+
 } // namespace
 
 void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& p) {
@@ -57,6 +113,16 @@ void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& p) {
             const Vec3 torque = cross(n3 * R, impulse);
             a.angular_velocity += torque * (1.0 / moment_of_inertia(a.mass, R));
             b.angular_velocity += torque * (1.0 / moment_of_inertia(b.mass, R));
+        }
+    }
+    if (!is_seed_friction(p) && approach < p.elastic_below_speed) {
+        settle_motion_state(a, p);
+        settle_motion_state(b, p);
+        if (pressed_together(a, b, n, p)) {
+            resolve_push(a, b, n, p);
+            settle_motion_state(a, p);
+            settle_motion_state(b, p);
+            if (pressed_together(a, b, n, p)) part_pushed_balls(a, b, n);
         }
     }
     const double separation = dot(b.velocity - a.velocity, n);

@@ -10,6 +10,9 @@ namespace termpool::core {
 /// It keeps a pair that rounding left touching from being found in contact again at once.
 inline constexpr double min_separation_speed = 1e-6;
 
+/// Speed at which two balls that pushed each other part, m/s (see resolve_ball_ball).
+inline constexpr double push_parting_speed = 0.001;
+
 /// Resolves a contact between two touching balls; `a` and `b` get their new velocities and spins
 /// (the motion states are settled afterwards by the caller).
 void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& params);

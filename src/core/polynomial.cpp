@@ -51,6 +51,7 @@ struct Work {
     double g[4];
     double h[3];
     double noise[5];
+    double jerk[2];  // bound on the third derivative: |f'''(t)| <= jerk[0] + jerk[1] t, t >= 0
 };
 
 inline Sample sample_at(const Work& w, double t) noexcept {
@@ -108,7 +109,8 @@ double find_root(const Work& w, Sample lo, Sample hi) noexcept {
     double last_step = b - a;
     for (int it = 0; it < kMaxIterations; ++it) {
         const Sample s = sample_at(w, x);
-        if (s.g < 0.0 && std::fabs(s.f) <= noise_at(w, x)) return x;
+        const double nz = noise_at(w, x);
+        if (s.g < 0.0 && std::fabs(s.f) <= nz) return x;
         if (s.f > 0.0) {
             a = x;
         } else {
@@ -120,6 +122,18 @@ double find_root(const Work& w, Sample lo, Sample hi) noexcept {
             next = a + 0.5 * (b - a);
             if (!(next > a && next < b)) return a;  // bracket is down to adjacent doubles
             step = next - x;
+        } else {
+            // The model is exact up to the cubic Taylor remainder |f'''| |step|^3 / 6. Once that
+            // is below the evaluation noise, next is already a root as far as double can tell,
+            // and sampling it only to confirm would cost a full evaluation. The step must also be
+            // short against next itself: then the noise at x is the noise at next, and the
+            // rounding of the step is below it.
+            const double jerk = w.jerk[0] + w.jerk[1] * std::max(x, next);
+            const double step3 = step * step * std::fabs(step);
+            if (std::fabs(step) <= 0x1p-10 * next && jerk * step3 <= 6.0 * nz &&
+                s.g + s.h * step + 0.5 * jerk * step * step < 0.0) {
+                return next;
+            }
         }
         if (std::fabs(step) <= step_tolerance(x)) return s.f > 0.0 ? x : next;
         step_before_last = last_step;
@@ -169,30 +183,56 @@ double convex_minimum(const Work& w, Sample lo, Sample hi) noexcept {
     return kInf;
 }
 
-// Convex piece starting at p with f(p) > 0, f'(p) < 0, ending at q with f(q) > 0, f'(q) > 0.
-// Most calls that reach here are hits whose gap is nearly quadratic, so first walk down with
-// model steps from the left: each landing before the minimum with f > 0 is a valid new left end,
-// and one step usually lands on the root. Only when the model predicts no root or overshoots
-// the minimum do we fall back to locating the minimum.
-double convex_dip(const Work& w, Sample lo, Sample hi) noexcept {
+// End of a piece, sampled only when a decision needs it: a hit is usually settled from inside
+// the piece, and the horizon end then never has to be evaluated.
+struct PieceEnd {
+    double t;
+    bool known = false;
+    Sample s{};
+
+    const Sample& get(const Work& w) noexcept {
+        if (!known) {
+            s = sample_at(w, t);
+            known = true;
+        }
+        return s;
+    }
+};
+
+// Convex piece from lo (f > 0, f' < 0) to q. Most calls that reach here are hits whose gap is
+// nearly quadratic, so walk down from the left: every landing before the minimum with f > 0 is a
+// valid new left end (f >= its tangent, so nothing was skipped), and one or two steps usually
+// land inside the dip, which brackets the first crossing.
+double convex_descent(const Work& w, Sample lo, PieceEnd& q) noexcept {
     for (int it = 0; it < 6; ++it) {
+        if (lo.f + lo.g * (q.t - lo.t) > 0.0) return kInf;  // tangent stays above 0 up to q
         const double disc = lo.g * lo.g - 2.0 * lo.f * lo.h;
-        if (disc < 0.0) break;
-        const double step = 2.0 * lo.f / (std::sqrt(disc) - lo.g);
+        double step;
+        if (disc >= 0.0) {
+            step = 2.0 * lo.f / (std::sqrt(disc) - lo.g);
+        } else {
+            // The model sees no root, which for a squared distance often only means its
+            // curvature is a little off (decelerating balls). Schroeder's step, Newton on f / f',
+            // is exact for a double root, so it lands near the closest approach: inside the dip
+            // for a hit, near the minimum for a miss. Either outcome narrows the search.
+            const double den = lo.g * lo.g - lo.f * lo.h;
+            if (!(den > 0.0)) break;
+            step = -lo.f * lo.g / den;
+        }
         const double x = lo.t + step;
-        if (!(x < hi.t)) break;
+        if (!(x > lo.t && x < q.t)) break;
         const Sample s = sample_at(w, x);
         const double nz = noise_at(w, x);
         if (s.g < 0.0 && std::fabs(s.f) <= nz) return x;
         if (s.f <= 0.0) return find_root(w, lo, s);
-        if (s.g >= 0.0) {
-            hi = s;
-            break;
-        }
+        if (s.g >= 0.0) return convex_minimum(w, lo, s);
         if (step <= step_tolerance(x)) return x;
         lo = s;
     }
-    return convex_minimum(w, lo, hi);
+    const Sample& e = q.get(w);
+    if (e.f <= 0.0) return find_root(w, lo, e);
+    if (e.g <= 0.0) return kInf;  // still descending at q but positive there
+    return convex_minimum(w, lo, e);
 }
 
 // Concave piece with f(p) <= 0 rising to a maximum and then falling (f'(p) > 0 > f'(q)): the
@@ -233,21 +273,21 @@ double concave_maximum(const Work& w, Sample lo, Sample hi) noexcept {
     return x;
 }
 
-// One piece [p, q] on which f'' keeps one sign (convex when sign >= 0). Returns the infimum of S
-// restricted to the piece, or +infinity to continue with the next piece. Every case is decided
-// from the end values and convexity, so only dips and turning points need iteration.
-double solve_piece(const Work& w, const Sample& p, const Sample& q, bool convex) noexcept {
+// One piece [p, q] on which f'' keeps one sign. Returns the infimum of S restricted to the
+// piece, or +infinity to continue with the next piece. Every case is decided from the end values
+// and convexity, so only dips and turning points need iteration.
+double solve_piece(const Work& w, const Sample& p, PieceEnd& qe, bool convex) noexcept {
     if (convex) {
         if (p.g >= 0.0) return kInf;  // f' only grows: f never decreases here
         if (p.f <= 0.0) return p.t;
-        if (q.f <= 0.0) return find_root(w, p, q);
-        if (q.g <= 0.0) return kInf;  // decreasing throughout but still positive at q
-        return convex_dip(w, p, q);
+        return convex_descent(w, p, qe);
     }
     if (p.g <= 0.0) {  // f' only falls: f decreasing throughout
         if (p.f <= 0.0) return p.t;
+        const Sample& q = qe.get(w);
         return q.f <= 0.0 ? find_root(w, p, q) : kInf;
     }
+    const Sample& q = qe.get(w);
     if (q.g >= 0.0) return kInf;  // increasing throughout
     if (p.f > 0.0) {
         // The maximum is positive too, so the only candidate is the crossing after it, and
@@ -310,14 +350,11 @@ int solve_quadratic(double a, double b, double c, double roots[2]) noexcept {
     return 2;
 }
 
-double first_contact_time(const Polynomial4& poly, double horizon) noexcept {
-    const std::array<double, 5>& c = poly.c;
-    if (!(horizon >= 0.0)) return kInf;
-    if (c[0] <= 0.0 && c[1] < 0.0) return 0.0;
-    if (horizon == 0.0) return kInf;
-    if (horizon == kInf) horizon = root_bound(c);
+namespace {
 
-    const double H = horizon;
+// The search proper, for 0 < H and coefficients whose terms |c_k| H^k are far from the
+// overflow and underflow limits (squares and cubes of f, f', f'' and t must stay finite).
+double contact_time_in_range(const std::array<double, 5>& c, double H) noexcept {
     const double H2 = H * H;
     const double H3 = H2 * H;
     const double H4 = H2 * H2;
@@ -352,30 +389,73 @@ double first_contact_time(const Polynomial4& poly, double horizon) noexcept {
     w.h[0] = 2.0 * c[2];
     w.h[1] = 6.0 * c[3];
     w.h[2] = 12.0 * c[4];
+    w.jerk[0] = 6.0 * std::fabs(c[3]);
+    w.jerk[1] = 24.0 * std::fabs(c[4]);
 
     // Inflection points of f split [0, H] into pieces of fixed convexity; within each piece f'
     // is monotone, so f has at most one turning point and the case analysis per piece is exact.
+    // Solving for them is skipped when monomial bounds already fix the sign of f''.
     double breaks[4];
     int n_breaks = 0;
     breaks[n_breaks++] = 0.0;
-    double inflections[2];
-    const int n_infl = solve_quadratic(w.h[2], w.h[1], w.h[0], inflections);
-    for (int i = 0; i < n_infl; ++i) {
-        if (inflections[i] > 0.0 && inflections[i] < H) breaks[n_breaks++] = inflections[i];
+    const double h_low = w.h[0] + std::min(0.0, w.h[1]) * H + std::min(0.0, w.h[2]) * H2;
+    const double h_high = w.h[0] + std::max(0.0, w.h[1]) * H + std::max(0.0, w.h[2]) * H2;
+    if (!(h_low > 0.0 || h_high < 0.0)) {
+        double inflections[2];
+        const int n_infl = solve_quadratic(w.h[2], w.h[1], w.h[0], inflections);
+        for (int i = 0; i < n_infl; ++i) {
+            if (inflections[i] > 0.0 && inflections[i] < H) breaks[n_breaks++] = inflections[i];
+        }
     }
     breaks[n_breaks++] = H;
 
     Sample p{0.0, c[0], c[1], w.h[0]};
     for (int i = 1; i < n_breaks; ++i) {
-        const Sample q = sample_at(w, breaks[i]);
+        PieceEnd q{breaks[i]};
         const double mid = 0.5 * (p.t + q.t);
         double curvature = (w.h[2] * mid + w.h[1]) * mid + w.h[0];
-        if (curvature == 0.0) curvature = q.g - p.g;
+        if (curvature == 0.0) curvature = q.get(w).g - p.g;
         const double t = solve_piece(w, p, q, curvature >= 0.0);
         if (t != kInf) return t;
-        p = q;
+        if (i + 1 < n_breaks) p = q.get(w);
     }
     return kInf;
+}
+
+}  // namespace
+
+double first_contact_time(const Polynomial4& poly, double horizon) noexcept {
+    const std::array<double, 5>& c = poly.c;
+    if (!(horizon >= 0.0)) return kInf;
+    if (c[0] <= 0.0 && c[1] < 0.0) return 0.0;
+    if (horizon == 0.0) return kInf;
+    if (horizon == kInf) {
+        horizon = root_bound(c);
+        if (!(horizon < kInf)) return kInf;  // leading coefficient negligible beyond double range
+    }
+
+    // Typical SI inputs pass straight through; only extreme scales pay for exact power-of-two
+    // rescaling of time (to H ~ 1) and of f (to its largest term ~ 1).
+    const double H = horizon;
+    const double mag = std::fabs(c[0]) + std::fabs(c[1]) * H + std::fabs(c[2]) * (H * H) +
+                       std::fabs(c[3]) * (H * H * H) + std::fabs(c[4]) * ((H * H) * (H * H));
+    if (mag == 0.0) return kInf;  // f == 0: f' is never negative
+    if (mag >= 1e-60 && mag <= 1e60 && H >= 1e-30 && H <= 1e30) {
+        return contact_time_in_range(c, H);
+    }
+    const int time_exp = std::ilogb(H);
+    int top = std::numeric_limits<int>::min();
+    for (int k = 0; k < 5; ++k) {
+        const double ck = c[static_cast<std::size_t>(k)];
+        if (ck != 0.0) top = std::max(top, std::ilogb(ck) + k * time_exp);
+    }
+    std::array<double, 5> scaled{};
+    for (int k = 0; k < 5; ++k) {
+        scaled[static_cast<std::size_t>(k)] =
+            std::scalbn(c[static_cast<std::size_t>(k)], k * time_exp - top);
+    }
+    const double t = contact_time_in_range(scaled, std::scalbn(H, -time_exp));
+    return t == kInf ? kInf : std::scalbn(t, time_exp);
 }
 
 }  // namespace termpool::core
