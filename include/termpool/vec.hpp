@@ -38,7 +38,7 @@ constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 /// Squared length.
 constexpr double length_squared(Vec2 v) { return dot(v, v); }
 /// Length.
-inline double length(Vec2 v) { return std::hypot(v.x, v.y); }
+inline double length(Vec2 v) { return std::sqrt(dot(v, v)); }
 /// The vector turned 90 degrees counter-clockwise.
 constexpr Vec2 perpendicular(Vec2 v) { return {-v.y, v.x}; }
 /// Unit vector in direction v, or zero for the zero vector.

@@ -68,6 +68,9 @@ struct World::Impl {
     std::vector<Slot> slots;
     std::vector<BoundaryEvent> boundary;
     std::vector<double> pair_time; // [i * n + j], i < j
+    // Earliest pair contact in each row of pair_time, so that finding the next event scans a
+    // column of n values rather than all n^2 / 2 pairs.
+    std::vector<double> row_min;
     double now = 0;
     std::size_t events = 0;
     std::vector<Event> pending; // reported by the next step before anything is simulated
@@ -79,6 +82,7 @@ struct World::Impl {
         slots.resize(balls.size());
         boundary.resize(balls.size());
         pair_time.assign(balls.size() * balls.size(), infinity);
+        row_min.assign(balls.size(), infinity);
         for (std::size_t i = 0; i < balls.size(); ++i) set_slot(i, balls[i]);
         for (std::size_t i = 0; i < slots.size(); ++i) refresh(i, i);
     }
@@ -122,8 +126,17 @@ struct World::Impl {
         if (recording) trajectory.add(i, now, ball);
     }
 
-    double& pair(std::size_t i, std::size_t j) {
-        return i < j ? pair_time[i * count() + j] : pair_time[j * count() + i];
+    void set_pair_time(std::size_t i, std::size_t j, double time) {
+        if (j < i) std::swap(i, j);
+        double& slot = pair_time[i * count() + j];
+        const double old = slot;
+        slot = time;
+        if (time <= row_min[i]) {
+            row_min[i] = time;
+        } else if (old == row_min[i]) {
+            row_min[i] = *std::min_element(pair_time.begin() + i * count() + i + 1,
+                                           pair_time.begin() + (i + 1) * count());
+        }
     }
 
     // Recomputes everything that depends on the motion of ball i; `other` is a ball that changed
@@ -132,7 +145,7 @@ struct World::Impl {
         boundary[i] = next_boundary(i);
         for (std::size_t k = 0; k < count(); ++k) {
             if (k == i || (k == other && k < i)) continue;
-            pair(i, k) = now + pair_contact(i, k);
+            set_pair_time(i, k, now + pair_contact(i, k));
         }
     }
 
@@ -148,7 +161,8 @@ struct World::Impl {
         if (!boxes_within(a.box_min, a.box_max, b.box_min, b.box_max, diameter)) return infinity;
         const double horizon = std::min(a.end, b.end) - now;
         if (seed_model()) return seed_pair_contact(i, k, horizon);
-        return core::path_path_contact_time(path_now(i), path_now(k), diameter, horizon);
+        const Path pa = path_now(i), pb = path_now(k);
+        return core::path_path_contact_time(pa, pb, diameter, horizon);
     }
 
     double seed_pair_contact(std::size_t i, std::size_t k, double horizon) const {
@@ -297,12 +311,15 @@ struct World::Impl {
             }
         }
         for (std::size_t i = 0; i < count(); ++i) {
-            for (std::size_t j = i + 1; j < count(); ++j) {
-                if (pair_time[i * count() + j] < best) {
-                    best = pair_time[i * count() + j];
-                    best_i = i;
-                    best_j = j;
-                    is_pair = true;
+            if (row_min[i] < best) {
+                const double* row = &pair_time[i * count()];
+                for (std::size_t j = i + 1; j < count(); ++j) {
+                    if (row[j] < best) {
+                        best = row[j];
+                        best_i = i;
+                        best_j = j;
+                        is_pair = true;
+                    }
                 }
             }
         }

@@ -1,0 +1,234 @@
+// `termpool bench`: times seeded breaks and random post-break shots on one core.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <termpool/rack.hpp>
+#include <termpool/random.hpp>
+#include <termpool/simulator.hpp>
+#include <termpool/table.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/numbers.hpp"
+
+namespace termpool::cli {
+namespace {
+
+constexpr const char* usage = "usage: termpool bench [--breaks N] [--shots N] [--seed S]\n"
+                              "  --breaks N  seeded 8-ball breaks to time (default 1000, N >= 1)\n"
+                              "  --shots N   random shots on the break layouts (default 10000)\n"
+                              "  --seed S    seed of the break angles and the shots (default 1)\n";
+
+constexpr double break_speed = 12.0;        // m/s, a firm break
+constexpr double break_angle_jitter = 0.5;  // degrees either way, so that breaks differ
+constexpr double shot_min_speed = 1.0;      // m/s
+constexpr double shot_max_speed = 4.0;      // m/s
+constexpr double shot_max_tip_offset = 0.3; // fraction of R, either way
+
+struct Options {
+    std::uint64_t breaks = 1000;
+    std::uint64_t shots = 10000;
+    std::uint64_t seed = 1;
+};
+
+/// The options, or nothing after a message on stderr (bad usage) or on stdout (--help).
+std::optional<Options> parse_options(const std::vector<std::string>& args, bool& help) {
+    Options options;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string name = args[i];
+        if (name == "-h" || name == "--help") {
+            help = true;
+            return std::nullopt;
+        }
+        std::optional<std::string> value;
+        if (const std::size_t eq = name.find('=');
+            name.starts_with("--") && eq != std::string::npos) {
+            value = name.substr(eq + 1);
+            name.resize(eq);
+        } else if (i + 1 < args.size()) {
+            value = args[++i];
+        }
+        std::uint64_t* target = name == "--breaks"  ? &options.breaks
+                                : name == "--shots" ? &options.shots
+                                : name == "--seed"  ? &options.seed
+                                                    : nullptr;
+        if (!target) {
+            std::fprintf(stderr, "termpool bench: unknown option '%s'\n", name.c_str());
+            return std::nullopt;
+        }
+        const std::optional<std::uint64_t> number =
+            value ? parse_uint64(*value) : std::optional<std::uint64_t>{};
+        if (!number) {
+            std::fprintf(stderr, "termpool bench: %s needs a non-negative integer\n", name.c_str());
+            return std::nullopt;
+        }
+        *target = *number;
+    }
+    if (options.breaks == 0) {
+        std::fputs("termpool bench: --breaks must be at least 1\n", stderr);
+        return std::nullopt;
+    }
+    return options;
+}
+
+/// Per-run timings and event counts of one part of the benchmark.
+struct Sample {
+    std::vector<double> micros;
+    std::uint64_t events = 0;
+    std::uint64_t cut_short = 0; ///< runs that hit World::max_events
+};
+
+/// Runs one shot and adds its time and events to `sample`.
+ShotResult timed_shot(const Table& table, const PhysicsParams& params,
+                      const std::vector<Ball>& balls, const Strike& strike, Sample& sample) {
+    const auto start = std::chrono::steady_clock::now();
+    ShotResult result = simulate_shot(table, params, balls, strike);
+    const auto stop = std::chrono::steady_clock::now();
+    sample.micros.push_back(std::chrono::duration<double, std::micro>(stop - start).count());
+    sample.events += result.events.size();
+    sample.cut_short += result.event_limit_hit ? 1 : 0;
+    return result;
+}
+
+/// The balls left on the table after a break, ready for another shot; nothing if the cue ball
+/// went down and its head-spot place is taken.
+std::optional<std::vector<Ball>> next_layout(const ShotResult& result, const Table& table,
+                                             const PhysicsParams& params) {
+    std::vector<Ball> balls;
+    bool cue_pocketed = false;
+    for (const Ball& b : result.balls) {
+        if (b.state != MotionState::pocketed) {
+            balls.push_back(b);
+        } else if (b.id == 0) {
+            cue_pocketed = true;
+        }
+    }
+    if (cue_pocketed) {
+        const Vec2 spot = table.head_spot();
+        for (const Ball& b : balls)
+            if (length(b.position - spot) < 2 * params.ball_radius)
+                return std::nullopt;
+        Ball cue;
+        cue.id = 0;
+        cue.mass = params.ball_mass;
+        cue.position = spot;
+        balls.insert(balls.begin(), cue);
+    }
+    return balls;
+}
+
+double percentile(std::vector<double> values, double fraction) {
+    std::sort(values.begin(), values.end());
+    // Nearest rank, so that the figure is one that was measured.
+    const auto rank = static_cast<std::size_t>(std::ceil(fraction * values.size()));
+    return values[std::max<std::size_t>(rank, 1) - 1];
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+void print_row(const char* label, const Sample& s) {
+    if (s.micros.empty()) {
+        std::printf("%-18s %8d %11s %9s %12s %12s %10s\n", label, 0, "-", "-", "-", "-", "-");
+        return;
+    }
+    double total = 0;
+    for (double m : s.micros)
+        total += m;
+    const double runs = static_cast<double>(s.micros.size());
+    std::printf("%-18s %8zu %11.1f %9.1f %12.1f %12.0f %10.0f\n", label, s.micros.size(),
+                median(s.micros), percentile(s.micros, 0.95), s.events / runs,
+                s.events / (total * 1e-6), runs / (total * 1e-6));
+}
+
+/// The processor's name from /proc/cpuinfo, where there is one.
+std::string cpu_name() {
+    std::ifstream in("/proc/cpuinfo");
+    for (std::string line; std::getline(in, line);) {
+        if (!line.starts_with("model name"))
+            continue;
+        const std::size_t colon = line.find(':');
+        if (colon != std::string::npos)
+            return line.substr(line.find_first_not_of(" \t", colon + 1));
+    }
+    return "unknown processor";
+}
+
+} // namespace
+
+int bench_command(const std::vector<std::string>& args) {
+    bool help = false;
+    const std::optional<Options> parsed = parse_options(args, help);
+    if (!parsed) {
+        std::fputs(usage, help ? stdout : stderr);
+        return help ? 0 : 2;
+    }
+    const Options options = *parsed;
+    const Table table = make_table(TableSize::nine_foot);
+    const PhysicsParams params;
+    Random rng(options.seed);
+
+    // Breaks: the cue ball on the head spot aimed at the apex ball on the foot spot.
+    const Vec2 aim = table.foot_spot() - table.head_spot();
+    const double aim_deg = std::atan2(aim.y, aim.x) * 180.0 / std::numbers::pi;
+    Sample breaks;
+    std::vector<std::vector<Ball>> layouts;
+    std::uint64_t unusable = 0;
+    for (std::uint64_t seed = 1; seed <= options.breaks; ++seed) {
+        const std::vector<Ball> rack = make_rack(table, params, RackType::eight_ball, seed);
+        const double angle = aim_deg + rng.uniform(-break_angle_jitter, break_angle_jitter);
+        const ShotResult result =
+            timed_shot(table, params, rack, Strike{break_speed, angle, 0, 0}, breaks);
+        auto layout = result.event_limit_hit ? std::nullopt : next_layout(result, table, params);
+        if (layout)
+            layouts.push_back(std::move(*layout));
+        else
+            ++unusable;
+    }
+
+    // Shots: random strikes on the break layouts, taken in turn.
+    Sample shots;
+    for (std::uint64_t k = 0; k < options.shots && !layouts.empty(); ++k) {
+        Strike strike;
+        strike.speed = rng.uniform(shot_min_speed, shot_max_speed);
+        strike.angle_deg = rng.uniform(0, 360);
+        strike.side = rng.uniform(-shot_max_tip_offset, shot_max_tip_offset);
+        strike.follow = rng.uniform(-shot_max_tip_offset, shot_max_tip_offset);
+        timed_shot(table, params, layouts[k % layouts.size()], strike, shots);
+    }
+
+    std::printf("termpool bench: 9ft table, default physics, seed %llu\n",
+                static_cast<unsigned long long>(options.seed));
+    std::printf("measured on one core (single thread) of: %s\n\n", cpu_name().c_str());
+    std::printf("%-18s %8s %11s %9s %12s %12s %10s\n", "", "runs", "median us", "p95 us",
+                "events/run", "events/s", "runs/s");
+    print_row("breaks (12 m/s)", breaks);
+    print_row("shots (1-4 m/s)", shots);
+    std::printf("\n");
+    std::printf("breaks: racks seeded 1..%llu, aimed at the apex +-%s deg\n",
+                static_cast<unsigned long long>(options.breaks),
+                format_number(break_angle_jitter).c_str());
+    std::printf("shots:  speed 1..4 m/s, any angle, tip offsets within +-%s R, on the %zu break "
+                "layouts in turn\n",
+                format_number(shot_max_tip_offset).c_str(), layouts.size());
+    if (unusable > 0)
+        std::printf("        (%llu layouts left out: cut short, or the cue ball pocketed and the "
+                    "head spot taken)\n",
+                    static_cast<unsigned long long>(unusable));
+    if (breaks.cut_short + shots.cut_short > 0)
+        std::printf("warning: %llu runs stopped at the limit of %zu events\n",
+                    static_cast<unsigned long long>(breaks.cut_short + shots.cut_short),
+                    World::max_events);
+    return 0;
+}
+
+} // namespace termpool::cli

@@ -1,0 +1,476 @@
+#include "cli/scenario.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <termpool/rack.hpp>
+
+#include "cli/numbers.hpp"
+
+namespace termpool::cli {
+namespace {
+
+/// A line that holds a directive: its number and its fields, comment removed.
+struct Line {
+    int number = 0;
+    std::vector<std::string_view> fields; ///< fields[0] is the directive's name
+    /// Number of fields after the name.
+    std::size_t arguments() const { return fields.size() - 1; }
+    /// Field `i` after the name (0-based).
+    std::string_view arg(std::size_t i) const { return fields[i + 1]; }
+};
+
+/// A problem with one line, before the line number is attached; empty when all is well.
+using Problem = std::optional<std::string>;
+
+/// A `ball` line, kept until the parameters are final (R and m may come later in the file).
+struct BallLine {
+    int line = 0;
+    Ball ball;
+    bool has_mass = false;
+};
+
+/// Everything the directives said, not yet checked against each other.
+struct Draft {
+    PhysicsParams params;
+    TableSize size = TableSize::nine_foot;
+    std::optional<int> rack_line;
+    RackType rack = RackType::eight_ball;
+    std::optional<std::uint64_t> rack_seed;
+    std::optional<int> strike_line;
+    Strike strike;
+    std::vector<BallLine> balls;
+    /// Directives that may appear once ("table", "param R", ...) and the line that gave them.
+    std::map<std::string, int, std::less<>> given;
+};
+
+constexpr std::string_view whitespace = " \t\r\v\f";
+
+std::vector<Line> split_lines(std::string_view text) {
+    std::vector<Line> lines;
+    int number = 0;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos)
+            end = text.size();
+        std::string_view rest = text.substr(start, end - start);
+        start = end + 1;
+        ++number;
+        rest = rest.substr(0, rest.find('#'));
+        Line line{number, {}};
+        for (;;) {
+            const std::size_t first = rest.find_first_not_of(whitespace);
+            if (first == std::string_view::npos)
+                break;
+            rest.remove_prefix(first);
+            const std::size_t last = std::min(rest.find_first_of(whitespace), rest.size());
+            line.fields.push_back(rest.substr(0, last));
+            rest.remove_prefix(last);
+        }
+        if (!line.fields.empty())
+            lines.push_back(std::move(line));
+    }
+    return lines;
+}
+
+std::string quoted(std::string_view text) {
+    return "'" + std::string(text) + "'";
+}
+
+/// Refuses a line with fewer than `min` or more than `max` fields after the name.
+Problem arity(const Line& line, std::size_t min, std::size_t max, std::string_view usage) {
+    if (line.arguments() < min)
+        return "missing field (usage: " + std::string(usage) + ")";
+    if (line.arguments() > max)
+        return "extra field " + quoted(line.arg(max)) + " (usage: " + std::string(usage) + ")";
+    return {};
+}
+
+/// Reads a finite number into `out`; `what` names the field in the message.
+Problem number(std::string_view text, std::string_view what, double& out) {
+    const std::optional<double> value = parse_double(text);
+    if (!value)
+        return std::string(what) + " " + quoted(text) + " is not a number";
+    if (!std::isfinite(*value))
+        return std::string(what) + " " + quoted(text) + " is not finite";
+    out = *value;
+    return {};
+}
+
+/// Refuses a second directive of a kind that may appear only once.
+Problem once(Draft& draft, const std::string& key, const Line& line) {
+    const auto [it, inserted] = draft.given.emplace(key, line.number);
+    if (inserted)
+        return {};
+    return "more than one " + quoted(key) + " line (the first is line " +
+           std::to_string(it->second) + ")";
+}
+
+Problem parse_table(const Line& line, Draft& draft) {
+    if (Problem p = arity(line, 1, 1, "table 9ft|8ft|7ft"))
+        return p;
+    if (Problem p = once(draft, "table", line))
+        return p;
+    const std::string_view size = line.arg(0);
+    if (size == "9ft") {
+        draft.size = TableSize::nine_foot;
+    } else if (size == "8ft") {
+        draft.size = TableSize::eight_foot;
+    } else if (size == "7ft") {
+        draft.size = TableSize::seven_foot;
+    } else {
+        return "unknown table size " + quoted(size) + " (expected 9ft, 8ft or 7ft)";
+    }
+    return {};
+}
+
+/// `collision` and `cushion` both choose between a physical and an ideal model.
+template <class Model>
+Problem parse_model(const Line& line, Draft& draft, Model& out, const char* usage) {
+    if (Problem p = arity(line, 1, 1, usage))
+        return p;
+    const std::string key(line.fields[0]);
+    if (Problem p = once(draft, key, line))
+        return p;
+    if (line.arg(0) == "physical") {
+        out = Model::physical;
+    } else if (line.arg(0) == "ideal") {
+        out = Model::ideal;
+    } else {
+        return "unknown " + key + " model " + quoted(line.arg(0)) + " (expected physical or ideal)";
+    }
+    return {};
+}
+
+Problem parse_collision(const Line& line, Draft& draft) {
+    return parse_model(line, draft, draft.params.collision, "collision physical|ideal");
+}
+
+Problem parse_cushion(const Line& line, Draft& draft) {
+    return parse_model(line, draft, draft.params.cushion, "cushion physical|ideal");
+}
+
+/// Reads a constant of a seed friction model, which must be positive.
+Problem positive(std::string_view text, std::string_view what, double& out) {
+    if (Problem p = number(text, what, out))
+        return p;
+    if (out <= 0)
+        return std::string(what) + " must be > 0 (got " + std::string(text) + ")";
+    return {};
+}
+
+Problem parse_friction(const Line& line, Draft& draft) {
+    constexpr const char* usage = "friction physical | decay K | constant A | combined K A";
+    if (Problem p = arity(line, 1, 3, usage))
+        return p;
+    if (Problem p = once(draft, "friction", line))
+        return p;
+    FrictionModel& model = draft.params.friction;
+    const std::string_view kind = line.arg(0);
+    if (kind == "physical") {
+        model.kind = FrictionKind::physical;
+        return arity(line, 1, 1, usage);
+    }
+    if (kind == "decay") {
+        model.kind = FrictionKind::decay;
+        if (Problem p = arity(line, 2, 2, usage))
+            return p;
+        return positive(line.arg(1), "decay rate K", model.decay_rate);
+    }
+    if (kind == "constant") {
+        model.kind = FrictionKind::constant;
+        if (Problem p = arity(line, 2, 2, usage))
+            return p;
+        return positive(line.arg(1), "deceleration A", model.deceleration);
+    }
+    if (kind == "combined") {
+        model.kind = FrictionKind::combined;
+        if (Problem p = arity(line, 3, 3, usage))
+            return p;
+        if (Problem p = positive(line.arg(1), "decay rate K", model.decay_rate))
+            return p;
+        return positive(line.arg(2), "deceleration A", model.deceleration);
+    }
+    return "unknown friction model " + quoted(kind) +
+           " (expected physical, decay, constant or combined)";
+}
+
+/// What values of a parameter make physical sense.
+enum class Range { non_negative, unit_interval, positive };
+
+struct ParamSpec {
+    std::string_view name;
+    double PhysicsParams::*field;
+    Range range;
+};
+
+constexpr ParamSpec param_specs[] = {
+    {"u_s", &PhysicsParams::sliding_friction, Range::non_negative},
+    {"u_r", &PhysicsParams::rolling_friction, Range::non_negative},
+    {"u_sp", &PhysicsParams::spin_friction, Range::non_negative},
+    {"e_b", &PhysicsParams::ball_restitution, Range::unit_interval},
+    {"u_b", &PhysicsParams::ball_friction, Range::non_negative},
+    {"e_c", &PhysicsParams::cushion_restitution, Range::unit_interval},
+    {"f_c", &PhysicsParams::cushion_friction, Range::non_negative},
+    {"g", &PhysicsParams::gravity, Range::positive},
+    {"R", &PhysicsParams::ball_radius, Range::positive},
+    {"m", &PhysicsParams::ball_mass, Range::positive},
+};
+
+Problem parse_param(const Line& line, Draft& draft) {
+    if (Problem p = arity(line, 2, 2, "param NAME VALUE"))
+        return p;
+    const std::string_view name = line.arg(0);
+    const auto spec = std::find_if(std::begin(param_specs), std::end(param_specs),
+                                   [&](const ParamSpec& s) { return s.name == name; });
+    if (spec == std::end(param_specs))
+        return "unknown parameter " + quoted(name) +
+               " (expected u_s, u_r, u_sp, e_b, u_b, e_c, f_c, g, R or m)";
+    if (Problem p = once(draft, "param " + std::string(name), line))
+        return p;
+    double value = 0;
+    if (Problem p = number(line.arg(1), name, value))
+        return p;
+    const std::string got = " (got " + std::string(line.arg(1)) + ")";
+    switch (spec->range) {
+    case Range::non_negative:
+        if (value < 0)
+            return std::string(name) + " must be >= 0" + got;
+        break;
+    case Range::unit_interval:
+        if (value < 0 || value > 1)
+            return std::string(name) + " must be between 0 and 1" + got;
+        break;
+    case Range::positive:
+        if (value <= 0)
+            return std::string(name) + " must be > 0" + got;
+        break;
+    }
+    draft.params.*spec->field = value;
+    return {};
+}
+
+Problem parse_ball(const Line& line, Draft& draft) {
+    if (Problem p = arity(line, 3, 4, "ball ID X Y [mass=KG]"))
+        return p;
+    const std::optional<long long> id = parse_integer(line.arg(0));
+    if (!id)
+        return "ball id " + quoted(line.arg(0)) + " is not an integer";
+    if (*id < 0 || *id > 15)
+        return "ball id " + std::to_string(*id) + " is outside 0..15";
+    BallLine ball{line.number, {}, false};
+    ball.ball.id = static_cast<int>(*id);
+    for (const BallLine& other : draft.balls) {
+        if (other.ball.id == ball.ball.id)
+            return "duplicate ball " + std::to_string(*id) + " (already placed on line " +
+                   std::to_string(other.line) + ")";
+    }
+    if (Problem p = number(line.arg(1), "x", ball.ball.position.x))
+        return p;
+    if (Problem p = number(line.arg(2), "y", ball.ball.position.y))
+        return p;
+    if (line.arguments() == 4) {
+        constexpr std::string_view prefix = "mass=";
+        const std::string_view field = line.arg(3);
+        if (!field.starts_with(prefix))
+            return "unknown field " + quoted(field) + " (expected mass=KG)";
+        if (Problem p = number(field.substr(prefix.size()), "mass", ball.ball.mass))
+            return p;
+        if (ball.ball.mass <= 0)
+            return "mass must be > 0 (got " + std::string(field.substr(prefix.size())) + ")";
+        ball.has_mass = true;
+    }
+    draft.balls.push_back(ball);
+    return {};
+}
+
+Problem parse_rack(const Line& line, Draft& draft) {
+    if (Problem p = arity(line, 1, 2, "rack 8ball|9ball [SEED]"))
+        return p;
+    if (Problem p = once(draft, "rack", line))
+        return p;
+    if (line.arg(0) == "8ball") {
+        draft.rack = RackType::eight_ball;
+    } else if (line.arg(0) == "9ball") {
+        draft.rack = RackType::nine_ball;
+    } else {
+        return "unknown rack " + quoted(line.arg(0)) + " (expected 8ball or 9ball)";
+    }
+    if (line.arguments() == 2) {
+        draft.rack_seed = parse_uint64(line.arg(1));
+        if (!draft.rack_seed)
+            return "seed " + quoted(line.arg(1)) + " is not an unsigned 64-bit integer";
+    }
+    draft.rack_line = line.number;
+    return {};
+}
+
+/// Reads a tip offset, a fraction of R within +-0.5.
+Problem tip_offset(std::string_view text, std::string_view what, double& out) {
+    if (Problem p = number(text, what, out))
+        return p;
+    if (std::abs(out) > 0.5)
+        return std::string(what) + " " + std::string(text) + " is outside -0.5..0.5";
+    return {};
+}
+
+Problem parse_strike(const Line& line, Draft& draft) {
+    constexpr const char* usage = "strike V PHI [A B]";
+    if (Problem p = arity(line, 2, 4, usage))
+        return p;
+    if (line.arguments() == 3)
+        return arity(line, 4, 4, usage);
+    if (Problem p = once(draft, "strike", line))
+        return p;
+    Strike& s = draft.strike;
+    if (Problem p = number(line.arg(0), "speed", s.speed))
+        return p;
+    if (s.speed < 0 || s.speed > max_strike_speed)
+        return "speed " + std::string(line.arg(0)) + " is outside 0.." +
+               format_number(max_strike_speed) + " m/s";
+    if (Problem p = number(line.arg(1), "angle", s.angle_deg))
+        return p;
+    if (line.arguments() == 4) {
+        if (Problem p = tip_offset(line.arg(2), "side offset", s.side))
+            return p;
+        if (Problem p = tip_offset(line.arg(3), "follow offset", s.follow))
+            return p;
+    }
+    draft.strike_line = line.number;
+    return {};
+}
+
+using Handler = Problem (*)(const Line&, Draft&);
+
+struct Directive {
+    std::string_view name;
+    Handler handler;
+};
+
+constexpr Directive directives[] = {
+    {"table", parse_table},       {"collision", parse_collision}, {"cushion", parse_cushion},
+    {"friction", parse_friction}, {"param", parse_param},         {"ball", parse_ball},
+    {"rack", parse_rack},         {"strike", parse_strike},
+};
+
+/// A ball about to go on the table, with the line that put it there.
+struct Placed {
+    int line = 0;
+    Ball ball;
+    bool from_rack = false;
+};
+
+std::string describe(const Placed& p) {
+    return (p.from_rack ? "rack ball " : "ball ") + std::to_string(p.ball.id);
+}
+
+std::string position_text(Vec2 p) {
+    return "(" + format_number(p.x) + ", " + format_number(p.y) + ")";
+}
+
+/// Every ball of the ball lines and the rack, or the first duplicate between the two.
+std::variant<std::vector<Placed>, ScenarioError> gather_balls(const Draft& draft,
+                                                              const Scenario& scenario) {
+    std::vector<Placed> placed;
+    for (const BallLine& b : draft.balls) {
+        Placed p{b.line, b.ball, false};
+        // The default mass is known only now that every `param m` has been read.
+        if (!b.has_mass)
+            p.ball.mass = scenario.params.ball_mass;
+        placed.push_back(p);
+    }
+    if (!draft.rack_line)
+        return placed;
+    const int rack_line = *draft.rack_line;
+    for (const Ball& ball :
+         make_rack(scenario.table, scenario.params, draft.rack, draft.rack_seed)) {
+        const auto line = std::find_if(draft.balls.begin(), draft.balls.end(),
+                                       [&](const BallLine& b) { return b.ball.id == ball.id; });
+        if (line == draft.balls.end()) {
+            placed.push_back({rack_line, ball, true});
+            continue;
+        }
+        if (ball.id == 0)
+            continue; // a `ball 0` line moves the rack's cue ball
+        const std::string id = std::to_string(ball.id);
+        if (line->line > rack_line)
+            return ScenarioError{line->line, "duplicate ball " + id +
+                                                 " (already in the rack on line " +
+                                                 std::to_string(rack_line) + ")"};
+        return ScenarioError{rack_line, "duplicate ball " + id + ": the rack places it, but line " +
+                                            std::to_string(line->line) + " already did"};
+    }
+    return placed;
+}
+
+/// Checks the positions in line order, so that an error names the later of two lines.
+std::optional<ScenarioError> check_positions(std::vector<Placed>& placed,
+                                             const Scenario& scenario) {
+    std::stable_sort(placed.begin(), placed.end(),
+                     [](const Placed& a, const Placed& b) { return a.line < b.line; });
+    const double R = scenario.params.ball_radius;
+    // Rack balls are packed with a gap that their jitter may close, so touching is allowed.
+    constexpr double tolerance = 1e-9;
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+        const Placed& p = placed[i];
+        if (!on_playing_surface(scenario.table, p.ball.position, R))
+            return ScenarioError{p.line, describe(p) + " at " + position_text(p.ball.position) +
+                                             " is off the table"};
+        for (std::size_t j = 0; j < i; ++j) {
+            const Placed& q = placed[j];
+            if (length(p.ball.position - q.ball.position) >= 2 * R - tolerance)
+                continue;
+            const std::string where =
+                q.line == p.line ? "" : " (line " + std::to_string(q.line) + ")";
+            return ScenarioError{p.line, describe(p) + " at " + position_text(p.ball.position) +
+                                             " overlaps " + describe(q) + where};
+        }
+    }
+    return std::nullopt;
+}
+
+/// Puts the checked directives together: the table and balls follow the final parameters.
+ScenarioResult build(const Draft& draft) {
+    Scenario scenario;
+    scenario.params = draft.params;
+    scenario.table = make_table(draft.size, scenario.params.ball_radius);
+    auto gathered = gather_balls(draft, scenario);
+    if (auto* error = std::get_if<ScenarioError>(&gathered))
+        return *error;
+    std::vector<Placed>& placed = std::get<std::vector<Placed>>(gathered);
+    if (auto error = check_positions(placed, scenario))
+        return *error;
+
+    const bool has_cue =
+        std::any_of(placed.begin(), placed.end(), [](const Placed& p) { return p.ball.id == 0; });
+    if (draft.strike_line && !has_cue)
+        return ScenarioError{*draft.strike_line, "strike without a cue ball (no ball 0)"};
+
+    std::sort(placed.begin(), placed.end(),
+              [](const Placed& a, const Placed& b) { return a.ball.id < b.ball.id; });
+    for (const Placed& p : placed)
+        scenario.balls.push_back(p.ball);
+    if (draft.strike_line)
+        scenario.strike = draft.strike;
+    return scenario;
+}
+
+} // namespace
+
+ScenarioResult parse_scenario(std::string_view text) {
+    Draft draft;
+    for (const Line& line : split_lines(text)) {
+        const std::string_view name = line.fields[0];
+        const auto directive = std::find_if(std::begin(directives), std::end(directives),
+                                            [&](const Directive& d) { return d.name == name; });
+        if (directive == std::end(directives))
+            return ScenarioError{line.number, "unknown directive " + quoted(name)};
+        if (Problem p = directive->handler(line, draft))
+            return ScenarioError{line.number, *p};
+    }
+    return build(draft);
+}
+
+} // namespace termpool::cli

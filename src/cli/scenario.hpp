@@ -1,0 +1,41 @@
+#pragma once
+/// \file
+/// The input of `termpool simulate`: text in, a validated scenario or the first error out.
+/// No I/O happens here, so that the format can be tested without running the binary.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <termpool/ball.hpp>
+#include <termpool/params.hpp>
+#include <termpool/simulator.hpp>
+#include <termpool/table.hpp>
+#include <variant>
+#include <vector>
+
+namespace termpool::cli {
+
+/// A scenario that passed every check and can be handed to the simulator as it is.
+struct Scenario {
+    Table table = make_table(TableSize::nine_foot); ///< built for `params.ball_radius`
+    PhysicsParams params;                           ///< defaults with every directive applied
+    std::vector<Ball> balls;                        ///< at rest, in ascending id order
+    std::optional<Strike> strike;                   ///< the shot; none means "just print"
+};
+
+/// Why a scenario was refused.
+struct ScenarioError {
+    int line = 0;        ///< 1-based line of the offending directive
+    std::string message; ///< what is wrong, without file name and line number
+};
+
+/// Either the scenario or the error that refused it.
+using ScenarioResult = std::variant<Scenario, ScenarioError>;
+
+/// Parses and validates the text of a scenario (see README.md, "Simulator input and output").
+/// Errors that a line shows on its own (syntax, ranges, repeated directives) are reported
+/// first, in line order; then those that need the whole file (positions, overlaps, the cue
+/// ball), at the later of the lines involved.
+ScenarioResult parse_scenario(std::string_view text);
+
+} // namespace termpool::cli

@@ -1,0 +1,37 @@
+#include "cli/shot_output.hpp"
+
+#include "cli/numbers.hpp"
+
+namespace termpool::cli {
+
+std::string format_event(const Event& event) {
+    std::string line = "event " + format_number(event.time) + " " + event_kind_name(event.kind) +
+                       " " + std::to_string(event.ball);
+    // The format names the other party only where it is a ball or a pocket, not for rails.
+    if (event.kind == EventKind::ball_ball || event.kind == EventKind::pocket)
+        line += " " + std::to_string(event.other);
+    return line + "\n";
+}
+
+std::string format_ball(const Ball& ball) {
+    std::string line = "ball " + std::to_string(ball.id) + " " + format_number(ball.position.x) +
+                       " " + format_number(ball.position.y);
+    if (ball.state == MotionState::pocketed)
+        line += " pocket " + std::to_string(ball.pocket);
+    else
+        line += " table";
+    return line + "\n";
+}
+
+std::string format_shot(const std::vector<Event>& events, const std::vector<Ball>& balls,
+                        double rest_time) {
+    std::string out;
+    for (const Event& e : events)
+        out += format_event(e);
+    for (const Ball& b : balls)
+        out += format_ball(b);
+    out += "rest " + format_number(rest_time) + "\n";
+    return out;
+}
+
+} // namespace termpool::cli

@@ -1,0 +1,364 @@
+// Unit tests of the scenario parser behind `termpool simulate` and of its number helpers.
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <string>
+#include <termpool/rack.hpp>
+
+#include "cli/numbers.hpp"
+#include "cli/scenario.hpp"
+
+using termpool::cli::parse_scenario;
+using termpool::cli::Scenario;
+using termpool::cli::ScenarioError;
+
+namespace {
+
+// A 9ft table is 2.54 x 1.27 m; R = 0.028575 m.
+
+Scenario parsed(const std::string& text) {
+    auto result = parse_scenario(text);
+    if (const auto* error = std::get_if<ScenarioError>(&result))
+        FAIL("unexpected error on line " << error->line << ": " << error->message);
+    return std::get<Scenario>(std::move(result));
+}
+
+ScenarioError refused(const std::string& text) {
+    auto result = parse_scenario(text);
+    REQUIRE(std::holds_alternative<ScenarioError>(result));
+    return std::get<ScenarioError>(result);
+}
+
+struct BadCase {
+    const char* text;
+    int line;
+    const char* says;
+};
+
+void check_refusals(std::initializer_list<BadCase> cases) {
+    for (const BadCase& c : cases) {
+        INFO("input:\n" << c.text);
+        const ScenarioError e = refused(c.text);
+        INFO("message: " << e.message);
+        CHECK(e.line == c.line);
+        CHECK(e.message.find(c.says) != std::string::npos);
+    }
+}
+
+} // namespace
+
+TEST_CASE("an empty scenario is a 9ft table with default physics and no balls", "[scenario]") {
+    const Scenario s = parsed("");
+    CHECK(s.table.size == termpool::TableSize::nine_foot);
+    CHECK(s.balls.empty());
+    CHECK_FALSE(s.strike);
+    CHECK(s.params.ball_radius == termpool::PhysicsParams{}.ball_radius);
+}
+
+TEST_CASE("comments, blank lines, tabs and CRLF are ignored", "[scenario]") {
+    const Scenario s = parsed("# a comment line\n"
+                              "\n"
+                              "   \t  \n"
+                              "table\t7ft   # trailing comment\r\n"
+                              "\tball 0  0.5\t0.5\r\n"
+                              "#ball 1 0.5 0.5   (commented out, would overlap)\n");
+    CHECK(s.table.size == termpool::TableSize::seven_foot);
+    REQUIRE(s.balls.size() == 1);
+    CHECK(s.balls[0].position.x == 0.5);
+}
+
+TEST_CASE("table sizes", "[scenario]") {
+    CHECK(parsed("table 9ft").table.length == Approx(2.54));
+    CHECK(parsed("table 8ft").table.length == Approx(2.34));
+    CHECK(parsed("table 7ft").table.width == Approx(0.99));
+}
+
+TEST_CASE("collision, cushion and friction models", "[scenario]") {
+    using namespace termpool;
+    const Scenario s = parsed("collision ideal\ncushion ideal\nfriction decay 0.5\n");
+    CHECK(s.params.collision == CollisionModel::ideal);
+    CHECK(s.params.cushion == CushionModel::ideal);
+    CHECK(s.params.friction.kind == FrictionKind::decay);
+    CHECK(s.params.friction.decay_rate == 0.5);
+
+    const Scenario physical = parsed("collision physical\ncushion physical\nfriction physical");
+    CHECK(physical.params.collision == CollisionModel::physical);
+    CHECK(physical.params.cushion == CushionModel::physical);
+    CHECK(physical.params.friction.kind == FrictionKind::physical);
+
+    const Scenario constant = parsed("friction constant 0.3");
+    CHECK(constant.params.friction.kind == FrictionKind::constant);
+    CHECK(constant.params.friction.deceleration == 0.3);
+
+    const Scenario combined = parsed("friction combined 0.4 0.2");
+    CHECK(combined.params.friction.kind == FrictionKind::combined);
+    CHECK(combined.params.friction.decay_rate == 0.4);
+    CHECK(combined.params.friction.deceleration == 0.2);
+}
+
+TEST_CASE("every param sets its field", "[scenario]") {
+    const Scenario s = parsed("param u_s 0.21\nparam u_r 0.011\nparam u_sp 0.013\n"
+                              "param e_b 0.9\nparam u_b 0.06\nparam e_c 0.8\nparam f_c 0.25\n"
+                              "param g 9.8\nparam R 0.03\nparam m 0.16\n");
+    const termpool::PhysicsParams& p = s.params;
+    CHECK(p.sliding_friction == 0.21);
+    CHECK(p.rolling_friction == 0.011);
+    CHECK(p.spin_friction == 0.013);
+    CHECK(p.ball_restitution == 0.9);
+    CHECK(p.ball_friction == 0.06);
+    CHECK(p.cushion_restitution == 0.8);
+    CHECK(p.cushion_friction == 0.25);
+    CHECK(p.gravity == 9.8);
+    CHECK(p.ball_radius == 0.03);
+    CHECK(p.ball_mass == 0.16);
+    // Edges of the allowed ranges are fine.
+    CHECK(parsed("param u_s 0\nparam e_b 1\nparam e_c 0").params.ball_restitution == 1);
+}
+
+TEST_CASE("balls come out in id order with their masses", "[scenario]") {
+    const Scenario s = parsed("ball 3 1.0 0.5\nball 0 0.5 0.5 mass=0.2\nball 15 2 1\n");
+    REQUIRE(s.balls.size() == 3);
+    CHECK(s.balls[0].id == 0);
+    CHECK(s.balls[0].mass == 0.2);
+    CHECK(s.balls[1].id == 3);
+    CHECK(s.balls[1].mass == termpool::PhysicsParams{}.ball_mass);
+    CHECK(s.balls[1].position.x == 1.0);
+    CHECK(s.balls[1].position.y == 0.5);
+    CHECK(s.balls[2].id == 15);
+    for (const termpool::Ball& b : s.balls)
+        CHECK(b.state == termpool::MotionState::stationary);
+}
+
+TEST_CASE("params apply before the balls are built, whatever the order", "[scenario]") {
+    // 0.05 from the cushion is on the table for R = 0.028575 but not for R = 0.06.
+    const ScenarioError e = refused("ball 1 0.05 0.5\nparam R 0.06\n");
+    CHECK(e.line == 1);
+    CHECK(e.message.find("off the table") != std::string::npos);
+
+    // 0.05 apart overlaps for R = 0.028575 but not for R = 0.02.
+    const Scenario s = parsed("ball 1 1 0.5\nball 2 1.05 0.5\nparam R 0.02\nparam m 0.1\n");
+    CHECK(s.params.ball_radius == 0.02);
+    CHECK(s.balls[0].mass == 0.1); // the default mass is the final one
+    CHECK(s.balls[1].mass == 0.1);
+
+    // The table follows the final R too.
+    CHECK(parsed("param R 0.03\ntable 8ft").table.length == Approx(2.34));
+}
+
+TEST_CASE("the rack places 15 balls and a cue ball on the head spot", "[scenario]") {
+    const Scenario s = parsed("rack 8ball");
+    REQUIRE(s.balls.size() == 16);
+    for (std::size_t i = 0; i < s.balls.size(); ++i)
+        CHECK(s.balls[i].id == int(i));
+    CHECK(s.balls[0].position == s.table.head_spot());
+
+    const termpool::Ball& apex = s.balls[1]; // ball 1 is at the apex of the unseeded 8-ball rack
+    CHECK(apex.position == s.table.foot_spot());
+
+    const Scenario nine = parsed("rack 9ball");
+    CHECK(nine.balls.size() == 10);
+
+    const Scenario seeded = parsed("rack 8ball 7");
+    const Scenario again = parsed("rack 8ball 7");
+    CHECK(seeded.balls == again.balls);
+    CHECK(seeded.balls != s.balls);
+    CHECK(parsed("rack 8ball 18446744073709551615").balls.size() == 16);
+}
+
+TEST_CASE("a ball 0 line moves the rack's cue ball; other ids add to a 9-ball rack", "[scenario]") {
+    const Scenario s = parsed("rack 9ball\nball 0 0.4 0.3\nball 12 0.4 1.0\n");
+    REQUIRE(s.balls.size() == 11);
+    CHECK(s.balls[0].position.x == 0.4);
+    CHECK(s.balls[0].position.y == 0.3);
+    CHECK(s.balls.back().id == 12);
+    // A ball line before the rack line works the same.
+    CHECK(parsed("ball 0 0.4 0.3\nrack 8ball").balls[0].position.x == 0.4);
+}
+
+TEST_CASE("strike with and without tip offsets", "[scenario]") {
+    const Scenario s = parsed("ball 0 0.5 0.5\nstrike 3.5 -45\n");
+    REQUIRE(s.strike);
+    CHECK(s.strike->speed == 3.5);
+    CHECK(s.strike->angle_deg == -45);
+    CHECK(s.strike->side == 0);
+    CHECK(s.strike->follow == 0);
+
+    const Scenario t = parsed("strike 20 90 -0.5 +0.5\nball 0 0.5 0.5\n");
+    CHECK(t.strike->speed == 20);
+    CHECK(t.strike->side == -0.5);
+    CHECK(t.strike->follow == 0.5);
+    CHECK(parsed("ball 0 0.5 0.5\nstrike 0 0").strike->speed == 0);
+}
+
+TEST_CASE("balls that touch exactly are allowed", "[scenario]") {
+    CHECK(parsed("param R 0.025\nball 1 1 0.5\nball 2 1.05 0.5\n").balls.size() == 2);
+    // On the cushion line is still on the table.
+    CHECK(parsed("param R 0.025\nball 1 0.025 0.025\nball 2 2.515 1.245").balls.size() == 2);
+}
+
+TEST_CASE("unknown directives and wrong field counts name the line", "[scenario]") {
+    check_refusals({
+        {"table 9ft\nbounce 1 2\n", 2, "unknown directive 'bounce'"},
+        {"\n\n# x\nTable 9ft\n", 4, "unknown directive"},
+        {"table\n", 1, "missing field"},
+        {"table 9ft 8ft\n", 1, "extra field '8ft'"},
+        {"table 10ft\n", 1, "unknown table size"},
+        {"collision\n", 1, "missing field"},
+        {"collision soft\n", 1, "unknown collision model"},
+        {"cushion ideal ideal\n", 1, "extra field"},
+        {"cushion bouncy\n", 1, "unknown cushion model"},
+        {"friction\n", 1, "missing field"},
+        {"friction sticky\n", 1, "unknown friction model"},
+        {"friction physical 1\n", 1, "extra field"},
+        {"friction decay\n", 1, "missing field"},
+        {"friction decay 1 2\n", 1, "extra field"},
+        {"friction constant\n", 1, "missing field"},
+        {"friction combined 1\n", 1, "missing field"},
+        {"friction combined 1 2 3\n", 1, "extra field"},
+        {"param u_s\n", 1, "missing field"},
+        {"param u_s 1 2\n", 1, "extra field"},
+        {"param mu 0.2\n", 1, "unknown parameter 'mu'"},
+        {"ball 1 0.5\n", 1, "missing field"},
+        {"ball 1 0.5 0.5 mass=0.1 x\n", 1, "extra field"},
+        {"ball 1 0.5 0.5 weight=0.1\n", 1, "unknown field 'weight=0.1'"},
+        {"rack\n", 1, "missing field"},
+        {"rack 8ball 1 2\n", 1, "extra field"},
+        {"rack 10ball\n", 1, "unknown rack"},
+        {"strike\n", 1, "missing field"},
+        {"ball 0 1 1\nstrike 1\n", 2, "missing field"},
+        {"ball 0 1 1\nstrike 1 0 0.1\n", 2, "missing field"},
+        {"ball 0 1 1\nstrike 1 0 0.1 0.1 0\n", 2, "extra field"},
+    });
+}
+
+TEST_CASE("non-numeric, NaN and infinite fields are refused", "[scenario]") {
+    check_refusals({
+        {"ball 1 abc 0.5\n", 1, "x 'abc' is not a number"},
+        {"ball 1 0.5 0.5e\n", 1, "y '0.5e' is not a number"},
+        {"ball 1 1,5 0.5\n", 1, "not a number"},
+        {"ball 1 nan 0.5\n", 1, "x 'nan' is not finite"},
+        {"ball 1 0.5 inf\n", 1, "not finite"},
+        {"ball 1 0.5 -infinity\n", 1, "not finite"},
+        {"ball 1 1e999 0.5\n", 1, "not finite"},
+        {"ball 1 0.5 0.5 mass=nan\n", 1, "not finite"},
+        {"ball 1 0.5 0.5 mass=\n", 1, "mass '' is not a number"},
+        {"ball one 0.5 0.5\n", 1, "ball id 'one' is not an integer"},
+        {"ball 1.0 0.5 0.5\n", 1, "not an integer"},
+        {"param u_s NaN\n", 1, "not finite"},
+        {"param g x\n", 1, "not a number"},
+        {"ball 0 1 1\nstrike nan 0\n", 2, "speed 'nan' is not finite"},
+        {"ball 0 1 1\nstrike 1 inf\n", 2, "angle 'inf' is not finite"},
+        {"ball 0 1 1\nstrike 1 0 nan 0\n", 2, "not finite"},
+        {"ball 0 1 1\nstrike 1 0 0 x\n", 2, "not a number"},
+        {"friction decay inf\n", 1, "not finite"},
+        {"friction combined 1 nan\n", 1, "not finite"},
+        {"rack 8ball -1\n", 1, "not an unsigned 64-bit integer"},
+        {"rack 8ball 18446744073709551616\n", 1, "not an unsigned 64-bit integer"},
+        {"rack 8ball 1.5\n", 1, "not an unsigned 64-bit integer"},
+    });
+}
+
+TEST_CASE("values out of range are refused", "[scenario]") {
+    check_refusals({
+        {"ball 0 1 1\nstrike 20.001 0\n", 2, "speed 20.001 is outside 0..20 m/s"},
+        {"ball 0 1 1\nstrike -1 0\n", 2, "outside 0..20"},
+        {"ball 0 1 1\nstrike 1 0 0.51 0\n", 2, "side offset 0.51 is outside -0.5..0.5"},
+        {"ball 0 1 1\nstrike 1 0 0 -0.6\n", 2, "follow offset -0.6 is outside"},
+        {"ball 16 1 1\n", 1, "ball id 16 is outside 0..15"},
+        {"ball -1 1 1\n", 1, "outside 0..15"},
+        {"ball 1 1 1 mass=0\n", 1, "mass must be > 0"},
+        {"ball 1 1 1 mass=-0.1\n", 1, "mass must be > 0"},
+        {"param u_s -0.1\n", 1, "u_s must be >= 0"},
+        {"param u_r -1\n", 1, "u_r must be >= 0"},
+        {"param u_sp -1\n", 1, "u_sp must be >= 0"},
+        {"param u_b -1\n", 1, "u_b must be >= 0"},
+        {"param f_c -1\n", 1, "f_c must be >= 0"},
+        {"param e_b 1.01\n", 1, "e_b must be between 0 and 1"},
+        {"param e_c -0.1\n", 1, "e_c must be between 0 and 1"},
+        {"param R 0\n", 1, "R must be > 0"},
+        {"param m -0.17\n", 1, "m must be > 0"},
+        {"param g 0\n", 1, "g must be > 0"},
+        {"friction decay 0\n", 1, "decay rate K must be > 0"},
+        {"friction constant -2\n", 1, "deceleration A must be > 0"},
+        {"friction combined 0 1\n", 1, "decay rate K must be > 0"},
+        {"friction combined 1 0\n", 1, "deceleration A must be > 0"},
+    });
+}
+
+TEST_CASE("repeated directives are refused at the repeat", "[scenario]") {
+    check_refusals({
+        {"table 9ft\n\ntable 9ft\n", 3, "more than one 'table' line (the first is line 1)"},
+        {"rack 8ball\nrack 9ball\n", 2, "more than one 'rack' line"},
+        {"ball 0 1 1\nstrike 1 0\nstrike 2 0\n", 3, "more than one 'strike' line"},
+        {"collision ideal\ncollision ideal\n", 2, "more than one 'collision' line"},
+        {"friction decay 1\nfriction physical\n", 2, "more than one 'friction' line"},
+        {"param R 0.03\nparam u_s 0.2\nparam R 0.03\n", 3, "more than one 'param R' line"},
+    });
+}
+
+TEST_CASE("duplicate ids, off-table and overlapping balls name the later line", "[scenario]") {
+    check_refusals({
+        {"ball 1 1 1\nball 2 0.5 0.5\nball 1 2 1\n", 3,
+         "duplicate ball 1 (already placed on line 1)"},
+        {"rack 8ball\nball 5 0.3 0.3\n", 2, "duplicate ball 5 (already in the rack on line 1)"},
+        {"ball 5 0.3 0.3\nrack 8ball\n", 2, "duplicate ball 5"},
+        {"rack 9ball\nball 9 0.3 0.3\n", 2, "duplicate ball 9"},
+        {"ball 1 0.02 0.5\n", 1, "ball 1 at (0.02, 0.5) is off the table"},
+        {"ball 1 2.53 0.5\n", 1, "off the table"},
+        {"ball 1 1 -0.5\n", 1, "off the table"},
+        {"table 7ft\nball 1 2 0.5\n", 2, "off the table"},
+        {"ball 1 1 0.5\nball 2 1.05 0.5\n", 2, "ball 2 at (1.05, 0.5) overlaps ball 1 (line 1)"},
+        {"ball 2 1.05 0.5\n\nball 1 1 0.5\n", 3, "overlaps ball 2"},
+        {"ball 10 1.9 0.635\nrack 9ball\n", 2,
+         "rack ball 1 at (1.905, 0.635) overlaps ball 10 (line 1)"},
+        {"rack 8ball\nball 0 1.9 0.64\n", 2, "overlaps rack ball"},
+        {"param R 0.3\nrack 8ball\n", 2, "off the table"},
+    });
+}
+
+TEST_CASE("a strike needs a cue ball; a scenario without a strike is fine", "[scenario]") {
+    check_refusals({
+        {"ball 1 1 1\nstrike 1 0\n", 2, "strike without a cue ball"},
+        {"strike 1 0\nball 1 1 1\n", 1, "strike without a cue ball"},
+        {"strike 1 0\n", 1, "strike without a cue ball"},
+    });
+    CHECK_FALSE(parsed("ball 1 1 1\n").strike);
+    CHECK(parsed("rack 8ball\nstrike 12 0\n").strike);
+}
+
+TEST_CASE("line-local errors come before errors between lines", "[scenario]") {
+    // Line 2 overlaps line 1, but line 3 cannot even be read.
+    const ScenarioError e = refused("ball 1 1 0.5\nball 2 1.01 0.5\nball 3 x 0.5\n");
+    CHECK(e.line == 3);
+}
+
+TEST_CASE("numbers print with %.9g and read without the locale", "[scenario]") {
+    using namespace termpool::cli;
+    CHECK(format_number(0.1) == "0.1");
+    CHECK(format_number(1.0 / 3) == "0.333333333");
+    CHECK(format_number(12345678901.0) == "1.23456789e+10");
+    CHECK(format_number(-0.0) == "0");
+    CHECK(parse_double("+0.3") == 0.3);
+    CHECK(parse_double("-2.5e-1") == -0.25);
+    CHECK(parse_double("1E2") == 100);
+    CHECK(std::isinf(*parse_double("1e999")));
+    CHECK(*parse_double("-1e999") < 0);
+    CHECK(*parse_double("1e-999") == 0);
+    CHECK(*parse_double("0.000000000000000000000000000000000000000000000000000000000000000000"
+                        "0000000000000000000000000000000000000000000000000000000000000000000"
+                        "0000000000000000000000000000000000000000000000000000000000000000000"
+                        "0000000000000000000000000000000000000000000000000000000000000000000"
+                        "0000000000000000000000000000000000000000000000000000000000000000001") ==
+          0);
+    CHECK(std::isnan(*parse_double("nan")));
+    CHECK_FALSE(parse_double(""));
+    CHECK_FALSE(parse_double("+"));
+    CHECK_FALSE(parse_double("++1"));
+    CHECK_FALSE(parse_double("+-1"));
+    CHECK_FALSE(parse_double("0x10"));
+    CHECK_FALSE(parse_double("1.5.2"));
+    CHECK(parse_integer("15") == 15);
+    CHECK_FALSE(parse_integer("15a"));
+    CHECK(parse_uint64("18446744073709551615") == 18446744073709551615ULL);
+    CHECK_FALSE(parse_uint64("-1"));
+}
