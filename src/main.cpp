@@ -15,14 +15,15 @@ void print_usage(std::ostream& out) {
     out << "usage: termpool [COMMAND] [ARGS...]\n"
            "\n"
            "commands:\n"
-           "  termpool                                play pool in the terminal (coming soon)\n"
-           "  termpool simulate [FILE]                run the physics simulator on FILE\n"
-           "                                          (standard input if FILE is omitted)\n"
-           "  termpool bench [--breaks N] [--shots N] benchmark the simulator\n"
+           "  termpool                     play pool in the terminal (coming soon)\n"
+           "  termpool simulate [FILE]     run the physics simulator on FILE\n"
+           "                               (standard input if FILE is omitted or -)\n"
+           "  termpool bench [--breaks N] [--shots N] [--seed S]\n"
+           "                               time the simulator on one core\n"
            "\n"
            "options:\n"
-           "  -h, --help                              print this help and exit\n"
-           "  --version                               print the version and exit\n";
+           "  -h, --help                   print this help and exit\n"
+           "  --version                    print the version and exit\n";
 }
 
 } // namespace

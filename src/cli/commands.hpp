@@ -10,7 +10,7 @@ namespace termpool::cli {
 /// @return the process exit status: 0 ok, 1 runtime error, 2 bad usage or bad input.
 int simulate_command(const std::vector<std::string>& args);
 
-/// `termpool bench [--breaks N] [--shots N]`: benchmarks the simulator.
+/// `termpool bench [--breaks N] [--shots N] [--seed S]`: benchmarks the simulator.
 /// @param args the command-line arguments after `bench`.
 /// @return the process exit status: 0 ok, 1 runtime error, 2 bad usage or bad input.
 int bench_command(const std::vector<std::string>& args);
