@@ -14,6 +14,8 @@ enum class EventKind {
     rolling,   ///< a sliding ball starts rolling
     spinning,  ///< a ball stops moving but still spins about the vertical
     stopped,   ///< a ball comes to rest
+    off_table, ///< a ball leaves the table (ball). The 2D simulator never produces it; the
+               ///< referee's rules for it apply to hand-made event lists and future models.
 };
 
 /// One event of a shot.

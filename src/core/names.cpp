@@ -25,6 +25,7 @@ const char* event_kind_name(EventKind kind) {
     case EventKind::rolling: return "rolling";
     case EventKind::spinning: return "spinning";
     case EventKind::stopped: return "stopped";
+    case EventKind::off_table: return "off-table";
     }
     return "?";
 }

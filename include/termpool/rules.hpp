@@ -1,0 +1,237 @@
+#pragma once
+/// \file
+/// The referee: 8-ball (WPA rules and bar rules) and 9-ball (WPA rules) on top of the
+/// simulator. A Game holds the players' state and the balls on the table; `apply` reads the
+/// events of a shot and decides what they mean. Choices the rules owe a player are explicit
+/// inputs (`choose`), never guessed.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <termpool/ball.hpp>
+#include <termpool/params.hpp>
+#include <termpool/simulator.hpp>
+#include <termpool/table.hpp>
+#include <vector>
+
+namespace termpool {
+
+/// Which game is played.
+enum class GameType {
+    eight_ball,     ///< WPA 8-ball: called shots, ball in hand anywhere after a foul
+    eight_ball_bar, ///< bar rules: only the 8 is called, ball in hand in the kitchen
+    nine_ball,      ///< WPA 9-ball: lowest ball first, push-out after the break
+};
+
+/// An 8-ball group.
+enum class Group {
+    open,    ///< not assigned yet
+    solids,  ///< balls 1-7
+    stripes, ///< balls 9-15
+};
+
+/// Where the incoming player may place the cue ball.
+enum class BallInHand {
+    none,     ///< the cue ball stays where it is
+    kitchen,  ///< behind the head string (x <= L/4)
+    anywhere, ///< anywhere on the table
+};
+
+/// Fouls, in order of precedence: when several happen on one shot, the verdict names the
+/// first in this order (all of them are listed as well).
+enum class Foul {
+    none,             ///< a legal shot
+    scratch,          ///< the cue ball was pocketed
+    cue_off_table,    ///< the cue ball left the table
+    off_table,        ///< an object ball left the table
+    no_contact,       ///< the cue ball hit no ball
+    wrong_ball_first, ///< the first ball hit was not a legal target
+    no_rail,          ///< after the first contact, nothing was pocketed and no ball hit a cushion
+    bad_break,        ///< 9-ball: the break pocketed nothing and drove fewer than four balls to a
+                      ///< cushion (in 8-ball an illegal break is not a foul but owes a choice)
+};
+
+/// Decisions the rules owe a player.
+enum class Choice {
+    play_on,     ///< accept the table as it is and shoot
+    re_rack,     ///< re-rack and break yourself
+    re_break,    ///< the player who just broke breaks again
+    spot_eight,  ///< 8 pocketed on the break: spot it and keep shooting
+    take_solids, ///< bar rules, both groups fell on the break: take solids
+    take_stripes, ///< bar rules: take stripes
+    shoot,       ///< after a push-out: shoot from here
+    pass_back,   ///< after a push-out: the player who pushed shoots again
+};
+
+/// Why the game ended.
+enum class WinReason {
+    none,              ///< not over
+    eight_pocketed,    ///< the called 8 was pocketed legally
+    eight_on_break,    ///< bar rules: the 8 fell on the break
+    eight_early,       ///< the opponent pocketed the 8 before clearing the group
+    eight_on_foul,     ///< the opponent pocketed the 8 on a foul (or scratched with it, bar rules)
+    eight_wrong_pocket, ///< the opponent pocketed the 8 in a pocket not called
+    eight_off_table,   ///< the opponent drove the 8 off the table
+    nine_pocketed,     ///< the 9 was pocketed legally
+    three_fouls,       ///< the opponent fouled three times in a row (9-ball)
+};
+
+/// A called shot. Ball 0 means "not called": the referee calls the obvious shot for the
+/// shooter, namely the first ball contacted into whichever pocket it drops in.
+struct Call {
+    int ball = 0;        ///< the ball called, 0 for none
+    int pocket = 0;      ///< its pocket 1..6
+    bool safety = false; ///< the shooter called safety: the turn passes whatever drops
+};
+
+/// What the shooter declared for a shot besides the strike.
+struct ShotCall {
+    Call call;             ///< 8-ball calls
+    bool push_out = false; ///< 9-ball: this shot is a push-out
+};
+
+/// What a shot meant.
+struct Verdict {
+    Foul foul = Foul::none;                  ///< the foul that counts, or none
+    std::vector<Foul> fouls;                 ///< every foul of the shot, in precedence order
+    int first_contact = -1;                  ///< first ball the cue ball hit, -1 for none
+    std::vector<int> pocketed;               ///< balls that dropped, in order
+    bool legal_break = true;                 ///< for a break shot: did it meet the break rule
+    bool groups_assigned = false;            ///< groups were decided by this shot
+    Group player1_group = Group::open;       ///< groups after the shot (player 2 has the other)
+    int next_shooter = 1;                    ///< 1 or 2
+    BallInHand ball_in_hand = BallInHand::none; ///< for the next shooter
+    int chooser = 0;                         ///< player who owes a choice (0: none)
+    std::vector<Choice> choices;             ///< the options of that choice
+    std::vector<int> respotted;              ///< balls put back on the table (the 8, the 9)
+    int winner = 0;                          ///< 1 or 2 once the game is over
+    WinReason reason = WinReason::none;      ///< why
+    bool stalemate_rerack = false;           ///< the rack was re-broken for a stalemate
+};
+
+/// Names as used by `termpool simulate` ("wrong-ball-first", "play-on", ...).
+const char* game_type_name(GameType type);
+/// Parses a game name; nothing for an unknown one.
+std::optional<GameType> parse_game_type(const std::string& name);
+/// "solids", "stripes" or "open".
+const char* group_name(Group group);
+/// "none", "kitchen" or "anywhere".
+const char* ball_in_hand_name(BallInHand bih);
+/// "none", "scratch", ...
+const char* foul_name(Foul foul);
+/// "play-on", "re-rack", ...
+const char* choice_name(Choice choice);
+/// "eight-pocketed", ...
+const char* win_reason_name(WinReason reason);
+
+/// The balls of a group (1-7 or 9-15); empty for `open`.
+std::vector<int> group_balls(Group group);
+
+/// One game between players 1 and 2: the referee's state and the balls on the table.
+class Game {
+public:
+    /// A new game of `type`: the balls racked (seeded), `breaker` to break with ball in hand
+    /// in the kitchen.
+    Game(GameType type, const Table& table, const PhysicsParams& params, int breaker = 1,
+         std::uint64_t seed = 1);
+
+    /// A game in progress, for analysis: the balls as given, `shooter` to play, `player1_group`
+    /// as the groups, `is_break` when the next shot is a break, `push_out_allowed` when it is
+    /// the shot right after a 9-ball break. Ball in hand none.
+    static Game from_position(GameType type, const Table& table, const PhysicsParams& params,
+                              std::vector<Ball> balls, int shooter, Group player1_group,
+                              bool is_break, bool push_out_allowed = false);
+
+    /// The game played.
+    GameType type() const { return type_; }
+    /// The balls on the table (pocketed ones are kept with state pocketed).
+    const std::vector<Ball>& balls() const { return balls_; }
+    /// The player to shoot (or to choose, see `chooser`): 1 or 2.
+    int shooter() const { return shooter_; }
+    /// The player who broke this rack.
+    int breaker() const { return breaker_; }
+    /// True when the next shot is a break.
+    bool is_break() const { return is_break_; }
+    /// Player 1's group; player 2 has the other one.
+    Group player1_group() const { return player1_group_; }
+    /// The group of `player` (1 or 2).
+    Group group_of(int player) const;
+    /// Where the shooter may place the cue ball before shooting.
+    BallInHand ball_in_hand() const { return ball_in_hand_; }
+    /// The player who owes a choice, 0 for none; `choices` lists the options.
+    int chooser() const { return chooser_; }
+    /// The options of the choice owed.
+    const std::vector<Choice>& choices() const { return choices_; }
+    /// 1 or 2 once the game is over, else 0.
+    int winner() const { return winner_; }
+    /// Why the game ended.
+    WinReason win_reason() const { return reason_; }
+    /// True when a push-out may be declared on the next shot (9-ball).
+    bool push_out_allowed() const { return push_out_allowed_; }
+    /// Consecutive fouls of `player` (9-ball three-foul rule).
+    int consecutive_fouls(int player) const { return fouls_in_a_row_[player - 1]; }
+    /// Balls the shooter may legally hit first now (9-ball: the lowest; 8-ball: the group, the
+    /// 8 once the group is cleared; any but the 8 on an open table).
+    std::vector<int> legal_targets() const;
+
+    /// True when the cue ball may be placed at `p` now: inside the ball-in-hand area, on the
+    /// playing surface, touching no ball.
+    bool legal_placement(Vec2 p) const;
+    /// A few legal cue-ball spots spread over the allowed area, for pickers and tests.
+    std::vector<Vec2> legal_placements(int per_axis = 12) const;
+    /// Places the cue ball for a ball in hand. Returns false (and changes nothing) when the
+    /// spot is not legal or there is no ball in hand.
+    bool place_cue_ball(Vec2 p);
+
+    /// Makes the choice owed. Returns false when `choice` is not one of `choices()`.
+    bool choose(Choice choice);
+
+    /// Judges a shot simulated from `balls()` and moves the game on: the balls take the
+    /// result's final positions (with any re-spotting), and turn, groups, ball in hand, choices
+    /// and the winner follow the rules. A shot while a choice is owed, a ball in hand is not
+    /// placed, or after the end of the game is refused with a nothing-changed verdict where
+    /// `next_shooter` is the current shooter.
+    Verdict apply(const ShotCall& call, const ShotResult& result);
+
+    /// Convenience: simulates `strike` from the current balls and applies it.
+    Verdict play(const Strike& strike, const ShotCall& call, ShotResult* result = nullptr);
+
+    /// Turns without progress (no object ball pocketed) after which a stalemate is declared,
+    /// after which each player has three more turns before the rack is re-broken.
+    static constexpr int stalemate_warning_turns = 20;
+
+private:
+    Game() = default;
+    struct Facts;
+    Verdict judge_eight(const ShotCall& call, const Facts& facts);
+    Verdict judge_nine(const ShotCall& call, const Facts& facts);
+    void rerack(int new_breaker);
+    void spot_ball(int id);
+    void finish_turn(Verdict& verdict, bool progress);
+    int opponent(int player) const { return 3 - player; }
+    bool ball_on_table(int id) const;
+
+    GameType type_ = GameType::eight_ball;
+    Table table_;
+    PhysicsParams params_;
+    std::vector<Ball> balls_;
+    std::uint64_t seed_ = 1;
+    int racks_ = 0;
+    int shooter_ = 1;
+    int breaker_ = 1;
+    bool is_break_ = true;
+    Group player1_group_ = Group::open;
+    BallInHand ball_in_hand_ = BallInHand::kitchen;
+    bool cue_placed_ = false;
+    int chooser_ = 0;
+    std::vector<Choice> choices_;
+    int pusher_ = 0;
+    bool push_out_allowed_ = false;
+    int fouls_in_a_row_[2] = {0, 0};
+    int winner_ = 0;
+    WinReason reason_ = WinReason::none;
+    int turns_without_progress_ = 0;
+    int stalemate_turns_left_ = -1;
+};
+
+} // namespace termpool

@@ -1,0 +1,68 @@
+#include "core/shot_facts.hpp"
+
+#include <algorithm>
+
+namespace termpool {
+
+bool Game::Facts::dropped(int id) const {
+    return std::find(pocketed.begin(), pocketed.end(), id) != pocketed.end();
+}
+
+int Game::Facts::pocket_of(int id) const {
+    for (std::size_t i = 0; i < pocketed.size(); ++i)
+        if (pocketed[i] == id) return pockets[i];
+    return 0;
+}
+
+bool Game::Facts::object_ball_dropped() const {
+    return std::any_of(pocketed.begin(), pocketed.end(), [](int id) { return id != 0; });
+}
+
+bool Game::Facts::left_table(int id) const {
+    return std::find(off_table.begin(), off_table.end(), id) != off_table.end();
+}
+
+std::vector<Foul> Game::Facts::common_fouls() const {
+    std::vector<Foul> fouls;
+    if (dropped(0)) fouls.push_back(Foul::scratch);
+    if (left_table(0)) fouls.push_back(Foul::cue_off_table);
+    if (std::any_of(off_table.begin(), off_table.end(), [](int id) { return id != 0; }))
+        fouls.push_back(Foul::off_table);
+    if (first_contact < 0) {
+        fouls.push_back(Foul::no_contact);
+    } else {
+        if (std::find(targets.begin(), targets.end(), first_contact) == targets.end())
+            fouls.push_back(Foul::wrong_ball_first);
+        if (!object_ball_dropped() && !rail_after_contact) fouls.push_back(Foul::no_rail);
+    }
+    return fouls;
+}
+
+Game::Facts Game::Facts::from(const std::vector<Event>& events) {
+    Facts f;
+    std::vector<int> railed;
+    for (const Event& e : events) {
+        switch (e.kind) {
+        case EventKind::ball_ball:
+            if (f.first_contact < 0 && (e.ball == 0 || e.other == 0))
+                f.first_contact = e.ball == 0 ? e.other : e.ball;
+            break;
+        case EventKind::cushion:
+        case EventKind::jaw:
+            if (f.first_contact >= 0) f.rail_after_contact = true;
+            if (e.ball != 0 && std::find(railed.begin(), railed.end(), e.ball) == railed.end())
+                railed.push_back(e.ball);
+            break;
+        case EventKind::pocket:
+            f.pocketed.push_back(e.ball);
+            f.pockets.push_back(e.other);
+            break;
+        case EventKind::off_table: f.off_table.push_back(e.ball); break;
+        default: break;
+        }
+    }
+    f.balls_to_rail = static_cast<int>(railed.size());
+    return f;
+}
+
+} // namespace termpool

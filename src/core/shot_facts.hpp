@@ -1,0 +1,30 @@
+#pragma once
+// What the referee reads off a shot's events, once, before any rule is applied.
+
+#include <termpool/rules.hpp>
+#include <vector>
+
+namespace termpool {
+
+struct Game::Facts {
+    int first_contact = -1;          // first ball the cue ball touched, -1 for none
+    bool rail_after_contact = false; // a ball hit a cushion or jaw after the first contact
+    int balls_to_rail = 0;           // distinct object balls that hit a cushion or jaw
+    std::vector<int> pocketed;       // balls that dropped, in order (the cue ball too)
+    std::vector<int> pockets;        // the pocket of each of them
+    std::vector<int> off_table;      // balls that left the table
+    std::vector<int> targets;        // balls the shooter could legally hit first
+    bool group_cleared = false;      // 8-ball: the shooter's group was all down before the shot
+
+    bool dropped(int id) const;
+    int pocket_of(int id) const; // 0 when it did not drop
+    bool object_ball_dropped() const;
+    bool left_table(int id) const;
+
+    static Facts from(const std::vector<Event>& events);
+    // The fouls every game shares: cue ball pocketed or off the table, an object ball off the
+    // table, no contact, wrong ball first, no cushion after contact (a break is judged apart).
+    std::vector<Foul> common_fouls() const;
+};
+
+} // namespace termpool
