@@ -103,12 +103,13 @@ Verdict Game::judge_eight(const ShotCall& shot, const Facts& facts) {
     }
 
     if (facts.dropped(8) || facts.left_table(8)) {
+        // When several apply, the plainest reason is given: early before foul.
         if (facts.left_table(8))
             lose(WinReason::eight_off_table);
-        else if (foul || (bar && scratch))
-            lose(WinReason::eight_on_foul);
         else if (!facts.group_cleared)
             lose(WinReason::eight_early);
+        else if (foul || (bar && scratch))
+            lose(WinReason::eight_on_foul);
         else if (call.safety || call.ball != 8 || call.pocket != facts.pocket_of(8))
             lose(WinReason::eight_wrong_pocket);
         else {
