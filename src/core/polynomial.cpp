@@ -24,7 +24,7 @@ inline void two_product(double x, double y, double& p, double& e) noexcept {
 #ifdef FP_FAST_FMA
     e = std::fma(x, y, -p);
 #else
-    constexpr double kSplit = 134217729.0;  // 2^27 + 1
+    constexpr double kSplit = 134217729.0; // 2^27 + 1
     const double xs = kSplit * x;
     const double xh = xs - (xs - x);
     const double xl = x - xh;
@@ -40,8 +40,8 @@ inline void two_product(double x, double y, double& p, double& e) noexcept {
 struct Sample {
     double t;
     double f;
-    double g;  // f'
-    double h;  // f''
+    double g; // f'
+    double h; // f''
 };
 
 // Coefficients prepared once per call: derivative coefficients are pre-multiplied so each
@@ -51,7 +51,7 @@ struct Work {
     double g[4];
     double h[3];
     double noise[5];
-    double jerk[2];  // bound on the third derivative: |f'''(t)| <= jerk[0] + jerk[1] t, t >= 0
+    double jerk[2]; // bound on the third derivative: |f'''(t)| <= jerk[0] + jerk[1] t, t >= 0
 };
 
 inline Sample sample_at(const Work& w, double t) noexcept {
@@ -67,7 +67,9 @@ inline double noise_at(const Work& w, double t) noexcept {
     return (((w.noise[4] * t + w.noise[3]) * t + w.noise[2]) * t + w.noise[1]) * t + w.noise[0];
 }
 
-inline double step_tolerance(double t) noexcept { return 2.0 * kEps * t + kTinyTime; }
+inline double step_tolerance(double t) noexcept {
+    return 2.0 * kEps * t + kTinyTime;
+}
 
 // Step from s to the nearest root, on the side given by the sign of s.f (forward when f > 0,
 // backward otherwise), of the local quadratic model f + g d + h d^2 / 2. Gap functions are
@@ -77,17 +79,29 @@ inline double step_tolerance(double t) noexcept { return 2.0 * kEps * t + kTinyT
 // Returns NaN when the model has no root on that side (callers then bisect).
 inline double model_step(const Sample& s) noexcept {
     const double disc = s.g * s.g - 2.0 * s.h * s.f;
-    if (!(disc >= 0.0)) return -s.f / s.g;
+    if (!(disc >= 0.0))
+        return -s.f / s.g;
     // Stable pair of roots: f / q (the smaller one unless q is tiny) and 2 q / h.
     const double q = -0.5 * (s.g + std::copysign(std::sqrt(disc), s.g));
     const double r_small = q != 0.0 ? s.f / q : 0.0;
     const double r_big = s.h != 0.0 ? 2.0 * q / s.h : std::numeric_limits<double>::quiet_NaN();
     if (s.f > 0.0) {
-        if (r_small > 0.0) return r_big > 0.0 ? std::min(r_small, r_big) : r_small;
+        if (r_small > 0.0)
+            return r_big > 0.0 ? std::min(r_small, r_big) : r_small;
         return r_big > 0.0 ? r_big : std::numeric_limits<double>::quiet_NaN();
     }
-    if (r_small < 0.0) return r_big < 0.0 ? std::max(r_small, r_big) : r_small;
+    if (r_small < 0.0)
+        return r_big < 0.0 ? std::max(r_small, r_big) : r_small;
     return r_big < 0.0 ? r_big : std::numeric_limits<double>::quiet_NaN();
+}
+
+// Step toward a root from s: Halley's when s is close to a simple root (the model's cubic order
+// without its square root), the side-aware model step otherwise.
+inline double root_step(const Sample& s) noexcept {
+    if (4.0 * std::fabs(s.f * s.h) <= s.g * s.g) {
+        return -2.0 * s.f * s.g / (2.0 * s.g * s.g - s.f * s.h);
+    }
+    return model_step(s);
 }
 
 // First descending crossing of f inside [lo.t, hi.t], given lo.f > 0 >= hi.f and that the
@@ -95,47 +109,53 @@ inline double model_step(const Sample& s) noexcept {
 // Safeguarded model-step iteration: a step leaving the bracket, or not shrinking fast enough,
 // is replaced by bisection, so convergence never depends on the model being good.
 double find_root(const Work& w, Sample lo, Sample hi) noexcept {
-    if (hi.g < 0.0 && hi.f >= -noise_at(w, hi.t)) return hi.t;
+    if (hi.g < 0.0 && hi.f >= -noise_at(w, hi.t))
+        return hi.t;
     double a = lo.t;
     double b = hi.t;
-    // Start from whichever end the model can use: lo when f is already descending there,
-    // else hi (concave pieces, where lo may sit before a maximum).
+    // Start from hi: callers usually found it inside the dip near the closest approach, where
+    // the local model is at its best; lo is the fallback, bisection the last resort.
     double x = hi.t + model_step(hi);
     if (!(x > a && x < b)) {
         x = lo.t + model_step(lo);
-        if (!(x > a && x < b)) x = a + 0.5 * (b - a);
+        if (!(x > a && x < b))
+            x = a + 0.5 * (b - a);
     }
     double step_before_last = b - a;
     double last_step = b - a;
     for (int it = 0; it < kMaxIterations; ++it) {
         const Sample s = sample_at(w, x);
         const double nz = noise_at(w, x);
-        if (s.g < 0.0 && std::fabs(s.f) <= nz) return x;
+        if (s.g < 0.0 && std::fabs(s.f) <= nz)
+            return x;
         if (s.f > 0.0) {
             a = x;
         } else {
             b = x;
         }
-        double step = model_step(s);
+        double step = root_step(s);
         double next = x + step;
         if (!(next > a && next < b) || std::fabs(step) > 0.5 * std::fabs(step_before_last)) {
             next = a + 0.5 * (b - a);
-            if (!(next > a && next < b)) return a;  // bracket is down to adjacent doubles
+            if (!(next > a && next < b))
+                return a; // bracket is down to adjacent doubles
             step = next - x;
         } else {
-            // The model is exact up to the cubic Taylor remainder |f'''| |step|^3 / 6. Once that
-            // is below the evaluation noise, next is already a root as far as double can tell,
-            // and sampling it only to confirm would cost a full evaluation. The step must also be
-            // short against next itself: then the noise at x is the noise at next, and the
-            // rounding of the step is below it.
+            // f(next) differs from the quadratic model's value there by at most the Taylor
+            // remainder |f'''| |step|^3 / 6. Once both are below the evaluation noise, next is
+            // already a root as far as double can tell, and sampling it only to confirm would
+            // cost a full evaluation. The step must also be short against next itself: then the
+            // noise at x is the noise at next, and the rounding of the step is below it.
             const double jerk = w.jerk[0] + w.jerk[1] * std::max(x, next);
             const double step3 = step * step * std::fabs(step);
-            if (std::fabs(step) <= 0x1p-10 * next && jerk * step3 <= 6.0 * nz &&
+            const double model = s.f + step * (s.g + 0.5 * s.h * step);
+            if (std::fabs(step) <= 0x1p-10 * next && std::fabs(model) + jerk * step3 / 6.0 <= nz &&
                 s.g + s.h * step + 0.5 * jerk * step * step < 0.0) {
                 return next;
             }
         }
-        if (std::fabs(step) <= step_tolerance(x)) return s.f > 0.0 ? x : next;
+        if (std::fabs(step) <= step_tolerance(x))
+            return s.f > 0.0 ? x : next;
         step_before_last = last_step;
         last_step = step;
         x = next;
@@ -148,34 +168,41 @@ double find_root(const Work& w, Sample lo, Sample hi) noexcept {
 // Newton on f'; any sample with f <= 0 gives a bracket for the first crossing, and the tangent
 // lower bound (f >= f(x) + f'(x)(t - x) on a convex piece) proves "no dip" early.
 double convex_minimum(const Work& w, Sample lo, Sample hi) noexcept {
-    if (lo.f + lo.g * (hi.t - lo.t) > 0.0 || hi.f - hi.g * (hi.t - lo.t) > 0.0) return kInf;
+    if (lo.f + lo.g * (hi.t - lo.t) > 0.0 || hi.f - hi.g * (hi.t - lo.t) > 0.0)
+        return kInf;
     double x = lo.t - lo.g / lo.h;
     if (!(x > lo.t && x < hi.t)) {
         x = hi.t - hi.g / hi.h;
-        if (!(x > lo.t && x < hi.t)) x = lo.t + 0.5 * (hi.t - lo.t);
+        if (!(x > lo.t && x < hi.t))
+            x = lo.t + 0.5 * (hi.t - lo.t);
     }
     double step_before_last = hi.t - lo.t;
     double last_step = hi.t - lo.t;
     for (int it = 0; it < kMaxIterations; ++it) {
         const Sample s = sample_at(w, x);
-        if (s.f <= 0.0) return find_root(w, lo, s);
+        if (s.f <= 0.0)
+            return find_root(w, lo, s);
         if (s.g < 0.0) {
             lo = s;
-            if (s.f + s.g * (hi.t - s.t) > 0.0) return kInf;
+            if (s.f + s.g * (hi.t - s.t) > 0.0)
+                return kInf;
         } else if (s.g > 0.0) {
             hi = s;
-            if (s.f - s.g * (s.t - lo.t) > 0.0) return kInf;
+            if (s.f - s.g * (s.t - lo.t) > 0.0)
+                return kInf;
         } else {
-            return kInf;  // exactly at the minimum, and it is positive
+            return kInf; // exactly at the minimum, and it is positive
         }
         double step = -s.g / s.h;
         double next = x + step;
         if (!(next > lo.t && next < hi.t) || std::fabs(step) > 0.5 * std::fabs(step_before_last)) {
             next = lo.t + 0.5 * (hi.t - lo.t);
-            if (!(next > lo.t && next < hi.t)) return kInf;
+            if (!(next > lo.t && next < hi.t))
+                return kInf;
             step = next - x;
         }
-        if (std::fabs(step) <= step_tolerance(x)) return kInf;
+        if (std::fabs(step) <= step_tolerance(x))
+            return kInf;
         step_before_last = last_step;
         last_step = step;
         x = next;
@@ -205,7 +232,8 @@ struct PieceEnd {
 // land inside the dip, which brackets the first crossing.
 double convex_descent(const Work& w, Sample lo, PieceEnd& q) noexcept {
     for (int it = 0; it < 6; ++it) {
-        if (lo.f + lo.g * (q.t - lo.t) > 0.0) return kInf;  // tangent stays above 0 up to q
+        if (lo.f + lo.g * (q.t - lo.t) > 0.0)
+            return kInf; // tangent stays above 0 up to q
         const double disc = lo.g * lo.g - 2.0 * lo.f * lo.h;
         double step;
         if (disc >= 0.0) {
@@ -216,22 +244,30 @@ double convex_descent(const Work& w, Sample lo, PieceEnd& q) noexcept {
             // is exact for a double root, so it lands near the closest approach: inside the dip
             // for a hit, near the minimum for a miss. Either outcome narrows the search.
             const double den = lo.g * lo.g - lo.f * lo.h;
-            if (!(den > 0.0)) break;
+            if (!(den > 0.0))
+                break;
             step = -lo.f * lo.g / den;
         }
         const double x = lo.t + step;
-        if (!(x > lo.t && x < q.t)) break;
+        if (!(x > lo.t && x < q.t))
+            break;
         const Sample s = sample_at(w, x);
         const double nz = noise_at(w, x);
-        if (s.g < 0.0 && std::fabs(s.f) <= nz) return x;
-        if (s.f <= 0.0) return find_root(w, lo, s);
-        if (s.g >= 0.0) return convex_minimum(w, lo, s);
-        if (step <= step_tolerance(x)) return x;
+        if (s.g < 0.0 && std::fabs(s.f) <= nz)
+            return x;
+        if (s.f <= 0.0)
+            return find_root(w, lo, s);
+        if (s.g >= 0.0)
+            return convex_minimum(w, lo, s);
+        if (step <= step_tolerance(x))
+            return x;
         lo = s;
     }
     const Sample& e = q.get(w);
-    if (e.f <= 0.0) return find_root(w, lo, e);
-    if (e.g <= 0.0) return kInf;  // still descending at q but positive there
+    if (e.f <= 0.0)
+        return find_root(w, lo, e);
+    if (e.g <= 0.0)
+        return kInf; // still descending at q but positive there
     return convex_minimum(w, lo, e);
 }
 
@@ -244,13 +280,15 @@ double concave_maximum(const Work& w, Sample lo, Sample hi) noexcept {
     double x = lo.t - lo.g / lo.h;
     if (!(x > lo.t && x < hi.t)) {
         x = hi.t - hi.g / hi.h;
-        if (!(x > lo.t && x < hi.t)) x = lo.t + 0.5 * (hi.t - lo.t);
+        if (!(x > lo.t && x < hi.t))
+            x = lo.t + 0.5 * (hi.t - lo.t);
     }
     double step_before_last = hi.t - lo.t;
     double last_step = hi.t - lo.t;
     for (int it = 0; it < kMaxIterations; ++it) {
         const Sample s = sample_at(w, x);
-        if (s.f > 0.0) return q.f <= 0.0 ? find_root(w, s, q) : kInf;
+        if (s.f > 0.0)
+            return q.f <= 0.0 ? find_root(w, s, q) : kInf;
         if (s.g > 0.0) {
             lo = s;
         } else if (s.g < 0.0) {
@@ -262,10 +300,12 @@ double concave_maximum(const Work& w, Sample lo, Sample hi) noexcept {
         double next = x + step;
         if (!(next > lo.t && next < hi.t) || std::fabs(step) > 0.5 * std::fabs(step_before_last)) {
             next = lo.t + 0.5 * (hi.t - lo.t);
-            if (!(next > lo.t && next < hi.t)) return x;
+            if (!(next > lo.t && next < hi.t))
+                return x;
             step = next - x;
         }
-        if (std::fabs(step) <= step_tolerance(x)) return x;
+        if (std::fabs(step) <= step_tolerance(x))
+            return x;
         step_before_last = last_step;
         last_step = step;
         x = next;
@@ -278,17 +318,21 @@ double concave_maximum(const Work& w, Sample lo, Sample hi) noexcept {
 // and convexity, so only dips and turning points need iteration.
 double solve_piece(const Work& w, const Sample& p, PieceEnd& qe, bool convex) noexcept {
     if (convex) {
-        if (p.g >= 0.0) return kInf;  // f' only grows: f never decreases here
-        if (p.f <= 0.0) return p.t;
+        if (p.g >= 0.0)
+            return kInf; // f' only grows: f never decreases here
+        if (p.f <= 0.0)
+            return p.t;
         return convex_descent(w, p, qe);
     }
-    if (p.g <= 0.0) {  // f' only falls: f decreasing throughout
-        if (p.f <= 0.0) return p.t;
+    if (p.g <= 0.0) { // f' only falls: f decreasing throughout
+        if (p.f <= 0.0)
+            return p.t;
         const Sample& q = qe.get(w);
         return q.f <= 0.0 ? find_root(w, p, q) : kInf;
     }
     const Sample& q = qe.get(w);
-    if (q.g >= 0.0) return kInf;  // increasing throughout
+    if (q.g >= 0.0)
+        return kInf; // increasing throughout
     if (p.f > 0.0) {
         // The maximum is positive too, so the only candidate is the crossing after it, and
         // every point before that crossing has f > 0: [p, q] is a valid bracket as it stands.
@@ -301,19 +345,23 @@ double solve_piece(const Work& w, const Sample& p, PieceEnd& qe, bool convex) no
 // relative to its leading one), lies below this, so S cannot start later than it.
 double root_bound(const std::array<double, 5>& c) noexcept {
     int n = 4;
-    while (n > 0 && c[static_cast<std::size_t>(n)] == 0.0) --n;
-    if (n == 0) return 1.0;
+    while (n > 0 && c[static_cast<std::size_t>(n)] == 0.0)
+        --n;
+    if (n == 0)
+        return 1.0;
     const double lead = std::fabs(c[static_cast<std::size_t>(n)]);
     double m = 0.0;
-    for (int k = 0; k < n; ++k) m = std::max(m, std::fabs(c[static_cast<std::size_t>(k)]) / lead);
+    for (int k = 0; k < n; ++k)
+        m = std::max(m, std::fabs(c[static_cast<std::size_t>(k)]) / lead);
     return 2.0 * (1.0 + m);
 }
 
-}  // namespace
+} // namespace
 
 int solve_quadratic(double a, double b, double c, double roots[2]) noexcept {
     if (a == 0.0) {
-        if (b == 0.0) return 0;
+        if (b == 0.0)
+            return 0;
         roots[0] = -c / b;
         return 1;
     }
@@ -336,7 +384,8 @@ int solve_quadratic(double a, double b, double c, double roots[2]) noexcept {
         two_product(4.0 * a, c, p2, e2);
         disc = (p1 - p2) + (e1 - e2);
     }
-    if (disc < 0.0) return 0;
+    if (disc < 0.0)
+        return 0;
     if (disc == 0.0) {
         roots[0] = -0.5 * b / a;
         return 1;
@@ -364,19 +413,21 @@ double contact_time_in_range(const std::array<double, 5>& c, double H) noexcept 
     // f' >= 0 everywhere: f never decreases, so S is empty (also covers f(0) <= 0).
     const double g_low = c[1] + std::min(0.0, 2.0 * c[2]) * H + std::min(0.0, 3.0 * c[3]) * H2 +
                          std::min(0.0, 4.0 * c[4]) * H3;
-    const double g_mag = std::fabs(c[1]) + 2.0 * std::fabs(c[2]) * H +
-                         3.0 * std::fabs(c[3]) * H2 + 4.0 * std::fabs(c[4]) * H3;
-    if (g_low > 4.0 * kEps * g_mag) return kInf;
+    const double g_mag = std::fabs(c[1]) + 2.0 * std::fabs(c[2]) * H + 3.0 * std::fabs(c[3]) * H2 +
+                         4.0 * std::fabs(c[4]) * H3;
+    if (g_low > 4.0 * kEps * g_mag)
+        return kInf;
     // f > 0 everywhere: never touching.
     if (c[0] > 0.0) {
         const double f_low = c[0] + std::min(0.0, c[1]) * H + std::min(0.0, c[2]) * H2 +
                              std::min(0.0, c[3]) * H3 + std::min(0.0, c[4]) * H4;
         const double f_mag = c[0] + std::fabs(c[1]) * H + std::fabs(c[2]) * H2 +
                              std::fabs(c[3]) * H3 + std::fabs(c[4]) * H4;
-        if (f_low > 4.0 * kEps * f_mag) return kInf;
+        if (f_low > 4.0 * kEps * f_mag)
+            return kInf;
     }
 
-    Work w{};
+    Work w; // every field is assigned below; zero-filling it first costs a memset per call
     for (int k = 0; k < 5; ++k) {
         const auto i = static_cast<std::size_t>(k);
         w.f[k] = c[i];
@@ -394,17 +445,27 @@ double contact_time_in_range(const std::array<double, 5>& c, double H) noexcept 
 
     // Inflection points of f split [0, H] into pieces of fixed convexity; within each piece f'
     // is monotone, so f has at most one turning point and the case analysis per piece is exact.
-    // Solving for them is skipped when monomial bounds already fix the sign of f''.
+    // The square root is only paid for when f'' changes sign inside (0, H): either its end
+    // values differ in sign, or its vertex lies inside with the opposite sign (tested without
+    // dividing: A h(vertex) = (4AC - B^2) / 4 for f'' = A t^2 + B t + C).
     double breaks[4];
     int n_breaks = 0;
     breaks[n_breaks++] = 0.0;
-    const double h_low = w.h[0] + std::min(0.0, w.h[1]) * H + std::min(0.0, w.h[2]) * H2;
-    const double h_high = w.h[0] + std::max(0.0, w.h[1]) * H + std::max(0.0, w.h[2]) * H2;
-    if (!(h_low > 0.0 || h_high < 0.0)) {
+    const double hA = w.h[2];
+    const double hB = w.h[1];
+    const double hC = w.h[0];
+    const double h_end = (hA * H + hB) * H + hC;
+    const bool ends_differ = (hC < 0.0) != (h_end < 0.0) || hC == 0.0 || h_end == 0.0;
+    // With equal end signs, two roots need the vertex inside and on the other side of zero,
+    // which happens exactly when A and C agree in sign and the discriminant is positive.
+    const bool dip_inside = (hA > 0.0) == (hC > 0.0) && hA * hB < 0.0 &&
+                            std::fabs(hB) < 2.0 * std::fabs(hA) * H && 4.0 * hA * hC < hB * hB;
+    if (ends_differ || dip_inside) {
         double inflections[2];
         const int n_infl = solve_quadratic(w.h[2], w.h[1], w.h[0], inflections);
         for (int i = 0; i < n_infl; ++i) {
-            if (inflections[i] > 0.0 && inflections[i] < H) breaks[n_breaks++] = inflections[i];
+            if (inflections[i] > 0.0 && inflections[i] < H)
+                breaks[n_breaks++] = inflections[i];
         }
     }
     breaks[n_breaks++] = H;
@@ -414,24 +475,31 @@ double contact_time_in_range(const std::array<double, 5>& c, double H) noexcept 
         PieceEnd q{breaks[i]};
         const double mid = 0.5 * (p.t + q.t);
         double curvature = (w.h[2] * mid + w.h[1]) * mid + w.h[0];
-        if (curvature == 0.0) curvature = q.get(w).g - p.g;
+        if (curvature == 0.0)
+            curvature = q.get(w).g - p.g;
         const double t = solve_piece(w, p, q, curvature >= 0.0);
-        if (t != kInf) return t;
-        if (i + 1 < n_breaks) p = q.get(w);
+        if (t != kInf)
+            return t;
+        if (i + 1 < n_breaks)
+            p = q.get(w);
     }
     return kInf;
 }
 
-}  // namespace
+} // namespace
 
 double first_contact_time(const Polynomial4& poly, double horizon) noexcept {
     const std::array<double, 5>& c = poly.c;
-    if (!(horizon >= 0.0)) return kInf;
-    if (c[0] <= 0.0 && c[1] < 0.0) return 0.0;
-    if (horizon == 0.0) return kInf;
+    if (!(horizon >= 0.0))
+        return kInf;
+    if (c[0] <= 0.0 && c[1] < 0.0)
+        return 0.0;
+    if (horizon == 0.0)
+        return kInf;
     if (horizon == kInf) {
         horizon = root_bound(c);
-        if (!(horizon < kInf)) return kInf;  // leading coefficient negligible beyond double range
+        if (!(horizon < kInf))
+            return kInf; // leading coefficient negligible beyond double range
     }
 
     // Typical SI inputs pass straight through; only extreme scales pay for exact power-of-two
@@ -439,7 +507,8 @@ double first_contact_time(const Polynomial4& poly, double horizon) noexcept {
     const double H = horizon;
     const double mag = std::fabs(c[0]) + std::fabs(c[1]) * H + std::fabs(c[2]) * (H * H) +
                        std::fabs(c[3]) * (H * H * H) + std::fabs(c[4]) * ((H * H) * (H * H));
-    if (mag == 0.0) return kInf;  // f == 0: f' is never negative
+    if (mag == 0.0)
+        return kInf; // f == 0: f' is never negative
     if (mag >= 1e-60 && mag <= 1e60 && H >= 1e-30 && H <= 1e30) {
         return contact_time_in_range(c, H);
     }
@@ -447,7 +516,8 @@ double first_contact_time(const Polynomial4& poly, double horizon) noexcept {
     int top = std::numeric_limits<int>::min();
     for (int k = 0; k < 5; ++k) {
         const double ck = c[static_cast<std::size_t>(k)];
-        if (ck != 0.0) top = std::max(top, std::ilogb(ck) + k * time_exp);
+        if (ck != 0.0)
+            top = std::max(top, std::ilogb(ck) + k * time_exp);
     }
     std::array<double, 5> scaled{};
     for (int k = 0; k < 5; ++k) {
@@ -458,4 +528,4 @@ double first_contact_time(const Polynomial4& poly, double horizon) noexcept {
     return t == kInf ? kInf : std::scalbn(t, time_exp);
 }
 
-}  // namespace termpool::core
+} // namespace termpool::core

@@ -55,12 +55,15 @@ int solve_quadratic(double a, double b, double c, double roots[2]) noexcept;
 ///   descending root.
 /// - Grazing contacts (f touches 0 with f' == 0 and does not go below) may return either the
 ///   touch time or +infinity; a time where f is clearly positive is never returned.
-/// - A descending root is located to the precision f can be evaluated in double: within a few
-///   ulps when well conditioned, and in general where |f| is at rounding level (about 4 eps times
-///   sum |c_k| t^k). Where the side is known, the time just before contact (f >= 0) is preferred.
+/// - A descending root is located to the precision f can be evaluated in double: the result t
+///   satisfies |f(t)| <= about 8 eps * sum_k |c_k| t^k (the rounding level of Horner's scheme),
+///   which is within a few ulps of the root when the crossing is well conditioned, and within
+///   (that bound) / |f'(t)| in general. Either side of the root is possible at that level (f may
+///   be a rounding-level negative); only when the bracket shrinks to adjacent doubles is the
+///   side with f > 0 (just before contact) returned deliberately.
 /// - Degenerate f (degree < 4, f == 0) is handled; f == 0 yields +infinity.
 /// - horizon < 0 or NaN yields +infinity; horizon == +infinity searches all t >= 0.
 ///   Coefficients must be finite. No allocation, no recursion, bounded iteration count.
 double first_contact_time(const Polynomial4& f, double horizon) noexcept;
 
-}  // namespace termpool::core
+} // namespace termpool::core
