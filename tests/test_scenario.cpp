@@ -30,7 +30,7 @@ ScenarioError refused(const std::string& text) {
 }
 
 struct BadCase {
-    const char* text;
+    std::string text;
     int line;
     const char* says;
 };
@@ -361,4 +361,157 @@ TEST_CASE("numbers print with %.9g and read without the locale", "[scenario]") {
     CHECK_FALSE(parse_integer("15a"));
     CHECK(parse_uint64("18446744073709551615") == 18446744073709551615ULL);
     CHECK_FALSE(parse_uint64("-1"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The game context: game, shooter, groups, break, call (and the refused push-out).
+
+namespace {
+
+/// A cue ball, balls 1, 8 and 9 well apart, and a strike: enough for any context to be valid.
+const std::string table_with_shot = "ball 0 0.5 0.635\nball 1 1.5 0.3\nball 8 1.9 0.635\n"
+                                    "ball 9 1.5 1.0\nstrike 1 0\n";
+
+} // namespace
+
+TEST_CASE("a scenario without game directives has no game context", "[scenario]") {
+    CHECK_FALSE(parsed(table_with_shot).game);
+    CHECK_FALSE(parsed("rack 8ball\nstrike 12 0\n").game);
+}
+
+TEST_CASE("each game directive parses", "[scenario]") {
+    using namespace termpool;
+    const Scenario plain = parsed("game 8ball\n" + table_with_shot);
+    REQUIRE(plain.game);
+    CHECK(plain.game->type == GameType::eight_ball);
+    CHECK(plain.game->shooter == 1);
+    CHECK(plain.game->player1_group == Group::open);
+    CHECK_FALSE(plain.game->is_break);
+    CHECK(plain.game->call.ball == 0);
+    CHECK_FALSE(plain.game->call.safety);
+
+    CHECK(parsed("game 8ball-bar\n" + table_with_shot).game->type == GameType::eight_ball_bar);
+    CHECK(parsed("game 9ball\n" + table_with_shot).game->type == GameType::nine_ball);
+
+    CHECK(parsed("shooter 1\n" + table_with_shot).game->shooter == 1);
+    CHECK(parsed("shooter 2\n" + table_with_shot).game->shooter == 2);
+
+    CHECK(parsed("groups open\n" + table_with_shot).game->player1_group == Group::open);
+    CHECK(parsed("groups 1=solids\n" + table_with_shot).game->player1_group == Group::solids);
+    CHECK(parsed("groups 1=stripes\n" + table_with_shot).game->player1_group == Group::stripes);
+
+    CHECK(parsed("break\n" + table_with_shot).game->is_break);
+
+    const Scenario called = parsed(table_with_shot + "call 9 6  # into the far corner\n");
+    CHECK(called.game->call.ball == 9);
+    CHECK(called.game->call.pocket == 6);
+    CHECK_FALSE(called.game->call.safety);
+    const Scenario eight = parsed(table_with_shot + "call 8 3\n"); // the 8 may be called
+    CHECK(eight.game->call.ball == 8);
+    CHECK(eight.game->call.pocket == 3);
+    const Scenario safety = parsed(table_with_shot + "call safety\n");
+    CHECK(safety.game->call.safety);
+    CHECK(safety.game->call.ball == 0);
+}
+
+TEST_CASE("any game directive makes a context, 8-ball unless `game` says otherwise", "[scenario]") {
+    using namespace termpool;
+    for (const char* directive : {"shooter 2", "groups 1=stripes", "break", "call 1 2"}) {
+        INFO(directive);
+        const Scenario s = parsed(std::string(directive) + "\n" + table_with_shot);
+        REQUIRE(s.game);
+        CHECK(s.game->type == GameType::eight_ball);
+    }
+    // All of them together, in any order, with the balls and the rack.
+    const Scenario all = parsed("call 3 4\nshooter 2\nrack 8ball\ngroups 1=stripes\n"
+                                "game 8ball-bar\nstrike 3 10\n");
+    REQUIRE(all.game);
+    CHECK(all.game->type == GameType::eight_ball_bar);
+    CHECK(all.game->shooter == 2);
+    CHECK(all.game->player1_group == Group::stripes);
+    CHECK(all.game->call.ball == 3);
+    CHECK(all.game->call.pocket == 4);
+    // A break may be any layout: the referee judges what happened.
+    CHECK(parsed("game 9ball\nbreak\nball 0 0.5 0.5\nball 5 2 0.5\nstrike 5 0\n").game->is_break);
+    // `groups open` is fine in 9-ball: it says nothing.
+    CHECK(parsed("game 9ball\ngroups open\n" + table_with_shot).game);
+    // A rack puts its balls on the table for a call (the 9-ball rack has 1..9).
+    CHECK(parsed("call 5 1\nrack 9ball\nstrike 10 0\n").game->call.ball == 5);
+}
+
+TEST_CASE("bad game directives on their own line", "[scenario]") {
+    check_refusals({
+        {"game\n", 1, "missing field (usage: game 8ball|8ball-bar|9ball)"},
+        {"game 8ball 9ball\n", 1, "extra field '9ball'"},
+        {"game snooker\n", 1, "unknown game 'snooker' (expected 8ball, 8ball-bar or 9ball)"},
+        {"game 8-ball\n", 1, "unknown game"},
+        {"shooter\n", 1, "missing field"},
+        {"shooter 3\n", 1, "shooter '3' is not 1 or 2"},
+        {"shooter 0\n", 1, "shooter '0' is not 1 or 2"},
+        {"shooter one\n", 1, "is not 1 or 2"},
+        {"shooter 1 2\n", 1, "extra field"},
+        {"groups\n", 1, "missing field"},
+        {"groups solids\n", 1, "unknown groups 'solids' (expected open, 1=solids or 1=stripes)"},
+        {"groups 2=solids\n", 1, "unknown groups"},
+        {"groups 1=solids 2=stripes\n", 1, "extra field"},
+        {"break 1\n", 1, "extra field '1' (usage: break)"},
+        {"call\n", 1, "missing field (usage: call BALL POCKET | call safety)"},
+        {"call 1\n", 1, "missing field"},
+        {"call 1 3 4\n", 1, "extra field '4'"},
+        {"call safety 3\n", 1, "extra field '3'"},
+        {"call x 3\n", 1, "called ball 'x' is not an integer"},
+        {"call 0 3\n", 1, "the cue ball (0) cannot be called"},
+        {"call 16 3\n", 1, "called ball 16 is outside 1..15"},
+        {"call -1 3\n", 1, "called ball -1 is outside 1..15"},
+        {"call 1 corner\n", 1, "called pocket 'corner' is not an integer"},
+        {"call 1 0\n", 1, "called pocket 0 is outside 1..6"},
+        {"call 1 7\n", 1, "called pocket 7 is outside 1..6"},
+        {"\npush-out\n", 2, "push-out is not supported yet"},
+        {"game 9ball\npush-out\n", 2, "push-out is not supported yet"},
+    });
+}
+
+TEST_CASE("repeated game directives are refused at the repeat", "[scenario]") {
+    check_refusals({
+        {"game 8ball\ngame 8ball\n", 2, "more than one 'game' line (the first is line 1)"},
+        {"shooter 1\n\nshooter 2\n", 3, "more than one 'shooter' line (the first is line 1)"},
+        {"groups open\ngroups open\n", 2, "more than one 'groups' line"},
+        {"break\nbreak\n", 2, "more than one 'break' line"},
+        {"call 1 3\ncall safety\n", 2, "more than one 'call' line"},
+    });
+}
+
+TEST_CASE("game contexts that cannot happen name the later line involved", "[scenario]") {
+    const std::string& shot = table_with_shot; // lines 1..5
+    check_refusals({
+        // Groups on a break: the table is open at the break, whichever comes first.
+        {"groups open\nbreak\n" + shot, 2,
+         "'groups open' (line 1) cannot go with 'break': the table is open at the break"},
+        {"break\n\ngroups 1=solids\n" + shot, 3,
+         "'groups 1=solids' cannot go with 'break' (line 1)"},
+        // 9-ball has neither groups nor called shots.
+        {"game 9ball\ngroups 1=stripes\n" + shot, 2,
+         "'groups 1=stripes' cannot go with 'game 9ball' (line 1): 9-ball has no groups"},
+        {"groups 1=solids\ngame 9ball\n" + shot, 2, "9-ball has no groups"},
+        {"game 9ball\n" + shot + "call 1 3\n", 7,
+         "'call' cannot go with 'game 9ball' (line 1): 9-ball shots are not called"},
+        {"call safety\ngame 9ball\n" + shot, 2, "9-ball shots are not called"},
+        // The called ball must be on the table.
+        {shot + "call 2 3\n", 6, "called ball 2 is not on the table"},
+        {"call 10 1\nrack 9ball\nstrike 10 0\n", 1, "called ball 10 is not on the table"},
+        // Nothing to judge without a strike: reported at the first game directive.
+        {"ball 0 0.5 0.5\n\nshooter 2\ngame 8ball\n", 3, "'shooter' without a strike: nothing"},
+        {"game 9ball\nrack 9ball\n", 1, "'game' without a strike: nothing to judge"},
+        {"ball 0 0.5 0.5\nbreak\n", 2, "'break' without a strike"},
+        {"ball 0 0.5 0.5\nball 1 1 1\ncall 1 1\n", 3, "'call' without a strike"},
+        {"groups open\n", 1, "'groups' without a strike"},
+    });
+}
+
+TEST_CASE("a game context does not hide the other errors", "[scenario]") {
+    // Line-local errors come first, then the balls, then the game context.
+    CHECK(refused("game 9ball\ncall 1 3\nball 0 x 1\n").line == 3);
+    CHECK(refused("game 9ball\ncall 1 3\nball 0 1 1\nball 1 1.01 1\nstrike 1 0\n").line == 4);
+    CHECK(refused("game 8ball\nstrike 1 0\n").message.find("strike without a cue ball") !=
+          std::string::npos);
 }

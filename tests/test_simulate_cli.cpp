@@ -4,7 +4,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -86,6 +88,88 @@ const char* const simple_shot = "# a cut shot with some follow\n"
                                 "ball 1 1.5 0.66\n"
                                 "ball 2 2.0 0.3 mass=0.16\n"
                                 "strike 3 0 0 0.2\n";
+
+/// The referee's lines: everything after the `rest` line.
+std::vector<std::string> referee_lines(const std::string& out) {
+    const std::vector<std::string> lines = lines_of(out);
+    auto rest = lines.begin();
+    while (rest != lines.end() && !rest->starts_with("rest "))
+        ++rest;
+    REQUIRE(rest != lines.end());
+    return {rest + 1, lines.end()};
+}
+
+/// Runs a scenario with a game context that must succeed; returns its referee's lines, joined.
+std::string verdict_of(const TempDir& dir, const std::string& scenario) {
+    const Run r = run(dir, "simulate " + dir.write("game.txt", scenario));
+    INFO(scenario << "stderr: " << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.empty());
+    std::string joined;
+    for (const std::string& line : referee_lines(r.out))
+        joined += line + "\n";
+    return joined;
+}
+
+// Shots on the 9ft table (2.54 x 1.27 m, R = 0.028575 m). Corner pocket 3 is at (2.54, 0); the
+// line y = 2.54 - x runs into it at -45 degrees, and a ball centre on it drops once it crosses
+// the capture line behind the mouth. Each outcome below was checked by running the scenario.
+
+/// The cue ball drawn back after sending the 1 down y = 2.54 - x into pocket 3 (the README's
+/// example); ball 9 sits out of the way so the table has both groups.
+const char* const straight_in = "ball 0 1.9 0.64\n"
+                                "ball 1 2.3 0.24\n"
+                                "ball 9 0.6 0.9\n"
+                                "strike 2 -45 0 -0.5\n";
+
+/// The cue ball alone down y = 2.54 - x into pocket 3, touching nothing.
+const char* const cue_into_pocket = "ball 0 2.2 0.34\n"
+                                    "ball 1 0.6 0.9\n"
+                                    "strike 2 -45\n";
+
+/// Runs a break and checks the form of its referee's lines and that they agree with the events
+/// and balls printed above them.
+void check_break_output(const std::string& scenario) {
+    INFO(scenario);
+    TempDir dir;
+    const Run r = run(dir, "simulate " + dir.write("break.txt", scenario));
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.empty());
+
+    const std::vector<std::string> lines = referee_lines(r.out);
+    REQUIRE(lines.size() >= 6);
+    std::smatch m;
+    REQUIRE(std::regex_match(lines[0], m, std::regex("first-contact (none|[0-9]+)")));
+    const std::string first_contact = m[1];
+    CHECK(std::regex_match(lines[1], std::regex("foul (none|scratch|cue-off-table|off-table|"
+                                                "no-contact|wrong-ball-first|no-rail|bad-break)")));
+    CHECK(std::regex_match(lines[2], std::regex("pocketed( [0-9]+)*")));
+    CHECK(std::regex_match(lines[3], std::regex("groups (open|1=solids|1=stripes)")));
+    CHECK(std::regex_match(lines[4], std::regex("next [12]")));
+    CHECK(std::regex_match(lines[5], std::regex("ball-in-hand (none|kitchen|anywhere)")));
+    std::size_t i = 6;
+    if (i < lines.size() && lines[i].starts_with("choice"))
+        CHECK(std::regex_match(lines[i++], std::regex("choice( [a-z-]+)+")));
+    if (i < lines.size() && lines[i].starts_with("winner"))
+        CHECK(std::regex_match(lines[i++], std::regex("winner [12] [a-z-]+")));
+    CHECK(i == lines.size());
+
+    // The referee's lines agree with the events and balls printed above them.
+    const std::size_t contact = r.out.find("ball-ball 0 ");
+    REQUIRE(contact != std::string::npos);
+    const std::string hit = r.out.substr(contact + 12, r.out.find('\n', contact) - contact - 12);
+    CHECK(first_contact == hit);
+    std::multiset<std::string> dropped, listed;
+    for (const std::string& line : lines_of(r.out)) {
+        if (std::regex_match(line, m, std::regex("ball ([0-9]+) \\S+ \\S+ pocket [1-6]")))
+            dropped.insert(m[1]);
+    }
+    std::istringstream pocketed(lines[2].substr(8));
+    for (std::string id; pocketed >> id;)
+        listed.insert(id);
+    CHECK(listed == dropped);
+}
 
 } // namespace
 
@@ -251,5 +335,124 @@ TEST_CASE("bench runs small workloads and refuses bad options", "[cli]") {
         CHECK(b.status == 2);
         CHECK(b.out.empty());
         CHECK(b.err.find("usage:") != std::string::npos);
+    }
+}
+
+TEST_CASE("simulate judges a break: well-formed referee lines after rest", "[cli]") {
+    // Seed 3 pockets nothing, seed 11 pockets two balls (checked by running them).
+    const char* const breaks[] = {
+        "game 8ball\nrack 8ball 3\nbreak\nstrike 12 0\n",
+        "game 8ball\nrack 8ball 11\nbreak\nstrike 12 0\n",
+        "game 9ball\nrack 9ball 3\nbreak\nstrike 12 0\n",
+    };
+    for (const char* const scenario : breaks)
+        check_break_output(scenario);
+}
+
+TEST_CASE("simulate: a called ball pocketed on an open table takes its group", "[cli]") {
+    TempDir dir;
+    CHECK(verdict_of(dir, std::string("game 8ball\ncall 1 3\n") + straight_in) ==
+          "first-contact 1\nfoul none\npocketed 1\ngroups 1=solids\nnext 1\n"
+          "ball-in-hand none\n");
+    // Player 2 taking the solids gives player 1 the stripes.
+    CHECK(verdict_of(dir, std::string("shooter 2\ncall 1 3\n") + straight_in) ==
+          "first-contact 1\nfoul none\npocketed 1\ngroups 1=stripes\nnext 2\n"
+          "ball-in-hand none\n");
+    // The same ball called in another pocket: nothing is decided and the turn passes.
+    CHECK(verdict_of(dir, std::string("game 8ball\ncall 1 4\n") + straight_in) ==
+          "first-contact 1\nfoul none\npocketed 1\ngroups open\nnext 2\n"
+          "ball-in-hand none\n");
+    // A safety passes the turn whatever drops.
+    CHECK(verdict_of(dir, std::string("call safety\n") + straight_in).find("next 2\n") !=
+          std::string::npos);
+}
+
+TEST_CASE("simulate: a scratch outranks no-contact and gives ball in hand", "[cli]") {
+    TempDir dir;
+    // The cue ball touches no ball either, but the scratch is the foul that counts.
+    CHECK(verdict_of(dir, std::string("game 8ball\n") + cue_into_pocket) ==
+          "first-contact none\nfoul scratch\npocketed 0\ngroups open\nnext 2\n"
+          "ball-in-hand anywhere\n");
+    // Bar rules give the ball in hand in the kitchen only.
+    CHECK(verdict_of(dir, std::string("game 8ball-bar\nshooter 2\n") + cue_into_pocket) ==
+          "first-contact none\nfoul scratch\npocketed 0\ngroups open\nnext 1\n"
+          "ball-in-hand kitchen\n");
+}
+
+TEST_CASE("simulate: 9-ball, a higher ball hit first is a foul", "[cli]") {
+    TempDir dir;
+    // Straight along y = 0.635 into the 2; the 1 is off the line.
+    CHECK(verdict_of(dir, "game 9ball\nball 0 1.0 0.635\nball 1 0.5 1.0\nball 2 1.5 0.635\n"
+                          "strike 2 0\n") ==
+          "first-contact 2\nfoul wrong-ball-first\npocketed\ngroups open\nnext 2\n"
+          "ball-in-hand anywhere\n");
+}
+
+TEST_CASE("simulate: the 8 pocketed before the group is cleared loses", "[cli]") {
+    TempDir dir;
+    // A clean combination down y = 2.54 - x: cue ball, 1, 8, pocket 3. Player 1 has the
+    // solids and the 2 is still on the table.
+    CHECK(verdict_of(dir, "game 8ball\ngroups 1=solids\nball 0 1.5 1.04\nball 1 1.9 0.64\n"
+                          "ball 8 2.2 0.34\nball 2 0.5 1.0\nstrike 3 -45\n") ==
+          "first-contact 1\nfoul none\npocketed 8\ngroups 1=solids\nnext 1\n"
+          "ball-in-hand none\nwinner 2 eight-early\n");
+}
+
+TEST_CASE("simulate prints the choices owed and the other ways a game ends", "[cli]") {
+    TempDir dir;
+    // A soft break drives fewer than four balls to a rail: the opponent chooses.
+    CHECK(verdict_of(dir, "game 8ball\nrack 8ball\nbreak\nstrike 1 0\n")
+              .ends_with("next 2\nball-in-hand none\nchoice play-on re-rack re-break\n"));
+    // The 8 on the break (the straight-in shot with the 8 in place of the 1).
+    const std::string eight_on_break =
+        "break\nball 0 1.9 0.64\nball 8 2.3 0.24\nball 1 0.5 1.0\nstrike 2 -45 0 -0.5\n";
+    CHECK(verdict_of(dir, "game 8ball\n" + eight_on_break)
+              .ends_with("pocketed 8\ngroups open\nnext 1\nball-in-hand none\n"
+                         "choice spot-eight re-break\n"));
+    CHECK(verdict_of(dir, "game 8ball-bar\n" + eight_on_break)
+              .ends_with("pocketed 8\ngroups open\nnext 1\nball-in-hand none\n"
+                         "winner 1 eight-on-break\n"));
+    // The 8 called and made by player 2, whose group (stripes) is cleared.
+    const std::string eight_shot =
+        "game 8ball\nshooter 2\ngroups 1=solids\nball 0 1.9 0.64\nball 8 2.3 0.24\n"
+        "ball 1 0.5 1.0\nstrike 2 -45 0 -0.5\n";
+    CHECK(verdict_of(dir, eight_shot + "call 8 3\n").ends_with("winner 2 eight-pocketed\n"));
+    CHECK(verdict_of(dir, eight_shot + "call 8 4\n").ends_with("winner 1 eight-wrong-pocket\n"));
+    // 9-ball: the 9 on a combination off the 1 wins.
+    CHECK(verdict_of(dir, "game 9ball\nball 0 1.5 1.04\nball 1 1.9 0.64\nball 9 2.2 0.34\n"
+                          "strike 3 -45\n") ==
+          "first-contact 1\nfoul none\npocketed 9\ngroups open\nnext 1\n"
+          "ball-in-hand none\nwinner 1 nine-pocketed\n");
+}
+
+TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
+    struct Case {
+        const char* text;
+        int line;
+        const char* says;
+    };
+    const Case cases[] = {
+        {"game pool\n", 1, "unknown game 'pool'"},
+        {"ball 0 1 1\nbreak\ngroups open\nstrike 1 0\n", 3, "cannot go with 'break'"},
+        {"game 9ball\ngroups 1=solids\nball 0 1 1\nstrike 1 0\n", 2, "9-ball has no groups"},
+        {"game 9ball\nball 0 1 1\nball 1 2 1\ncall 1 3\nstrike 1 0\n", 4, "not called"},
+        {"ball 0 1 1\ncall 1 3\nstrike 1 0\n", 2, "called ball 1 is not on the table"},
+        {"call 0 3\n", 1, "cue ball (0) cannot be called"},
+        {"call 8 9\n", 1, "called pocket 9 is outside 1..6"},
+        {"game 9ball\nbreak\npush-out\n", 3, "push-out is not supported"},
+        {"shooter 3\n", 1, "not 1 or 2"},
+        {"rack 8ball\nbreak\n", 2, "without a strike"},
+        {"game 8ball\ngame 9ball\n", 2, "more than one 'game' line"},
+    };
+    TempDir dir;
+    int n = 0;
+    for (const Case& c : cases) {
+        const std::string file = dir.write("bad" + std::to_string(n++) + ".txt", c.text);
+        const Run r = run(dir, "simulate " + file);
+        INFO(c.text << "\nstderr: " << r.err);
+        CHECK(r.status == 2);
+        CHECK(r.out.empty());
+        CHECK(r.err.starts_with(file + ":" + std::to_string(c.line) + ": "));
+        CHECK(r.err.find(c.says) != std::string::npos);
     }
 }

@@ -34,4 +34,29 @@ std::string format_shot(const std::vector<Event>& events, const std::vector<Ball
     return out;
 }
 
+std::string format_verdict(const Verdict& verdict) {
+    std::string out = "first-contact ";
+    out += verdict.first_contact < 0 ? "none" : std::to_string(verdict.first_contact);
+    out += "\nfoul " + std::string(foul_name(verdict.foul)) + "\npocketed";
+    for (const int id : verdict.pocketed)
+        out += " " + std::to_string(id);
+    // The same words as the `groups` directive, so a verdict can seed the next scenario.
+    out += "\ngroups ";
+    out += verdict.player1_group == Group::open
+               ? std::string("open")
+               : std::string("1=") + group_name(verdict.player1_group);
+    out += "\nnext " + std::to_string(verdict.next_shooter);
+    out += "\nball-in-hand " + std::string(ball_in_hand_name(verdict.ball_in_hand)) + "\n";
+    if (verdict.chooser != 0) {
+        out += "choice";
+        for (const Choice c : verdict.choices)
+            out += " " + std::string(choice_name(c));
+        out += "\n";
+    }
+    if (verdict.winner != 0)
+        out += "winner " + std::to_string(verdict.winner) + " " + win_reason_name(verdict.reason) +
+               "\n";
+    return out;
+}
+
 } // namespace termpool::cli

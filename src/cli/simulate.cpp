@@ -1,9 +1,11 @@
-// `termpool simulate [FILE]`: reads a scenario, simulates the shot, prints events and the end.
+// `termpool simulate [FILE]`: reads a scenario, simulates the shot, prints events and the end,
+// and with a game context what the referee made of the shot.
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <termpool/rules.hpp>
 #include <termpool/simulator.hpp>
 #include <variant>
 
@@ -78,6 +80,15 @@ int simulate_command(const std::vector<std::string>& args) {
             simulate_shot(scenario.table, scenario.params, scenario.balls, *scenario.strike);
         output = format_shot(shot.events, shot.balls, shot.rest_time);
         cut_short = shot.event_limit_hit;
+        // A shot stopped before the balls came to rest has no outcome to judge yet.
+        if (scenario.game && !cut_short) {
+            const GameContext& context = *scenario.game;
+            Game game =
+                Game::from_position(context.type, scenario.table, scenario.params, scenario.balls,
+                                    context.shooter, context.player1_group, context.is_break);
+            // No push-out: from_position cannot allow one, so the parser refuses `push-out`.
+            output += format_verdict(game.apply(ShotCall{context.call, false}, shot));
+        }
     } else {
         output = format_shot({}, scenario.balls, 0);
     }
