@@ -364,7 +364,7 @@ TEST_CASE("numbers print with %.9g and read without the locale", "[scenario]") {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The game context: game, shooter, groups, break, call (and the refused push-out).
+// The game context: game, shooter, groups, break, call and push-out.
 
 namespace {
 
@@ -466,8 +466,8 @@ TEST_CASE("bad game directives on their own line", "[scenario]") {
         {"call 1 corner\n", 1, "called pocket 'corner' is not an integer"},
         {"call 1 0\n", 1, "called pocket 0 is outside 1..6"},
         {"call 1 7\n", 1, "called pocket 7 is outside 1..6"},
-        {"\npush-out\n", 2, "push-out is not supported yet"},
-        {"game 9ball\npush-out\n", 2, "push-out is not supported yet"},
+        {"push-out 1\n", 1, "extra field '1'"},
+        {"game 9ball\npush-out\npush-out\n", 3, "more than one 'push-out' line"},
     });
 }
 

@@ -388,6 +388,15 @@ TEST_CASE("simulate: 9-ball, a higher ball hit first is a foul", "[cli]") {
           "ball-in-hand anywhere\n");
 }
 
+TEST_CASE("simulate: a 9-ball push-out hitting nothing is no foul and owes a choice", "[cli]") {
+    TempDir dir;
+    // Straight up the table from the 1, which is off the line: no contact, no foul.
+    CHECK(verdict_of(dir, "game 9ball\nball 0 0.5 0.6\nball 1 1.5 0.6\nball 9 2.0 0.3\n"
+                          "push-out\nstrike 1 90\n") ==
+          "first-contact none\nfoul none\npocketed\ngroups open\nnext 2\n"
+          "ball-in-hand none\nchoice shoot pass-back\n");
+}
+
 TEST_CASE("simulate: the 8 pocketed before the group is cleared loses", "[cli]") {
     TempDir dir;
     // A clean combination down y = 2.54 - x: cue ball, 1, 8, pocket 3. Player 1 has the
@@ -439,7 +448,10 @@ TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
         {"ball 0 1 1\ncall 1 3\nstrike 1 0\n", 2, "called ball 1 is not on the table"},
         {"call 0 3\n", 1, "cue ball (0) cannot be called"},
         {"call 8 9\n", 1, "called pocket 9 is outside 1..6"},
-        {"game 9ball\nbreak\npush-out\n", 3, "push-out is not supported"},
+        {"game 9ball\nbreak\npush-out\nball 0 1 1\nstrike 1 0\n", 3,
+         "the push-out is the shot after the break"},
+        {"push-out\nball 0 1 1\nstrike 1 0\n", 1, "push-out needs 'game 9ball'"},
+        {"game 8ball\npush-out\nball 0 1 1\nstrike 1 0\n", 2, "the push-out is a 9-ball rule"},
         {"shooter 3\n", 1, "not 1 or 2"},
         {"rack 8ball\nbreak\n", 2, "without a strike"},
         {"game 8ball\ngame 9ball\n", 2, "more than one 'game' line"},

@@ -430,11 +430,13 @@ Problem parse_call(const Line& line, Draft& draft) {
     return {};
 }
 
-Problem parse_push_out(const Line&, Draft&) {
-    // Game::from_position cannot set up the shot after a break with a push-out allowed, so a
-    // push-out here would be judged as an ordinary shot: refuse it rather than mislead.
-    return "push-out is not supported yet (the referee cannot start a game at the shot after "
-           "a break)";
+Problem parse_push_out(const Line& line, Draft& draft) {
+    if (Problem p = arity(line, 0, 0, "push-out"))
+        return p;
+    if (Problem p = once(draft, "push-out", line))
+        return p;
+    draft.game.push_out = true;
+    return {};
 }
 
 using Handler = Problem (*)(const Line&, Draft&);
@@ -453,7 +455,8 @@ constexpr Directive directives[] = {
 };
 
 /// The directives that give a scenario a game context, in the order they are documented.
-constexpr std::string_view context_directives[] = {"game", "shooter", "groups", "break", "call"};
+constexpr std::string_view context_directives[] = {"game",  "shooter", "groups",
+                                                    "break", "call",    "push-out"};
 
 /// A ball about to go on the table, with the line that put it there.
 struct Placed {
@@ -574,6 +577,15 @@ std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Pl
                             "9-ball has no groups");
         if (call_line)
             return conflict({"call", *call_line}, game_said, "9-ball shots are not called");
+    }
+    if (const std::optional<int> push_line = line_of(draft, "push-out")) {
+        if (game.type != GameType::nine_ball)
+            return game_line ? conflict({"push-out", *push_line}, game_said,
+                                        "the push-out is a 9-ball rule")
+                             : ScenarioError{*push_line, "push-out needs 'game 9ball'"};
+        if (break_line)
+            return conflict({"push-out", *push_line}, {"break", *break_line},
+                            "the push-out is the shot after the break");
     }
     if (call_line && game.call.ball != 0) {
         const bool on_table = std::any_of(placed.begin(), placed.end(), [&](const Placed& p) {

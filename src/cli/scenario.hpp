@@ -17,7 +17,7 @@
 namespace termpool::cli {
 
 /// The game around the shot, for the referee: given by the directives `game`, `shooter`,
-/// `groups`, `break` and `call`. Every field has passed the checks against the rest of the
+/// `groups`, `break`, `call` and `push-out`. Every field has passed the checks against the rest of the
 /// scenario (a called ball is on the table, 9-ball has neither groups nor calls, ...).
 struct GameContext {
     GameType type = GameType::eight_ball; ///< `game`; 8-ball when only other directives are given
@@ -25,6 +25,7 @@ struct GameContext {
     Group player1_group = Group::open;    ///< player 1's group (player 2 has the other)
     bool is_break = false;                ///< the shot is the break
     Call call;                            ///< the 8-ball call; ball 0 when nothing was called
+    bool push_out = false;                ///< `push-out`: 9-ball, the shot right after the break
 };
 
 /// A scenario that passed every check and can be handed to the simulator as it is.

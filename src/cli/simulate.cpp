@@ -83,11 +83,11 @@ int simulate_command(const std::vector<std::string>& args) {
         // A shot stopped before the balls came to rest has no outcome to judge yet.
         if (scenario.game && !cut_short) {
             const GameContext& context = *scenario.game;
-            Game game =
-                Game::from_position(context.type, scenario.table, scenario.params, scenario.balls,
-                                    context.shooter, context.player1_group, context.is_break);
-            // No push-out: from_position cannot allow one, so the parser refuses `push-out`.
-            output += format_verdict(game.apply(ShotCall{context.call, false}, shot));
+            Game game = Game::from_position(context.type, scenario.table, scenario.params,
+                                            scenario.balls, context.shooter,
+                                            context.player1_group, context.is_break,
+                                            context.push_out);
+            output += format_verdict(game.apply(ShotCall{context.call, context.push_out}, shot));
         }
     } else {
         output = format_shot({}, scenario.balls, 0);
