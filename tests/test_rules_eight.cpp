@@ -238,6 +238,16 @@ TEST_CASE("8-ball fouls, each on a real shot", "[rules][eight][fouls]") {
     }
 }
 
+TEST_CASE("8-ball: hitting an own ball and another at the same instant is legal",
+          "[rules][eight][fouls]") {
+    for (const Group group : {Group::solids, Group::stripes}) {
+        Game game = position(GameType::eight_ball, spread({0, 1, 8, 9}), 1, group);
+        const Verdict v = game.apply({}, hand_made(game, {hit(0, 1, 0.1), hit(0, 9, 0.1), rail(9)}));
+        CHECK(v.foul == Foul::none);
+        CHECK(v.first_contact == (group == Group::solids ? 1 : 9));
+    }
+}
+
 TEST_CASE("8-ball: pocketing the called 8 after the group wins", "[rules][eight][win]") {
     Game game = position(GameType::eight_ball, with_extra(straight_in(8, 1), {9, 10}), 1,
                          Group::solids);

@@ -397,6 +397,15 @@ TEST_CASE("simulate: a 9-ball push-out hitting nothing is no foul and owes a cho
           "ball-in-hand none\nchoice shoot pass-back\n");
 }
 
+TEST_CASE("simulate: a cue ball meeting two balls at once may take the legal one first", "[cli]") {
+    TempDir dir;
+    // Straight between the 1 and the 9, which touch the line at the same instant.
+    const std::string verdict =
+        verdict_of(dir, "game 8ball\ngroups 1=stripes\nball 0 1.0 0.635\n"
+                        "ball 9 1.5 0.663576\nball 1 1.5 0.606424\nstrike 2 0\n");
+    CHECK(verdict.starts_with("first-contact 9\nfoul none\n"));
+}
+
 TEST_CASE("simulate: the 8 pocketed before the group is cleared loses", "[cli]") {
     TempDir dir;
     // A clean combination down y = 2.54 - x: cue ball, 1, 8, pocket 3. Player 1 has the

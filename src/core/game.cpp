@@ -219,6 +219,7 @@ Verdict Game::apply(const ShotCall& call, const ShotResult& result) {
 
     Facts facts = Facts::from(result.events);
     facts.targets = legal_targets();
+    facts.prefer_legal_first_contact();
     const Group group = group_of(shooter_);
     facts.group_cleared = group != Group::open && std::ranges::none_of(group_balls(group), [&](int id) {
         return ball_on_table(id);

@@ -22,6 +22,15 @@ bool Game::Facts::left_table(int id) const {
     return std::find(off_table.begin(), off_table.end(), id) != off_table.end();
 }
 
+void Game::Facts::prefer_legal_first_contact() {
+    for (const int id : first_contacts) {
+        if (std::find(targets.begin(), targets.end(), id) != targets.end()) {
+            first_contact = id;
+            return;
+        }
+    }
+}
+
 std::vector<Foul> Game::Facts::common_fouls() const {
     std::vector<Foul> fouls;
     if (dropped(0)) fouls.push_back(Foul::scratch);
@@ -41,11 +50,19 @@ std::vector<Foul> Game::Facts::common_fouls() const {
 Game::Facts Game::Facts::from(const std::vector<Event>& events) {
     Facts f;
     std::vector<int> railed;
+    double first_time = 0;
     for (const Event& e : events) {
         switch (e.kind) {
         case EventKind::ball_ball:
-            if (f.first_contact < 0 && (e.ball == 0 || e.other == 0))
-                f.first_contact = e.ball == 0 ? e.other : e.ball;
+            if (e.ball == 0 || e.other == 0) {
+                const int object = e.ball == 0 ? e.other : e.ball;
+                if (f.first_contact < 0) {
+                    f.first_contact = object;
+                    first_time = e.time;
+                }
+                // Contacts a nanosecond apart are simultaneous to any referee.
+                if (e.time - first_time <= 1e-9) f.first_contacts.push_back(object);
+            }
             break;
         case EventKind::cushion:
         case EventKind::jaw:

@@ -8,6 +8,7 @@ namespace termpool {
 
 struct Game::Facts {
     int first_contact = -1;          // first ball the cue ball touched, -1 for none
+    std::vector<int> first_contacts; // all balls it touched at that same instant
     bool rail_after_contact = false; // a ball hit a cushion or jaw after the first contact
     int balls_to_rail = 0;           // distinct object balls that hit a cushion or jaw
     std::vector<int> pocketed;       // balls that dropped, in order (the cue ball too)
@@ -22,6 +23,9 @@ struct Game::Facts {
     bool left_table(int id) const;
 
     static Facts from(const std::vector<Event>& events);
+    // When the cue ball met several balls at once, the shooter gets the benefit of the doubt:
+    // the first contact is a legal target among them if there is one.
+    void prefer_legal_first_contact();
     // The fouls every game shares: cue ball pocketed or off the table, an object ball off the
     // table, no contact, wrong ball first, no cushion after contact (a break is judged apart).
     std::vector<Foul> common_fouls() const;
