@@ -17,9 +17,11 @@ enum class RackType {
     nine_ball,  ///< diamond of 9, the 1 at the apex, the 9 in the centre
 };
 
-/// Gap between neighbouring balls in a rack (m); real racks are rarely perfectly frozen.
-inline constexpr double rack_gap = 0.0002;
-/// Largest displacement of a ball from its rack spot when a seed jitters the rack (m).
+/// Gap between neighbouring balls in a rack (m): a tight rack, nearly frozen. (A looser rack
+/// spreads far less on the break: with 0.2 mm gaps half as many balls reach a cushion.)
+inline constexpr double rack_gap = 0.00001;
+/// Largest displacement of a ball from its rack spot when a seed jitters the rack (m); balls
+/// that the jitter made overlap are then pushed apart.
 inline constexpr double rack_jitter = 0.0001;
 
 /// The object balls racked with the apex on the foot spot and the cue ball on the head spot.

@@ -23,6 +23,26 @@ std::vector<Vec2> rack_spots(const Table& table, double spacing, RackType type) 
     return spots;
 }
 
+// Pushes overlapping balls apart, a pair at a time, until none overlap (jitter can make them).
+void separate(std::vector<Ball>& balls, double radius) {
+    const double apart = 2 * radius + 1e-7;
+    for (int pass = 0; pass < 100; ++pass) {
+        bool moved = false;
+        for (std::size_t i = 0; i < balls.size(); ++i) {
+            for (std::size_t j = i + 1; j < balls.size(); ++j) {
+                const Vec2 d = balls[j].position - balls[i].position;
+                const double distance = length(d);
+                if (distance >= apart || distance == 0) continue;
+                const Vec2 push = d * ((apart - distance) / (2 * distance));
+                balls[i].position -= push;
+                balls[j].position += push;
+                moved = true;
+            }
+        }
+        if (!moved) return;
+    }
+}
+
 template <class T> void shuffle(std::vector<T>& v, Random& rng) {
     for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.below(i)]);
 }
@@ -88,6 +108,7 @@ std::vector<Ball> make_rack(const Table& table, const PhysicsParams& params, Rac
         }
         balls.push_back(b);
     }
+    if (seed) separate(balls, params.ball_radius);
     return balls;
 }
 
