@@ -1,6 +1,7 @@
 // termpool entry point: dispatches to the subcommands.
 
 #include "cli/commands.hpp"
+#include "tui/game_main.hpp"
 
 #include <exception>
 #include <iostream>
@@ -15,7 +16,9 @@ void print_usage(std::ostream& out) {
     out << "usage: termpool [COMMAND] [ARGS...]\n"
            "\n"
            "commands:\n"
-           "  termpool                     play pool in the terminal (coming soon)\n"
+           "  termpool [--player1 NAME] [--player2 NAME] [--game 8ball|8ball-bar|9ball]\n"
+           "           [--table 7ft|8ft|9ft] [--ascii]\n"
+           "                               play pool in the terminal\n"
            "  termpool simulate [FILE]     run the physics simulator on FILE\n"
            "                               (standard input if FILE is omitted or -)\n"
            "  termpool bench [--breaks N] [--shots N] [--seed S]\n"
@@ -31,11 +34,10 @@ void print_usage(std::ostream& out) {
 int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 1, argv + argc);
 
-    if (args.empty()) {
-        std::cerr << "termpool: the terminal game is not built yet in this version.\n"
-                     "See 'termpool --help' for the available commands.\n";
-        return 1;
-    }
+    // No command, or only the game's options: play.
+    if (args.empty() || (args.front().starts_with("--") && args.front() != "--help" &&
+                         args.front() != "--version"))
+        return termpool::tui::run_game(args);
 
     const std::string& command = args.front();
     const std::vector<std::string> rest(args.begin() + 1, args.end());

@@ -15,15 +15,20 @@
 #include <termpool/table.hpp>
 
 #include "cli/commands.hpp"
+#include "tui/render_bench.hpp"
+#include "tui/render_figures.hpp"
 #include "cli/numbers.hpp"
 
 namespace termpool::cli {
 namespace {
 
 constexpr const char* usage = "usage: termpool bench [--breaks N] [--shots N] [--seed S]\n"
+                              "       termpool bench --render\n"
                               "  --breaks N  seeded 8-ball breaks to time (default 1000, N >= 1)\n"
                               "  --shots N   random shots on the break layouts (default 10000)\n"
-                              "  --seed S    seed of the break angles and the shots (default 1)\n";
+                              "  --seed S    seed of the break angles and the shots (default 1)\n"
+                              "  --render    time the terminal front end instead: frame\n"
+                              "              composition and bytes sent per animation frame\n";
 
 constexpr double break_speed = 12.0;        // m/s, a firm break
 constexpr double break_angle_jitter = 0.5;  // degrees either way, so that breaks differ
@@ -35,6 +40,7 @@ struct Options {
     std::uint64_t breaks = 1000;
     std::uint64_t shots = 10000;
     std::uint64_t seed = 1;
+    bool render = false;
 };
 
 /// The options, or nothing after a message on stderr (bad usage) or on stdout (--help).
@@ -45,6 +51,10 @@ std::optional<Options> parse_options(const std::vector<std::string>& args, bool&
         if (name == "-h" || name == "--help") {
             help = true;
             return std::nullopt;
+        }
+        if (name == "--render") {
+            options.render = true;
+            continue;
         }
         std::optional<std::string> value;
         if (const std::size_t eq = name.find('=');
@@ -163,6 +173,21 @@ std::string cpu_name() {
     return "unknown processor";
 }
 
+/// The terminal front end's figures: composing a frame, and what curses sends per frame.
+int bench_render() {
+    std::printf("termpool bench --render: one core of: %s\n\n", cpu_name().c_str());
+    std::printf("%-28s %12s\n", "frame composition", "us/frame");
+    for (const auto& [w, h] : {std::pair{80, 24}, {100, 32}, {200, 60}})
+        std::printf("  %3dx%-3d %31.1f\n", w, h, tui::time_render_us(w, h, 400));
+    const tui::FrameBytes bytes = tui::measure_break_bytes(100, 32);
+    std::printf("\nbytes to the terminal during an 8-ball break at 100x32, 60 frames/s "
+                "(xterm-256color):\n");
+    std::printf("  first full frame %10.0f bytes\n", bytes.first_frame_bytes);
+    std::printf("  animation frames %10d\n", bytes.frames);
+    std::printf("  mean per frame   %10.1f bytes\n", bytes.mean_bytes);
+    return 0;
+}
+
 } // namespace
 
 int bench_command(const std::vector<std::string>& args) {
@@ -173,6 +198,7 @@ int bench_command(const std::vector<std::string>& args) {
         return help ? 0 : 2;
     }
     const Options options = *parsed;
+    if (options.render) return bench_render();
     const Table table = make_table(TableSize::nine_foot);
     const PhysicsParams params;
     Random rng(options.seed);

@@ -1,0 +1,245 @@
+// Aim, power and spin arithmetic, and the straight-line geometry of the aiming aid.
+
+#include "tui/aim.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace termpool::tui {
+namespace {
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+
+double degrees(double radians) {
+    return radians * 180.0 / std::numbers::pi;
+}
+double radians(double degrees) {
+    return degrees * std::numbers::pi / 180.0;
+}
+
+double wrap_degrees(double deg) {
+    double d = std::fmod(deg, 360.0);
+    if (d < 0)
+        d += 360.0;
+    // fmod of a tiny negative number plus 360 rounds to 360 itself.
+    return d >= 360.0 ? 0.0 : d;
+}
+
+// Smallest t >= 0 at which p + t d (d a unit vector) is `radius` from `centre` while
+// approaching it; infinity when it never is.
+double cast_circle(Vec2 p, Vec2 d, Vec2 centre, double radius) {
+    const Vec2 to = centre - p;
+    const double along = dot(to, d);
+    if (along <= 0)
+        return inf; // behind, or moving away
+    const double miss2 = length_squared(to) - along * along;
+    const double r2 = radius * radius;
+    if (miss2 >= r2)
+        return inf;
+    return std::max(0.0, along - std::sqrt(r2 - miss2));
+}
+
+// Smallest t >= 0 at which p + t d crosses segment a-b from the side `normal` points to.
+double cast_segment(Vec2 p, Vec2 d, Vec2 a, Vec2 b, Vec2 normal) {
+    const double closing = dot(d, normal);
+    if (closing >= 0)
+        return inf; // parallel or leaving
+    const double t = std::max(0.0, dot(a - p, normal) / closing);
+    const Vec2 hit = p + d * t;
+    const Vec2 ab = b - a;
+    const double u = dot(hit - a, ab) / length_squared(ab);
+    return u >= 0 && u <= 1 ? t : inf;
+}
+
+struct Hit {
+    double t = inf;
+    int ball = -1;    // index into balls
+    int cushion = -1; // index into table.cushions, or 18 + jaw point
+};
+
+// The first thing a ball of radius R centred at p meets moving along d: another ball (skipping
+// ids in `ignore`), a cushion or jaw moved R out, or a jaw point.
+Hit cast(const Table& table, const std::vector<Ball>& balls, double R, Vec2 p, Vec2 d, int ignore_a,
+         int ignore_b) {
+    Hit hit;
+    for (std::size_t i = 0; i < balls.size(); ++i) {
+        const Ball& b = balls[i];
+        if (b.id == ignore_a || b.id == ignore_b || b.state == MotionState::pocketed)
+            continue;
+        const double t = cast_circle(p, d, b.position, 2 * R);
+        if (t < hit.t)
+            hit = {t, static_cast<int>(i), -1};
+    }
+    for (std::size_t k = 0; k < table.cushions.size(); ++k) {
+        const CushionSegment& c = table.cushions[k];
+        const Vec2 shift = c.normal * R;
+        const double t = cast_segment(p, d, c.start + shift, c.end + shift, c.normal);
+        if (t < hit.t)
+            hit = {t, -1, static_cast<int>(k)};
+    }
+    for (std::size_t k = 0; k < table.jaw_points.size(); ++k) {
+        const double t = cast_circle(p, d, table.jaw_points[k], R);
+        if (t < hit.t)
+            hit = {t, -1, static_cast<int>(table.cushions.size() + k)};
+    }
+    return hit;
+}
+
+// Where p + t d leaves the box between the cushion noses (p inside): the end of a path that
+// runs into a pocket's mouth between the jaws. Infinity when p is outside.
+double leave_box(const Table& table, Vec2 p, Vec2 d) {
+    if (p.x < 0 || p.y < 0 || p.x > table.length || p.y > table.width)
+        return inf;
+    double t = inf;
+    if (d.x > 0)
+        t = std::min(t, (table.length - p.x) / d.x);
+    if (d.x < 0)
+        t = std::min(t, -p.x / d.x);
+    if (d.y > 0)
+        t = std::min(t, (table.width - p.y) / d.y);
+    if (d.y < 0)
+        t = std::min(t, -p.y / d.y);
+    return t;
+}
+
+// The path from p along d up to the first contact, at most `max_length` long.
+std::vector<Vec2> short_path(const Table& table, const std::vector<Ball>& balls, double R, Vec2 p,
+                             Vec2 d, int ignore_a, int ignore_b, double max_length) {
+    const Hit hit = cast(table, balls, R, p, d, ignore_a, ignore_b);
+    const double t = std::isfinite(hit.t) ? hit.t : leave_box(table, p, d);
+    return {p, p + d * std::min(t, max_length)};
+}
+
+} // namespace
+
+double aim_from_pointer(Vec2 cue, Vec2 pointer) {
+    const Vec2 d = pointer - cue;
+    if (d.x == 0 && d.y == 0)
+        return 0;
+    return wrap_degrees(degrees(std::atan2(d.y, d.x)));
+}
+
+double turn(double deg, double delta) {
+    return wrap_degrees(std::round(wrap_degrees(deg + delta) * 1e6) / 1e6);
+}
+
+double power_from_distance(double metres) {
+    if (!(metres > 0))
+        return 0;
+    return std::min(1.0, metres / full_power_distance);
+}
+
+double power_from_time(double seconds, double period) {
+    if (!(period > 0) || !std::isfinite(seconds))
+        return 0;
+    const double phase = std::fmod(std::fabs(seconds), period) / period;
+    return phase < 0.5 ? 2 * phase : 2 - 2 * phase;
+}
+
+double speed_from_power(double power, bool is_break) {
+    const double p = std::isfinite(power) ? std::clamp(power, 0.0, 1.0) : 0.0;
+    const double top = is_break ? max_break_speed : max_shot_speed;
+    return min_shot_speed + p * (top - min_shot_speed);
+}
+
+double clamp_spin(double offset) {
+    if (!std::isfinite(offset))
+        return 0;
+    return std::round(std::clamp(offset, -max_spin, max_spin) * 1e6) / 1e6;
+}
+
+AimPreview preview_shot(const Table& table, const std::vector<Ball>& balls, double R, Vec2 cue,
+                        double aim_deg, double aid_length) {
+    AimPreview out;
+    const Vec2 d = unit_from_angle(radians(aim_deg));
+    const Hit hit = cast(table, balls, R, cue, d, 0, 0);
+    if (!std::isfinite(hit.t)) {
+        // Straight into a pocket between the jaws: the path ends in the mouth. Off the table
+        // (which the game never asks for) it is a short stub.
+        const double t = leave_box(table, cue, d);
+        out.cue_path = {cue, cue + d * (std::isfinite(t) ? t : aid_length)};
+        return out;
+    }
+    const Vec2 contact = cue + d * hit.t;
+    out.cue_path = {cue, contact};
+    if (hit.ball < 0) {
+        out.cushion = hit.cushion < static_cast<int>(table.cushions.size()) ? hit.cushion : -1;
+        return out;
+    }
+    const Ball& object = balls[static_cast<std::size_t>(hit.ball)];
+    out.object_ball = object.id;
+    out.has_ghost = true;
+    out.ghost = contact;
+    // The object ball leaves along the line of centres; the cue ball keeps the rest of its
+    // velocity, which is at right angles to it (the tangent line).
+    const Vec2 n = normalized(object.position - contact);
+    out.object_path = short_path(table, balls, R, object.position, n, 0, object.id, aid_length);
+    const Vec2 tangent = d - n * dot(d, n);
+    if (length(tangent) > 1e-6) {
+        out.deflect_path =
+            short_path(table, balls, R, contact, normalized(tangent), 0, object.id, aid_length);
+    }
+    return out;
+}
+
+std::vector<TargetChoice> rank_targets(const Table& table, const std::vector<Ball>& balls, double R,
+                                       Vec2 cue, const std::vector<int>& legal) {
+    // Weights: one degree of cut counts as much as 5 cm of travel; a side pocket entered at
+    // an angle is harder still, and beyond 60 degrees from square the ball hits the jaw.
+    constexpr double per_metre = 20.0;
+    constexpr double max_cut = 80.0;
+    constexpr double side_limit = 60.0;
+    std::vector<TargetChoice> out;
+    for (const Ball& b : balls) {
+        if (b.id == 0 || b.state == MotionState::pocketed)
+            continue;
+        if (std::find(legal.begin(), legal.end(), b.id) == legal.end())
+            continue;
+        const Vec2 to_ball = b.position - cue;
+        TargetChoice best{b.id, 0, aim_from_pointer(cue, b.position),
+                          1000 + per_metre * length(to_ball)};
+        for (const Pocket& pocket : table.pockets) {
+            const Vec2 to_pocket = pocket.position - b.position;
+            const double pocket_distance = length(to_pocket);
+            if (pocket_distance < 1e-9)
+                continue;
+            const Vec2 u = to_pocket / pocket_distance;
+            const Vec2 ghost = b.position - u * (2 * R);
+            const Vec2 shot = ghost - cue;
+            const double shot_length = length(shot);
+            if (shot_length < 1e-9)
+                continue;
+            const double cut =
+                degrees(std::acos(std::clamp(dot(shot / shot_length, u), -1.0, 1.0)));
+            if (cut > max_cut)
+                continue;
+            double score = cut + per_metre * (shot_length + pocket_distance);
+            const bool side = pocket.number == 2 || pocket.number == 5;
+            if (side) {
+                const double off_square = degrees(std::acos(std::clamp(std::fabs(u.y), 0.0, 1.0)));
+                if (off_square > side_limit)
+                    continue;
+                score += off_square / 2;
+            }
+            if (score < best.difficulty)
+                best = {b.id, pocket.number, aim_from_pointer(cue, ghost), score};
+        }
+        out.push_back(best);
+    }
+    std::stable_sort(out.begin(), out.end(), [](const TargetChoice& a, const TargetChoice& b) {
+        return a.difficulty != b.difficulty ? a.difficulty < b.difficulty : a.ball < b.ball;
+    });
+    return out;
+}
+
+std::vector<int> targets_easiest_first(const Table& table, const std::vector<Ball>& balls, double R,
+                                       Vec2 cue, const std::vector<int>& legal) {
+    std::vector<int> ids;
+    for (const TargetChoice& t : rank_targets(table, balls, R, cue, legal))
+        ids.push_back(t.ball);
+    return ids;
+}
+
+} // namespace termpool::tui

@@ -1,0 +1,536 @@
+#include "tui/app.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ncursesw/curses.h>
+#include <numbers>
+
+#include "tui/aim.hpp"
+#include "tui/messages.hpp"
+#include "tui/player_name.hpp"
+#include "tui/pocket_cells.hpp"
+
+namespace termpool::tui {
+namespace {
+
+constexpr int frame_ms = 16; // about 60 frames per second while something moves
+constexpr double spin_step = 0.1, fine_spin_step = 0.02;
+constexpr double power_step = 0.02;
+
+bool calls_pocket(const Game& game, int target) {
+    if (game.is_break())
+        return false;
+    switch (game.type()) {
+    case GameType::eight_ball:
+        return true;
+    case GameType::eight_ball_bar:
+        return target == 8;
+    case GameType::nine_ball:
+        return false;
+    }
+    return false;
+}
+
+} // namespace
+
+App::App(Terminal& terminal, const GameOptions& options)
+    : term_(terminal), options_(options), table_(make_table(options.table)),
+      game_(options.game, table_, params_, 1, 1),
+      seed_(static_cast<std::uint64_t>(Clock::now().time_since_epoch().count())) {
+    new_game(1);
+    for (int p = 0; p < 2; ++p)
+        if (options.names[p])
+            names_[p] = *options.names[p];
+    // Ask for the names the command line did not give.
+    if (!options.names[0]) {
+        entry_player_ = 1;
+    } else if (!options.names[1]) {
+        entry_player_ = 2;
+    }
+    mode_ = entry_player_ != 0 ? Mode::names : Mode::placing;
+    mode_after_entry_ = Mode::placing;
+    if (mode_ != Mode::names)
+        start_turn();
+}
+
+void App::new_game(int breaker) {
+    game_ = Game(options_.game, table_, params_, breaker, seed_++);
+    pocketed_by_[0].clear();
+    pocketed_by_[1].clear();
+    shown_balls_ = game_.balls();
+    trajectory_.reset();
+    message_ = names_[breaker - 1] + " breaks: place the cue ball in the kitchen";
+}
+
+Vec2 App::cue_position() const {
+    for (const Ball& b : game_.balls())
+        if (b.id == 0 && b.state != MotionState::pocketed)
+            return b.position;
+    return table_.head_spot();
+}
+
+void App::start_turn() {
+    shown_balls_ = game_.balls();
+    overlay_.clear();
+    safety_ = false;
+    pocket_chosen_ = false;
+    target_index_ = -1;
+    side_ = follow_ = 0;
+    if (game_.winner() != 0) {
+        mode_ = Mode::game_over;
+        return;
+    }
+    if (game_.chooser() != 0) {
+        mode_ = Mode::choosing;
+        return;
+    }
+    const Ball cue = [&] {
+        for (const Ball& b : game_.balls())
+            if (b.id == 0)
+                return b;
+        return Ball{};
+    }();
+    const bool must_place =
+        game_.ball_in_hand() != BallInHand::none &&
+        (cue.state == MotionState::pocketed || !game_.legal_placement(cue.position));
+    if (game_.ball_in_hand() != BallInHand::none) {
+        mode_ = Mode::placing;
+        place_ = must_place ? (game_.legal_placement(table_.head_spot())
+                                   ? table_.head_spot()
+                                   : game_.legal_placements().front())
+                            : cue.position;
+        return;
+    }
+    mode_ = Mode::aiming;
+    aim_at_easiest();
+}
+
+void App::aim_at_easiest() {
+    const std::vector<TargetChoice> order = rank_targets(table_, game_.balls(), params_.ball_radius,
+                                                         cue_position(), game_.legal_targets());
+    if (!order.empty()) {
+        target_index_ = std::clamp(target_index_, 0, static_cast<int>(order.size()) - 1);
+        aim_deg_ = order[static_cast<std::size_t>(target_index_)].aim_deg;
+    }
+    update_preview();
+}
+
+void App::update_preview() {
+    const AimPreview p =
+        preview_shot(table_, game_.balls(), params_.ball_radius, cue_position(), aim_deg_);
+    preview_.cue_path = p.cue_path;
+    preview_.has_ghost = p.has_ghost;
+    preview_.ghost = p.ghost;
+    preview_.object_path = p.object_path;
+    preview_.deflect_path = p.deflect_path;
+    if (p.object_ball != preview_ball_)
+        pocket_chosen_ = false;
+    preview_ball_ = p.object_ball;
+    if (!pocket_chosen_) {
+        // Propose the obvious pocket: the one the object ball heads for most directly.
+        called_pocket_ = 0;
+        if (p.object_ball > 0 && calls_pocket(game_, p.object_ball) && p.object_path.size() >= 2) {
+            const Vec2 from = p.object_path.front();
+            const Vec2 dir = normalized(p.object_path.back() - from);
+            double best = -2;
+            for (const Pocket& pocket : table_.pockets) {
+                const double c = dot(normalized(pocket.position - from), dir);
+                if (c > best) {
+                    best = c;
+                    called_pocket_ = pocket.number;
+                }
+            }
+        }
+    }
+}
+
+double App::current_power() const {
+    if (!time_power_)
+        return power_;
+    const double t = std::chrono::duration<double>(Clock::now() - power_start_).count();
+    return power_from_time(t);
+}
+
+void App::shoot() {
+    const double power = current_power();
+    const Strike strike{speed_from_power(power, game_.is_break()), aim_deg_, side_, follow_};
+    call_ = {};
+    if (safety_) {
+        call_.call.safety = true;
+    } else if (preview_ball_ > 0 && calls_pocket(game_, preview_ball_) && called_pocket_ != 0) {
+        call_.call = {preview_ball_, called_pocket_, false};
+    }
+    shooter_before_ = game_.shooter();
+    Trajectory trajectory(params_, game_.balls().size());
+    result_ = simulate_shot(table_, params_, game_.balls(), strike, &trajectory);
+    trajectory_ = std::move(trajectory);
+    shot_start_ = Clock::now();
+    mode_ = Mode::animating;
+    message_.clear();
+    power_ = power;
+}
+
+void App::after_shot() {
+    const Verdict v = game_.apply(call_, result_);
+    trajectory_.reset();
+    for (const int id : v.pocketed)
+        if (id != 0)
+            pocketed_by_[shooter_before_ - 1].push_back(id);
+    message_ = verdict_message(v, shooter_before_, names_);
+    start_turn();
+}
+
+void App::compose(View& v) const {
+    v.table = &table_;
+    v.balls = mode_ == Mode::animating ? shown_balls_ : game_.balls();
+    v.ball_radius = params_.ball_radius;
+    v.game = game_.type();
+    v.names[0] = names_[0];
+    v.names[1] = names_[1];
+    v.shooter = game_.chooser() != 0 ? game_.chooser() : game_.shooter();
+    if (mode_ == Mode::animating)
+        v.shooter = shooter_before_;
+    v.groups[0] = game_.group_of(1);
+    v.groups[1] = game_.group_of(2);
+    v.pocketed_by[0] = pocketed_by_[0];
+    v.pocketed_by[1] = pocketed_by_[1];
+    v.message = message_;
+    v.help = help_;
+    if (mode_ == Mode::placing) {
+        v.placing = true;
+        v.placement_legal = game_.legal_placement(place_);
+        for (Ball& b : v.balls) {
+            if (b.id != 0)
+                continue;
+            b.position = place_;
+            b.state = MotionState::stationary;
+        }
+        if (message_.empty())
+            v.message = names_[game_.shooter() - 1] + ": place the cue ball";
+    }
+    if (mode_ == Mode::aiming) {
+        v.aiming = true;
+        v.aim_deg = aim_deg_;
+        v.power = current_power();
+        v.speed = speed_from_power(v.power, game_.is_break());
+        v.time_power = time_power_;
+        v.side = side_;
+        v.follow = follow_;
+        v.show_aid = show_aid_;
+        if (show_aid_) {
+            v.cue_path = preview_.cue_path;
+            v.has_ghost = preview_.has_ghost;
+            v.ghost = preview_.ghost;
+            v.object_path = preview_.object_path;
+            v.deflect_path = preview_.deflect_path;
+        }
+        v.show_marker = show_marker_;
+        v.marker = marker_;
+        v.called_pocket = safety_ ? 0 : called_pocket_;
+    }
+    if (mode_ == Mode::choosing) {
+        std::string text = names_[game_.chooser() - 1] + ", choose:";
+        for (std::size_t i = 0; i < game_.choices().size(); ++i)
+            text += "\n" + std::to_string(i + 1) + "  " + choice_words(game_.choices()[i]);
+        v.overlay = text;
+    }
+    if (mode_ == Mode::game_over)
+        v.overlay = message_ + "\n\nr  rematch (loser breaks)\nn  new game\nq  quit";
+    if (mode_ == Mode::names || entry_player_ != 0) {
+        std::string text = "termpool \u2014 " + std::string(game_type_name(game_.type())) +
+                           "\n\nName of player " + std::to_string(entry_player_) + ": " + entry_ +
+                           "_\n(Enter keeps \"" + names_[entry_player_ - 1] + "\")";
+        if (!entry_error_.empty())
+            text += "\n" + entry_error_;
+        v.overlay = text;
+    }
+    if (confirm_quit_)
+        v.overlay = "Quit the game?  y / n";
+}
+
+Grid App::frame(int width, int height) {
+    // render() shows "Please enlarge the terminal" itself when the layout does not fit.
+    layout_ = make_layout(table_, width, height);
+    View view;
+    compose(view);
+    return render(view, layout_, term_.caps(), width, height);
+}
+
+void App::handle_text_entry(const Input& in) {
+    if (in.kind == Input::Kind::text) {
+        entry_ += in.text;
+        entry_error_.clear();
+        return;
+    }
+    if (in.kind != Input::Kind::key)
+        return;
+    if (in.key == KEY_BACKSPACE || in.key == 127 || in.key == 8) {
+        // Remove one UTF-8 character.
+        while (!entry_.empty() && (entry_.back() & 0xC0) == 0x80)
+            entry_.pop_back();
+        if (!entry_.empty())
+            entry_.pop_back();
+    } else if (in.key == key_enter || in.key == KEY_ENTER) {
+        std::string error;
+        const auto name = clean_player_name(entry_, error);
+        if (!error.empty()) {
+            entry_error_ = error;
+            return;
+        }
+        if (name)
+            names_[entry_player_ - 1] = *name;
+        entry_.clear();
+        entry_error_.clear();
+        const bool starting = mode_ == Mode::names;
+        if (starting && entry_player_ == 1 && !options_.names[1]) {
+            entry_player_ = 2;
+            return;
+        }
+        entry_player_ = 0;
+        if (starting) {
+            message_ = names_[game_.shooter() - 1] + " breaks: place the cue ball in the kitchen";
+            start_turn();
+        }
+    } else if (in.key == key_escape && mode_ != Mode::names) {
+        entry_player_ = 0;
+        entry_.clear();
+        entry_error_.clear();
+    }
+}
+
+void App::handle(const Input& in) {
+    if (in.kind == Input::Kind::signal) {
+        running_ = false;
+        return;
+    }
+    if (in.kind == Input::Kind::none || in.kind == Input::Kind::resize)
+        return;
+    if (entry_player_ != 0) {
+        handle_text_entry(in);
+        return;
+    }
+    if (confirm_quit_) {
+        if (in.kind == Input::Kind::text && (in.text == "y" || in.text == "Y"))
+            running_ = false;
+        else if (in.kind != Input::Kind::mouse || in.clicked)
+            confirm_quit_ = false;
+        return;
+    }
+    if (help_) {
+        if (in.kind != Input::Kind::mouse || in.clicked)
+            help_ = false;
+        return;
+    }
+    if (in.kind == Input::Kind::mouse) {
+        handle_mouse(in);
+        return;
+    }
+    handle_key(in.key, in.text);
+}
+
+void App::handle_key(int key, const std::string& text) {
+    if (text == "q") {
+        if (mode_ == Mode::game_over)
+            running_ = false;
+        else
+            confirm_quit_ = true;
+        return;
+    }
+    if (text == "?") {
+        help_ = true;
+        return;
+    }
+    if (text == "n" && mode_ != Mode::game_over && mode_ != Mode::animating) {
+        entry_player_ = game_.chooser() != 0 ? game_.chooser() : game_.shooter();
+        entry_.clear();
+        return;
+    }
+    switch (mode_) {
+    case Mode::names:
+        return;
+    case Mode::animating:
+        if (text == "x")
+            shot_start_ -= std::chrono::hours(1);
+        return;
+    case Mode::game_over:
+        if (text == "r" || text == "n") {
+            const int loser = 3 - game_.winner();
+            new_game(text == "r" ? loser : 1);
+            start_turn();
+        }
+        return;
+    case Mode::choosing: {
+        const auto& choices = game_.choices();
+        if (text.size() == 1 && text[0] >= '1' &&
+            text[0] < '1' + static_cast<int>(choices.size())) {
+            game_.choose(choices[static_cast<std::size_t>(text[0] - '1')]);
+            if (game_.is_break()) {
+                pocketed_by_[0].clear();
+                pocketed_by_[1].clear();
+                message_ = names_[game_.shooter() - 1] + " breaks";
+            } else {
+                message_ = names_[game_.shooter() - 1] + " to shoot";
+            }
+            start_turn();
+        }
+        return;
+    }
+    case Mode::placing: {
+        const double step = 1.0 / layout_.cells_per_metre;
+        if (key == KEY_LEFT || text == "h")
+            place_.x -= step;
+        else if (key == KEY_RIGHT || text == "l")
+            place_.x += step;
+        else if (key == KEY_UP || text == "k")
+            place_.y += 2 * step;
+        else if (key == KEY_DOWN || text == "j")
+            place_.y -= 2 * step;
+        else if ((key == key_enter || key == KEY_ENTER || text == " ") &&
+                 game_.place_cue_ball(place_)) {
+            message_.clear();
+            mode_ = Mode::aiming;
+            aim_at_easiest();
+        }
+        return;
+    }
+    case Mode::aiming:
+        break;
+    }
+
+    // Aiming.
+    if (key == KEY_LEFT || text == "h")
+        aim_deg_ = turn(aim_deg_, 1);
+    else if (key == KEY_RIGHT || text == "l")
+        aim_deg_ = turn(aim_deg_, -1);
+    else if (text == "H" || key == KEY_SLEFT)
+        aim_deg_ = turn(aim_deg_, 0.1);
+    else if (text == "L" || key == KEY_SRIGHT)
+        aim_deg_ = turn(aim_deg_, -0.1);
+    else if (key == KEY_UP || text == "k")
+        power_ = std::min(1.0, power_ + power_step);
+    else if (key == KEY_DOWN || text == "j")
+        power_ = std::max(0.0, power_ - power_step);
+    else if (key == key_enter || key == KEY_ENTER || text == " ") {
+        shoot();
+        return;
+    } else if (text == "[" || text == "]") {
+        target_index_ += text == "]" ? 1 : -1;
+        const int n = static_cast<int>(game_.legal_targets().size());
+        if (n > 0)
+            target_index_ = (target_index_ % n + n) % n;
+        aim_at_easiest();
+        return;
+    } else if (text == "w" || text == "W")
+        follow_ = std::min(0.5, follow_ + (text == "w" ? spin_step : fine_spin_step));
+    else if (text == "s" || text == "S")
+        follow_ = std::max(-0.5, follow_ - (text == "s" ? spin_step : fine_spin_step));
+    else if (text == "d" || text == "D")
+        side_ = std::min(0.5, side_ + (text == "d" ? spin_step : fine_spin_step));
+    else if (text == "a" || text == "A")
+        side_ = std::max(-0.5, side_ - (text == "a" ? spin_step : fine_spin_step));
+    else if (text == "c")
+        side_ = follow_ = 0;
+    else if (text == "p") {
+        time_power_ = !time_power_;
+        power_start_ = Clock::now();
+    } else if (text == "g")
+        show_aid_ = !show_aid_;
+    else if (text == "0")
+        safety_ = !safety_;
+    else if (text.size() == 1 && text[0] >= '1' && text[0] <= '6') {
+        called_pocket_ = text[0] - '0';
+        pocket_chosen_ = true;
+        safety_ = false;
+    }
+    side_ = std::round(side_ * 100) / 100;
+    follow_ = std::round(follow_ * 100) / 100;
+    update_preview();
+}
+
+void App::handle_mouse(const Input& in) {
+    if (mode_ == Mode::animating) {
+        if (in.clicked || in.pressed)
+            shot_start_ -= std::chrono::hours(1);
+        return;
+    }
+    if (!layout_.fits)
+        return;
+    const Vec2 pointer = from_cell(layout_, table_.width, in.x, in.y);
+    if (mode_ == Mode::placing) {
+        place_ = pointer;
+        if ((in.clicked || in.released) && game_.place_cue_ball(place_)) {
+            message_.clear();
+            mode_ = Mode::aiming;
+            aim_at_easiest();
+        }
+        return;
+    }
+    if (mode_ != Mode::aiming)
+        return;
+    if ((in.clicked || in.pressed) && tui::on_shoot_button(layout_, in.x, in.y)) {
+        shoot();
+        return;
+    }
+    if (in.clicked) {
+        if (const int pocket = pocket_at(table_, layout_, in.x, in.y);
+            pocket != 0 && called_pocket_ != 0) {
+            called_pocket_ = pocket;
+            pocket_chosen_ = true;
+            return;
+        }
+        if (time_power_) {
+            shoot();
+            return;
+        }
+    }
+    marker_ = pointer;
+    show_marker_ = true;
+    aim_deg_ = aim_from_pointer(cue_position(), pointer);
+    if (!time_power_)
+        power_ = power_from_distance(length(pointer - cue_position()));
+    if (in.pressed) {
+        if (time_power_) {
+            shoot();
+            return;
+        }
+        dragging_ = true;
+        drag_moved_ = false;
+    } else if (in.moved && dragging_) {
+        drag_moved_ = true;
+    } else if (in.released && dragging_) {
+        dragging_ = false;
+        if (drag_moved_) {
+            update_preview();
+            shoot();
+            return;
+        }
+    }
+    update_preview();
+}
+
+int App::run() {
+    while (running_) {
+        const int w = term_.width(), h = term_.height();
+        if (mode_ == Mode::animating) {
+            const double t = std::chrono::duration<double>(Clock::now() - shot_start_).count();
+            if (t >= result_.rest_time) {
+                after_shot();
+            } else {
+                shown_balls_ = trajectory_->sample(t);
+            }
+        }
+        term_.draw(frame(w, h));
+        const bool moving = mode_ == Mode::animating || (mode_ == Mode::aiming && time_power_);
+        Input in = term_.read(moving ? frame_ms : 500);
+        // Drain what has queued up so that a fast mouse does not lag behind.
+        while (in.kind != Input::Kind::none && running_) {
+            handle(in);
+            if (in.kind == Input::Kind::signal)
+                break;
+            in = term_.read(0);
+        }
+    }
+    return 0;
+}
+
+} // namespace termpool::tui

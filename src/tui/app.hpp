@@ -1,0 +1,99 @@
+#pragma once
+// The game loop: modes (names, ball in hand, aiming, the shot, choices, game over), input
+// handling and the View each frame is drawn from. Curses stays in terminal.cpp.
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <termpool/rules.hpp>
+#include <termpool/simulator.hpp>
+
+#include "tui/options.hpp"
+#include "tui/terminal.hpp"
+#include "tui/view.hpp"
+
+namespace termpool::tui {
+
+/// One session at the table.
+class App {
+public:
+    /// A new session with the command line's presets.
+    App(Terminal& terminal, const GameOptions& options);
+    /// Runs until the players quit or a signal arrives; returns the exit status.
+    int run();
+
+private:
+    enum class Mode { names, placing, aiming, animating, choosing, game_over };
+    using Clock = std::chrono::steady_clock;
+
+    void new_game(int breaker);
+    void after_shot();
+    void start_turn();
+    void shoot();
+    void compose(View& view) const;
+    Grid frame(int width, int height);
+    void handle(const Input& in);
+    void handle_key(int key, const std::string& text);
+    void handle_mouse(const Input& in);
+    void handle_text_entry(const Input& in);
+    void update_preview();
+    void aim_at_easiest();
+    double current_power() const;
+    Vec2 cue_position() const;
+
+    Terminal& term_;
+    GameOptions options_;
+    Table table_;
+    PhysicsParams params_;
+    Game game_;
+    std::uint64_t seed_;
+    std::string names_[2] = {"Player 1", "Player 2"};
+    Mode mode_ = Mode::names;
+    Layout layout_;
+    bool running_ = true;
+
+    // Text entry (names at the start, `n` to rename).
+    int entry_player_ = 0; // 1 or 2 while a name is being typed
+    std::string entry_;
+    std::string entry_error_;
+    Mode mode_after_entry_ = Mode::placing;
+
+    // Overlays.
+    bool help_ = false;
+    bool confirm_quit_ = false;
+
+    // Aiming.
+    double aim_deg_ = 0;
+    double power_ = 0.3;
+    bool time_power_ = false;
+    Clock::time_point power_start_;
+    double side_ = 0, follow_ = 0;
+    bool show_aid_ = true;
+    bool show_marker_ = false;
+    Vec2 marker_;
+    bool dragging_ = false;
+    bool drag_moved_ = false;
+    int called_pocket_ = 0;
+    bool pocket_chosen_ = false; // the player picked the pocket: keep it while aiming
+    bool safety_ = false;
+    int target_index_ = -1;
+    int preview_ball_ = -1;
+    View preview_; // aiming aid paths
+
+    // Ball in hand.
+    Vec2 place_;
+
+    // The shot being shown.
+    std::optional<Trajectory> trajectory_;
+    ShotResult result_;
+    ShotCall call_;
+    int shooter_before_ = 1;
+    Clock::time_point shot_start_;
+    std::vector<Ball> shown_balls_;
+
+    std::string message_;
+    std::vector<int> pocketed_by_[2];
+    std::string overlay_;
+};
+
+} // namespace termpool::tui

@@ -1,0 +1,61 @@
+// Ball colours, glyphs and styles.
+
+#include "tui/ball_style.hpp"
+
+namespace termpool::tui {
+
+Colour ball_colour(int id) {
+    if (id <= 0)
+        return Colour::white;
+    constexpr Colour colours[8] = {Colour::yellow, Colour::blue,  Colour::red,    Colour::purple,
+                                   Colour::orange, Colour::green, Colour::maroon, Colour::black};
+    return colours[(id - 1) % 8];
+}
+
+bool is_stripe(int id) {
+    return id >= 9 && id <= 15;
+}
+
+std::string ball_glyph(int id, bool utf8) {
+    if (id == 0)
+        return utf8 ? "\u25CF" : "o";
+    const int digit = (id % 10 + 10) % 10;
+    return std::string(1, static_cast<char>('0' + digit));
+}
+
+Style ball_style(int id, bool colour) {
+    Style s;
+    if (!colour) {
+        // Without colour the only marks are reverse and bold: solids are "filled", stripes
+        // "marked", and the 8 both, so that the 8 never looks like a 1..7 or 9..15.
+        s.reverse = !is_stripe(id);
+        s.bold = is_stripe(id) || id == 8;
+        return s;
+    }
+    s.bold = true;
+    if (id == 8) {
+        s.fg = Colour::white;
+        s.bg = Colour::black;
+    } else if (is_stripe(id)) {
+        s.fg = ball_colour(id);
+        s.bg = Colour::white;
+    } else {
+        s.fg = Colour::black;
+        s.bg = ball_colour(id);
+    }
+    return s;
+}
+
+const char* game_title(GameType type) {
+    switch (type) {
+    case GameType::eight_ball:
+        return "8-ball";
+    case GameType::eight_ball_bar:
+        return "8-ball, bar rules";
+    case GameType::nine_ball:
+        return "9-ball";
+    }
+    return "";
+}
+
+} // namespace termpool::tui

@@ -1,0 +1,59 @@
+#pragma once
+// The parts of a frame, each drawn by its own file into a shared Painter. render.cpp calls them
+// in order: table, aim, balls, labels, status rows, panel, overlays.
+
+#include <string>
+
+#include "tui/painter.hpp"
+#include "tui/view.hpp"
+
+namespace termpool::tui {
+
+/// What every drawing function needs: the view, the layout and the painter, plus the table's
+/// frame (felt and rails) in cells.
+struct Frame {
+    const View& view;                                       ///< what to draw
+    const Layout& layout;                                   ///< where
+    Painter& paint;                                         ///< into what
+    int felt_x = 0, felt_y = 0, felt_w = 0, felt_h = 0;     ///< the playing surface, cells
+    int frame_x = 0, frame_y = 0, frame_w = 0, frame_h = 0; ///< surface and rails, cells
+
+    /// A frame for a fitting layout.
+    Frame(const View& v, const Layout& l, Painter& p);
+    /// The table's width W (0 without a table).
+    double table_width() const { return view.table ? view.table->width : 0; }
+    /// The cell holding table point `p`; false when it is not a finite, sane position.
+    bool cell_of(Vec2 p, int& x, int& y) const;
+    /// True when (x, y) is on the playing surface.
+    bool on_felt(int x, int y) const {
+        return x >= felt_x && y >= felt_y && x < felt_x + felt_w && y < felt_y + felt_h;
+    }
+    /// True when (x, y) is on the playing surface or the rails.
+    bool on_frame(int x, int y) const {
+        return x >= frame_x && y >= frame_y && x < frame_x + frame_w && y < frame_y + frame_h;
+    }
+    /// The style of the felt.
+    Style felt() const { return {Colour::normal, Colour::felt}; }
+};
+
+/// Felt, rails, cushions, pockets, head string and foot spot.
+void draw_table(const Frame& f);
+/// Pocket numbers while a pocket is being called (after the balls, so that they stay visible).
+void draw_pocket_labels(const Frame& f);
+/// The aim line and aiming aid, the cue and the pointer's marker.
+void draw_aim(const Frame& f);
+/// The balls on the table.
+void draw_balls(const Frame& f);
+/// The power bar, speed, power mode, spin line and shoot button.
+void draw_status(const Frame& f);
+/// Players, groups, pocketed balls, the legend, the spin diagram and the message.
+void draw_panel(const Frame& f);
+/// A centred box with `text` ('\n' between lines).
+void draw_box(Painter& paint, const std::string& text);
+/// The help overlay: every key and mouse action.
+void draw_help(Painter& paint);
+
+/// "+0.2", "-0.25", "0.0": a tip offset with one or two decimals.
+std::string format_offset(double value);
+
+} // namespace termpool::tui

@@ -1,0 +1,81 @@
+// The status rows under the table while aiming:
+//   power [██████▌     ] 3.4 m/s                 [ shoot ]
+//   spin: side +0.2 follow -0.3                  distance
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "tui/draw.hpp"
+#include "tui/text_width.hpp"
+
+namespace termpool::tui {
+namespace {
+
+// The bar's cells: whole blocks, one partial block in eighths (UTF-8), then blanks.
+void draw_bar(Painter& p, int x, int y, int cells, double power, Style fill) {
+    const double filled = std::clamp(std::isfinite(power) ? power : 0.0, 0.0, 1.0) * cells;
+    static const char* const eighths[8] = {" ",      "\u258F", "\u258E", "\u258D",
+                                           "\u258C", "\u258B", "\u258A", "\u2589"};
+    for (int i = 0; i < cells; ++i) {
+        const double part = std::clamp(filled - i, 0.0, 1.0);
+        if (p.utf8()) {
+            const int e = static_cast<int>(std::floor(part * 8));
+            p.put(x + i, y, e >= 8 ? "\u2588" : eighths[e], fill);
+        } else {
+            const bool on = part >= 0.5;
+            p.put(x + i, y, on ? "#" : "-", on ? fill : Style{});
+        }
+    }
+}
+
+} // namespace
+
+std::string format_offset(double value) {
+    if (!std::isfinite(value) || std::fabs(value) < 0.005)
+        return "0.0";
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%+.2f", value);
+    std::string s = buffer;
+    if (s.back() == '0')
+        s.pop_back();
+    return s;
+}
+
+void draw_status(const Frame& f) {
+    const View& v = f.view;
+    const Layout& l = f.layout;
+    if (!v.aiming || v.placing)
+        return;
+    Painter& p = f.paint;
+    const int x0 = l.status_x, width = l.status_width, y = l.status_y;
+    const Style red{Colour::red, Colour::normal, true};
+
+    char speed[32];
+    std::snprintf(speed, sizeof speed, " %.1f m/s",
+                  std::isfinite(v.speed) ? std::clamp(v.speed, 0.0, 99.9) : 0.0);
+    const int button = l.button_width > 0 ? l.button_width + 1 : 0;
+    const int fixed = 7 + 1 + static_cast<int>(std::string(speed).size()) + button;
+    const int bar = std::min(30, width - fixed);
+    if (bar >= 3) {
+        int x = x0 + p.text(x0, y, "power [", {});
+        draw_bar(p, x, y, bar, v.power, red);
+        x += bar;
+        x += p.text(x, y, "]", {});
+        p.text(x, y, speed, {});
+    }
+    if (l.button_width > 0)
+        p.text(l.button_x, l.button_y, "[ shoot ]",
+               {Colour::black, Colour::highlight, true, !p.colour()}, l.button_width);
+
+    const std::string spin =
+        "spin: side " + format_offset(v.side) + " follow " + format_offset(v.follow);
+    const int used = p.text(x0, y + 1, spin, {}, width);
+    const std::string mode = v.time_power ? "timed" : "distance";
+    const int mode_w = display_width(mode);
+    if (used + 2 + mode_w <= width)
+        p.text(x0 + width - mode_w, y + 1, mode, {Colour::dim});
+}
+
+} // namespace termpool::tui

@@ -1,0 +1,13 @@
+#pragma once
+// Entry point of the terminal game; the header stays free of curses so main.cpp can call it.
+
+#include <string>
+#include <vector>
+
+namespace termpool::tui {
+
+/// `termpool [--player1 NAME] [--player2 NAME] [--game G] [--table T] [--ascii]`: plays the
+/// game in the terminal. Returns the exit status (2 for bad options).
+int run_game(const std::vector<std::string>& args);
+
+} // namespace termpool::tui

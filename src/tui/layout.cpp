@@ -1,0 +1,87 @@
+// make_layout: the largest table that fits the terminal, with the panel beside or below it.
+
+#include <algorithm>
+#include <cmath>
+
+#include "tui/view.hpp"
+
+namespace termpool::tui {
+namespace {
+
+constexpr int side_panel_cols = 26;  // names of up to 20 columns plus marker and indent
+constexpr int panel_gap = 1;         // blank column between the table and a side panel
+constexpr int status_rows = 2;       // power bar, spin line
+constexpr int below_panel_rows = 3;  // two players and a message line at least
+constexpr int shoot_button_cols = 9; // "[ shoot ]"
+
+// The playing surface for `cols` x `rows` cells available to it. Rows are worth two columns,
+// so the scale is limited by whichever of L / cols and W / (2 rows) is tighter. Whole rows keep
+// the cushion lines on cell edges; for the 2:1 tables the columns are then whole too.
+struct Surface {
+    double cells_per_metre = 0;
+    int cols = 0, rows = 0;
+};
+
+Surface fit_surface(const Table& table, int cols, int rows) {
+    if (cols <= 0 || rows <= 0 || table.length <= 0 || table.width <= 0)
+        return {};
+    const double limit = std::min(cols / table.length, 2.0 * rows / table.width);
+    Surface s;
+    s.rows = static_cast<int>(std::floor(table.width * limit / 2 + 1e-9));
+    if (s.rows < 1)
+        return {};
+    s.cells_per_metre = 2.0 * s.rows / table.width;
+    s.cols = std::min(cols, static_cast<int>(std::floor(table.length * s.cells_per_metre + 1e-9)));
+    return s;
+}
+
+} // namespace
+
+Layout make_layout(const Table& table, int width, int height) {
+    Layout l;
+    if (width < l.min_width || height < l.min_height)
+        return l;
+
+    const int frame_extra_cols = 2 * rail_cols, frame_extra_rows = 2 * rail_rows;
+    const Surface side = fit_surface(table, width - side_panel_cols - panel_gap - frame_extra_cols,
+                                     height - frame_extra_rows - status_rows);
+    const Surface below = fit_surface(table, width - frame_extra_cols,
+                                      height - frame_extra_rows - status_rows - below_panel_rows);
+    // Whichever gives the bigger table; the side panel on a tie, as it leaves the rows free.
+    l.panel_below = below.rows > side.rows;
+    const Surface s = l.panel_below ? below : side;
+    if (s.rows < 1)
+        return l;
+
+    const int frame_w = s.cols + frame_extra_cols, frame_h = s.rows + frame_extra_rows;
+    const int area_w = l.panel_below ? width : width - side_panel_cols - panel_gap;
+    const int frame_x = (area_w - frame_w) / 2;
+    const int frame_y = 0;
+
+    l.fits = true;
+    l.cells_per_metre = s.cells_per_metre;
+    l.felt_cols = s.cols;
+    l.felt_rows = s.rows;
+    l.table_left = frame_x + rail_cols;
+    l.table_top = frame_y + rail_rows;
+    l.status_y = frame_y + frame_h;
+    l.status_x = 0;
+    l.status_width = area_w;
+    if (l.panel_below) {
+        l.panel_x = 0;
+        l.panel_y = l.status_y + status_rows;
+        l.panel_width = width;
+        l.panel_height = height - l.panel_y;
+    } else {
+        l.panel_x = width - side_panel_cols;
+        l.panel_y = 0;
+        l.panel_width = side_panel_cols;
+        l.panel_height = height;
+    }
+    l.button_width = shoot_button_cols;
+    l.button_x = l.status_x + l.status_width - shoot_button_cols;
+    l.button_y = l.status_y;
+    return l;
+}
+
+} // namespace termpool::tui

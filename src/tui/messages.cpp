@@ -1,0 +1,102 @@
+#include "tui/messages.hpp"
+
+namespace termpool::tui {
+
+std::string foul_words(Foul foul) {
+    switch (foul) {
+    case Foul::none:
+        return "no foul";
+    case Foul::scratch:
+        return "scratch";
+    case Foul::cue_off_table:
+        return "cue ball off the table";
+    case Foul::off_table:
+        return "ball off the table";
+    case Foul::no_contact:
+        return "no ball hit";
+    case Foul::wrong_ball_first:
+        return "wrong ball first";
+    case Foul::no_rail:
+        return "no rail after contact";
+    case Foul::bad_break:
+        return "illegal break";
+    }
+    return "foul";
+}
+
+std::string choice_words(Choice choice) {
+    switch (choice) {
+    case Choice::play_on:
+        return "play on";
+    case Choice::re_rack:
+        return "re-rack and break";
+    case Choice::re_break:
+        return "opponent breaks again";
+    case Choice::spot_eight:
+        return "spot the 8 and shoot";
+    case Choice::take_solids:
+        return "take solids";
+    case Choice::take_stripes:
+        return "take stripes";
+    case Choice::shoot:
+        return "shoot from here";
+    case Choice::pass_back:
+        return "pass the shot back";
+    }
+    return "?";
+}
+
+std::string win_message(const Verdict& v, int shooter, const std::string names[2]) {
+    const std::string& who = names[shooter - 1];
+    const std::string& winner = names[v.winner - 1];
+    const std::string tail = " \u2014 " + winner + " wins";
+    switch (v.reason) {
+    case WinReason::eight_pocketed:
+        return who + " pocketed the 8" + tail;
+    case WinReason::eight_on_break:
+        return who + " pocketed the 8 on the break" + tail;
+    case WinReason::eight_early:
+        return who + " pocketed the 8 early" + tail;
+    case WinReason::eight_on_foul:
+        return who + " fouled with the 8" + tail;
+    case WinReason::eight_wrong_pocket:
+        return who + " pocketed the 8 in a pocket not called" + tail;
+    case WinReason::eight_off_table:
+        return who + " drove the 8 off the table" + tail;
+    case WinReason::nine_pocketed:
+        return who + " pocketed the 9" + tail;
+    case WinReason::three_fouls:
+        return who + " fouled three times in a row" + tail;
+    case WinReason::none:
+        break;
+    }
+    return winner + " wins";
+}
+
+std::string verdict_message(const Verdict& v, int shooter, const std::string names[2]) {
+    if (v.winner != 0)
+        return win_message(v, shooter, names);
+    const std::string& next = names[v.next_shooter - 1];
+    if (v.stalemate_rerack)
+        return "Stalemate: " + next + " breaks a new rack";
+    if (v.foul != Foul::none) {
+        std::string m = "Foul: " + foul_words(v.foul);
+        if (v.ball_in_hand != BallInHand::none)
+            return m + " \u2014 " + next + " has ball in hand" +
+                   (v.ball_in_hand == BallInHand::kitchen ? " (kitchen)" : "");
+        return m + " \u2014 " + next + " to shoot";
+    }
+    if (v.chooser != 0)
+        return names[v.chooser - 1] + " chooses";
+    if (v.next_shooter != shooter)
+        return "Switch player: " + next + " to shoot";
+    if (v.groups_assigned) {
+        Group mine = v.player1_group;
+        if (v.next_shooter == 2 && mine != Group::open)
+            mine = mine == Group::solids ? Group::stripes : Group::solids;
+        return next + " has " + group_name(mine) + " \u2014 shoot again";
+    }
+    return next + " shoots again";
+}
+
+} // namespace termpool::tui

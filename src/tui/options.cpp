@@ -1,0 +1,66 @@
+#include "tui/options.hpp"
+
+#include "tui/player_name.hpp"
+
+namespace termpool::tui {
+
+std::optional<GameOptions> parse_game_options(const std::vector<std::string>& args,
+                                              std::string& error) {
+    GameOptions o;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&]() -> const std::string* {
+            if (i + 1 >= args.size()) {
+                error = a + " needs a value";
+                return nullptr;
+            }
+            return &args[++i];
+        };
+        if (a == "--ascii") {
+            o.ascii = true;
+        } else if (a == "--player1" || a == "--player2") {
+            const std::string* v = value();
+            if (!v)
+                return std::nullopt;
+            std::string why;
+            const auto name = clean_player_name(*v, why);
+            if (!why.empty()) {
+                error = a + ": " + why;
+                return std::nullopt;
+            }
+            o.names[a == "--player1" ? 0 : 1] = name;
+        } else if (a == "--game") {
+            const std::string* v = value();
+            if (!v)
+                return std::nullopt;
+            const auto g = parse_game_type(*v);
+            if (!g) {
+                error = "unknown game '" + *v + "' (8ball, 8ball-bar or 9ball)";
+                return std::nullopt;
+            }
+            o.game = *g;
+        } else if (a == "--table") {
+            const std::string* v = value();
+            if (!v)
+                return std::nullopt;
+            bool found = false;
+            for (const TableSize t :
+                 {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot}) {
+                if (*v == table_size_name(t)) {
+                    o.table = t;
+                    found = true;
+                }
+            }
+            if (!found) {
+                error = "unknown table '" + *v + "' (7ft, 8ft or 9ft)";
+                return std::nullopt;
+            }
+        } else {
+            error = "unknown option '" + a + "'";
+            return std::nullopt;
+        }
+    }
+    return o;
+}
+
+} // namespace termpool::tui

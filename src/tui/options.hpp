@@ -1,0 +1,24 @@
+#pragma once
+// Command-line options of the game.
+
+#include <optional>
+#include <string>
+#include <termpool/rules.hpp>
+#include <termpool/table.hpp>
+#include <vector>
+
+namespace termpool::tui {
+
+/// What the command line presets.
+struct GameOptions {
+    std::optional<std::string> names[2];    ///< --player1, --player2 (cleaned)
+    GameType game = GameType::eight_ball;   ///< --game
+    TableSize table = TableSize::nine_foot; ///< --table
+    bool ascii = false;                     ///< --ascii: plain ASCII and no colour
+};
+
+/// Parses the game's options; on error returns nothing and sets `error`.
+std::optional<GameOptions> parse_game_options(const std::vector<std::string>& args,
+                                              std::string& error);
+
+} // namespace termpool::tui

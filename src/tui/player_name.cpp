@@ -1,0 +1,43 @@
+// clean_player_name: trim, refuse what a terminal cannot show safely, cut to the column limit.
+
+#include "tui/player_name.hpp"
+
+#include "tui/text_width.hpp"
+
+namespace termpool::tui {
+namespace {
+
+std::string_view trim_spaces(std::string_view s) {
+    while (!s.empty() && s.front() == ' ')
+        s.remove_prefix(1);
+    while (!s.empty() && s.back() == ' ')
+        s.remove_suffix(1);
+    return s;
+}
+
+} // namespace
+
+std::optional<std::string> clean_player_name(std::string_view input, std::string& error) {
+    error.clear();
+    for (std::size_t i = 0; i < input.size();) {
+        char32_t cp;
+        if (!decode_utf8(input, i, cp)) {
+            error = "the name is not valid UTF-8";
+            return std::nullopt;
+        }
+        // Control characters would move the cursor or change the terminal's state when the
+        // name is drawn.
+        if (is_control(cp)) {
+            error = "control characters are not allowed in a name";
+            return std::nullopt;
+        }
+    }
+    // Cutting can leave a space at the end ("ab cd" cut after "ab "), so trim after it too.
+    const std::string cut = truncate_to_width(trim_spaces(input), max_name_columns);
+    const std::string_view name = trim_spaces(cut);
+    if (name.empty())
+        return std::nullopt;
+    return std::string(name);
+}
+
+} // namespace termpool::tui

@@ -1,0 +1,82 @@
+#pragma once
+// The one owner of the terminal (like htop's CRT): it starts and restores curses, turns mouse
+// reporting on and off, maps colour roles to what the terminal has, copies a Grid to the
+// screen and reads keys, mouse events and resizes. No other file touches curses.
+
+#include <memory>
+#include <string>
+
+#include "tui/view.hpp"
+
+struct screen; // curses' SCREEN, kept opaque so that this header does not pull in curses
+
+namespace termpool::tui {
+
+/// One input event.
+struct Input {
+    enum class Kind { none, key, text, mouse, resize, signal };
+    Kind kind = Kind::none; ///< what happened
+    int key = 0;            ///< Kind::key: a curses key code (KEY_LEFT, ...) or a control char
+    std::string text;       ///< Kind::text: one printable character, UTF-8
+    int x = 0, y = 0;       ///< Kind::mouse: the cell
+    bool pressed = false;   ///< button 1 went down
+    bool released = false;  ///< button 1 went up
+    bool clicked = false;   ///< button 1 clicked (down and up in one report)
+    bool moved = false;     ///< the pointer moved (with or without a button)
+};
+
+/// Keys with names curses does not have.
+inline constexpr int key_enter = '\n';
+inline constexpr int key_escape = 27;
+
+/// Curses colour pairs, made on first use for each (foreground, background) role pair.
+class ColourPairs {
+public:
+    /// The pair for a style's colours; 0 (the default pair) in monochrome or when out of pairs.
+    short pair_for(const Style& style, int colours);
+
+private:
+    std::vector<std::pair<int, short>> pairs_; // (fg << 8 | bg) -> pair number
+};
+
+/// Copies a grid into curses' screen with erase, one full draw and one doupdate: curses then
+/// sends only the cells that changed. Terminal::draw and the byte benchmark share it.
+void paint(const Grid& grid, int colours, ColourPairs& pairs);
+
+/// The terminal, for as long as the value lives.
+class Terminal {
+public:
+    /// Starts curses. `ascii` and `no_colour` force the plain versions. Throws
+    /// std::runtime_error when there is no usable terminal.
+    Terminal(bool ascii, bool no_colour);
+    /// Restores the terminal: mouse reporting off, cursor visible, curses ended.
+    ~Terminal();
+    Terminal(const Terminal&) = delete;
+    Terminal& operator=(const Terminal&) = delete;
+
+    /// What the terminal can show.
+    const Capabilities& caps() const { return caps_; }
+    /// Current size in cells.
+    int width() const;
+    /// Current size in cells.
+    int height() const;
+    /// Copies the grid to the screen and updates it with one doupdate; curses sends only the
+    /// cells that changed.
+    void draw(const Grid& grid);
+    /// Waits up to `timeout_ms` (negative: until something happens) for one input event.
+    Input read(int timeout_ms);
+    /// True once SIGINT, SIGTERM or SIGHUP arrived; the caller should leave.
+    static bool signalled();
+    /// The signal that arrived, 0 for none.
+    static int signal_number();
+
+private:
+    Capabilities caps_;
+    ::screen* screen_ = nullptr;
+    ColourPairs pairs_;
+};
+
+/// Restores mouse reporting and the cursor from anywhere (used at exit paths).
+void restore_terminal_modes();
+
+} // namespace termpool::tui

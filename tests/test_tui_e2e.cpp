@@ -1,0 +1,136 @@
+// The real binary in tmux, driven as a player would: names, ball in hand, the break, a mouse
+// motion, a terminal too small, and quitting.
+#include <array>
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <unistd.h>
+
+namespace {
+
+std::string run(const std::string& command) {
+    std::string out;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe)
+        return out;
+    std::array<char, 4096> buffer{};
+    while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+        out.append(buffer.data(), n);
+    pclose(pipe);
+    return out;
+}
+
+struct Tmux {
+    std::string socket = "termpool-e2e-" + std::to_string(getpid());
+    std::string tmux(const std::string& args) const {
+        return run("tmux -L " + socket + " -f /dev/null " + args + " 2>&1");
+    }
+    std::string screen() const { return tmux("capture-pane -p -t e2e"); }
+    std::string flag(const std::string& name) const {
+        std::string v = tmux("display-message -p -t e2e '#{" + name + "}'");
+        while (!v.empty() && (v.back() == '\n' || v.back() == '\r'))
+            v.pop_back();
+        return v;
+    }
+    void keys(const std::string& args) const { tmux("send-keys -t e2e " + args); }
+    bool wait_for(const std::function<bool(const std::string&)>& ok, double seconds = 10) const {
+        const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        while (std::chrono::steady_clock::now() < end) {
+            if (ok(screen()))
+                return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        return false;
+    }
+    bool wait_for_text(const std::string& text, double seconds = 10) const {
+        return wait_for([&](const std::string& s) { return s.find(text) != std::string::npos; },
+                        seconds);
+    }
+    ~Tmux() { tmux("kill-server"); }
+};
+
+std::string hex(int value) {
+    char b[8];
+    std::snprintf(b, sizeof b, "%02x", value);
+    return b;
+}
+
+// An X10 mouse report (what xterm-256color's kmous announces): motion with no button held.
+std::string mouse_motion(int x, int y) {
+    return "-H 1b 5b 4d " + hex(32 + 35) + " " + hex(33 + x) + " " + hex(33 + y);
+}
+
+} // namespace
+
+TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]") {
+    if (std::system("command -v tmux >/dev/null 2>&1") != 0) {
+        WARN("tmux is missing: the end-to-end test of the game is skipped");
+        return;
+    }
+    const char* bin = std::getenv("TERMPOOL_BIN");
+    const std::string binary = bin ? bin : "build/termpool";
+    char dir_template[] = "/tmp/termpool-e2e-XXXXXX";
+    const std::string dir = mkdtemp(dir_template);
+    const std::string status_file = dir + "/status";
+
+    Tmux t;
+    t.tmux("new-session -d -s e2e -x 100 -y 32 \"env TERM=xterm-256color LANG=C.UTF-8 " + binary +
+           "; echo \\$? > " + status_file + "; sleep 60\"");
+    REQUIRE(t.wait_for_text("Name of player 1"));
+
+    // Names at the prompt.
+    t.keys("-l Ann");
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("Name of player 2"));
+    t.keys("-l Bob");
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("place the cue ball"));
+    CHECK(t.flag("mouse_any_flag") == "1");
+
+    // Ball in hand in the kitchen: place it where it is, then break softly (minimum power), which
+    // cannot be a legal break: the turn goes to Bob with a choice.
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    const std::string before_break = t.screen();
+    for (int i = 0; i < 60; ++i)
+        t.keys("j");
+    t.keys("Space");
+    REQUIRE(t.wait_for_text("Bob, choose", 30));
+    const std::string after_break = t.screen();
+    CHECK(after_break != before_break);
+    t.keys("1"); // play on
+    REQUIRE(t.wait_for_text("Bob to shoot"));
+
+    // A mouse motion moves the aim.
+    const std::string before_mouse = t.screen();
+    t.keys(mouse_motion(20, 5));
+    CHECK(t.wait_for([&](const std::string& s) { return s != before_mouse; }, 5));
+
+    // Too small: a message, and the game waits; restored, the table is back.
+    t.tmux("resize-window -t e2e -x 30 -y 10");
+    CHECK(t.wait_for_text("Please enlarge"));
+    t.tmux("resize-window -t e2e -x 100 -y 32");
+    CHECK(t.wait_for_text("[ shoot ]"));
+
+    // Quit, confirm; the exit status is 0 and mouse reporting is off again.
+    t.keys("q");
+    REQUIRE(t.wait_for_text("Quit"));
+    t.keys("y");
+    std::string status;
+    for (int i = 0; i < 100 && status.empty(); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::ifstream in(status_file);
+        std::getline(in, status);
+    }
+    CHECK(status == "0");
+    CHECK(t.flag("mouse_any_flag") == "0");
+    CHECK(t.flag("mouse_button_flag") == "0");
+    std::remove(status_file.c_str());
+    rmdir(dir.c_str());
+}

@@ -1,0 +1,49 @@
+// The message line: the referee's verdicts in the players' words.
+#include <catch2/catch.hpp>
+
+#include "tui/messages.hpp"
+
+using namespace termpool;
+using namespace termpool::tui;
+
+namespace {
+const std::string names[2] = {"Ann", "Bob"};
+}
+
+TEST_CASE("verdicts read as a player would say them", "[tui][messages]") {
+    Verdict v;
+    v.next_shooter = 2;
+    CHECK(verdict_message(v, 1, names) == "Switch player: Bob to shoot");
+
+    v.foul = Foul::scratch;
+    v.ball_in_hand = BallInHand::anywhere;
+    CHECK(verdict_message(v, 1, names) == "Foul: scratch \u2014 Bob has ball in hand");
+    v.ball_in_hand = BallInHand::kitchen;
+    CHECK(verdict_message(v, 1, names) == "Foul: scratch \u2014 Bob has ball in hand (kitchen)");
+
+    Verdict again;
+    again.next_shooter = 1;
+    CHECK(verdict_message(again, 1, names) == "Ann shoots again");
+    again.groups_assigned = true;
+    again.player1_group = Group::stripes;
+    CHECK(verdict_message(again, 1, names) == "Ann has stripes \u2014 shoot again");
+
+    Verdict choice;
+    choice.next_shooter = 2;
+    choice.chooser = 2;
+    choice.choices = {Choice::play_on, Choice::re_rack};
+    CHECK(verdict_message(choice, 1, names) == "Bob chooses");
+}
+
+TEST_CASE("the end of a game names the winner and why", "[tui][messages]") {
+    Verdict v;
+    v.winner = 2;
+    v.reason = WinReason::eight_early;
+    CHECK(verdict_message(v, 1, names) == "Ann pocketed the 8 early \u2014 Bob wins");
+    v.winner = 1;
+    v.reason = WinReason::eight_pocketed;
+    CHECK(win_message(v, 1, names) == "Ann pocketed the 8 \u2014 Ann wins");
+    v.winner = 1;
+    v.reason = WinReason::three_fouls;
+    CHECK(win_message(v, 2, names) == "Bob fouled three times in a row \u2014 Ann wins");
+}
