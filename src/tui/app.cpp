@@ -435,9 +435,10 @@ void App::handle_key(int key, const std::string& text) {
         power_start_ = Clock::now();
     } else if (text == "g")
         show_aid_ = !show_aid_;
-    else if (text == "0")
+    else if (text == "0") {
         safety_ = !safety_;
-    else if (text.size() == 1 && text[0] >= '1' && text[0] <= '6') {
+        message_ = safety_ ? "Safety called: the turn passes whatever drops" : "";
+    } else if (text.size() == 1 && text[0] >= '1' && text[0] <= '6') {
         called_pocket_ = text[0] - '0';
         pocket_chosen_ = true;
         safety_ = false;

@@ -17,6 +17,7 @@ const std::string& help_text() {
                                     "p                 power mode: distance / timed\n"
                                     "g                 aiming aid on / off\n"
                                     "1-6               call a pocket\n"
+                                    "0                 call safety (on / off)\n"
                                     "n                 rename a player\n"
                                     "x                 skip the animation\n"
                                     "?                 this help\n"
