@@ -144,6 +144,10 @@ public:
 
     /// The game played.
     GameType type() const { return type_; }
+    /// The table played on.
+    const Table& table() const { return table_; }
+    /// The physics the shots are simulated with.
+    const PhysicsParams& params() const { return params_; }
     /// The balls on the table (pocketed ones are kept with state pocketed).
     const std::vector<Ball>& balls() const { return balls_; }
     /// The player to shoot (or to choose, see `chooser`): 1 or 2.

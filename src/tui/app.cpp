@@ -9,6 +9,7 @@
 #include "tui/messages.hpp"
 #include "tui/player_name.hpp"
 #include "tui/pocket_cells.hpp"
+#include <termpool/computer.hpp>
 
 namespace termpool::tui {
 namespace {
@@ -41,10 +42,14 @@ App::App(Terminal& terminal, const GameOptions& options)
     for (int p = 0; p < 2; ++p)
         if (options.names[p])
             names_[p] = *options.names[p];
+    if (options.computer) {
+        computer_.emplace(*options.computer, seed_);
+        names_[1] = std::string("Computer (") + level_name(*options.computer) + ")";
+    }
     // Ask for the names the command line did not give.
     if (!options.names[0]) {
         entry_player_ = 1;
-    } else if (!options.names[1]) {
+    } else if (!options.names[1] && !computer_) {
         entry_player_ = 2;
     }
     mode_ = entry_player_ != 0 ? Mode::names : Mode::placing;
@@ -154,12 +159,18 @@ double App::current_power() const {
 void App::shoot() {
     const double power = current_power();
     const Strike strike{speed_from_power(power, game_.is_break()), aim_deg_, side_, follow_};
-    call_ = {};
+    ShotCall call;
     if (safety_) {
-        call_.call.safety = true;
+        call.call.safety = true;
     } else if (preview_ball_ > 0 && calls_pocket(game_, preview_ball_) && called_pocket_ != 0) {
-        call_.call = {preview_ball_, called_pocket_, false};
+        call.call = {preview_ball_, called_pocket_, false};
     }
+    power_ = power;
+    play(strike, call);
+}
+
+void App::play(const Strike& strike, const ShotCall& call) {
+    call_ = call;
     shooter_before_ = game_.shooter();
     Trajectory trajectory(params_, game_.balls().size());
     result_ = simulate_shot(table_, params_, game_.balls(), strike, &trajectory);
@@ -167,7 +178,63 @@ void App::shoot() {
     shot_start_ = Clock::now();
     mode_ = Mode::animating;
     message_.clear();
-    power_ = power;
+}
+
+bool App::computer_to_act() const {
+    if (!computer_ || mode_ == Mode::names || mode_ == Mode::animating || mode_ == Mode::game_over)
+        return false;
+    const int actor = game_.chooser() != 0 ? game_.chooser() : game_.shooter();
+    return actor == 2;
+}
+
+void App::computer_turn() {
+    // The computer's turn is shown like a player's: it places the cue ball, turns the cue to
+    // its aim over about a second, fills the power bar, then shoots.
+    const double t = std::chrono::duration<double>(Clock::now() - plan_start_).count();
+    if (!planning_) {
+        planning_ = true;
+        plan_start_ = Clock::now();
+        if (mode_ == Mode::placing)
+            place_ = computer_->place_cue_ball(game_);
+        if (mode_ == Mode::aiming) {
+            plan_ = computer_->shot(game_);
+            aim_from_ = aim_deg_;
+        }
+        return;
+    }
+    if (mode_ == Mode::choosing) {
+        if (t < 1.0)
+            return;
+        planning_ = false;
+        game_.choose(computer_->choose(game_));
+        message_ = names_[1] + " chose; " + names_[game_.shooter() - 1] + " to shoot";
+        start_turn();
+        return;
+    }
+    if (mode_ == Mode::placing) {
+        if (t < 0.7)
+            return;
+        planning_ = false;
+        if (game_.place_cue_ball(place_)) {
+            mode_ = Mode::aiming;
+            aim_at_easiest();
+        }
+        return;
+    }
+    // Aiming: turn the shorter way round, then fill the power bar.
+    const double target = plan_->strike.angle_deg;
+    const double delta = std::remainder(target - aim_from_, 360.0);
+    aim_deg_ = turn(aim_from_, delta * std::min(1.0, t / 1.0));
+    side_ = plan_->strike.side;
+    follow_ = plan_->strike.follow;
+    const double upper = game_.is_break() ? 12.0 : 7.0;
+    power_ = std::clamp((plan_->strike.speed - 0.3) / (upper - 0.3), 0.0, 1.0) *
+             std::clamp((t - 1.0) / 0.5, 0.0, 1.0);
+    update_preview();
+    if (t < 1.7)
+        return;
+    planning_ = false;
+    play(plan_->strike, plan_->call);
 }
 
 void App::after_shot() {
@@ -282,7 +349,7 @@ void App::handle_text_entry(const Input& in) {
         entry_.clear();
         entry_error_.clear();
         const bool starting = mode_ == Mode::names;
-        if (starting && entry_player_ == 1 && !options_.names[1]) {
+        if (starting && entry_player_ == 1 && !options_.names[1] && !computer_) {
             entry_player_ = 2;
             return;
         }
@@ -321,6 +388,8 @@ void App::handle(const Input& in) {
             help_ = false;
         return;
     }
+    if (computer_to_act() && !(in.kind == Input::Kind::text && (in.text == "q" || in.text == "?")))
+        return;
     if (in.kind == Input::Kind::mouse) {
         handle_mouse(in);
         return;
@@ -520,8 +589,11 @@ int App::run() {
                 shown_balls_ = trajectory_->sample(t);
             }
         }
+        if (computer_to_act())
+            computer_turn();
         term_.draw(frame(w, h));
-        const bool moving = mode_ == Mode::animating || (mode_ == Mode::aiming && time_power_);
+        const bool moving =
+            mode_ == Mode::animating || (mode_ == Mode::aiming && time_power_) || computer_to_act();
         Input in = term_.read(moving ? frame_ms : 500);
         // Drain what has queued up so that a fast mouse does not lag behind.
         while (in.kind != Input::Kind::none && running_) {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <optional>
 #include <string>
+#include <termpool/computer.hpp>
 #include <termpool/rules.hpp>
 #include <termpool/simulator.hpp>
 
@@ -30,6 +31,9 @@ private:
     void after_shot();
     void start_turn();
     void shoot();
+    void play(const Strike& strike, const ShotCall& call);
+    bool computer_to_act() const;
+    void computer_turn();
     void compose(View& view) const;
     Grid frame(int width, int height);
     void handle(const Input& in);
@@ -90,6 +94,13 @@ private:
     int shooter_before_ = 1;
     Clock::time_point shot_start_;
     std::vector<Ball> shown_balls_;
+
+    // The computer in seat 2, if any, and the move it is showing.
+    std::optional<ComputerPlayer> computer_;
+    bool planning_ = false;
+    Clock::time_point plan_start_;
+    std::optional<ComputerShot> plan_;
+    double aim_from_ = 0;
 
     std::string message_;
     std::vector<int> pocketed_by_[2];

@@ -15,7 +15,8 @@ int run_game(const std::vector<std::string>& args) {
     if (!options) {
         std::fprintf(stderr,
                      "termpool: %s\nusage: termpool [--player1 NAME] [--player2 NAME] "
-                     "[--game 8ball|8ball-bar|9ball] [--table 7ft|8ft|9ft] [--ascii]\n",
+                     "[--game 8ball|8ball-bar|9ball] [--table 7ft|8ft|9ft] [--ascii]\n"
+                     "               [--vs-computer [easy|medium|hard|pro]]\n",
                      error.c_str());
         return 2;
     }

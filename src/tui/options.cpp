@@ -18,6 +18,18 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
         };
         if (a == "--ascii") {
             o.ascii = true;
+        } else if (a == "--vs-computer") {
+            // The level is optional: take the next word only when it names one.
+            o.computer = Level::medium;
+            if (i + 1 < args.size() && !args[i + 1].starts_with("--")) {
+                const auto level = parse_level(args[i + 1]);
+                if (!level) {
+                    error = "unknown level '" + args[i + 1] + "' (easy, medium, hard or pro)";
+                    return std::nullopt;
+                }
+                o.computer = *level;
+                ++i;
+            }
         } else if (a == "--player1" || a == "--player2") {
             const std::string* v = value();
             if (!v)

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <termpool/computer.hpp>
 #include <termpool/rules.hpp>
 #include <termpool/table.hpp>
 #include <vector>
@@ -15,6 +16,7 @@ struct GameOptions {
     GameType game = GameType::eight_ball;   ///< --game
     TableSize table = TableSize::nine_foot; ///< --table
     bool ascii = false;                     ///< --ascii: plain ASCII and no colour
+    std::optional<Level> computer;          ///< --vs-computer [LEVEL]: the computer is player 2
 };
 
 /// Parses the game's options; on error returns nothing and sets `error`.

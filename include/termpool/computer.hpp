@@ -1,0 +1,58 @@
+#pragma once
+/// \file
+/// A computer player: it picks shots by simulating candidate strikes on a copy of the game and
+/// asking the referee what they would mean, then plays the chosen one with the execution noise
+/// of its level.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <termpool/random.hpp>
+#include <termpool/rules.hpp>
+
+namespace termpool {
+
+/// How well the computer plays: execution noise and how much it searches.
+enum class Level {
+    easy,   ///< noise x4, no spin, fewest candidates
+    medium, ///< noise x2
+    hard,   ///< noise x1 (the computer-pool tournament reference)
+    pro,    ///< noise x0.5, the most candidates
+};
+
+/// "easy", "medium", "hard" or "pro".
+const char* level_name(Level level);
+/// Parses a level name; nothing for an unknown one.
+std::optional<Level> parse_level(const std::string& name);
+
+/// A shot the computer decided on.
+struct ComputerShot {
+    Strike strike;    ///< what it will play (noise already added)
+    ShotCall call;    ///< its call
+    Strike planned;   ///< what it meant to play, before the noise
+    double score = 0; ///< how good the referee found the planned shot
+};
+
+/// One computer player. Its decisions depend only on the game and its own seeded stream.
+class ComputerPlayer {
+public:
+    /// A player of `level` whose noise and choices come from `seed`.
+    ComputerPlayer(Level level, std::uint64_t seed);
+    /// The level.
+    Level level() const { return level_; }
+    /// Where to put the cue ball when the game gives it ball in hand.
+    Vec2 place_cue_ball(const Game& game);
+    /// The option to take when the game owes this player a choice.
+    Choice choose(const Game& game);
+    /// The next shot (the game must have no choice owed and the cue ball on the table).
+    ComputerShot shot(const Game& game);
+
+private:
+    ComputerShot search(const Game& game) const;
+    Strike with_noise(const Strike& planned);
+
+    Level level_;
+    Random rng_;
+};
+
+} // namespace termpool

@@ -1,0 +1,207 @@
+// The computer player's search: ghost-ball aims at every legal target and pocket, at a few
+// speeds and spins, each simulated on a copy of the game and scored by the referee.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <termpool/computer.hpp>
+
+namespace termpool {
+namespace {
+
+// Execution noise of the computer-pool tournaments, scaled by level: aim (degrees), speed
+// (m/s) and tip offsets (as fractions of R: 0.5 mm of a 28.575 mm radius).
+constexpr double sigma_aim_deg = 0.125;
+constexpr double sigma_speed = 0.075;
+constexpr double sigma_tip = 0.0005 / 0.028575;
+constexpr double break_speed = 12.0;
+
+double noise_scale(Level level) {
+    switch (level) {
+    case Level::easy:
+        return 4;
+    case Level::medium:
+        return 2;
+    case Level::hard:
+        return 1;
+    case Level::pro:
+        return 0.5;
+    }
+    return 1;
+}
+
+double degrees(Vec2 v) {
+    return std::atan2(v.y, v.x) * 180 / std::numbers::pi;
+}
+
+const Ball* find(const std::vector<Ball>& balls, int id) {
+    for (const Ball& b : balls)
+        if (b.id == id && b.state != MotionState::pocketed)
+            return &b;
+    return nullptr;
+}
+
+// The referee's opinion of a simulated shot, from the shooter's side.
+double score(const Verdict& v, int shooter) {
+    if (v.winner != 0)
+        return v.winner == shooter ? 1000 : -1000;
+    double s = 0;
+    if (v.foul != Foul::none)
+        s -= 60;
+    if (v.next_shooter == shooter && v.chooser == 0)
+        s += 100;
+    for (const int id : v.pocketed)
+        if (id != 0)
+            s += 5;
+    if (v.chooser != 0 && v.chooser != shooter)
+        s -= 20;
+    return s;
+}
+
+} // namespace
+
+const char* level_name(Level level) {
+    switch (level) {
+    case Level::easy:
+        return "easy";
+    case Level::medium:
+        return "medium";
+    case Level::hard:
+        return "hard";
+    case Level::pro:
+        return "pro";
+    }
+    return "?";
+}
+
+std::optional<Level> parse_level(const std::string& name) {
+    for (const Level l : {Level::easy, Level::medium, Level::hard, Level::pro})
+        if (name == level_name(l))
+            return l;
+    return std::nullopt;
+}
+
+ComputerPlayer::ComputerPlayer(Level level, std::uint64_t seed) : level_(level), rng_(seed) {}
+
+ComputerShot ComputerPlayer::search(const Game& game) const {
+    ComputerShot best;
+    best.score = -1e9;
+    const Ball* cue = find(game.balls(), 0);
+    if (!cue)
+        return best;
+    if (game.is_break()) {
+        // A full-power break at the apex: the ball nearest the foot spot.
+        const Ball* apex = nullptr;
+        for (const Ball& b : game.balls()) {
+            if (b.id == 0 || b.state == MotionState::pocketed)
+                continue;
+            if (!apex || b.position.x < apex->position.x)
+                apex = &b;
+        }
+        best.planned = {break_speed, apex ? degrees(apex->position - cue->position) : 0, 0, 0};
+        best.score = 0;
+        return best;
+    }
+    const double R = game.params().ball_radius;
+    const std::vector<double> speeds =
+        level_ == Level::easy ? std::vector<double>{2.5} : std::vector<double>{1.5, 2.5, 4.0};
+    const std::vector<double> spins =
+        level_ == Level::easy ? std::vector<double>{0.0} : std::vector<double>{-0.3, 0.0, 0.3};
+    for (const int target : game.legal_targets()) {
+        const Ball* object = find(game.balls(), target);
+        if (!object)
+            continue;
+        for (int pocket = 1; pocket <= 6; ++pocket) {
+            const Vec2 to_pocket = game.table().pockets[pocket - 1].position - object->position;
+            const Vec2 ghost = object->position - normalized(to_pocket) * (2 * R);
+            const Vec2 line = ghost - cue->position;
+            // Skip cuts thinner than about 80 degrees: the ghost ball is behind the object.
+            if (dot(normalized(line), normalized(to_pocket)) < 0.17)
+                continue;
+            for (const double speed : speeds) {
+                for (const double follow : spins) {
+                    const Strike strike{speed, degrees(line), 0, follow};
+                    ShotCall call;
+                    call.call = {target, pocket, false};
+                    Game trial = game;
+                    const int shooter = trial.shooter();
+                    const double s = score(trial.play(strike, call), shooter);
+                    if (s > best.score) {
+                        best.score = s;
+                        best.planned = strike;
+                        best.call = call;
+                    }
+                }
+            }
+        }
+    }
+    if (best.score == -1e9 && !game.legal_targets().empty()) {
+        // Nothing pottable: hit the first legal ball softly.
+        const Ball* object = find(game.balls(), game.legal_targets().front());
+        if (object)
+            best.planned = {2.0, degrees(object->position - cue->position), 0, 0};
+        best.score = 0;
+    }
+    return best;
+}
+
+Strike ComputerPlayer::with_noise(const Strike& planned) {
+    const double k = noise_scale(level_);
+    // Box-Muller from the player's own stream, so that a seed replays the same game.
+    auto gaussian = [&] {
+        const double u1 = std::max(rng_.uniform(), 1e-300), u2 = rng_.uniform();
+        return std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
+    };
+    Strike s = planned;
+    s.angle_deg += k * sigma_aim_deg * gaussian();
+    s.speed = std::clamp(s.speed + k * sigma_speed * gaussian(), 0.05, max_strike_speed);
+    s.side = std::clamp(s.side + k * sigma_tip * gaussian(), -0.5, 0.5);
+    s.follow = std::clamp(s.follow + k * sigma_tip * gaussian(), -0.5, 0.5);
+    return s;
+}
+
+ComputerShot ComputerPlayer::shot(const Game& game) {
+    ComputerShot s = search(game);
+    s.strike = with_noise(s.planned);
+    return s;
+}
+
+Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
+    // Try a spread of legal spots; keep the one whose best shot scores highest.
+    const std::vector<Vec2> spots = game.legal_placements(level_ == Level::easy ? 4 : 6);
+    Vec2 best_spot = spots.empty() ? Vec2{} : spots.front();
+    double best = -1e18;
+    for (const Vec2 spot : spots) {
+        Game trial = game;
+        if (!trial.place_cue_ball(spot))
+            continue;
+        const double s = search(trial).score;
+        if (s > best) {
+            best = s;
+            best_spot = spot;
+        }
+    }
+    return best_spot;
+}
+
+Choice ComputerPlayer::choose(const Game& game) {
+    const std::vector<Choice>& options = game.choices();
+    // Taking the table (or the spot of the 8) beats handing it over; between groups, the one
+    // with fewer balls left is the shorter run.
+    for (const Choice preferred : {Choice::spot_eight, Choice::play_on, Choice::shoot}) {
+        if (std::ranges::count(options, preferred))
+            return preferred;
+    }
+    if (std::ranges::count(options, Choice::take_solids)) {
+        int solids = 0, stripes = 0;
+        for (const Ball& b : game.balls()) {
+            if (b.state == MotionState::pocketed)
+                continue;
+            solids += b.id >= 1 && b.id <= 7;
+            stripes += b.id >= 9 && b.id <= 15;
+        }
+        return solids <= stripes ? Choice::take_solids : Choice::take_stripes;
+    }
+    return options.front();
+}
+
+} // namespace termpool
