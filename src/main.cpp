@@ -35,8 +35,8 @@ int main(int argc, char** argv) {
     const std::vector<std::string> args(argv + 1, argv + argc);
 
     // No command, or only the game's options: play.
-    if (args.empty() || (args.front().starts_with("--") && args.front() != "--help" &&
-                         args.front() != "--version"))
+    if (args.empty() ||
+        (args.front().starts_with("--") && args.front() != "--help" && args.front() != "--version"))
         return termpool::tui::run_game(args);
 
     const std::string& command = args.front();

@@ -28,13 +28,15 @@ inline double ghost_aim_deg(Vec2 cue, Vec2 object, Vec2 target) {
 }
 
 /// Position of pocket `n` (1..6).
-inline Vec2 pocket_at(int n) { return nine_foot().pockets[n - 1].position; }
+inline Vec2 pocket_at(int n) {
+    return nine_foot().pockets[n - 1].position;
+}
 
 /// A game from a position; the balls are given as (id, x, y).
 inline Game position(GameType type, std::vector<Ball> balls, int shooter = 1,
                      Group group = Group::open, bool is_break = false, bool push_out = false) {
-    return Game::from_position(type, nine_foot(), PhysicsParams{}, std::move(balls), shooter,
-                               group, is_break, push_out);
+    return Game::from_position(type, nine_foot(), PhysicsParams{}, std::move(balls), shooter, group,
+                               is_break, push_out);
 }
 
 /// A shot result made by hand from the game's balls and a list of events: balls with a
@@ -44,7 +46,8 @@ inline ShotResult hand_made(const Game& game, std::vector<Event> events) {
     r.events = events;
     r.balls = game.balls();
     for (const Event& e : events) {
-        if (e.kind != EventKind::pocket) continue;
+        if (e.kind != EventKind::pocket)
+            continue;
         for (Ball& b : r.balls)
             if (b.id == e.ball) {
                 b.state = MotionState::pocketed;
@@ -54,12 +57,18 @@ inline ShotResult hand_made(const Game& game, std::vector<Event> events) {
     return r;
 }
 
-inline Event hit(int a, int b, double t = 0.1) { return {t, EventKind::ball_ball, a, b}; }
-inline Event rail(int ball, double t = 0.2) { return {t, EventKind::cushion, ball, 0}; }
+inline Event hit(int a, int b, double t = 0.1) {
+    return {t, EventKind::ball_ball, a, b};
+}
+inline Event rail(int ball, double t = 0.2) {
+    return {t, EventKind::cushion, ball, 0};
+}
 inline Event drop(int ball, int pocket, double t = 0.3) {
     return {t, EventKind::pocket, ball, pocket};
 }
-inline Event off(int ball, double t = 0.3) { return {t, EventKind::off_table, ball, 0}; }
+inline Event off(int ball, double t = 0.3) {
+    return {t, EventKind::off_table, ball, 0};
+}
 
 /// Every ball of `ids` placed on a loose grid far from the pockets, cue ball first.
 inline std::vector<Ball> spread(std::vector<int> ids) {
@@ -80,7 +89,8 @@ namespace termpool::test {
 inline Vec2 out_of_pocket(int n) {
     const Vec2 p = pocket_at(n);
     const double sy = p.y == 0 ? 1 : -1;
-    if (n == 2 || n == 5) return {0, sy};
+    if (n == 2 || n == 5)
+        return {0, sy};
     const double sx = p.x == 0 ? 1 : -1;
     return Vec2{sx, sy} * (std::numbers::sqrt2 / 2);
 }

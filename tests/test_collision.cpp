@@ -19,12 +19,15 @@ const Table table = make_table(TableSize::nine_foot);
 constexpr double R = 0.028575;
 constexpr double degrees = 180.0 / std::numbers::pi;
 
-double angle_deg(Vec2 v) { return std::atan2(v.y, v.x) * degrees; }
+double angle_deg(Vec2 v) {
+    return std::atan2(v.y, v.x) * degrees;
+}
 
 // Cue ball on the long axis, an object ball `gap` ahead of contact and `offset` across.
 World straight_setup(const PhysicsParams& p, double gap, double offset = 0, double m0 = 0.170,
                      double m1 = 0.170) {
-    return World(table, p, {ball_at(0, 0.5, 0.635, m0), ball_at(1, 0.5 + 2 * R + gap, 0.635 + offset, m1)});
+    return World(table, p,
+                 {ball_at(0, 0.5, 0.635, m0), ball_at(1, 0.5 + 2 * R + gap, 0.635 + offset, m1)});
 }
 
 } // namespace
@@ -46,7 +49,8 @@ TEST_CASE("ideal head-on hit between equal balls exchanges velocities", "[physic
     CHECK(std::abs(find_ball(balls, 1).velocity.y) < 1e-12);
 }
 
-TEST_CASE("ball-ball contacts conserve momentum and follow the 1D formulas", "[physics][collision]") {
+TEST_CASE("ball-ball contacts conserve momentum and follow the 1D formulas",
+          "[physics][collision]") {
     for (const auto model : {CollisionModel::ideal, CollisionModel::physical}) {
         for (const double m1 : {0.136, 0.170, 0.255}) {
             PhysicsParams p;
@@ -95,7 +99,8 @@ TEST_CASE("half-ball hit with a rolling cue ball: 33.7 degrees (the 30-degree ru
             step_until(world, EventKind::ball_ball);
             // The cue ball slides off the tangent line and bends until it rolls again.
             Event e;
-            while ((e = step_until(world, EventKind::rolling)).ball != 0) {}
+            while ((e = step_until(world, EventKind::rolling)).ball != 0) {
+            }
             const Ball cue = find_ball(world.balls(), 0);
             CHECK(std::abs(angle_deg(cue.velocity)) == Approx(33.7).margin(0.3));
             CHECK(angle_deg(cue.velocity) * side < 0); // deflected away from the object ball
@@ -206,7 +211,8 @@ TEST_CASE("balls pressed together in a break do not bounce off each other endles
         const ShotResult r =
             simulate_shot(table, p, make_rack(table, p, RackType::eight_ball, seed), {12, 0, 0, 0});
         int contacts = 0;
-        for (const Event& e : r.events) contacts += e.kind == EventKind::ball_ball;
+        for (const Event& e : r.events)
+            contacts += e.kind == EventKind::ball_ball;
         INFO("seed " << seed);
         CHECK(contacts < 150);
     }

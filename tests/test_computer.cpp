@@ -40,7 +40,8 @@ TEST_CASE("a seeded computer decides the same way twice", "[computer]") {
     Game after_break = game;
     after_break.play({12, 0, 0, 0}, {});
     ComputerPlayer a(Level::hard, 11), b(Level::hard, 11);
-    if (after_break.chooser() != 0 || after_break.ball_in_hand() != BallInHand::none) return;
+    if (after_break.chooser() != 0 || after_break.ball_in_hand() != BallInHand::none)
+        return;
     const ComputerShot x = a.shot(after_break), y = b.shot(after_break);
     CHECK(x.strike.angle_deg == y.strike.angle_deg);
     CHECK(x.strike.speed == y.strike.speed);
@@ -48,8 +49,8 @@ TEST_CASE("a seeded computer decides the same way twice", "[computer]") {
 }
 
 TEST_CASE("execution noise grows from pro to easy", "[computer]") {
-    Game game = position(GameType::eight_ball, with_extra(straight_in(3, 3), {9, 10}), 1,
-                         Group::solids);
+    Game game =
+        position(GameType::eight_ball, with_extra(straight_in(3, 3), {9, 10}), 1, Group::solids);
     auto spread_of = [&](Level level) {
         ComputerPlayer computer(level, 1);
         double sum = 0;

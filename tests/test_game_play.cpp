@@ -28,11 +28,12 @@ struct SimplePicker {
         const int target = targets[rng.below(targets.size())];
         const int pocket = 1 + static_cast<int>(rng.below(6));
         const Ball object = find_ball(game.balls(), target);
-        const Strike strike{rng.uniform(1.5, 5), ghost_aim_deg(cue.position, object.position,
-                                                               pocket_at(pocket)),
+        const Strike strike{rng.uniform(1.5, 5),
+                            ghost_aim_deg(cue.position, object.position, pocket_at(pocket)),
                             rng.uniform(-0.2, 0.2), rng.uniform(-0.3, 0.3)};
         ShotCall call;
-        if (game.type() != GameType::nine_ball) call.call = {target, pocket, false};
+        if (game.type() != GameType::nine_ball)
+            call.call = {target, pocket, false};
         return {strike, call};
     }
 };
@@ -62,8 +63,10 @@ int play_to_the_end(GameType type, std::uint64_t seed) {
         REQUIRE(game.balls().size() == ball_count);
         for (std::size_t id = 0; id < ball_count; ++id) {
             const int want = type == GameType::nine_ball && id > 9 ? -1 : static_cast<int>(id);
-            if (want < 0) continue;
-            REQUIRE(std::ranges::count_if(game.balls(), [&](const Ball& b) { return b.id == want; }) == 1);
+            if (want < 0)
+                continue;
+            REQUIRE(std::ranges::count_if(game.balls(),
+                                          [&](const Ball& b) { return b.id == want; }) == 1);
         }
         // A foul always hands the table over with ball in hand (unless it ended the game).
         if (v.foul != Foul::none && v.winner == 0 && !v.stalemate_rerack && v.chooser == 0) {
@@ -79,9 +82,11 @@ int play_to_the_end(GameType type, std::uint64_t seed) {
 } // namespace
 
 TEST_CASE("seeded games are played to their end", "[rules][game]") {
-    for (const GameType type : {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball}) {
+    for (const GameType type :
+         {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball}) {
         int total = 0;
-        for (std::uint64_t seed = 1; seed <= 6; ++seed) total += play_to_the_end(type, seed);
+        for (std::uint64_t seed = 1; seed <= 6; ++seed)
+            total += play_to_the_end(type, seed);
         INFO(game_type_name(type) << ": " << total << " shots in 6 games");
         CHECK(total > 6);
     }

@@ -13,7 +13,9 @@ namespace {
 
 const Table table = make_table(TableSize::nine_foot);
 
-double relative_error(double got, double want) { return std::abs(got - want) / std::abs(want); }
+double relative_error(double got, double want) {
+    return std::abs(got - want) / std::abs(want);
+}
 
 } // namespace
 
@@ -62,9 +64,11 @@ TEST_CASE("a stop shot with english leaves the cue ball spinning in place", "[ph
     CHECK(cue.angular_velocity.z < 0); // right english turns the ball clockwise seen from above
     // The little top spin it picked up on the way creeps it forward; then it spins in place.
     Event spinning;
-    while ((spinning = step_until(world, EventKind::spinning)).ball != 0) {}
+    while ((spinning = step_until(world, EventKind::spinning)).ball != 0) {
+    }
     Event stopped;
-    while ((stopped = step_until(world, EventKind::stopped)).ball != 0) {}
+    while ((stopped = step_until(world, EventKind::stopped)).ball != 0) {
+    }
     CHECK(stopped.time > spinning.time);
     // The vertical spin decays at the same rate whatever the ball does.
     const double rate = 5 * p.gravity * p.spin_friction / (2 * p.ball_radius);
@@ -120,7 +124,8 @@ TEST_CASE("a trajectory samples the same states the world stepped through",
     world.record(true);
     world.strike({8, 1.5, 0.1, -0.2});
     std::vector<std::pair<double, std::vector<Ball>>> snapshots;
-    while (world.step()) snapshots.emplace_back(world.time(), world.balls());
+    while (world.step())
+        snapshots.emplace_back(world.time(), world.balls());
     REQUIRE(snapshots.size() > 20);
     for (const auto& [t, balls] : snapshots) {
         const std::vector<Ball> sampled = world.trajectory().sample(t);
@@ -132,6 +137,7 @@ TEST_CASE("a trajectory samples the same states the world stepped through",
     }
     // Between events too: halfway through the shot every ball is somewhere on the table.
     for (const Ball& b : world.trajectory().sample(snapshots.back().first / 2)) {
-        if (b.state != MotionState::pocketed) CHECK(test::within_cushions(table, b.position));
+        if (b.state != MotionState::pocketed)
+            CHECK(test::within_cushions(table, b.position));
     }
 }

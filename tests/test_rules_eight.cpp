@@ -9,7 +9,9 @@ using namespace termpool::test;
 
 namespace {
 
-bool has_foul(const Verdict& v, Foul f) { return std::ranges::count(v.fouls, f) > 0; }
+bool has_foul(const Verdict& v, Foul f) {
+    return std::ranges::count(v.fouls, f) > 0;
+}
 
 } // namespace
 
@@ -33,7 +35,8 @@ TEST_CASE("8-ball break: a legal break keeps the table open and the turn follows
         ShotResult r;
         const Verdict v = game.play({12, 0, 0, 0}, {}, &r);
         CHECK(v.player1_group == Group::open);
-        if (v.foul != Foul::none || v.winner != 0 || v.chooser != 0) continue;
+        if (v.foul != Foul::none || v.winner != 0 || v.chooser != 0)
+            continue;
         CHECK(v.legal_break);
         const bool potted = std::ranges::any_of(v.pocketed, [](int id) { return id != 0; });
         CHECK(v.next_shooter == (potted ? 1 : 2));
@@ -134,8 +137,8 @@ TEST_CASE("8-ball break: the 8 is not a loss: spot it or break again", "[rules][
 TEST_CASE("8-ball: a called ball on an open table decides the groups", "[rules][eight][groups]") {
     for (const int shooter : {1, 2}) {
         for (const int id : {3, 12}) {
-            Game game = position(GameType::eight_ball, with_extra(straight_in(id, 6), {1, 8, 9}),
-                                 shooter);
+            Game game =
+                position(GameType::eight_ball, with_extra(straight_in(id, 6), {1, 8, 9}), shooter);
             const Verdict v = game.play(straight_strike(6), {{id, 6, false}});
             INFO("shooter " << shooter << " ball " << id);
             CHECK(v.foul == Foul::none);
@@ -169,8 +172,8 @@ TEST_CASE("8-ball: a ball in a pocket not called stays down and the turn passes"
 
 TEST_CASE("8-ball: a called safety passes the turn even when a ball drops",
           "[rules][eight][call]") {
-    Game game = position(GameType::eight_ball, with_extra(straight_in(3, 4), {1, 8, 9}), 1,
-                         Group::solids);
+    Game game =
+        position(GameType::eight_ball, with_extra(straight_in(3, 4), {1, 8, 9}), 1, Group::solids);
     const Verdict v = game.play(straight_strike(4), {{0, 0, true}});
     CHECK(v.foul == Foul::none);
     CHECK(std::ranges::count(v.pocketed, 3) == 1);
@@ -194,8 +197,8 @@ TEST_CASE("8-ball fouls, each on a real shot", "[rules][eight][fouls]") {
         CHECK(has_foul(v, Foul::wrong_ball_first));
     }
     SECTION("no contact: the cue ball meets only a cushion") {
-        Game game = position(GameType::eight_ball, with_extra({ball_at(0, 1.2, 0.3)}, {1, 8, 9}),
-                             1, Group::solids);
+        Game game = position(GameType::eight_ball, with_extra({ball_at(0, 1.2, 0.3)}, {1, 8, 9}), 1,
+                             Group::solids);
         const Verdict v = game.play({1.0, -90, 0, 0}, {});
         CHECK(v.first_contact == -1);
         CHECK(v.foul == Foul::no_contact);
@@ -209,8 +212,8 @@ TEST_CASE("8-ball fouls, each on a real shot", "[rules][eight][fouls]") {
         CHECK(v.foul == Foul::no_rail);
     }
     SECTION("scratch: the cue ball follows the object ball in") {
-        Game game = position(GameType::eight_ball, with_extra(straight_in(3, 4), {8, 9}), 1,
-                             Group::solids);
+        Game game =
+            position(GameType::eight_ball, with_extra(straight_in(3, 4), {8, 9}), 1, Group::solids);
         const Verdict v = game.play({4, straight_strike(4).angle_deg, 0, 0.5}, {});
         REQUIRE(std::ranges::count(v.pocketed, 0) == 1);
         CHECK(v.foul == Foul::scratch);
@@ -228,8 +231,7 @@ TEST_CASE("8-ball fouls, each on a real shot", "[rules][eight][fouls]") {
         Game game = position(GameType::eight_ball, spread({0, 1, 8, 9}), 1, Group::solids);
         const Verdict v = game.apply({}, hand_made(game, {hit(0, 9), drop(0, 2)}));
         CHECK(v.foul == Foul::scratch);
-        CHECK(v.fouls ==
-              std::vector<Foul>{Foul::scratch, Foul::wrong_ball_first, Foul::no_rail});
+        CHECK(v.fouls == std::vector<Foul>{Foul::scratch, Foul::wrong_ball_first, Foul::no_rail});
     }
     SECTION("precedence: no contact before no rail") {
         Game game = position(GameType::eight_ball, spread({0, 1, 8, 9}), 1, Group::solids);
@@ -242,15 +244,16 @@ TEST_CASE("8-ball: hitting an own ball and another at the same instant is legal"
           "[rules][eight][fouls]") {
     for (const Group group : {Group::solids, Group::stripes}) {
         Game game = position(GameType::eight_ball, spread({0, 1, 8, 9}), 1, group);
-        const Verdict v = game.apply({}, hand_made(game, {hit(0, 1, 0.1), hit(0, 9, 0.1), rail(9)}));
+        const Verdict v =
+            game.apply({}, hand_made(game, {hit(0, 1, 0.1), hit(0, 9, 0.1), rail(9)}));
         CHECK(v.foul == Foul::none);
         CHECK(v.first_contact == (group == Group::solids ? 1 : 9));
     }
 }
 
 TEST_CASE("8-ball: pocketing the called 8 after the group wins", "[rules][eight][win]") {
-    Game game = position(GameType::eight_ball, with_extra(straight_in(8, 1), {9, 10}), 1,
-                         Group::solids);
+    Game game =
+        position(GameType::eight_ball, with_extra(straight_in(8, 1), {9, 10}), 1, Group::solids);
     const Verdict v = game.play(straight_strike(1), {{8, 1, false}});
     CHECK(v.winner == 1);
     CHECK(v.reason == WinReason::eight_pocketed);
@@ -263,38 +266,39 @@ TEST_CASE("8-ball: pocketing the called 8 after the group wins", "[rules][eight]
 
 TEST_CASE("8-ball: the ways to lose with the 8", "[rules][eight][loss]") {
     SECTION("the 8 before the group is cleared") {
-        Game game = position(GameType::eight_ball, with_extra(straight_in(8, 1), {2, 9}), 1,
-                             Group::solids);
+        Game game =
+            position(GameType::eight_ball, with_extra(straight_in(8, 1), {2, 9}), 1, Group::solids);
         const Verdict v = game.play(straight_strike(1), {{8, 1, false}});
         CHECK(v.winner == 2);
         CHECK(v.reason == WinReason::eight_early);
     }
     SECTION("the 8 knocked in by the shooter's own ball") {
         Game game = position(GameType::eight_ball, spread({0, 2, 8, 9}), 1, Group::solids);
-        const Verdict v = game.apply({{2, 1, false}}, hand_made(game, {hit(0, 2), hit(2, 8, 0.2),
-                                                                    drop(8, 3, 0.5), rail(2)}));
+        const Verdict v =
+            game.apply({{2, 1, false}},
+                       hand_made(game, {hit(0, 2), hit(2, 8, 0.2), drop(8, 3, 0.5), rail(2)}));
         CHECK(v.foul == Foul::none);
         CHECK(v.winner == 2);
         CHECK(v.reason == WinReason::eight_early);
     }
     SECTION("the 8 on the same shot as the group's last ball") {
         Game game = position(GameType::eight_ball, spread({0, 2, 8, 9}), 1, Group::solids);
-        const Verdict v = game.apply({{8, 3, false}},
-                                     hand_made(game, {hit(0, 2), drop(2, 1), drop(8, 3, 0.5)}));
+        const Verdict v =
+            game.apply({{8, 3, false}}, hand_made(game, {hit(0, 2), drop(2, 1), drop(8, 3, 0.5)}));
         CHECK(v.winner == 2);
         CHECK(v.reason == WinReason::eight_early);
     }
     SECTION("the 8 on a foul") {
-        Game game = position(GameType::eight_ball, with_extra(straight_in(8, 1), {9}), 1,
-                             Group::solids);
+        Game game =
+            position(GameType::eight_ball, with_extra(straight_in(8, 1), {9}), 1, Group::solids);
         const Verdict v = game.play({4, straight_strike(1).angle_deg, 0, 0.5}, {{8, 1, false}});
         REQUIRE(std::ranges::count(v.pocketed, 0) == 1);
         CHECK(v.winner == 2);
         CHECK(v.reason == WinReason::eight_on_foul);
     }
     SECTION("the 8 in a pocket not called") {
-        Game game = position(GameType::eight_ball, with_extra(straight_in(8, 1), {9}), 1,
-                             Group::solids);
+        Game game =
+            position(GameType::eight_ball, with_extra(straight_in(8, 1), {9}), 1, Group::solids);
         const Verdict v = game.play(straight_strike(1), {{8, 6, false}});
         CHECK(v.winner == 2);
         CHECK(v.reason == WinReason::eight_wrong_pocket);
@@ -324,22 +328,22 @@ TEST_CASE("8-ball: the ways to lose with the 8", "[rules][eight][loss]") {
 
 TEST_CASE("8-ball bar rules", "[rules][eight][bar]") {
     SECTION("the first ball down after the break decides the groups, no call needed") {
-        Game game = position(GameType::eight_ball_bar, with_extra(straight_in(12, 6), {1, 8, 3}),
-                             2);
+        Game game =
+            position(GameType::eight_ball_bar, with_extra(straight_in(12, 6), {1, 8, 3}), 2);
         const Verdict v = game.play(straight_strike(6), {});
         CHECK(v.groups_assigned);
         CHECK(game.group_of(2) == Group::stripes);
         CHECK(v.next_shooter == 2);
     }
     SECTION("any ball of the group keeps the turn, wherever it drops") {
-        Game game = position(GameType::eight_ball_bar, with_extra(straight_in(3, 4), {1, 8, 9}),
-                             1, Group::solids);
+        Game game = position(GameType::eight_ball_bar, with_extra(straight_in(3, 4), {1, 8, 9}), 1,
+                             Group::solids);
         const Verdict v = game.play(straight_strike(4), {{3, 6, false}});
         CHECK(v.next_shooter == 1);
     }
     SECTION("both groups on the break: the breaker chooses") {
-        Game game = position(GameType::eight_ball_bar, spread({0, 1, 8, 9, 10}), 1, Group::open,
-                             true);
+        Game game =
+            position(GameType::eight_ball_bar, spread({0, 1, 8, 9, 10}), 1, Group::open, true);
         const Verdict v = game.apply({}, hand_made(game, {hit(0, 1), drop(1, 1), drop(9, 3)}));
         CHECK(v.chooser == 1);
         CHECK(v.choices == std::vector<Choice>{Choice::take_solids, Choice::take_stripes});
@@ -349,8 +353,8 @@ TEST_CASE("8-ball bar rules", "[rules][eight][bar]") {
         CHECK(game.shooter() == 1);
     }
     SECTION("one group on the break goes to the breaker") {
-        Game game = position(GameType::eight_ball_bar, spread({0, 1, 8, 9, 10}), 2, Group::open,
-                             true);
+        Game game =
+            position(GameType::eight_ball_bar, spread({0, 1, 8, 9, 10}), 2, Group::open, true);
         const Verdict v = game.apply({}, hand_made(game, {hit(0, 1), drop(10, 3)}));
         CHECK(v.groups_assigned);
         CHECK(game.group_of(2) == Group::stripes);
@@ -384,16 +388,17 @@ TEST_CASE("ball in hand: the cue ball goes only where the rules allow", "[rules]
     game.apply({}, hand_made(game, {hit(0, 9), rail(9)})); // wrong ball: 2 has it anywhere
     REQUIRE(game.ball_in_hand() == BallInHand::anywhere);
     const Ball one = find_ball(game.balls(), 1);
-    CHECK_FALSE(game.legal_placement(one.position));                       // on a ball
+    CHECK_FALSE(game.legal_placement(one.position));                                   // on a ball
     CHECK_FALSE(game.legal_placement(one.position + Vec2{2 * ball_radius - 1e-4, 0})); // touching
     CHECK(game.legal_placement(one.position + Vec2{2 * ball_radius + 1e-4, 0}));
-    CHECK_FALSE(game.legal_placement({0.01, 0.6}));  // in the cushion
-    CHECK_FALSE(game.legal_placement({1.0, 1.26}));  // in the cushion
+    CHECK_FALSE(game.legal_placement({0.01, 0.6})); // in the cushion
+    CHECK_FALSE(game.legal_placement({1.0, 1.26})); // in the cushion
     CHECK(game.legal_placement({2.4, 1.1}));
     CHECK_FALSE(game.place_cue_ball({0.01, 0.6}));
     REQUIRE(game.place_cue_ball({2.4, 1.1}));
     CHECK(find_ball(game.balls(), 0).position == Vec2{2.4, 1.1});
-    for (const Vec2 p : game.legal_placements()) CHECK(game.legal_placement(p));
+    for (const Vec2 p : game.legal_placements())
+        CHECK(game.legal_placement(p));
 }
 
 TEST_CASE("a stalemate re-racks after three more turns each", "[rules][stalemate]") {

@@ -70,8 +70,9 @@ TEST_CASE("9-ball: a 9 pocketed on a foul is spotted", "[rules][nine]") {
     CHECK(nine.position == nine_foot().foot_spot());
 }
 
-TEST_CASE("9-ball: a break that drops nothing and drives fewer than four balls to a cushion is a foul",
-          "[rules][nine][break]") {
+TEST_CASE(
+    "9-ball: a break that drops nothing and drives fewer than four balls to a cushion is a foul",
+    "[rules][nine][break]") {
     Game game(GameType::nine_ball, nine_foot(), PhysicsParams{}, 1, 3);
     const Verdict v = game.play({1.2, 0, 0, 0}, {});
     CHECK(v.foul == Foul::bad_break);
@@ -87,7 +88,8 @@ TEST_CASE("9-ball: three fouls in a row lose the rack", "[rules][nine][fouls]") 
         // Player 1 fouls (wrong ball), player 2 plays a legal safety.
         v = game.apply({}, hand_made(game, {hit(0, 2), rail(2)}));
         CHECK(v.foul == Foul::wrong_ball_first);
-        if (v.winner) break;
+        if (v.winner)
+            break;
         CHECK(game.consecutive_fouls(1) == round + 1);
         REQUIRE(game.shooter() == 2);
         v = game.apply({}, hand_made(game, {hit(0, 1), rail(1)}));
@@ -99,11 +101,11 @@ TEST_CASE("9-ball: three fouls in a row lose the rack", "[rules][nine][fouls]") 
 
 TEST_CASE("9-ball: a legal shot between fouls resets the count", "[rules][nine][fouls]") {
     Game game = position(GameType::nine_ball, spread({0, 1, 2, 9}));
-    game.apply({}, hand_made(game, {hit(0, 2), rail(2)}));    // 1 fouls
-    game.apply({}, hand_made(game, {hit(0, 1), rail(1)}));    // 2 legal
-    game.apply({}, hand_made(game, {hit(0, 2), rail(2)}));    // 1 fouls again
-    game.apply({}, hand_made(game, {hit(0, 1), rail(1)}));    // 2 legal
-    game.apply({}, hand_made(game, {hit(0, 1), rail(1)}));    // 1 legal
+    game.apply({}, hand_made(game, {hit(0, 2), rail(2)})); // 1 fouls
+    game.apply({}, hand_made(game, {hit(0, 1), rail(1)})); // 2 legal
+    game.apply({}, hand_made(game, {hit(0, 2), rail(2)})); // 1 fouls again
+    game.apply({}, hand_made(game, {hit(0, 1), rail(1)})); // 2 legal
+    game.apply({}, hand_made(game, {hit(0, 1), rail(1)})); // 1 legal
     CHECK(game.consecutive_fouls(1) == 0);
 }
 
@@ -129,7 +131,8 @@ TEST_CASE("9-ball push-out", "[rules][nine][push]") {
         CHECK_FALSE(game.push_out_allowed());
     }
     SECTION("a scratch on a push-out is still a foul") {
-        Game game = position(GameType::nine_ball, spread({0, 1, 2, 9}), 1, Group::open, false, true);
+        Game game =
+            position(GameType::nine_ball, spread({0, 1, 2, 9}), 1, Group::open, false, true);
         const Verdict v = game.apply({{}, true}, hand_made(game, {drop(0, 2)}));
         CHECK(v.foul == Foul::scratch);
         CHECK(v.ball_in_hand == BallInHand::anywhere);

@@ -30,7 +30,9 @@ double smallest_gap(const std::vector<Ball>& balls) {
     return gap;
 }
 
-Vec2 momentum(const Ball& a, const Ball& b) { return a.velocity * a.mass + b.velocity * b.mass; }
+Vec2 momentum(const Ball& a, const Ball& b) {
+    return a.velocity * a.mass + b.velocity * b.mass;
+}
 
 } // namespace
 
@@ -56,19 +58,21 @@ TEST_CASE("a ball at 20 m/s into a cushion or a jaw bounces or drops, never leav
         p.friction = {model, 0.5, 0.5, 0.005};
         // Straight at every rail, at each pocket's jaws and points, and a fan of angles.
         std::vector<double> angles;
-        for (int k = 0; k < 360; ++k) angles.push_back(k + 0.37);
+        for (int k = 0; k < 360; ++k)
+            angles.push_back(k + 0.37);
         for (const double angle : angles) {
             for (const Vec2 start : {Vec2{0.3, 0.3}, Vec2{1.27, 0.2}, Vec2{2.0, 1.0}}) {
                 Trajectory trajectory(p, 1);
-                const ShotResult r =
-                    simulate_shot(table, p, {ball_at(0, start.x, start.y)}, {20, angle, 0.3, -0.3},
-                                  &trajectory);
+                const ShotResult r = simulate_shot(table, p, {ball_at(0, start.x, start.y)},
+                                                   {20, angle, 0.3, -0.3}, &trajectory);
                 REQUIRE_FALSE(r.event_limit_hit);
                 const Ball b = r.balls[0];
-                if (b.state != MotionState::pocketed) CHECK(within_cushions(table, b.position));
+                if (b.state != MotionState::pocketed)
+                    CHECK(within_cushions(table, b.position));
                 for (double t = 0; t < r.rest_time; t += r.rest_time / 200) {
                     const Ball s = trajectory.sample(t)[0];
-                    if (s.state != MotionState::pocketed) CHECK(within_cushions(table, s.position));
+                    if (s.state != MotionState::pocketed)
+                        CHECK(within_cushions(table, s.position));
                 }
             }
         }
@@ -91,10 +95,12 @@ TEST_CASE("a ball rolled into the mouth of a pocket drops", "[physics][pocket]")
     for (int pocket = 1; pocket <= 6; ++pocket) {
         const Vec2 target = table.pockets[pocket - 1].position;
         const Vec2 from{table.length / 2 + (target.x - table.length / 2) * 0.5,
-                        table.width / 2 + (target.y - table.width / 2) * 0.5 + (pocket == 2 || pocket == 5 ? 0 : 0)};
+                        table.width / 2 + (target.y - table.width / 2) * 0.5 +
+                            (pocket == 2 || pocket == 5 ? 0 : 0)};
         const Vec2 d = target - from;
         const double angle = std::atan2(d.y, d.x) * 180 / std::numbers::pi;
-        const ShotResult r = simulate_shot(table, p, {ball_at(0, from.x, from.y)}, {3, angle, 0, 0});
+        const ShotResult r =
+            simulate_shot(table, p, {ball_at(0, from.x, from.y)}, {3, angle, 0, 0});
         REQUIRE_FALSE(r.events.empty());
         CHECK(r.balls[0].state == MotionState::pocketed);
         CHECK(r.balls[0].pocket == pocket);
@@ -121,7 +127,8 @@ TEST_CASE("a break spreads the rack and comes to rest", "[physics][break]") {
         CHECK(r.rest_time > 2);
         CHECK(r.rest_time < 40);
         int cushions = 0;
-        for (const Event& e : r.events) cushions += e.kind == EventKind::cushion;
+        for (const Event& e : r.events)
+            cushions += e.kind == EventKind::cushion;
         CHECK(cushions >= 4);
     }
 }
@@ -134,22 +141,35 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
     Random rng(seed);
     PhysicsParams p;
     switch (rng.below(6)) {
-    case 0: p.friction = {FrictionKind::decay, rng.uniform(0.3, 3), 0, 0.005}; break;
-    case 1: p.friction = {FrictionKind::constant, 0, rng.uniform(0.1, 2), 0.005}; break;
-    case 2: p.friction = {FrictionKind::combined, rng.uniform(0.3, 3), rng.uniform(0.1, 2), 0.005}; break;
-    default: break;
+    case 0:
+        p.friction = {FrictionKind::decay, rng.uniform(0.3, 3), 0, 0.005};
+        break;
+    case 1:
+        p.friction = {FrictionKind::constant, 0, rng.uniform(0.1, 2), 0.005};
+        break;
+    case 2:
+        p.friction = {FrictionKind::combined, rng.uniform(0.3, 3), rng.uniform(0.1, 2), 0.005};
+        break;
+    default:
+        break;
     }
-    if (rng.below(4) == 0) p.collision = CollisionModel::ideal;
-    if (rng.below(4) == 0) p.cushion = CushionModel::ideal;
+    if (rng.below(4) == 0)
+        p.collision = CollisionModel::ideal;
+    if (rng.below(4) == 0)
+        p.cushion = CushionModel::ideal;
     const bool seed_model = p.friction.kind != FrictionKind::physical;
 
     std::vector<Ball> balls;
     const int count = 1 + static_cast<int>(rng.below(seed_model ? 6 : 16));
     for (int id = 0; id < count; ++id) {
         for (int attempt = 0; attempt < 100; ++attempt) {
-            const Ball b = ball_at(id, rng.uniform(R, table.length - R), rng.uniform(R, table.width - R),
-                                   rng.uniform(0.12, 0.25));
-            if (smallest_gap([&] { auto all = balls; all.push_back(b); return all; }()) >= 0) {
+            const Ball b = ball_at(id, rng.uniform(R, table.length - R),
+                                   rng.uniform(R, table.width - R), rng.uniform(0.12, 0.25));
+            if (smallest_gap([&] {
+                    auto all = balls;
+                    all.push_back(b);
+                    return all;
+                }()) >= 0) {
                 balls.push_back(b);
                 break;
             }
@@ -159,7 +179,8 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
                         rng.uniform(-0.5, 0.5)};
 
     World world(table, p, balls);
-    if (sample_between) world.record(true);
+    if (sample_between)
+        world.record(true);
     world.strike(strike);
     double energy = total_energy(world.balls(), R);
     std::size_t events = 0;
@@ -167,13 +188,15 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
         const std::vector<Ball> before = world.balls();
         const double before_time = world.time();
         const auto e = world.step();
-        if (!e) break;
+        if (!e)
+            break;
         ++events;
         const std::vector<Ball> after = world.balls();
         INFO("seed " << seed << " event " << events << " " << event_kind_name(e->kind));
         REQUIRE(smallest_gap(after) > -1e-9);
         for (const Ball& b : after)
-            if (b.state != MotionState::pocketed) REQUIRE(within_cushions(table, b.position));
+            if (b.state != MotionState::pocketed)
+                REQUIRE(within_cushions(table, b.position));
         const double now = total_energy(after, R);
         REQUIRE(now <= energy + 1e-12);
         energy = now;
@@ -189,12 +212,14 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
             double stopped_mass = 0;
             for (const int id : {e->ball, e->other}) {
                 const Ball b = find_ball(after, id);
-                if (seed_model && b.state == MotionState::stationary) stopped_mass += b.mass;
+                if (seed_model && b.state == MotionState::stationary)
+                    stopped_mass += b.mass;
             }
             // A slow contact where the cloth presses the balls together is a push, resolved
             // with the cloth's help (see resolve_ball_ball): momentum is not the pair's alone.
             const Vec2 n = normalized(b0.position - a0.position);
-            const bool push = !seed_model && dot(a0.velocity - b0.velocity, n) < p.elastic_below_speed;
+            const bool push =
+                !seed_model && dot(a0.velocity - b0.velocity, n) < p.elastic_below_speed;
             if (!push) {
                 REQUIRE(length(p1 - p0) <=
                         1e-12 * (1 + length(p0)) + stopped_mass * p.friction.rest_speed);
@@ -209,7 +234,8 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
             const auto sampled = world.trajectory().sample(end * k / 50);
             REQUIRE(smallest_gap(sampled) > -1e-9);
             for (const Ball& b : sampled)
-                if (b.state != MotionState::pocketed) REQUIRE(within_cushions(table, b.position));
+                if (b.state != MotionState::pocketed)
+                    REQUIRE(within_cushions(table, b.position));
         }
     }
 }
@@ -218,5 +244,6 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
 
 TEST_CASE("100,000 random shots keep every ball apart, on the table, and reach rest",
           "[physics][property]") {
-    for (std::uint64_t seed = 1; seed <= 100000; ++seed) check_random_shot(seed, seed % 20 == 0);
+    for (std::uint64_t seed = 1; seed <= 100000; ++seed)
+        check_random_shot(seed, seed % 20 == 0);
 }

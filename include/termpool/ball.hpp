@@ -17,13 +17,13 @@ enum class MotionState {
 
 /// A ball at one instant. ID 0 is the cue ball, 1..15 the object balls.
 struct Ball {
-    int id = 0;                               ///< ball number
-    Vec2 position;                            ///< centre, m
-    Vec2 velocity;                            ///< m/s
-    Vec3 angular_velocity;                    ///< rad/s
-    double mass = 0.170;                      ///< kg
+    int id = 0;                                  ///< ball number
+    Vec2 position;                               ///< centre, m
+    Vec2 velocity;                               ///< m/s
+    Vec3 angular_velocity;                       ///< rad/s
+    double mass = 0.170;                         ///< kg
     MotionState state = MotionState::stationary; ///< current motion
-    int pocket = 0;                           ///< pocket number 1..6 once pocketed, else 0
+    int pocket = 0;                              ///< pocket number 1..6 once pocketed, else 0
     /// Exact equality, for determinism checks.
     bool operator==(const Ball&) const = default;
 };

@@ -34,17 +34,17 @@ struct FrictionModel {
 
 /// Everything the simulator needs besides the table and the balls.
 struct PhysicsParams {
-    double ball_radius = 0.028575;      ///< R
-    double ball_mass = 0.170;           ///< default mass m of a ball
-    double sliding_friction = 0.2;      ///< u_s, ball-cloth while sliding
-    double rolling_friction = 0.01;     ///< u_r, rolling resistance
-    double spin_friction = 0.0127;      ///< u_sp, z-spin decays at 5 g u_sp / (2 R)
-    double ball_restitution = 0.95;     ///< e_b
-    double ball_friction = 0.05;        ///< u_b, ball-ball
-    double cushion_restitution = 0.85;  ///< e_c
-    double cushion_friction = 0.2;      ///< f_c
+    double ball_radius = 0.028575;       ///< R
+    double ball_mass = 0.170;            ///< default mass m of a ball
+    double sliding_friction = 0.2;       ///< u_s, ball-cloth while sliding
+    double rolling_friction = 0.01;      ///< u_r, rolling resistance
+    double spin_friction = 0.0127;       ///< u_sp, z-spin decays at 5 g u_sp / (2 R)
+    double ball_restitution = 0.95;      ///< e_b
+    double ball_friction = 0.05;         ///< u_b, ball-ball
+    double cushion_restitution = 0.85;   ///< e_c
+    double cushion_friction = 0.2;       ///< f_c
     double cushion_height_ratio = 0.635; ///< cushion nose height as a fraction of 2R
-    double gravity = 9.81;              ///< g
+    double gravity = 9.81;               ///< g
     /// Below this approach speed (m/s) collisions are elastic. Real restitution tends to 1 at low
     /// speed, and it keeps balls pressed together by friction from bouncing ever more often.
     double elastic_below_speed = 0.005;

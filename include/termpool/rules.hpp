@@ -53,27 +53,27 @@ enum class Foul {
 
 /// Decisions the rules owe a player.
 enum class Choice {
-    play_on,     ///< accept the table as it is and shoot
-    re_rack,     ///< re-rack and break yourself
-    re_break,    ///< the player who just broke breaks again
-    spot_eight,  ///< 8 pocketed on the break: spot it and keep shooting
-    take_solids, ///< bar rules, both groups fell on the break: take solids
+    play_on,      ///< accept the table as it is and shoot
+    re_rack,      ///< re-rack and break yourself
+    re_break,     ///< the player who just broke breaks again
+    spot_eight,   ///< 8 pocketed on the break: spot it and keep shooting
+    take_solids,  ///< bar rules, both groups fell on the break: take solids
     take_stripes, ///< bar rules: take stripes
-    shoot,       ///< after a push-out: shoot from here
-    pass_back,   ///< after a push-out: the player who pushed shoots again
+    shoot,        ///< after a push-out: shoot from here
+    pass_back,    ///< after a push-out: the player who pushed shoots again
 };
 
 /// Why the game ended.
 enum class WinReason {
-    none,              ///< not over
-    eight_pocketed,    ///< the called 8 was pocketed legally
-    eight_on_break,    ///< bar rules: the 8 fell on the break
-    eight_early,       ///< the opponent pocketed the 8 before clearing the group
-    eight_on_foul,     ///< the opponent pocketed the 8 on a foul (or scratched with it, bar rules)
+    none,               ///< not over
+    eight_pocketed,     ///< the called 8 was pocketed legally
+    eight_on_break,     ///< bar rules: the 8 fell on the break
+    eight_early,        ///< the opponent pocketed the 8 before clearing the group
+    eight_on_foul,      ///< the opponent pocketed the 8 on a foul (or scratched with it, bar rules)
     eight_wrong_pocket, ///< the opponent pocketed the 8 in a pocket not called
-    eight_off_table,   ///< the opponent drove the 8 off the table
-    nine_pocketed,     ///< the 9 was pocketed legally
-    three_fouls,       ///< the opponent fouled three times in a row (9-ball)
+    eight_off_table,    ///< the opponent drove the 8 off the table
+    nine_pocketed,      ///< the 9 was pocketed legally
+    three_fouls,        ///< the opponent fouled three times in a row (9-ball)
 };
 
 /// A called shot. Ball 0 means "not called": the referee calls the obvious shot for the
@@ -92,21 +92,21 @@ struct ShotCall {
 
 /// What a shot meant.
 struct Verdict {
-    Foul foul = Foul::none;                  ///< the foul that counts, or none
-    std::vector<Foul> fouls;                 ///< every foul of the shot, in precedence order
-    int first_contact = -1;                  ///< first ball the cue ball hit, -1 for none
-    std::vector<int> pocketed;               ///< balls that dropped, in order
-    bool legal_break = true;                 ///< for a break shot: did it meet the break rule
-    bool groups_assigned = false;            ///< groups were decided by this shot
-    Group player1_group = Group::open;       ///< groups after the shot (player 2 has the other)
-    int next_shooter = 1;                    ///< 1 or 2
+    Foul foul = Foul::none;                     ///< the foul that counts, or none
+    std::vector<Foul> fouls;                    ///< every foul of the shot, in precedence order
+    int first_contact = -1;                     ///< first ball the cue ball hit, -1 for none
+    std::vector<int> pocketed;                  ///< balls that dropped, in order
+    bool legal_break = true;                    ///< for a break shot: did it meet the break rule
+    bool groups_assigned = false;               ///< groups were decided by this shot
+    Group player1_group = Group::open;          ///< groups after the shot (player 2 has the other)
+    int next_shooter = 1;                       ///< 1 or 2
     BallInHand ball_in_hand = BallInHand::none; ///< for the next shooter
-    int chooser = 0;                         ///< player who owes a choice (0: none)
-    std::vector<Choice> choices;             ///< the options of that choice
-    std::vector<int> respotted;              ///< balls put back on the table (the 8, the 9)
-    int winner = 0;                          ///< 1 or 2 once the game is over
-    WinReason reason = WinReason::none;      ///< why
-    bool stalemate_rerack = false;           ///< the rack was re-broken for a stalemate
+    int chooser = 0;                            ///< player who owes a choice (0: none)
+    std::vector<Choice> choices;                ///< the options of that choice
+    std::vector<int> respotted;                 ///< balls put back on the table (the 8, the 9)
+    int winner = 0;                             ///< 1 or 2 once the game is over
+    WinReason reason = WinReason::none;         ///< why
+    bool stalemate_rerack = false;              ///< the rack was re-broken for a stalemate
 };
 
 /// Names as used by `termpool simulate` ("wrong-ball-first", "play-on", ...).

@@ -53,9 +53,9 @@ private:
 
 /// Everything a finished shot produced.
 struct ShotResult {
-    std::vector<Event> events;   ///< in time order
-    std::vector<Ball> balls;     ///< final state, in the order the world was given
-    double rest_time = 0;        ///< when the last ball stopped
+    std::vector<Event> events;    ///< in time order
+    std::vector<Ball> balls;      ///< final state, in the order the world was given
+    double rest_time = 0;         ///< when the last ball stopped
     bool event_limit_hit = false; ///< true if the shot was cut short by `World::max_events`
 };
 

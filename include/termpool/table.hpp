@@ -28,12 +28,12 @@ struct CushionSegment {
 
 /// One pocket: its mouth, jaws and the line behind which a ball centre is captured.
 struct Pocket {
-    int number = 0;        ///< 1..6
-    Vec2 position;         ///< nominal position (the table corner or the middle of a long side)
-    Vec2 capture_point;    ///< a point on the capture line
-    Vec2 capture_normal;   ///< unit normal of the capture line, pointing towards the table
-    Vec2 region_min;       ///< box holding the jaws and the mouth, for quick rejection
-    Vec2 region_max;       ///< upper corner of that box
+    int number = 0;      ///< 1..6
+    Vec2 position;       ///< nominal position (the table corner or the middle of a long side)
+    Vec2 capture_point;  ///< a point on the capture line
+    Vec2 capture_normal; ///< unit normal of the capture line, pointing towards the table
+    Vec2 region_min;     ///< box holding the jaws and the mouth, for quick rejection
+    Vec2 region_max;     ///< upper corner of that box
 };
 
 /// A table: the playing surface and everything a ball can hit or fall into.
@@ -62,12 +62,12 @@ struct Table {
 /// rail and jaw measured through the rubber, and the depth behind the mouth line at which a
 /// ball's centre is over the hole.
 struct PocketSpec {
-    double corner_mouth = 0.114;          ///< m
-    double side_mouth = 0.127;            ///< m
-    double corner_jaw_angle_deg = 142;    ///< degrees
-    double side_jaw_angle_deg = 104;      ///< degrees
-    double corner_capture_depth = 0.03;   ///< m behind the mouth line
-    double side_capture_depth = 0.02;     ///< m behind the mouth line
+    double corner_mouth = 0.114;        ///< m
+    double side_mouth = 0.127;          ///< m
+    double corner_jaw_angle_deg = 142;  ///< degrees
+    double side_jaw_angle_deg = 104;    ///< degrees
+    double corner_capture_depth = 0.03; ///< m behind the mouth line
+    double side_capture_depth = 0.02;   ///< m behind the mouth line
 };
 
 /// Builds the table of the given size for balls of radius `ball_radius`.

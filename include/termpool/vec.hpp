@@ -30,24 +30,38 @@ struct Vec2 {
 };
 
 /// Scalar times vector.
-constexpr Vec2 operator*(double s, Vec2 v) { return v * s; }
+constexpr Vec2 operator*(double s, Vec2 v) {
+    return v * s;
+}
 /// Dot product.
-constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+constexpr double dot(Vec2 a, Vec2 b) {
+    return a.x * b.x + a.y * b.y;
+}
 /// z component of the 3D cross product of two plane vectors.
-constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+constexpr double cross(Vec2 a, Vec2 b) {
+    return a.x * b.y - a.y * b.x;
+}
 /// Squared length.
-constexpr double length_squared(Vec2 v) { return dot(v, v); }
+constexpr double length_squared(Vec2 v) {
+    return dot(v, v);
+}
 /// Length.
-inline double length(Vec2 v) { return std::sqrt(dot(v, v)); }
+inline double length(Vec2 v) {
+    return std::sqrt(dot(v, v));
+}
 /// The vector turned 90 degrees counter-clockwise.
-constexpr Vec2 perpendicular(Vec2 v) { return {-v.y, v.x}; }
+constexpr Vec2 perpendicular(Vec2 v) {
+    return {-v.y, v.x};
+}
 /// Unit vector in direction v, or zero for the zero vector.
 inline Vec2 normalized(Vec2 v) {
     const double len = length(v);
     return len > 0 ? v / len : Vec2{};
 }
 /// Unit vector at angle `radians` counter-clockwise from +x.
-inline Vec2 unit_from_angle(double radians) { return {std::cos(radians), std::sin(radians)}; }
+inline Vec2 unit_from_angle(double radians) {
+    return {std::cos(radians), std::sin(radians)};
+}
 
 /// A vector in space: x and y in the table plane, z up. Used for angular velocity.
 struct Vec3 {
@@ -68,14 +82,20 @@ struct Vec3 {
 };
 
 /// Dot product.
-constexpr double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+constexpr double dot(Vec3 a, Vec3 b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
 /// Cross product.
 constexpr Vec3 cross(Vec3 a, Vec3 b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 /// A plane vector lifted into space at height z.
-constexpr Vec3 lift(Vec2 v, double z = 0) { return {v.x, v.y, z}; }
+constexpr Vec3 lift(Vec2 v, double z = 0) {
+    return {v.x, v.y, z};
+}
 /// The plane part of a space vector.
-constexpr Vec2 planar(Vec3 v) { return {v.x, v.y}; }
+constexpr Vec2 planar(Vec3 v) {
+    return {v.x, v.y};
+}
 
 } // namespace termpool

@@ -15,9 +15,9 @@
 #include <termpool/table.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/numbers.hpp"
 #include "tui/render_bench.hpp"
 #include "tui/render_figures.hpp"
-#include "cli/numbers.hpp"
 
 namespace termpool::cli {
 namespace {
@@ -198,7 +198,8 @@ int bench_command(const std::vector<std::string>& args) {
         return help ? 0 : 2;
     }
     const Options options = *parsed;
-    if (options.render) return bench_render();
+    if (options.render)
+        return bench_render();
     const Table table = make_table(TableSize::nine_foot);
     const PhysicsParams params;
     Random rng(options.seed);

@@ -456,7 +456,7 @@ constexpr Directive directives[] = {
 
 /// The directives that give a scenario a game context, in the order they are documented.
 constexpr std::string_view context_directives[] = {"game",  "shooter", "groups",
-                                                    "break", "call",    "push-out"};
+                                                   "break", "call",    "push-out"};
 
 /// A ball about to go on the table, with the line that put it there.
 struct Placed {

@@ -17,8 +17,8 @@
 namespace termpool::cli {
 
 /// The game around the shot, for the referee: given by the directives `game`, `shooter`,
-/// `groups`, `break`, `call` and `push-out`. Every field has passed the checks against the rest of the
-/// scenario (a called ball is on the table, 9-ball has neither groups nor calls, ...).
+/// `groups`, `break`, `call` and `push-out`. Every field has passed the checks against the rest of
+/// the scenario (a called ball is on the table, 9-ball has neither groups nor calls, ...).
 struct GameContext {
     GameType type = GameType::eight_ball; ///< `game`; 8-ball when only other directives are given
     int shooter = 1;                      ///< the player at the table, 1 or 2

@@ -84,9 +84,8 @@ int simulate_command(const std::vector<std::string>& args) {
         if (scenario.game && !cut_short) {
             const GameContext& context = *scenario.game;
             Game game = Game::from_position(context.type, scenario.table, scenario.params,
-                                            scenario.balls, context.shooter,
-                                            context.player1_group, context.is_break,
-                                            context.push_out);
+                                            scenario.balls, context.shooter, context.player1_group,
+                                            context.is_break, context.push_out);
             output += format_verdict(game.apply(ShotCall{context.call, context.push_out}, shot));
         }
     } else {

@@ -12,14 +12,17 @@ double effective_restitution(double restitution, double approach_speed, const Ph
     return approach_speed < p.elastic_below_speed ? 1.0 : restitution;
 }
 
-double moment_of_inertia(double mass, double radius) { return 0.4 * mass * radius * radius; }
+double moment_of_inertia(double mass, double radius) {
+    return 0.4 * mass * radius * radius;
+}
 
 // Friction impulse at a contact whose points slip at `slip` (3D), limited by Coulomb's law and by
 // the impulse that stops the slip. `inverse_mass_tangent` is the slip change per unit impulse.
 Vec3 friction_impulse(Vec3 slip, double normal_impulse, double friction,
                       double inverse_mass_tangent) {
     const double slip_speed = std::sqrt(dot(slip, slip));
-    if (slip_speed == 0) return {};
+    if (slip_speed == 0)
+        return {};
     const double stick = slip_speed / inverse_mass_tangent;
     const double magnitude = std::min(friction * normal_impulse, stick);
     return slip * (-magnitude / slip_speed);
@@ -35,7 +38,8 @@ void resolve_push(Ball& a, Ball& b, Vec2 n, const PhysicsParams& p) {
     const double R = p.ball_radius;
     const Vec2 roll_axis = perpendicular(n); // spin about it rolls a ball along n
     auto rolling_momentum = [&](const Ball& ball) {
-        return ball.mass * (dot(ball.velocity, n) + 0.4 * R * dot(planar(ball.angular_velocity), roll_axis));
+        return ball.mass *
+               (dot(ball.velocity, n) + 0.4 * R * dot(planar(ball.angular_velocity), roll_axis));
     };
     const double common = (rolling_momentum(a) + rolling_momentum(b)) / (1.4 * (a.mass + b.mass));
     for (Ball* ball : {&a, &b}) {
@@ -49,7 +53,8 @@ void resolve_push(Ball& a, Ball& b, Vec2 n, const PhysicsParams& p) {
 // changes) until its velocity along n is `target`, as far as its speed allows.
 void turn_towards(Ball& ball, Vec2 n, double target) {
     const double speed = length(ball.velocity);
-    if (speed == 0) return;
+    if (speed == 0)
+        return;
     target = std::clamp(target, -speed, speed);
     const Vec2 t = perpendicular(n);
     const double sideways = std::sqrt(std::max(0.0, speed * speed - target * target));
@@ -67,7 +72,8 @@ void turn_towards(Ball& ball, Vec2 n, double target) {
 // parting taken from their sideways motion by turning it, which costs no energy.
 void part_pushed_balls(Ball& a, Ball& b, Vec2 n) {
     const double needed = push_parting_speed - dot(b.velocity - a.velocity, n);
-    if (needed <= 0) return;
+    if (needed <= 0)
+        return;
     const double room_b = length(b.velocity) - dot(b.velocity, n);
     const double room_a = length(a.velocity) + dot(a.velocity, n);
     double share_b = std::min(needed / 2, room_b);
@@ -122,7 +128,8 @@ void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& p) {
             resolve_push(a, b, n, p);
             settle_motion_state(a, p);
             settle_motion_state(b, p);
-            if (pressed_together(a, b, n, p)) part_pushed_balls(a, b, n);
+            if (pressed_together(a, b, n, p))
+                part_pushed_balls(a, b, n);
         }
     }
     const double separation = dot(b.velocity - a.velocity, n);
@@ -172,7 +179,8 @@ void resolve_cushion(Ball& ball, Vec2 towards, const PhysicsParams& p) {
             ball.angular_velocity += torque * (1.0 / moment_of_inertia(m, R));
         }
         const double still_approaching = dot(ball.velocity, towards);
-        if (still_approaching > 0) ball.velocity -= towards * (2 * still_approaching);
+        if (still_approaching > 0)
+            ball.velocity -= towards * (2 * still_approaching);
     }
 
     const double separation = -dot(ball.velocity, towards);

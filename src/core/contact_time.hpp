@@ -43,9 +43,11 @@ double advance_until_contact(Gap gap, Bound closing_bound, double horizon) {
     double t = 0;
     for (int step = 0; step < max_steps && t <= horizon; ++step) {
         const auto [g, rate] = gap(t);
-        if (g <= tolerance && rate < 0) return t;
+        if (g <= tolerance && rate < 0)
+            return t;
         const double bound = closing_bound(t);
-        if (!(bound > 0)) break;
+        if (!(bound > 0))
+            break;
         t += std::max(g, tolerance) / bound;
     }
     return std::numeric_limits<double>::infinity();

@@ -31,7 +31,8 @@ Verdict Game::judge_eight(const ShotCall& shot, const Facts& facts) {
         v.fouls = {facts.dropped(0) ? Foul::scratch : Foul::none,
                    facts.left_table(0) ? Foul::cue_off_table : Foul::none};
         for (const int id : facts.off_table)
-            if (id != 0) v.fouls.push_back(Foul::off_table);
+            if (id != 0)
+                v.fouls.push_back(Foul::off_table);
         const bool foul = std::ranges::any_of(v.fouls, [](Foul f) { return f != Foul::none; });
         const bool scratch = facts.dropped(0) || facts.left_table(0);
         v.legal_break = facts.object_ball_dropped() || facts.balls_to_rail >= 4;
@@ -83,7 +84,8 @@ Verdict Game::judge_eight(const ShotCall& shot, const Facts& facts) {
                 choices_ = {Choice::take_solids, Choice::take_stripes};
             } else {
                 const Group g = solid ? Group::solids : Group::stripes;
-                player1_group_ = me == 1 ? g : (g == Group::solids ? Group::stripes : Group::solids);
+                player1_group_ =
+                    me == 1 ? g : (g == Group::solids ? Group::stripes : Group::solids);
                 v.groups_assigned = true;
             }
         }
@@ -137,17 +139,17 @@ Verdict Game::judge_eight(const ShotCall& shot, const Facts& facts) {
             const auto first = std::ranges::find_if(facts.pocketed, [](int id) { return id != 0; });
             if (first != facts.pocketed.end()) {
                 const Group g = group_of_ball(*first);
-                player1_group_ = me == 1 ? g : (g == Group::solids ? Group::stripes : Group::solids);
+                player1_group_ =
+                    me == 1 ? g : (g == Group::solids ? Group::stripes : Group::solids);
                 v.groups_assigned = true;
             }
         }
         const Group now_mine = group_of(me);
-        keeps_turn = std::ranges::any_of(facts.pocketed, [&](int id) {
-            return id != 0 && group_of_ball(id) == now_mine;
-        });
+        keeps_turn = std::ranges::any_of(
+            facts.pocketed, [&](int id) { return id != 0 && group_of_ball(id) == now_mine; });
     } else {
-        const bool called_ball_in = call.ball > 0 && call.pocket == facts.pocket_of(call.ball) &&
-                                    call.pocket != 0;
+        const bool called_ball_in =
+            call.ball > 0 && call.pocket == facts.pocket_of(call.ball) && call.pocket != 0;
         if (called_ball_in && mine == Group::open) {
             const Group g = group_of_ball(call.ball);
             player1_group_ = me == 1 ? g : (g == Group::solids ? Group::stripes : Group::solids);
@@ -157,7 +159,8 @@ Verdict Game::judge_eight(const ShotCall& shot, const Facts& facts) {
             keeps_turn = group_of_ball(call.ball) == mine;
         }
     }
-    if (!keeps_turn) pass_turn(BallInHand::none);
+    if (!keeps_turn)
+        pass_turn(BallInHand::none);
     return v;
 }
 

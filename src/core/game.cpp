@@ -14,8 +14,8 @@ Game::Game(GameType type, const Table& table, const PhysicsParams& params, int b
 }
 
 Game Game::from_position(GameType type, const Table& table, const PhysicsParams& params,
-                         std::vector<Ball> balls, int shooter, Group player1_group,
-                         bool is_break, bool push_out_allowed) {
+                         std::vector<Ball> balls, int shooter, Group player1_group, bool is_break,
+                         bool push_out_allowed) {
     Game g;
     g.type_ = type;
     g.table_ = table;
@@ -31,10 +31,10 @@ Game Game::from_position(GameType type, const Table& table, const PhysicsParams&
 }
 
 void Game::rerack(int new_breaker) {
-    const RackType rack = type_ == GameType::nine_ball ? RackType::nine_ball
-                                                       : RackType::eight_ball;
+    const RackType rack = type_ == GameType::nine_ball ? RackType::nine_ball : RackType::eight_ball;
     // Each rack of a game gets its own seed, so re-racks differ but replay the same.
-    balls_ = make_rack(table_, params_, rack, seed_ * 1000003ULL + static_cast<std::uint64_t>(racks_));
+    balls_ =
+        make_rack(table_, params_, rack, seed_ * 1000003ULL + static_cast<std::uint64_t>(racks_));
     ++racks_;
     breaker_ = shooter_ = new_breaker;
     is_break_ = true;
@@ -49,8 +49,10 @@ void Game::rerack(int new_breaker) {
 }
 
 Group Game::group_of(int player) const {
-    if (player1_group_ == Group::open) return Group::open;
-    if (player == 1) return player1_group_;
+    if (player1_group_ == Group::open)
+        return Group::open;
+    if (player == 1)
+        return player1_group_;
     return player1_group_ == Group::solids ? Group::stripes : Group::solids;
 }
 
@@ -63,27 +65,34 @@ bool Game::ball_on_table(int id) const {
 std::vector<int> Game::legal_targets() const {
     std::vector<int> on_table;
     for (const Ball& b : balls_)
-        if (b.id != 0 && b.state != MotionState::pocketed) on_table.push_back(b.id);
+        if (b.id != 0 && b.state != MotionState::pocketed)
+            on_table.push_back(b.id);
     std::sort(on_table.begin(), on_table.end());
     if (type_ == GameType::nine_ball || on_table.empty())
         return on_table.empty() ? on_table : std::vector<int>{on_table.front()};
     const Group group = group_of(shooter_);
     std::vector<int> targets;
     for (const int id : on_table) {
-        const bool own = group == Group::open ? id != 8
-                                              : std::ranges::count(group_balls(group), id) > 0;
-        if (own) targets.push_back(id);
+        const bool own =
+            group == Group::open ? id != 8 : std::ranges::count(group_balls(group), id) > 0;
+        if (own)
+            targets.push_back(id);
     }
-    if (targets.empty() && group != Group::open) targets.push_back(8);
-    if (targets.empty()) targets = on_table; // only the 8 left on an open table
+    if (targets.empty() && group != Group::open)
+        targets.push_back(8);
+    if (targets.empty())
+        targets = on_table; // only the 8 left on an open table
     return targets;
 }
 
 bool Game::legal_placement(Vec2 p) const {
-    if (ball_in_hand_ == BallInHand::none) return false;
+    if (ball_in_hand_ == BallInHand::none)
+        return false;
     const double R = params_.ball_radius;
-    if (!on_playing_surface(table_, p, R)) return false;
-    if (ball_in_hand_ == BallInHand::kitchen && p.x > table_.head_string_x()) return false;
+    if (!on_playing_surface(table_, p, R))
+        return false;
+    if (ball_in_hand_ == BallInHand::kitchen && p.x > table_.head_string_x())
+        return false;
     return std::none_of(balls_.begin(), balls_.end(), [&](const Ball& b) {
         return b.id != 0 && b.state != MotionState::pocketed &&
                length_squared(b.position - p) < 4 * R * R;
@@ -93,22 +102,25 @@ bool Game::legal_placement(Vec2 p) const {
 std::vector<Vec2> Game::legal_placements(int per_axis) const {
     std::vector<Vec2> spots;
     const double R = params_.ball_radius;
-    const double x_max = ball_in_hand_ == BallInHand::kitchen ? table_.head_string_x()
-                                                              : table_.length - R;
+    const double x_max =
+        ball_in_hand_ == BallInHand::kitchen ? table_.head_string_x() : table_.length - R;
     for (int i = 0; i < per_axis; ++i) {
         for (int j = 0; j < per_axis; ++j) {
             const Vec2 p{R + (x_max - R) * (i + 0.5) / per_axis,
                          R + (table_.width - 2 * R) * (j + 0.5) / per_axis};
-            if (legal_placement(p)) spots.push_back(p);
+            if (legal_placement(p))
+                spots.push_back(p);
         }
     }
     return spots;
 }
 
 bool Game::place_cue_ball(Vec2 p) {
-    if (winner_ != 0 || chooser_ != 0 || !legal_placement(p)) return false;
+    if (winner_ != 0 || chooser_ != 0 || !legal_placement(p))
+        return false;
     for (Ball& b : balls_) {
-        if (b.id != 0) continue;
+        if (b.id != 0)
+            continue;
         b = Ball{};
         b.id = 0;
         b.mass = params_.ball_mass;
@@ -136,11 +148,14 @@ void Game::spot_ball(int id) {
     Vec2 spot = foot;
     bool found = false;
     for (double x = foot.x; !found && x <= table_.length - R; x += step)
-        if (free_at({x, foot.y})) spot = {x, foot.y}, found = true;
+        if (free_at({x, foot.y}))
+            spot = {x, foot.y}, found = true;
     for (double x = foot.x - step; !found && x >= R; x -= step)
-        if (free_at({x, foot.y})) spot = {x, foot.y}, found = true;
+        if (free_at({x, foot.y}))
+            spot = {x, foot.y}, found = true;
     for (Ball& b : balls_) {
-        if (b.id != id) continue;
+        if (b.id != id)
+            continue;
         const double mass = b.mass;
         b = Ball{};
         b.id = id;
@@ -150,7 +165,8 @@ void Game::spot_ball(int id) {
 }
 
 bool Game::choose(Choice choice) {
-    if (chooser_ == 0 || std::ranges::count(choices_, choice) == 0) return false;
+    if (chooser_ == 0 || std::ranges::count(choices_, choice) == 0)
+        return false;
     const int who = chooser_;
     chooser_ = 0;
     choices_.clear();
@@ -160,8 +176,12 @@ bool Game::choose(Choice choice) {
         shooter_ = who;
         is_break_ = false;
         break;
-    case Choice::re_rack: rerack(who); break;
-    case Choice::re_break: rerack(breaker_); break;
+    case Choice::re_rack:
+        rerack(who);
+        break;
+    case Choice::re_break:
+        rerack(breaker_);
+        break;
     case Choice::spot_eight:
         spot_ball(8);
         shooter_ = who;
@@ -174,7 +194,9 @@ bool Game::choose(Choice choice) {
         shooter_ = who;
         break;
     }
-    case Choice::pass_back: shooter_ = pusher_; break;
+    case Choice::pass_back:
+        shooter_ = pusher_;
+        break;
     }
     return true;
 }
@@ -221,9 +243,9 @@ Verdict Game::apply(const ShotCall& call, const ShotResult& result) {
     facts.targets = legal_targets();
     facts.prefer_legal_first_contact();
     const Group group = group_of(shooter_);
-    facts.group_cleared = group != Group::open && std::ranges::none_of(group_balls(group), [&](int id) {
-        return ball_on_table(id);
-    });
+    facts.group_cleared =
+        group != Group::open &&
+        std::ranges::none_of(group_balls(group), [&](int id) { return ball_on_table(id); });
     balls_ = result.balls;
     for (Ball& b : balls_) {
         if (facts.left_table(b.id)) {
@@ -246,7 +268,8 @@ Verdict Game::apply(const ShotCall& call, const ShotResult& result) {
 
 Verdict Game::play(const Strike& strike, const ShotCall& call, ShotResult* out) {
     const ShotResult result = simulate_shot(table_, params_, balls_, strike);
-    if (out) *out = result;
+    if (out)
+        *out = result;
     return apply(call, result);
 }
 

@@ -41,36 +41,45 @@ SeedStep seed_step(double v, double dt, const FrictionModel& f) {
         return SeedStep{v0 - a * t, v0 * t - 0.5 * a * t * t};
     };
     switch (f.kind) {
-    case FrictionKind::decay: return exponential(dt);
-    case FrictionKind::constant: return linear(v, A, dt);
+    case FrictionKind::decay:
+        return exponential(dt);
+    case FrictionKind::constant:
+        return linear(v, A, dt);
     case FrictionKind::combined: {
         // Exponential decay slows more than A while K v > A.
         const double switch_speed = A / K;
-        if (v <= switch_speed) return linear(v, A, dt);
+        if (v <= switch_speed)
+            return linear(v, A, dt);
         const double t_switch = std::log(v / switch_speed) / K;
-        if (dt <= t_switch) return exponential(dt);
+        if (dt <= t_switch)
+            return exponential(dt);
         const SeedStep first = exponential(t_switch);
         const SeedStep rest = linear(switch_speed, A, dt - t_switch);
         return {rest.speed, first.distance + rest.distance};
     }
-    case FrictionKind::physical: break;
+    case FrictionKind::physical:
+        break;
     }
     return {v, v * dt};
 }
 
 double seed_stop_time(double v, const FrictionModel& f) {
     const double K = f.decay_rate, A = f.deceleration, rest = f.rest_speed;
-    if (v <= rest) return 0;
+    if (v <= rest)
+        return 0;
     switch (f.kind) {
-    case FrictionKind::decay: return std::log(v / rest) / K;
-    case FrictionKind::constant: return (v - rest) / A;
+    case FrictionKind::decay:
+        return std::log(v / rest) / K;
+    case FrictionKind::constant:
+        return (v - rest) / A;
     case FrictionKind::combined: {
         const double switch_speed = A / K;
         if (v <= switch_speed || switch_speed <= rest)
             return v <= switch_speed ? (v - rest) / A : std::log(v / rest) / K;
         return std::log(v / switch_speed) / K + (switch_speed - rest) / A;
     }
-    case FrictionKind::physical: break;
+    case FrictionKind::physical:
+        break;
     }
     return infinity;
 }
@@ -86,8 +95,10 @@ Vec2 physical_acceleration(const Ball& b, const PhysicsParams& p) {
     switch (b.state) {
     case MotionState::sliding:
         return normalized(slip_velocity(b, p.ball_radius)) * (-p.sliding_friction * p.gravity);
-    case MotionState::rolling: return normalized(b.velocity) * (-p.rolling_friction * p.gravity);
-    default: return {};
+    case MotionState::rolling:
+        return normalized(b.velocity) * (-p.rolling_friction * p.gravity);
+    default:
+        return {};
     }
 }
 
@@ -100,17 +111,22 @@ double time_to_transition(const Ball& b, const PhysicsParams& p) {
     case MotionState::sliding:
         return 2.0 * length(slip_velocity(b, p.ball_radius)) /
                (7.0 * p.sliding_friction * p.gravity);
-    case MotionState::rolling: return length(b.velocity) / (p.rolling_friction * p.gravity);
-    case MotionState::spinning: return std::abs(b.angular_velocity.z) / spin_decay_rate(p);
-    default: return infinity;
+    case MotionState::rolling:
+        return length(b.velocity) / (p.rolling_friction * p.gravity);
+    case MotionState::spinning:
+        return std::abs(b.angular_velocity.z) / spin_decay_rate(p);
+    default:
+        return infinity;
     }
 }
 
 Ball advance(const Ball& b, double dt, const PhysicsParams& p) {
-    if (dt <= 0) return b;
+    if (dt <= 0)
+        return b;
     Ball out = b;
     if (is_seed_friction(p)) {
-        if (b.state != MotionState::rolling) return out;
+        if (b.state != MotionState::rolling)
+            return out;
         const double v = length(b.velocity);
         const Vec2 direction = b.velocity / v;
         const SeedStep step = seed_step(v, dt, p.friction);
@@ -141,15 +157,15 @@ Ball advance(const Ball& b, double dt, const PhysicsParams& p) {
         const double t = std::min(dt, speed / decel);
         out.position = b.position + b.velocity * t + dir * (-0.5 * decel * t * t);
         out.velocity = dir * std::max(0.0, speed - decel * t);
-        out.angular_velocity = rolling_spin(out.velocity,
-                                            decayed_spin(b.angular_velocity.z, spin_rate, dt),
-                                            p.ball_radius);
+        out.angular_velocity = rolling_spin(
+            out.velocity, decayed_spin(b.angular_velocity.z, spin_rate, dt), p.ball_radius);
         return out;
     }
     case MotionState::spinning:
         out.angular_velocity.z = decayed_spin(b.angular_velocity.z, spin_rate, dt);
         return out;
-    default: return out;
+    default:
+        return out;
     }
 }
 
@@ -177,12 +193,14 @@ Ball apply_transition(const Ball& b, const PhysicsParams& p) {
         out.angular_velocity = {};
         out.state = MotionState::stationary;
         return out;
-    default: return out;
+    default:
+        return out;
     }
 }
 
 void settle_motion_state(Ball& b, const PhysicsParams& p) {
-    if (b.state == MotionState::pocketed) return;
+    if (b.state == MotionState::pocketed)
+        return;
     if (is_seed_friction(p)) {
         b.angular_velocity = {};
         if (length(b.velocity) <= p.friction.rest_speed) {

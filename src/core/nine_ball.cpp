@@ -16,8 +16,10 @@ Verdict Game::judge_nine(const ShotCall& shot, const Facts& facts) {
 
     if (push_out) {
         // Anything goes but the cue ball leaving the table; the opponent then chooses.
-        if (facts.dropped(0)) v.fouls.push_back(Foul::scratch);
-        if (facts.left_table(0)) v.fouls.push_back(Foul::cue_off_table);
+        if (facts.dropped(0))
+            v.fouls.push_back(Foul::scratch);
+        if (facts.left_table(0))
+            v.fouls.push_back(Foul::cue_off_table);
         if (std::ranges::any_of(facts.off_table, [](int id) { return id != 0; }))
             v.fouls.push_back(Foul::off_table);
     } else {
@@ -60,7 +62,8 @@ Verdict Game::judge_nine(const ShotCall& shot, const Facts& facts) {
         reason_ = WinReason::nine_pocketed;
         return v;
     }
-    if (!facts.object_ball_dropped()) shooter_ = other;
+    if (!facts.object_ball_dropped())
+        shooter_ = other;
     return v;
 }
 

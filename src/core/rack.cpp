@@ -32,19 +32,22 @@ void separate(std::vector<Ball>& balls, double radius) {
             for (std::size_t j = i + 1; j < balls.size(); ++j) {
                 const Vec2 d = balls[j].position - balls[i].position;
                 const double distance = length(d);
-                if (distance >= apart || distance == 0) continue;
+                if (distance >= apart || distance == 0)
+                    continue;
                 const Vec2 push = d * ((apart - distance) / (2 * distance));
                 balls[i].position -= push;
                 balls[j].position += push;
                 moved = true;
             }
         }
-        if (!moved) return;
+        if (!moved)
+            return;
     }
 }
 
 template <class T> void shuffle(std::vector<T>& v, Random& rng) {
-    for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.below(i)]);
+    for (std::size_t i = v.size(); i > 1; --i)
+        std::swap(v[i - 1], v[rng.below(i)]);
 }
 
 // Ball numbers in spot order.
@@ -57,13 +60,15 @@ std::vector<int> rack_order(RackType type, std::optional<std::uint64_t> seed) {
             shuffle(free, rng);
             std::size_t k = 0;
             for (int& n : order)
-                if (n != 1 && n != 9) n = free[k++];
+                if (n != 1 && n != 9)
+                    n = free[k++];
         }
         return order;
     }
     // Spot 4 is the centre of the third row; spots 10 and 14 are the back corners.
     std::vector<int> order{1, 9, 2, 10, 8, 3, 11, 4, 12, 5, 6, 13, 14, 7, 15};
-    if (!seed) return order;
+    if (!seed)
+        return order;
     Random rng(*seed);
     std::vector<int> solids{1, 2, 3, 4, 5, 6, 7}, stripes{9, 10, 11, 12, 13, 14, 15};
     shuffle(solids, rng);
@@ -78,7 +83,8 @@ std::vector<int> rack_order(RackType type, std::optional<std::uint64_t> seed) {
     shuffle(rest, rng);
     std::size_t k = 0;
     for (std::size_t s = 0; s < order.size(); ++s)
-        if (s != 4 && s != 10 && s != 14) order[s] = rest[k++];
+        if (s != 4 && s != 10 && s != 14)
+            order[s] = rest[k++];
     return order;
 }
 
@@ -108,7 +114,8 @@ std::vector<Ball> make_rack(const Table& table, const PhysicsParams& params, Rac
         }
         balls.push_back(b);
     }
-    if (seed) separate(balls, params.ball_radius);
+    if (seed)
+        separate(balls, params.ball_radius);
     return balls;
 }
 

@@ -10,7 +10,8 @@ bool Game::Facts::dropped(int id) const {
 
 int Game::Facts::pocket_of(int id) const {
     for (std::size_t i = 0; i < pocketed.size(); ++i)
-        if (pocketed[i] == id) return pockets[i];
+        if (pocketed[i] == id)
+            return pockets[i];
     return 0;
 }
 
@@ -33,8 +34,10 @@ void Game::Facts::prefer_legal_first_contact() {
 
 std::vector<Foul> Game::Facts::common_fouls() const {
     std::vector<Foul> fouls;
-    if (dropped(0)) fouls.push_back(Foul::scratch);
-    if (left_table(0)) fouls.push_back(Foul::cue_off_table);
+    if (dropped(0))
+        fouls.push_back(Foul::scratch);
+    if (left_table(0))
+        fouls.push_back(Foul::cue_off_table);
     if (std::any_of(off_table.begin(), off_table.end(), [](int id) { return id != 0; }))
         fouls.push_back(Foul::off_table);
     if (first_contact < 0) {
@@ -42,7 +45,8 @@ std::vector<Foul> Game::Facts::common_fouls() const {
     } else {
         if (std::find(targets.begin(), targets.end(), first_contact) == targets.end())
             fouls.push_back(Foul::wrong_ball_first);
-        if (!object_ball_dropped() && !rail_after_contact) fouls.push_back(Foul::no_rail);
+        if (!object_ball_dropped() && !rail_after_contact)
+            fouls.push_back(Foul::no_rail);
     }
     return fouls;
 }
@@ -61,12 +65,14 @@ Game::Facts Game::Facts::from(const std::vector<Event>& events) {
                     first_time = e.time;
                 }
                 // Contacts a nanosecond apart are simultaneous to any referee.
-                if (e.time - first_time <= 1e-9) f.first_contacts.push_back(object);
+                if (e.time - first_time <= 1e-9)
+                    f.first_contacts.push_back(object);
             }
             break;
         case EventKind::cushion:
         case EventKind::jaw:
-            if (f.first_contact >= 0) f.rail_after_contact = true;
+            if (f.first_contact >= 0)
+                f.rail_after_contact = true;
             if (e.ball != 0 && std::find(railed.begin(), railed.end(), e.ball) == railed.end())
                 railed.push_back(e.ball);
             break;
@@ -74,8 +80,11 @@ Game::Facts Game::Facts::from(const std::vector<Event>& events) {
             f.pocketed.push_back(e.ball);
             f.pockets.push_back(e.other);
             break;
-        case EventKind::off_table: f.off_table.push_back(e.ball); break;
-        default: break;
+        case EventKind::off_table:
+            f.off_table.push_back(e.ball);
+            break;
+        default:
+            break;
         }
     }
     f.balls_to_rail = static_cast<int>(railed.size());

@@ -16,8 +16,8 @@ Ball strike_cue_ball(const Ball& cue, const Strike& strike, const PhysicsParams&
         // forward about the horizontal axis across the shot, right english clockwise from above.
         const double spin_per_offset = 5.0 * strike.speed / (2.0 * params.ball_radius);
         const Vec2 follow_axis = perpendicular(direction);
-        b.angular_velocity = lift(follow_axis * (strike.follow * spin_per_offset),
-                                  -strike.side * spin_per_offset);
+        b.angular_velocity =
+            lift(follow_axis * (strike.follow * spin_per_offset), -strike.side * spin_per_offset);
     }
     b.state = MotionState::sliding;
     core::settle_motion_state(b, params);

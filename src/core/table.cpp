@@ -12,14 +12,19 @@ struct Dimensions {
 
 Dimensions dimensions(TableSize size) {
     switch (size) {
-    case TableSize::seven_foot: return {1.98, 0.99};
-    case TableSize::eight_foot: return {2.34, 1.17};
-    case TableSize::nine_foot: break;
+    case TableSize::seven_foot:
+        return {1.98, 0.99};
+    case TableSize::eight_foot:
+        return {2.34, 1.17};
+    case TableSize::nine_foot:
+        break;
     }
     return {2.54, 1.27};
 }
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+double radians(double degrees) {
+    return degrees * std::numbers::pi / 180.0;
+}
 
 // One side of a pocket mouth: the point where a rail ends, and the rail's direction pointing
 // away from the pocket, from which the jaw is turned through the rubber.
@@ -83,13 +88,13 @@ Table make_table(TableSize size, double ball_radius, const PocketSpec& spec) {
         for (int side = 0; side < 2; ++side) {
             const MouthSide& m = layout.sides[side];
             // Turn the rail direction through the rubber (away from the table) by the jaw angle.
-            const Vec2 jaw =
-                m.rail_direction * std::cos(angle) - m.rail_normal * std::sin(angle);
+            const Vec2 jaw = m.rail_direction * std::cos(angle) - m.rail_normal * std::sin(angle);
             // Long enough that a ball is captured before it could reach the jaw's far end.
             const double jaw_length = (depth + 2.5 * ball_radius) / dot(jaw, layout.axis_in);
             const Vec2 end = m.point + jaw * jaw_length;
             Vec2 normal = perpendicular(jaw);
-            if (dot(normal, mouth_centre - m.point) < 0) normal = -normal;
+            if (dot(normal, mouth_centre - m.point) < 0)
+                normal = -normal;
             table.cushions[6 + 2 * p + side] = {m.point, end, normal, p + 1};
             table.jaw_points[2 * p + side] = m.point;
             table.jaw_point_pocket[2 * p + side] = p + 1;

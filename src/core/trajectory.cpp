@@ -22,7 +22,8 @@ std::vector<Ball> Trajectory::sample(double time) const {
     std::vector<Ball> out;
     out.reserve(pieces_.size());
     for (const std::vector<Piece>& list : pieces_) {
-        if (list.empty()) continue;
+        if (list.empty())
+            continue;
         // The last piece that started at or before `time`.
         auto it = std::upper_bound(list.begin(), list.end(), time,
                                    [](double t, const Piece& p) { return t < p.start; });

@@ -28,7 +28,7 @@ struct BoundaryEvent {
 
 // A ball's current piece of motion, from `start` to `end` (absolute times).
 struct Slot {
-    Ball ball;             // state at `start`
+    Ball ball; // state at `start`
     double start = 0;
     double end = infinity; // next transition
     Vec2 acceleration;     // physical model: constant over the piece
@@ -83,8 +83,10 @@ struct World::Impl {
         boundary.resize(balls.size());
         pair_time.assign(balls.size() * balls.size(), infinity);
         row_min.assign(balls.size(), infinity);
-        for (std::size_t i = 0; i < balls.size(); ++i) set_slot(i, balls[i]);
-        for (std::size_t i = 0; i < slots.size(); ++i) refresh(i, i);
+        for (std::size_t i = 0; i < balls.size(); ++i)
+            set_slot(i, balls[i]);
+        for (std::size_t i = 0; i < slots.size(); ++i)
+            refresh(i, i);
     }
 
     std::size_t count() const { return slots.size(); }
@@ -118,16 +120,18 @@ struct World::Impl {
             s.box_max = {std::max(ball.position.x, last.position.x),
                          std::max(ball.position.y, last.position.y)};
         } else {
-            extend_range(ball.position.x, ball.velocity.x, s.acceleration.x, duration,
-                         s.box_min.x, s.box_max.x);
-            extend_range(ball.position.y, ball.velocity.y, s.acceleration.y, duration,
-                         s.box_min.y, s.box_max.y);
+            extend_range(ball.position.x, ball.velocity.x, s.acceleration.x, duration, s.box_min.x,
+                         s.box_max.x);
+            extend_range(ball.position.y, ball.velocity.y, s.acceleration.y, duration, s.box_min.y,
+                         s.box_max.y);
         }
-        if (recording) trajectory.add(i, now, ball);
+        if (recording)
+            trajectory.add(i, now, ball);
     }
 
     void set_pair_time(std::size_t i, std::size_t j, double time) {
-        if (j < i) std::swap(i, j);
+        if (j < i)
+            std::swap(i, j);
         double& slot = pair_time[i * count() + j];
         const double old = slot;
         slot = time;
@@ -144,7 +148,8 @@ struct World::Impl {
     void refresh(std::size_t i, std::size_t other) {
         boundary[i] = next_boundary(i);
         for (std::size_t k = 0; k < count(); ++k) {
-            if (k == i || (k == other && k < i)) continue;
+            if (k == i || (k == other && k < i))
+                continue;
             set_pair_time(i, k, now + pair_contact(i, k));
         }
     }
@@ -156,11 +161,14 @@ struct World::Impl {
         const Slot& b = slots[k];
         if (a.ball.state == MotionState::pocketed || b.ball.state == MotionState::pocketed)
             return infinity;
-        if (!moves(a.ball) && !moves(b.ball)) return infinity;
+        if (!moves(a.ball) && !moves(b.ball))
+            return infinity;
         const double diameter = 2 * params.ball_radius;
-        if (!boxes_within(a.box_min, a.box_max, b.box_min, b.box_max, diameter)) return infinity;
+        if (!boxes_within(a.box_min, a.box_max, b.box_min, b.box_max, diameter))
+            return infinity;
         const double horizon = std::min(a.end, b.end) - now;
-        if (seed_model()) return seed_pair_contact(i, k, horizon);
+        if (seed_model())
+            return seed_pair_contact(i, k, horizon);
         const Path pa = path_now(i), pb = path_now(k);
         return core::path_path_contact_time(pa, pb, diameter, horizon);
     }
@@ -187,27 +195,30 @@ struct World::Impl {
         const Slot& s = slots[i];
         BoundaryEvent best;
         if (!moves(s.ball)) {
-            if (s.ball.state == MotionState::spinning) best = {s.end, BoundaryKind::transition, 0};
+            if (s.ball.state == MotionState::spinning)
+                best = {s.end, BoundaryKind::transition, 0};
             return best;
         }
         best = {s.end, BoundaryKind::transition, 0};
         const double R = params.ball_radius;
         const double horizon = s.end - now;
         auto consider = [&](double dt, BoundaryKind kind, int feature) {
-            if (now + dt < best.time) best = {now + dt, kind, feature};
+            if (now + dt < best.time)
+                best = {now + dt, kind, feature};
         };
 
         if (seed_model()) {
             const Ball b = state_now(i);
             for (int c = 0; c < 18; ++c) {
                 const CushionSegment& seg = table.cushions[c];
-                if (seg.pocket != 0 && !near_pocket(s, seg.pocket - 1)) continue;
-                consider(seed_segment_contact(b, seg, horizon), c < 6 ? BoundaryKind::rail
-                                                                      : BoundaryKind::jaw_line,
-                         c);
+                if (seg.pocket != 0 && !near_pocket(s, seg.pocket - 1))
+                    continue;
+                consider(seed_segment_contact(b, seg, horizon),
+                         c < 6 ? BoundaryKind::rail : BoundaryKind::jaw_line, c);
             }
             for (int p = 0; p < 6; ++p) {
-                if (!near_pocket(s, p)) continue;
+                if (!near_pocket(s, p))
+                    continue;
                 const Pocket& pocket = table.pockets[p];
                 consider(seed_line_contact(b, pocket.capture_point, pocket.capture_normal, horizon),
                          BoundaryKind::capture, p);
@@ -218,12 +229,15 @@ struct World::Impl {
         const Path path = path_now(i);
         for (int c = 0; c < 6; ++c) {
             const CushionSegment& seg = table.cushions[c];
-            if (!box_reaches_line(s, seg.start, seg.normal, R)) continue;
+            if (!box_reaches_line(s, seg.start, seg.normal, R))
+                continue;
             const double dt = core::path_line_contact_time(path, seg.start, seg.normal, R, horizon);
-            if (now + dt < best.time && hits_segment(path, dt, seg)) consider(dt, BoundaryKind::rail, c);
+            if (now + dt < best.time && hits_segment(path, dt, seg))
+                consider(dt, BoundaryKind::rail, c);
         }
         for (int p = 0; p < 6; ++p) {
-            if (!near_pocket(s, p)) continue;
+            if (!near_pocket(s, p))
+                continue;
             for (int side = 0; side < 2; ++side) {
                 const int c = 6 + 2 * p + side;
                 const CushionSegment& seg = table.cushions[c];
@@ -236,8 +250,8 @@ struct World::Impl {
                          BoundaryKind::jaw_point, point);
             }
             const Pocket& pocket = table.pockets[p];
-            consider(core::path_line_contact_time(path, pocket.capture_point,
-                                                  pocket.capture_normal, 0, horizon),
+            consider(core::path_line_contact_time(path, pocket.capture_point, pocket.capture_normal,
+                                                  0, horizon),
                      BoundaryKind::capture, p);
         }
         return best;
@@ -258,7 +272,8 @@ struct World::Impl {
     }
 
     static bool hits_segment(const Path& path, double dt, const CushionSegment& seg) {
-        if (!(dt < infinity)) return false;
+        if (!(dt < infinity))
+            return false;
         const Vec2 at = path.position + path.velocity * dt + path.acceleration * (0.5 * dt * dt);
         const Vec2 along = seg.end - seg.start;
         const double u = dot(at - seg.start, along);
@@ -323,8 +338,10 @@ struct World::Impl {
                 }
             }
         }
-        if (!(best < infinity)) return std::nullopt;
-        if (++events > max_events) return std::nullopt;
+        if (!(best < infinity))
+            return std::nullopt;
+        if (++events > max_events)
+            return std::nullopt;
         now = std::max(now, best);
         return is_pair ? resolve_pair(best_i, best_j) : resolve_boundary(best_i);
     }
@@ -363,8 +380,7 @@ struct World::Impl {
             break;
         }
         case BoundaryKind::jaw_point:
-            core::resolve_cushion(b, normalized(table.jaw_points[be.feature] - b.position),
-                                  params);
+            core::resolve_cushion(b, normalized(table.jaw_points[be.feature] - b.position), params);
             event.kind = EventKind::jaw;
             event.other = table.jaw_point_pocket[be.feature];
             break;
@@ -376,7 +392,8 @@ struct World::Impl {
             event.kind = EventKind::pocket;
             event.other = b.pocket;
             break;
-        case BoundaryKind::none: break;
+        case BoundaryKind::none:
+            break;
         }
         set_slot(i, b);
         refresh(i, i);
@@ -388,9 +405,9 @@ struct World::Impl {
         set_slot(cue, b);
         refresh(cue, cue);
         if (moves(b))
-            pending.push_back({now, b.state == MotionState::rolling ? EventKind::rolling
-                                                                    : EventKind::sliding,
-                               b.id, 0});
+            pending.push_back(
+                {now, b.state == MotionState::rolling ? EventKind::rolling : EventKind::sliding,
+                 b.id, 0});
     }
 };
 
@@ -399,7 +416,8 @@ World::World(const Table& table, const PhysicsParams& params, std::vector<Ball> 
 World::~World() = default;
 World::World(const World& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
 World& World::operator=(const World& other) {
-    if (this != &other) impl_ = std::make_unique<Impl>(*other.impl_);
+    if (this != &other)
+        impl_ = std::make_unique<Impl>(*other.impl_);
     return *this;
 }
 World::World(World&&) noexcept = default;
@@ -416,13 +434,18 @@ bool World::strike(const Strike& strike) {
     return false;
 }
 
-std::optional<Event> World::step() { return impl_->step(); }
-double World::time() const { return impl_->now; }
+std::optional<Event> World::step() {
+    return impl_->step();
+}
+double World::time() const {
+    return impl_->now;
+}
 
 std::vector<Ball> World::balls() const {
     std::vector<Ball> out;
     out.reserve(impl_->count());
-    for (std::size_t i = 0; i < impl_->count(); ++i) out.push_back(impl_->state_now(i));
+    for (std::size_t i = 0; i < impl_->count(); ++i)
+        out.push_back(impl_->state_now(i));
     return out;
 }
 
@@ -440,24 +463,30 @@ void World::record(bool on) {
     }
 }
 
-const Trajectory& World::trajectory() const { return impl_->trajectory; }
+const Trajectory& World::trajectory() const {
+    return impl_->trajectory;
+}
 
 ShotResult simulate_shot(const Table& table, const PhysicsParams& params, std::vector<Ball> balls,
                          const Strike& strike, Trajectory* trajectory) {
     World world(table, params, std::move(balls));
-    if (trajectory) world.record(true);
+    if (trajectory)
+        world.record(true);
     world.strike(strike);
     ShotResult result;
-    while (const auto event = world.step()) result.events.push_back(*event);
+    while (const auto event = world.step())
+        result.events.push_back(*event);
     result.event_limit_hit = !world.at_rest();
     result.rest_time = world.time();
     result.balls = world.balls();
-    if (trajectory) *trajectory = world.trajectory();
+    if (trajectory)
+        *trajectory = world.trajectory();
     return result;
 }
 
 double kinetic_energy(const Ball& b, double radius) {
-    if (b.state == MotionState::pocketed) return 0;
+    if (b.state == MotionState::pocketed)
+        return 0;
     const double inertia = 0.4 * b.mass * radius * radius;
     return 0.5 * b.mass * length_squared(b.velocity) +
            0.5 * inertia * dot(b.angular_velocity, b.angular_velocity);
