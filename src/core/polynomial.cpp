@@ -163,6 +163,38 @@ double find_root(const Work& w, Sample lo, Sample hi) noexcept {
     return a;
 }
 
+// Where Newton on f' from one end of [lo, hi] lands inside it, else the middle: the first guess
+// for the critical point between two samples whose slopes differ in sign.
+double critical_point_guess(const Sample& lo, const Sample& hi) noexcept {
+    double x = lo.t - lo.g / lo.h;
+    if (!(x > lo.t && x < hi.t)) {
+        x = hi.t - hi.g / hi.h;
+        if (!(x > lo.t && x < hi.t))
+            x = lo.t + 0.5 * (hi.t - lo.t);
+    }
+    return x;
+}
+
+// One safeguarded Newton step on f' from x (sampled as s) inside (lo, hi): bisection when the
+// Newton step leaves the bracket or does not shrink fast enough. NaN when the bracket cannot
+// shrink any further.
+double critical_point_step(double x, const Sample& s, double lo, double hi, double& last_step,
+                           double& step_before_last) noexcept {
+    double step = -s.g / s.h;
+    double next = x + step;
+    if (!(next > lo && next < hi) || std::fabs(step) > 0.5 * std::fabs(step_before_last)) {
+        next = lo + 0.5 * (hi - lo);
+        if (!(next > lo && next < hi))
+            return std::numeric_limits<double>::quiet_NaN();
+        step = next - x;
+    }
+    if (std::fabs(step) <= step_tolerance(x))
+        return std::numeric_limits<double>::quiet_NaN();
+    step_before_last = last_step;
+    last_step = step;
+    return next;
+}
+
 // Convex piece, f(lo) > 0 with f' < 0 there, f(hi) > 0 with f' > 0 there: f has one minimum in
 // between and we must decide whether it dips to <= 0. Locate the minimum with safeguarded
 // Newton on f'; any sample with f <= 0 gives a bracket for the first crossing, and the tangent
@@ -170,12 +202,7 @@ double find_root(const Work& w, Sample lo, Sample hi) noexcept {
 double convex_minimum(const Work& w, Sample lo, Sample hi) noexcept {
     if (lo.f + lo.g * (hi.t - lo.t) > 0.0 || hi.f - hi.g * (hi.t - lo.t) > 0.0)
         return kInf;
-    double x = lo.t - lo.g / lo.h;
-    if (!(x > lo.t && x < hi.t)) {
-        x = hi.t - hi.g / hi.h;
-        if (!(x > lo.t && x < hi.t))
-            x = lo.t + 0.5 * (hi.t - lo.t);
-    }
+    double x = critical_point_guess(lo, hi);
     double step_before_last = hi.t - lo.t;
     double last_step = hi.t - lo.t;
     for (int it = 0; it < kMaxIterations; ++it) {
@@ -193,18 +220,9 @@ double convex_minimum(const Work& w, Sample lo, Sample hi) noexcept {
         } else {
             return kInf; // exactly at the minimum, and it is positive
         }
-        double step = -s.g / s.h;
-        double next = x + step;
-        if (!(next > lo.t && next < hi.t) || std::fabs(step) > 0.5 * std::fabs(step_before_last)) {
-            next = lo.t + 0.5 * (hi.t - lo.t);
-            if (!(next > lo.t && next < hi.t))
-                return kInf;
-            step = next - x;
-        }
-        if (std::fabs(step) <= step_tolerance(x))
+        const double next = critical_point_step(x, s, lo.t, hi.t, last_step, step_before_last);
+        if (std::isnan(next))
             return kInf;
-        step_before_last = last_step;
-        last_step = step;
         x = next;
     }
     return kInf;
@@ -277,12 +295,7 @@ double convex_descent(const Work& w, Sample lo, PieceEnd& q) noexcept {
 // crossing, if any before q.
 double concave_maximum(const Work& w, Sample lo, Sample hi) noexcept {
     const Sample q = hi;
-    double x = lo.t - lo.g / lo.h;
-    if (!(x > lo.t && x < hi.t)) {
-        x = hi.t - hi.g / hi.h;
-        if (!(x > lo.t && x < hi.t))
-            x = lo.t + 0.5 * (hi.t - lo.t);
-    }
+    double x = critical_point_guess(lo, hi);
     double step_before_last = hi.t - lo.t;
     double last_step = hi.t - lo.t;
     for (int it = 0; it < kMaxIterations; ++it) {
@@ -296,18 +309,9 @@ double concave_maximum(const Work& w, Sample lo, Sample hi) noexcept {
         } else {
             return x;
         }
-        double step = -s.g / s.h;
-        double next = x + step;
-        if (!(next > lo.t && next < hi.t) || std::fabs(step) > 0.5 * std::fabs(step_before_last)) {
-            next = lo.t + 0.5 * (hi.t - lo.t);
-            if (!(next > lo.t && next < hi.t))
-                return x;
-            step = next - x;
-        }
-        if (std::fabs(step) <= step_tolerance(x))
+        const double next = critical_point_step(x, s, lo.t, hi.t, last_step, step_before_last);
+        if (std::isnan(next))
             return x;
-        step_before_last = last_step;
-        last_step = step;
         x = next;
     }
     return x;
