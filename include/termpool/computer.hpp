@@ -46,13 +46,19 @@ public:
     Choice choose(const Game& game);
     /// The next shot (the game must have no choice owed and the cue ball on the table).
     ComputerShot shot(const Game& game);
+    /// Shots simulated so far by this player's searches.
+    std::uint64_t simulations() const { return simulations_; }
 
 private:
-    ComputerShot search(const Game& game) const;
+    ComputerShot search(const Game& game);
     Strike with_noise(const Strike& planned);
+    Strike noisy(const Strike& planned, Random& rng) const;
+    Strike break_strike(const Game& game, const Ball& cue) const;
+    Vec2 place_break(const Game& game);
 
     Level level_;
     Random rng_;
+    std::uint64_t simulations_ = 0;
 };
 
 } // namespace termpool

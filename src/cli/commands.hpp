@@ -15,4 +15,10 @@ int simulate_command(const std::vector<std::string>& args);
 /// @return the process exit status: 0 ok, 1 runtime error, 2 bad usage or bad input.
 int bench_command(const std::vector<std::string>& args);
 
+/// `termpool selfplay --games N --p1 LEVEL --p2 LEVEL [--game G] [--seed S] [--jobs J]`:
+/// computer against computer.
+/// @param args the command-line arguments after `selfplay`.
+/// @return 0 ok, 2 bad usage, 3 an invariant of the game was broken.
+int selfplay_command(const std::vector<std::string>& args);
+
 } // namespace termpool::cli

@@ -57,6 +57,63 @@ double score(const Verdict& v, int shooter) {
     return s;
 }
 
+int samples_per_candidate(Level level) {
+    switch (level) {
+    case Level::easy:
+        return 1;
+    case Level::medium:
+        return 3;
+    case Level::hard:
+        return 6;
+    case Level::pro:
+        return 10;
+    }
+    return 1;
+}
+
+// True when a ball other than `ignore` lies within a diameter of the segment from a to b.
+bool blocked(const std::vector<Ball>& balls, Vec2 a, Vec2 b, std::pair<int, int> ignore, double R) {
+    const Vec2 ab = b - a;
+    const double len2 = length_squared(ab);
+    for (const Ball& ball : balls) {
+        if (ball.state == MotionState::pocketed || ball.id == ignore.first ||
+            ball.id == ignore.second)
+            continue;
+        const double u = len2 > 0 ? std::clamp(dot(ball.position - a, ab) / len2, 0.0, 1.0) : 0;
+        if (length_squared(a + ab * u - ball.position) < 4 * R * R)
+            return true;
+    }
+    return false;
+}
+
+// How good the shooter's next shot looks from here, 0..1: the best legal ball and pocket with
+// nothing in the way, rated by how full the cut is and how far the balls travel.
+double next_shot_quality(const Game& game) {
+    const Ball* cue = find(game.balls(), 0);
+    if (!cue)
+        return 0;
+    const double R = game.params().ball_radius;
+    double best = 0;
+    for (const int target : game.legal_targets()) {
+        const Ball* object = find(game.balls(), target);
+        if (!object)
+            continue;
+        for (const Pocket& pocket : game.table().pockets) {
+            const Vec2 to_pocket = pocket.position - object->position;
+            const Vec2 ghost = object->position - normalized(to_pocket) * (2 * R);
+            const Vec2 line = ghost - cue->position;
+            const double cut = dot(normalized(line), normalized(to_pocket));
+            if (cut < 0.34)
+                continue;
+            const double quality = cut * cut * std::exp(-(length(line) + length(to_pocket)) / 2.5);
+            if (quality > best && !blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
+                !blocked(game.balls(), object->position, pocket.position, {0, target}, R))
+                best = quality;
+        }
+    }
+    return best;
+}
+
 } // namespace
 
 const char* level_name(Level level) {
@@ -82,22 +139,14 @@ std::optional<Level> parse_level(const std::string& name) {
 
 ComputerPlayer::ComputerPlayer(Level level, std::uint64_t seed) : level_(level), rng_(seed) {}
 
-ComputerShot ComputerPlayer::search(const Game& game) const {
+ComputerShot ComputerPlayer::search(const Game& game) {
     ComputerShot best;
     best.score = -1e9;
     const Ball* cue = find(game.balls(), 0);
     if (!cue)
         return best;
     if (game.is_break()) {
-        // A full-power break at the apex: the ball nearest the foot spot.
-        const Ball* apex = nullptr;
-        for (const Ball& b : game.balls()) {
-            if (b.id == 0 || b.state == MotionState::pocketed)
-                continue;
-            if (!apex || b.position.x < apex->position.x)
-                apex = &b;
-        }
-        best.planned = {break_speed, apex ? degrees(apex->position - cue->position) : 0, 0, 0};
+        best.planned = break_strike(game, *cue);
         best.score = 0;
         return best;
     }
@@ -106,32 +155,66 @@ ComputerShot ComputerPlayer::search(const Game& game) const {
         level_ == Level::easy ? std::vector<double>{2.5} : std::vector<double>{1.5, 2.5, 4.0};
     const std::vector<double> spins =
         level_ == Level::easy ? std::vector<double>{0.0} : std::vector<double>{-0.3, 0.0, 0.3};
+
+    struct Candidate {
+        Strike strike;
+        ShotCall call;
+        double total = 0;
+        int samples = 0;
+        double mean() const { return total / samples; }
+    };
+    std::vector<Candidate> candidates;
     for (const int target : game.legal_targets()) {
         const Ball* object = find(game.balls(), target);
         if (!object)
             continue;
         for (int pocket = 1; pocket <= 6; ++pocket) {
-            const Vec2 to_pocket = game.table().pockets[pocket - 1].position - object->position;
+            const Vec2 pocket_at = game.table().pockets[pocket - 1].position;
+            const Vec2 to_pocket = pocket_at - object->position;
             const Vec2 ghost = object->position - normalized(to_pocket) * (2 * R);
             const Vec2 line = ghost - cue->position;
-            // Skip cuts thinner than about 80 degrees: the ghost ball is behind the object.
-            if (dot(normalized(line), normalized(to_pocket)) < 0.17)
+            // Skip cuts thinner than about 80 degrees, and shots another ball is in the way of.
+            if (dot(normalized(line), normalized(to_pocket)) < 0.17 ||
+                blocked(game.balls(), cue->position, ghost, {0, target}, R) ||
+                blocked(game.balls(), object->position, pocket_at, {0, target}, R))
                 continue;
-            for (const double speed : speeds) {
-                for (const double follow : spins) {
-                    const Strike strike{speed, degrees(line), 0, follow};
-                    ShotCall call;
-                    call.call = {target, pocket, false};
-                    Game trial = game;
-                    const int shooter = trial.shooter();
-                    const double s = score(trial.play(strike, call), shooter);
-                    if (s > best.score) {
-                        best.score = s;
-                        best.planned = strike;
-                        best.call = call;
-                    }
-                }
-            }
+            for (const double speed : speeds)
+                for (const double follow : spins)
+                    candidates.push_back(
+                        {{speed, degrees(line), 0, follow}, {{target, pocket, false}}});
+        }
+    }
+    // Each candidate is played under this player's own noise: first once each, then the most
+    // promising third again until each has its share of samples (successive halving, one round).
+    Random noise = rng_;
+    rng_.next();
+    const int shooter = game.shooter();
+    auto sample = [&](Candidate& c) {
+        Game trial = game;
+        const Verdict v = trial.play(noisy(c.strike, noise), c.call);
+        ++simulations_;
+        double s = score(v, shooter);
+        // Position: a kept table is worth more with a good shot to follow.
+        if (v.winner == 0 && v.next_shooter == shooter && v.chooser == 0 && level_ != Level::easy)
+            s += 60.0 * next_shot_quality(trial);
+        c.total += s;
+        ++c.samples;
+    };
+    for (Candidate& c : candidates)
+        sample(c);
+    std::ranges::sort(candidates,
+                      [](const Candidate& x, const Candidate& y) { return x.mean() > y.mean(); });
+    const std::size_t keep = std::max<std::size_t>(1, (candidates.size() + 2) / 3);
+    if (candidates.size() > keep)
+        candidates.resize(keep);
+    for (Candidate& c : candidates)
+        while (c.samples < samples_per_candidate(level_))
+            sample(c);
+    for (const Candidate& c : candidates) {
+        if (c.mean() > best.score) {
+            best.score = c.mean();
+            best.planned = c.strike;
+            best.call = c.call;
         }
     }
     if (best.score == -1e9 && !game.legal_targets().empty()) {
@@ -145,10 +228,14 @@ ComputerShot ComputerPlayer::search(const Game& game) const {
 }
 
 Strike ComputerPlayer::with_noise(const Strike& planned) {
+    return noisy(planned, rng_);
+}
+
+Strike ComputerPlayer::noisy(const Strike& planned, Random& rng) const {
     const double k = noise_scale(level_);
-    // Box-Muller from the player's own stream, so that a seed replays the same game.
+    // Box-Muller from the given stream, so that a seed replays the same game.
     auto gaussian = [&] {
-        const double u1 = std::max(rng_.uniform(), 1e-300), u2 = rng_.uniform();
+        const double u1 = std::max(rng.uniform(), 1e-300), u2 = rng.uniform();
         return std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
     };
     Strike s = planned;
@@ -165,7 +252,53 @@ ComputerShot ComputerPlayer::shot(const Game& game) {
     return s;
 }
 
+Strike ComputerPlayer::break_strike(const Game& game, const Ball& cue) const {
+    // Full power at the apex ball (the one nearest the head of the table), full in the face.
+    const Ball* apex = nullptr;
+    for (const Ball& b : game.balls()) {
+        if (b.id == 0 || b.state == MotionState::pocketed)
+            continue;
+        if (!apex || b.position.x < apex->position.x)
+            apex = &b;
+    }
+    return {break_speed, apex ? degrees(apex->position - cue.position) : 0, 0, 0};
+}
+
+Vec2 ComputerPlayer::place_break(const Game& game) {
+    // Spots across the kitchen at the head string; each break tried a few times under noise,
+    // scored by the referee (a ball down and the table kept is what a break is for).
+    const Table& table = game.table();
+    Random noise = rng_;
+    rng_.next();
+    Vec2 best_spot = table.head_spot();
+    double best = -1e18;
+    const int tries = samples_per_candidate(level_);
+    for (int k = -3; k <= 3; ++k) {
+        const Vec2 spot{table.head_string_x(), table.width / 2 + k * table.width / 10};
+        Game trial = game;
+        if (!trial.place_cue_ball(spot))
+            continue;
+        Ball cue;
+        cue.position = spot;
+        const Strike strike = break_strike(trial, cue);
+        double total = 0;
+        for (int t = 0; t < tries; ++t) {
+            Game play = trial;
+            const int shooter = play.shooter();
+            total += score(play.play(noisy(strike, noise), {}), shooter);
+            ++simulations_;
+        }
+        if (total / tries > best) {
+            best = total / tries;
+            best_spot = spot;
+        }
+    }
+    return best_spot;
+}
+
 Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
+    if (game.is_break())
+        return place_break(game);
     // Try a spread of legal spots; keep the one whose best shot scores highest.
     const std::vector<Vec2> spots = game.legal_placements(level_ == Level::easy ? 4 : 6);
     Vec2 best_spot = spots.empty() ? Vec2{} : spots.front();

@@ -1,0 +1,265 @@
+// `termpool selfplay`: computer against computer, headless, with the referee's invariants
+// checked after every shot.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <termpool/computer.hpp>
+#include <termpool/rules.hpp>
+#include <thread>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/numbers.hpp"
+
+namespace termpool::cli {
+namespace {
+
+constexpr const char* usage =
+    "usage: termpool selfplay --games N --p1 LEVEL --p2 LEVEL [--game 8ball|8ball-bar|9ball]\n"
+    "                         [--seed S] [--jobs J]\n"
+    "  LEVEL is easy, medium, hard or pro; games alternate the breaker.\n";
+
+constexpr int max_shots_per_game = 500;
+
+struct Options {
+    std::uint64_t games = 0;
+    Level levels[2] = {Level::medium, Level::medium};
+    bool level_given[2] = {false, false};
+    GameType game = GameType::eight_ball;
+    std::uint64_t seed = 1;
+    std::uint64_t jobs = 1;
+};
+
+struct PlayerStats {
+    std::uint64_t decisions = 0;
+    double seconds = 0;
+    std::uint64_t simulations = 0;
+    std::uint64_t pot_attempts = 0;
+    std::uint64_t pots = 0;
+};
+
+struct GameRecord {
+    int winner = 0;
+    WinReason reason = WinReason::none;
+    int shots = 0;
+    int fouls = 0;
+    bool break_and_run = false;
+    PlayerStats players[2];
+    std::string violation; // empty when every invariant held
+};
+
+std::optional<Options> parse(const std::vector<std::string>& args, std::string& error) {
+    Options o;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& name = args[i];
+        if (i + 1 >= args.size()) {
+            error = name + " needs a value";
+            return std::nullopt;
+        }
+        const std::string& value = args[++i];
+        if (name == "--games" || name == "--seed" || name == "--jobs") {
+            const auto n = parse_uint64(value);
+            if (!n) {
+                error = name + " needs a non-negative integer";
+                return std::nullopt;
+            }
+            (name == "--games" ? o.games : name == "--seed" ? o.seed : o.jobs) = *n;
+        } else if (name == "--p1" || name == "--p2") {
+            const auto level = parse_level(value);
+            if (!level) {
+                error = "unknown level '" + value + "' (easy, medium, hard or pro)";
+                return std::nullopt;
+            }
+            const int p = name == "--p1" ? 0 : 1;
+            o.levels[p] = *level;
+            o.level_given[p] = true;
+        } else if (name == "--game") {
+            const auto g = parse_game_type(value);
+            if (!g) {
+                error = "unknown game '" + value + "'";
+                return std::nullopt;
+            }
+            o.game = *g;
+        } else {
+            error = "unknown option '" + name + "'";
+            return std::nullopt;
+        }
+    }
+    if (o.games == 0 || !o.level_given[0] || !o.level_given[1]) {
+        error = "--games (at least 1), --p1 and --p2 are required";
+        return std::nullopt;
+    }
+    o.jobs = std::clamp<std::uint64_t>(o.jobs, 1, 64);
+    return o;
+}
+
+// The invariants every shot must keep; a message when one is broken.
+std::string check_invariants(const Game& game) {
+    const std::size_t count = game.type() == GameType::nine_ball ? 10 : 16;
+    if (game.balls().size() != count)
+        return "balls on the table and in pockets do not add up";
+    for (std::size_t id = 0; id < count; ++id) {
+        const int want = game.type() == GameType::nine_ball && id > 9 ? -1 : static_cast<int>(id);
+        if (want >= 0 &&
+            std::ranges::count_if(game.balls(), [&](const Ball& b) { return b.id == want; }) != 1)
+            return "ball " + std::to_string(want) + " is not accounted for exactly once";
+    }
+    const double R = game.params().ball_radius;
+    for (std::size_t i = 0; i < game.balls().size(); ++i)
+        for (std::size_t j = i + 1; j < game.balls().size(); ++j) {
+            const Ball &a = game.balls()[i], &b = game.balls()[j];
+            if (a.state == MotionState::pocketed || b.state == MotionState::pocketed)
+                continue;
+            if (length(a.position - b.position) < 2 * R - 1e-9)
+                return "balls " + std::to_string(a.id) + " and " + std::to_string(b.id) +
+                       " overlap";
+        }
+    if (game.shooter() != 1 && game.shooter() != 2)
+        return "no single shooter";
+    return {};
+}
+
+GameRecord play_one(const Options& o, std::uint64_t index) {
+    GameRecord record;
+    const std::uint64_t seed = o.seed * 1000003ULL + index;
+    const int breaker = 1 + static_cast<int>(index % 2);
+    const Table table = make_table(TableSize::nine_foot);
+    Game game(o.game, table, PhysicsParams{}, breaker, seed);
+    ComputerPlayer players[2] = {ComputerPlayer(o.levels[0], seed * 2 + 1),
+                                 ComputerPlayer(o.levels[1], seed * 2 + 2)};
+    bool opponent_shot = false;
+    using Clock = std::chrono::steady_clock;
+    while (game.winner() == 0) {
+        if (record.shots >= max_shots_per_game) {
+            record.violation =
+                "the game did not end within " + std::to_string(max_shots_per_game) + " shots";
+            return record;
+        }
+        const int actor = game.chooser() != 0 ? game.chooser() : game.shooter();
+        ComputerPlayer& player = players[actor - 1];
+        PlayerStats& stats = record.players[actor - 1];
+        const auto start = Clock::now();
+        const std::uint64_t simulated = player.simulations();
+        if (game.chooser() != 0) {
+            game.choose(player.choose(game));
+            continue;
+        }
+        if (game.ball_in_hand() != BallInHand::none) {
+            if (!game.place_cue_ball(player.place_cue_ball(game))) {
+                record.violation = "illegal ball-in-hand placement";
+                return record;
+            }
+        }
+        const bool was_break = game.is_break();
+        const ComputerShot shot = player.shot(game);
+        stats.seconds += std::chrono::duration<double>(Clock::now() - start).count();
+        stats.simulations += player.simulations() - simulated;
+        ++stats.decisions;
+        const Verdict v = game.play(shot.strike, shot.call);
+        ++record.shots;
+        if (actor != breaker)
+            opponent_shot = true;
+        if (v.foul != Foul::none)
+            ++record.fouls;
+        if (!was_break && shot.call.call.ball != 0) {
+            ++stats.pot_attempts;
+            if (std::ranges::count(v.pocketed, shot.call.call.ball) && v.foul == Foul::none)
+                ++stats.pots;
+        }
+        if (std::string problem = check_invariants(game); !problem.empty()) {
+            record.violation = problem + " after shot " + std::to_string(record.shots);
+            return record;
+        }
+    }
+    record.winner = game.winner();
+    record.reason = game.win_reason();
+    record.break_and_run = record.winner == breaker && !opponent_shot;
+    return record;
+}
+
+// 95% Wilson interval of a proportion, in percent.
+std::pair<double, double> wilson(double wins, double n) {
+    const double z = 1.96, p = wins / n;
+    const double centre = (p + z * z / (2 * n)) / (1 + z * z / n);
+    const double half = z * std::sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n);
+    return {std::max(0.0, 100 * (centre - half)), std::min(100.0, 100 * (centre + half))};
+}
+
+} // namespace
+
+int selfplay_command(const std::vector<std::string>& args) {
+    std::string error;
+    const auto options = parse(args, error);
+    if (!options) {
+        std::fprintf(stderr, "termpool selfplay: %s\n%s", error.c_str(), usage);
+        return 2;
+    }
+    const Options& o = *options;
+    std::vector<GameRecord> records(o.games);
+    std::atomic<std::uint64_t> next{0};
+    const auto start = std::chrono::steady_clock::now();
+    auto worker = [&] {
+        for (std::uint64_t i = next++; i < o.games; i = next++)
+            records[i] = play_one(o, i);
+    };
+    std::vector<std::thread> threads;
+    for (std::uint64_t j = 1; j < o.jobs; ++j)
+        threads.emplace_back(worker);
+    worker();
+    for (std::thread& t : threads)
+        t.join();
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    int wins[2] = {0, 0};
+    std::uint64_t fouls = 0, shots = 0, runs = 0;
+    PlayerStats per[2];
+    for (std::uint64_t i = 0; i < o.games; ++i) {
+        const GameRecord& r = records[i];
+        if (!r.violation.empty()) {
+            std::fprintf(
+                stderr, "termpool selfplay: invariant broken in game %llu (seed %llu): %s\n",
+                static_cast<unsigned long long>(i + 1),
+                static_cast<unsigned long long>(o.seed * 1000003ULL + i), r.violation.c_str());
+            return 3;
+        }
+        std::printf("game %llu winner %d %s shots %d fouls %d break-and-run %s\n",
+                    static_cast<unsigned long long>(i + 1), r.winner, win_reason_name(r.reason),
+                    r.shots, r.fouls, r.break_and_run ? "yes" : "no");
+        ++wins[r.winner - 1];
+        fouls += r.fouls;
+        shots += r.shots;
+        runs += r.break_and_run;
+        for (int p = 0; p < 2; ++p) {
+            per[p].decisions += r.players[p].decisions;
+            per[p].seconds += r.players[p].seconds;
+            per[p].simulations += r.players[p].simulations;
+            per[p].pot_attempts += r.players[p].pot_attempts;
+            per[p].pots += r.players[p].pots;
+        }
+    }
+    const double n = static_cast<double>(o.games);
+    std::printf("\n%s, %llu games, seed %llu\n", game_type_name(o.game),
+                static_cast<unsigned long long>(o.games), static_cast<unsigned long long>(o.seed));
+    for (int p = 0; p < 2; ++p) {
+        const auto [lo, hi] = wilson(wins[p], n);
+        const PlayerStats& s = per[p];
+        std::printf("p%d %-6s wins %4d (%.1f%%, 95%% CI %.1f-%.1f%%)  pots %.1f%% of %llu  "
+                    "decision %.3f s  %.0f shots/s\n",
+                    p + 1, level_name(o.levels[p]), wins[p], 100 * wins[p] / n, lo, hi,
+                    s.pot_attempts ? 100.0 * s.pots / s.pot_attempts : 0.0,
+                    static_cast<unsigned long long>(s.pot_attempts),
+                    s.decisions ? s.seconds / s.decisions : 0.0,
+                    s.seconds > 0 ? s.simulations / s.seconds : 0.0);
+    }
+    std::printf("fouls per game %.2f, shots per game %.1f, break-and-runs %llu (%.1f%%), "
+                "%.1f s\n",
+                fouls / n, shots / n, static_cast<unsigned long long>(runs), 100 * runs / n, wall);
+    return 0;
+}
+
+} // namespace termpool::cli
