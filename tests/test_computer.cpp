@@ -64,3 +64,52 @@ TEST_CASE("execution noise grows from pro to easy", "[computer]") {
     CHECK(pro > 0);
     CHECK(easy > 4 * pro);
 }
+
+TEST_CASE("a ball with another in the way is not chosen", "[computer]") {
+    // The 3 sits straight in front of corner pocket 3 behind the cue ball's line to the 1; the
+    // 1 is blocked from the cue ball by the 9. The computer must not pick the 1.
+    const Vec2 out = out_of_pocket(3);
+    const Vec2 three = pocket_at(3) + out * 0.3, cue = three + out * 0.4;
+    const Vec2 one{0.5, 0.3};
+    const Vec2 nine = cue + (one - cue) * 0.5;
+    Game game = position(GameType::eight_ball,
+                         {ball_at(0, cue.x, cue.y), ball_at(3, three.x, three.y),
+                          ball_at(1, one.x, one.y), ball_at(9, nine.x, nine.y),
+                          ball_at(10, 0.4, 1.1)},
+                         1, Group::solids);
+    for (const Level level : {Level::medium, Level::hard, Level::pro}) {
+        ComputerPlayer computer(level, 5);
+        const ComputerShot shot = computer.shot(game);
+        CHECK(shot.call.call.ball != 1);
+    }
+}
+
+TEST_CASE("with nothing to pot the computer plays safe rather than foul", "[computer]") {
+    // The 1 in the middle of the table with a stripe on its line to every pocket; the cue ball
+    // can reach it from between the lines to pockets 4 and 5.
+    const Vec2 one{1.27, 0.635};
+    std::vector<Ball> balls = {ball_at(0, one.x + 0.175, one.y + 0.303), ball_at(1, one.x, one.y),
+                               ball_at(8, 0.3, 1.1)};
+    for (int n = 1; n <= 6; ++n) {
+        const Vec2 blocker = one + normalized(pocket_at(n) - one) * 0.3;
+        balls.push_back(ball_at(8 + n, blocker.x, blocker.y));
+    }
+    Game game = position(GameType::eight_ball, balls, 1, Group::solids);
+    ComputerPlayer computer(Level::medium, 2);
+    const ComputerShot shot = computer.shot(game);
+    CHECK(shot.call.call.safety);
+    Game check = game;
+    const Verdict v = check.play(shot.planned, shot.call);
+    CHECK(v.first_contact == 1);
+    CHECK(v.foul == Foul::none);
+}
+
+TEST_CASE("the computer's choices are among those offered", "[computer]") {
+    Game game(GameType::eight_ball, nine_foot(), PhysicsParams{}, 1, 5);
+    game.play({1.2, 0, 0, 0}, {}); // an illegal break: player 2 chooses
+    REQUIRE(game.chooser() == 2);
+    ComputerPlayer computer(Level::hard, 1);
+    const Choice choice = computer.choose(game);
+    CHECK(std::ranges::count(game.choices(), choice) == 1);
+    CHECK(game.choose(choice));
+}

@@ -477,3 +477,24 @@ TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
         CHECK(r.err.find(c.says) != std::string::npos);
     }
 }
+
+TEST_CASE("selfplay plays short games to their end and sums them up", "[cli][selfplay]") {
+    TempDir dir;
+    for (const char* game : {"8ball", "8ball-bar", "9ball"}) {
+        const Run r = run(dir, std::string("selfplay --games 3 --p1 easy --p2 easy --game ") + game);
+        INFO(game << " stderr: " << r.err);
+        REQUIRE(r.status == 0);
+        const std::vector<std::string> lines = lines_of(r.out);
+        int games = 0;
+        for (const std::string& line : lines)
+            games += line.starts_with("game ") && line.find(" winner ") != std::string::npos;
+        CHECK(games == 3);
+        CHECK(r.out.find("p1 easy") != std::string::npos);
+        CHECK(r.out.find("fouls per game") != std::string::npos);
+    }
+    CHECK(run(dir, "selfplay --games 2 --p1 easy").status == 2);
+    CHECK(run(dir, "selfplay --games 2 --p1 easy --p2 grandmaster").status == 2);
+    // The same seed plays the same games.
+    CHECK(run(dir, "selfplay --games 2 --p1 medium --p2 hard --seed 9").out.substr(0, 120) ==
+          run(dir, "selfplay --games 2 --p1 medium --p2 hard --seed 9").out.substr(0, 120));
+}

@@ -164,24 +164,53 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         double mean() const { return total / samples; }
     };
     std::vector<Candidate> candidates;
+    auto add = [&](const Ball& object, Vec2 aim_point, int pocket, const std::vector<double>& at) {
+        const Vec2 to_aim = aim_point - object.position;
+        const Vec2 ghost = object.position - normalized(to_aim) * (2 * R);
+        const Vec2 line = ghost - cue->position;
+        // Skip cuts thinner than about 80 degrees, and shots another ball is in the way of.
+        if (dot(normalized(line), normalized(to_aim)) < 0.17 ||
+            blocked(game.balls(), cue->position, ghost, {0, object.id}, R) ||
+            blocked(game.balls(), object.position, aim_point, {0, object.id}, R))
+            return;
+        for (const double speed : at)
+            for (const double follow : spins)
+                candidates.push_back(
+                    {{speed, degrees(line), 0, follow}, {{object.id, pocket, false}}});
+    };
+    const Table& table = game.table();
     for (const int target : game.legal_targets()) {
         const Ball* object = find(game.balls(), target);
         if (!object)
             continue;
         for (int pocket = 1; pocket <= 6; ++pocket) {
-            const Vec2 pocket_at = game.table().pockets[pocket - 1].position;
-            const Vec2 to_pocket = pocket_at - object->position;
-            const Vec2 ghost = object->position - normalized(to_pocket) * (2 * R);
-            const Vec2 line = ghost - cue->position;
-            // Skip cuts thinner than about 80 degrees, and shots another ball is in the way of.
-            if (dot(normalized(line), normalized(to_pocket)) < 0.17 ||
-                blocked(game.balls(), cue->position, ghost, {0, target}, R) ||
-                blocked(game.balls(), object->position, pocket_at, {0, target}, R))
+            const Vec2 pocket_at = table.pockets[pocket - 1].position;
+            add(*object, pocket_at, pocket, speeds);
+            if (level_ < Level::hard)
                 continue;
-            for (const double speed : speeds)
-                for (const double follow : spins)
-                    candidates.push_back(
-                        {{speed, degrees(line), 0, follow}, {{target, pocket, false}}});
+            // One-rail banks: aim at the pocket's mirror image in a rail, moved in by R because
+            // the ball's centre turns R from the cushion.
+            const Vec2 mirrors[4] = {{pocket_at.x, 2 * R - pocket_at.y},
+                                     {pocket_at.x, 2 * (table.width - R) - pocket_at.y},
+                                     {2 * R - pocket_at.x, pocket_at.y},
+                                     {2 * (table.length - R) - pocket_at.x, pocket_at.y}};
+            for (const Vec2 mirror : mirrors)
+                if (length(mirror - pocket_at) > 0.2)
+                    add(*object, mirror, pocket, {2.5, 4.0});
+        }
+        if (level_ == Level::easy)
+            continue;
+        // Safeties: soft hits on the ball, full and thinner, called as safety.
+        for (const double offset : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
+            const Vec2 to_ball = object->position - cue->position;
+            const Vec2 aim = object->position + normalized(perpendicular(to_ball)) * (offset * R);
+            if (blocked(game.balls(), cue->position, object->position, {0, target}, R))
+                break;
+            for (const double speed : {0.8, 1.6}) {
+                ShotCall call;
+                call.call.safety = true;
+                candidates.push_back({{speed, degrees(aim - cue->position), 0, 0}, call});
+            }
         }
     }
     // Each candidate is played under this player's own noise: first once each, then the most
@@ -194,9 +223,14 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         const Verdict v = trial.play(noisy(c.strike, noise), c.call);
         ++simulations_;
         double s = score(v, shooter);
-        // Position: a kept table is worth more with a good shot to follow.
-        if (v.winner == 0 && v.next_shooter == shooter && v.chooser == 0 && level_ != Level::easy)
-            s += 60.0 * next_shot_quality(trial);
+        // Position: a kept table is worth more with a good shot to follow, and a table handed
+        // over is worth less the better the opponent's shot (ball in hand: as good as it gets).
+        if (v.winner == 0 && v.chooser == 0 && level_ != Level::easy) {
+            if (v.next_shooter == shooter)
+                s += 60.0 * next_shot_quality(trial);
+            else
+                s -= 60.0 * (v.ball_in_hand != BallInHand::none ? 1.0 : next_shot_quality(trial));
+        }
         c.total += s;
         ++c.samples;
     };
@@ -317,24 +351,24 @@ Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
 }
 
 Choice ComputerPlayer::choose(const Game& game) {
-    const std::vector<Choice>& options = game.choices();
-    // Taking the table (or the spot of the 8) beats handing it over; between groups, the one
-    // with fewer balls left is the shorter run.
-    for (const Choice preferred : {Choice::spot_eight, Choice::play_on, Choice::shoot}) {
-        if (std::ranges::count(options, preferred))
-            return preferred;
-    }
-    if (std::ranges::count(options, Choice::take_solids)) {
-        int solids = 0, stripes = 0;
-        for (const Ball& b : game.balls()) {
-            if (b.state == MotionState::pocketed)
-                continue;
-            solids += b.id >= 1 && b.id <= 7;
-            stripes += b.id >= 9 && b.id <= 15;
+    // Each option is judged by the table it leaves: the best shot there for whoever shoots
+    // next, good for this player if it shoots, bad if the opponent does. Breaking is worth a
+    // little to the breaker.
+    const int me = game.chooser();
+    Choice best = game.choices().front();
+    double best_value = -1e18;
+    for (const Choice option : game.choices()) {
+        Game after = game;
+        if (!after.choose(option))
+            continue;
+        const double sign = after.shooter() == me ? 1.0 : -1.0;
+        const double value = after.is_break() ? sign * 10.0 : sign * search(after).score;
+        if (value > best_value) {
+            best_value = value;
+            best = option;
         }
-        return solids <= stripes ? Choice::take_solids : Choice::take_stripes;
     }
-    return options.front();
+    return best;
 }
 
 } // namespace termpool
