@@ -42,14 +42,14 @@ App::App(Terminal& terminal, const GameOptions& options)
     for (int p = 0; p < 2; ++p)
         if (options.names[p])
             names_[p] = *options.names[p];
-    if (options.computer) {
-        computer_.emplace(*options.computer, seed_);
-        names_[1] = std::string("Computer (") + level_name(*options.computer) + ")";
-    }
+    if (options.watch)
+        seat_computer(1, *options.watch);
+    if (options.computer)
+        seat_computer(2, *options.computer);
     // Ask for the names the command line did not give.
-    if (!options.names[0]) {
+    if (!options.names[0] && !computers_[0]) {
         entry_player_ = 1;
-    } else if (!options.names[1] && !computer_) {
+    } else if (!options.names[1] && !computers_[1]) {
         entry_player_ = 2;
     }
     mode_ = entry_player_ != 0 ? Mode::names : Mode::placing;
@@ -180,24 +180,35 @@ void App::play(const Strike& strike, const ShotCall& call) {
     message_.clear();
 }
 
+void App::seat_computer(int player, Level level) {
+    computers_[player - 1].emplace(level, seed_ + static_cast<std::uint64_t>(player));
+    // Two computers (watching) are told apart by their seat.
+    const std::string seat = options_.watch ? " " + std::to_string(player) : "";
+    names_[player - 1] = "Computer" + seat + " (" + level_name(level) + ")";
+}
+
+int App::actor() const {
+    return game_.chooser() != 0 ? game_.chooser() : game_.shooter();
+}
+
 bool App::computer_to_act() const {
-    if (!computer_ || mode_ == Mode::names || mode_ == Mode::animating || mode_ == Mode::game_over)
+    if (mode_ == Mode::names || mode_ == Mode::animating || mode_ == Mode::game_over)
         return false;
-    const int actor = game_.chooser() != 0 ? game_.chooser() : game_.shooter();
-    return actor == 2;
+    return computers_[actor() - 1].has_value();
 }
 
 void App::computer_turn() {
     // The computer's turn is shown like a player's: it places the cue ball, turns the cue to
     // its aim over about a second, fills the power bar, then shoots.
     const double t = std::chrono::duration<double>(Clock::now() - plan_start_).count();
+    ComputerPlayer& computer = *computers_[actor() - 1];
     if (!planning_) {
         planning_ = true;
         plan_start_ = Clock::now();
         if (mode_ == Mode::placing)
-            place_ = computer_->place_cue_ball(game_);
+            place_ = computer.place_cue_ball(game_);
         if (mode_ == Mode::aiming) {
-            plan_ = computer_->shot(game_);
+            plan_ = computer.shot(game_);
             aim_from_ = aim_deg_;
         }
         return;
@@ -206,8 +217,10 @@ void App::computer_turn() {
         if (t < 1.0)
             return;
         planning_ = false;
-        game_.choose(computer_->choose(game_));
-        message_ = names_[1] + " chose; " + names_[game_.shooter() - 1] + " to shoot";
+        const std::string who = names_[actor() - 1];
+        const Choice choice = computer.choose(game_);
+        game_.choose(choice);
+        message_ = who + ": " + choice_words(choice);
         start_turn();
         return;
     }
@@ -307,6 +320,8 @@ void App::compose(View& v) const {
         std::string text = "termpool \u2014 " + std::string(game_type_name(game_.type())) +
                            "\n\nName of player " + std::to_string(entry_player_) + ": " + entry_ +
                            "_\n(Enter keeps \"" + names_[entry_player_ - 1] + "\")";
+        if (entry_player_ == 2 && mode_ == Mode::names)
+            text += "\n(or: computer [easy|medium|hard|pro])";
         if (!entry_error_.empty())
             text += "\n" + entry_error_;
         v.overlay = text;
@@ -338,6 +353,23 @@ void App::handle_text_entry(const Input& in) {
         if (!entry_.empty())
             entry_.pop_back();
     } else if (in.key == key_enter || in.key == KEY_ENTER) {
+        // At the start, player 2 may be the computer: "computer" or "computer LEVEL".
+        if (mode_ == Mode::names && entry_player_ == 2 && entry_.starts_with("computer")) {
+            const std::string rest = entry_.size() > 9 ? entry_.substr(9) : "";
+            const auto level =
+                rest.empty() ? std::optional<Level>(Level::medium) : parse_level(rest);
+            if (!level) {
+                entry_error_ = "levels: easy, medium, hard, pro";
+                return;
+            }
+            seat_computer(2, *level);
+            entry_.clear();
+            entry_error_.clear();
+            entry_player_ = 0;
+            message_ = names_[game_.shooter() - 1] + " breaks: place the cue ball in the kitchen";
+            start_turn();
+            return;
+        }
         std::string error;
         const auto name = clean_player_name(entry_, error);
         if (!error.empty()) {
@@ -349,7 +381,7 @@ void App::handle_text_entry(const Input& in) {
         entry_.clear();
         entry_error_.clear();
         const bool starting = mode_ == Mode::names;
-        if (starting && entry_player_ == 1 && !options_.names[1] && !computer_) {
+        if (starting && entry_player_ == 1 && !options_.names[1] && !computers_[1]) {
             entry_player_ = 2;
             return;
         }

@@ -33,6 +33,8 @@ private:
     void shoot();
     void play(const Strike& strike, const ShotCall& call);
     bool computer_to_act() const;
+    void seat_computer(int player, Level level);
+    int actor() const;
     void computer_turn();
     void compose(View& view) const;
     Grid frame(int width, int height);
@@ -95,8 +97,8 @@ private:
     Clock::time_point shot_start_;
     std::vector<Ball> shown_balls_;
 
-    // The computer in seat 2, if any, and the move it is showing.
-    std::optional<ComputerPlayer> computer_;
+    // The computer in each seat, if any, and the move it is showing.
+    std::optional<ComputerPlayer> computers_[2];
     bool planning_ = false;
     Clock::time_point plan_start_;
     std::optional<ComputerShot> plan_;

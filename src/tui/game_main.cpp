@@ -16,7 +16,8 @@ int run_game(const std::vector<std::string>& args) {
         std::fprintf(stderr,
                      "termpool: %s\nusage: termpool [--player1 NAME] [--player2 NAME] "
                      "[--game 8ball|8ball-bar|9ball] [--table 7ft|8ft|9ft] [--ascii]\n"
-                     "               [--vs-computer [easy|medium|hard|pro]]\n",
+                     "               [--vs-computer [LEVEL]] [--watch [LEVEL]]   (LEVEL: easy, "
+                     "medium, hard, pro)\n",
                      error.c_str());
         return 2;
     }

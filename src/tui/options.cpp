@@ -18,16 +18,17 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
         };
         if (a == "--ascii") {
             o.ascii = true;
-        } else if (a == "--vs-computer") {
+        } else if (a == "--vs-computer" || a == "--watch") {
             // The level is optional: take the next word only when it names one.
-            o.computer = Level::medium;
+            std::optional<Level>& seat = a == "--watch" ? o.watch : o.computer;
+            seat = Level::medium;
             if (i + 1 < args.size() && !args[i + 1].starts_with("--")) {
                 const auto level = parse_level(args[i + 1]);
                 if (!level) {
                     error = "unknown level '" + args[i + 1] + "' (easy, medium, hard or pro)";
                     return std::nullopt;
                 }
-                o.computer = *level;
+                seat = *level;
                 ++i;
             }
         } else if (a == "--player1" || a == "--player2") {
@@ -72,6 +73,9 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
             return std::nullopt;
         }
     }
+    // Watching means two computers: the second seat too, at the same level unless given.
+    if (o.watch && !o.computer)
+        o.computer = o.watch;
     return o;
 }
 

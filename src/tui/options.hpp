@@ -16,6 +16,7 @@ struct GameOptions {
     GameType game = GameType::eight_ball;   ///< --game
     TableSize table = TableSize::nine_foot; ///< --table
     bool ascii = false;                     ///< --ascii: plain ASCII and no colour
+    std::optional<Level> watch;             ///< --watch [LEVEL]: the computer is player 1 too
     std::optional<Level> computer;          ///< --vs-computer [LEVEL]: the computer is player 2
 };
 
