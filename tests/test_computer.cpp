@@ -113,3 +113,20 @@ TEST_CASE("the computer's choices are among those offered", "[computer]") {
     CHECK(std::ranges::count(game.choices(), choice) == 1);
     CHECK(game.choose(choice));
 }
+
+TEST_CASE("hard and pro see a combination that wins the rack", "[computer]") {
+    // 9-ball: the 1 lined up with the 9 and corner pocket 3; the cue ball well behind them.
+    const Vec2 out = out_of_pocket(3);
+    const Vec2 nine = pocket_at(3) + out * 0.3;
+    const Vec2 one = nine + out * (2 * ball_radius + 0.05);
+    const Vec2 cue = one + out * 0.4;
+    Game game = position(GameType::nine_ball, {ball_at(0, cue.x, cue.y), ball_at(1, one.x, one.y),
+                                               ball_at(9, nine.x, nine.y), ball_at(5, 0.4, 1.0)});
+    for (const Level level : {Level::hard, Level::pro}) {
+        ComputerPlayer computer(level, 3);
+        const ComputerShot shot = computer.shot(game);
+        CHECK(shot.call.call.ball == 9);
+        Game check = game;
+        CHECK(check.play(shot.planned, shot.call).winner == 1);
+    }
+}

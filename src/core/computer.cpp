@@ -179,6 +179,31 @@ ComputerShot ComputerPlayer::search(const Game& game) {
                     {{speed, degrees(line), 0, follow}, {{object.id, pocket, false}}});
     };
     const Table& table = game.table();
+    // Combinations: the legal ball driven into another, which drops. Only fairly full cuts on
+    // both balls and clear lines, so that the search stays within its time.
+    auto add_combinations = [&](const Ball& first) {
+        for (const Ball& second : game.balls()) {
+            if (second.id == 0 || second.id == first.id || second.state == MotionState::pocketed)
+                continue;
+            for (int pocket = 1; pocket <= 6; ++pocket) {
+                const Vec2 pocket_at = table.pockets[pocket - 1].position;
+                const Vec2 to_pocket = normalized(pocket_at - second.position);
+                const Vec2 second_ghost = second.position - to_pocket * (2 * R);
+                const Vec2 travel = normalized(second_ghost - first.position);
+                if (dot(travel, to_pocket) < 0.7)
+                    continue;
+                const Vec2 first_ghost = first.position - travel * (2 * R);
+                if (dot(normalized(first_ghost - cue->position), travel) < 0.5 ||
+                    blocked(game.balls(), cue->position, first_ghost, {0, first.id}, R) ||
+                    blocked(game.balls(), first.position, second_ghost, {first.id, second.id}, R) ||
+                    blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
+                    continue;
+                for (const double speed : {2.5, 4.0})
+                    candidates.push_back({{speed, degrees(first_ghost - cue->position), 0, 0},
+                                          {{second.id, pocket, false}}});
+            }
+        }
+    };
     for (const int target : game.legal_targets()) {
         const Ball* object = find(game.balls(), target);
         if (!object)
@@ -198,6 +223,8 @@ ComputerShot ComputerPlayer::search(const Game& game) {
                 if (length(mirror - pocket_at) > 0.2)
                     add(*object, mirror, pocket, {2.5, 4.0});
         }
+        if (level_ >= Level::hard)
+            add_combinations(*object);
         if (level_ == Level::easy)
             continue;
         // Safeties: soft hits on the ball, full and thinner, called as safety.
