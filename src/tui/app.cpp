@@ -78,6 +78,7 @@ void App::start_turn() {
     shown_balls_ = game_.balls();
     overlay_.clear();
     safety_ = false;
+    push_out_ = false;
     pocket_chosen_ = false;
     target_index_ = -1;
     side_ = follow_ = 0;
@@ -160,6 +161,7 @@ void App::shoot() {
     const double power = current_power();
     const Strike strike{speed_from_power(power, game_.is_break()), aim_deg_, side_, follow_};
     ShotCall call;
+    call.push_out = push_out_ && game_.push_out_allowed();
     if (safety_) {
         call.call.safety = true;
     } else if (preview_ball_ > 0 && calls_pocket(game_, preview_ball_) && called_pocket_ != 0) {
@@ -536,7 +538,11 @@ void App::handle_key(int key, const std::string& text) {
         power_start_ = Clock::now();
     } else if (text == "g")
         show_aid_ = !show_aid_;
-    else if (text == "0") {
+    else if (text == "u" && game_.push_out_allowed()) {
+        push_out_ = !push_out_;
+        message_ =
+            push_out_ ? "Push-out: no foul but a scratch; then the other player chooses" : "";
+    } else if (text == "0") {
         safety_ = !safety_;
         message_ = safety_ ? "Safety called: the turn passes whatever drops" : "";
     } else if (text.size() == 1 && text[0] >= '1' && text[0] <= '6') {

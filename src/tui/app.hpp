@@ -82,6 +82,7 @@ private:
     int called_pocket_ = 0;
     bool pocket_chosen_ = false; // the player picked the pocket: keep it while aiming
     bool safety_ = false;
+    bool push_out_ = false; // 9-ball: this shot is a push-out
     int target_index_ = -1;
     int preview_ball_ = -1;
     View preview_; // aiming aid paths
