@@ -23,6 +23,8 @@ void print_usage(std::ostream& out) {
            "                               (standard input if FILE is omitted or -)\n"
            "  termpool bench [--breaks N] [--shots N] [--seed S]\n"
            "                               time the simulator on one core\n"
+           "  termpool experiment friction [--table T] [--csv] | mass [--csv]\n"
+           "                               the seed report's friction and mass study\n"
            "  termpool selfplay --games N --p1 LEVEL --p2 LEVEL [--game G] [--seed S]\n"
            "           [--jobs J]        computer against computer\n"
            "\n"
@@ -59,6 +61,9 @@ int main(int argc, char** argv) {
         }
         if (command == "bench") {
             return termpool::cli::bench_command(rest);
+        }
+        if (command == "experiment") {
+            return termpool::cli::experiment_command(rest);
         }
         if (command == "selfplay") {
             return termpool::cli::selfplay_command(rest);

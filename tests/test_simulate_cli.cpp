@@ -1,5 +1,6 @@
 // End-to-end tests of `termpool simulate` and `termpool bench`: they run the real binary.
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdlib>
 #include <filesystem>
@@ -481,7 +482,8 @@ TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
 TEST_CASE("selfplay plays short games to their end and sums them up", "[cli][selfplay]") {
     TempDir dir;
     for (const char* game : {"8ball", "8ball-bar", "9ball"}) {
-        const Run r = run(dir, std::string("selfplay --games 3 --p1 easy --p2 easy --game ") + game);
+        const Run r =
+            run(dir, std::string("selfplay --games 3 --p1 easy --p2 easy --game ") + game);
         INFO(game << " stderr: " << r.err);
         REQUIRE(r.status == 0);
         const std::vector<std::string> lines = lines_of(r.out);
@@ -497,4 +499,45 @@ TEST_CASE("selfplay plays short games to their end and sums them up", "[cli][sel
     // The same seed plays the same games.
     CHECK(run(dir, "selfplay --games 2 --p1 medium --p2 hard --seed 9").out.substr(0, 120) ==
           run(dir, "selfplay --games 2 --p1 medium --p2 hard --seed 9").out.substr(0, 120));
+}
+
+TEST_CASE("experiment friction prints its table, charts and CSV", "[cli][experiment]") {
+    TempDir dir;
+    const Run table = run(dir, "experiment friction");
+    REQUIRE(table.status == 0);
+    // The physical model's median time to rest lands in the seed's 6-9 s of a real break.
+    const std::size_t at = table.out.find("\nphysical ");
+    REQUIRE(at != std::string::npos);
+    const double rest = std::stod(table.out.substr(at + 10));
+    CHECK(rest > 6.0);
+    CHECK(rest < 9.0);
+    for (const char* model : {"decay", "constant", "combined"})
+        CHECK(table.out.find(std::string("\n") + model + " ") != std::string::npos);
+    CHECK(table.out.find("total speed of all balls") != std::string::npos);
+
+    const Run csv = run(dir, "experiment friction --csv");
+    REQUIRE(csv.status == 0);
+    const std::vector<std::string> lines = lines_of(csv.out);
+    REQUIRE(lines.size() > 10);
+    CHECK(lines[0] == "model,time_s,total_speed_m_s");
+    for (std::size_t i = 1; i < lines.size(); ++i)
+        CHECK(std::count(lines[i].begin(), lines[i].end(), ',') == 2);
+    CHECK(run(dir, "experiment friction --table 6ft").status == 2);
+    CHECK(run(dir, "experiment").status == 2);
+}
+
+TEST_CASE("experiment mass prints both studies, as a table and as CSV", "[cli][experiment]") {
+    TempDir dir;
+    const Run table = run(dir, "experiment mass");
+    REQUIRE(table.status == 0);
+    CHECK(table.out.find("Cue ball mass") != std::string::npos);
+    CHECK(table.out.find("Object ball mass") != std::string::npos);
+    const Run csv = run(dir, "experiment mass --csv");
+    REQUIRE(csv.status == 0);
+    const std::vector<std::string> lines = lines_of(csv.out);
+    REQUIRE(lines.size() == 17);
+    for (std::size_t i = 1; i < lines.size(); ++i)
+        CHECK(std::count(lines[i].begin(), lines[i].end(), ',') == 7);
+    // A heavier object ball leaves slower.
+    CHECK(lines[9].starts_with("object,0.8,"));
 }

@@ -34,8 +34,13 @@ struct FrictionModel {
 
 /// Everything the simulator needs besides the table and the balls.
 struct PhysicsParams {
-    double ball_radius = 0.028575;       ///< R
-    double ball_mass = 0.170;            ///< default mass m of a ball
+    double ball_radius = 0.028575; ///< R
+    double ball_mass = 0.170;      ///< default mass m of a ball
+    /// Mass of the cue ball in racks and ball in hand (kg); 0 means `ball_mass`. Bar tables
+    /// often have a heavier one.
+    double cue_ball_mass = 0;
+    /// The mass a rack gives the cue ball.
+    double cue_mass() const { return cue_ball_mass > 0 ? cue_ball_mass : ball_mass; }
     double sliding_friction = 0.2;       ///< u_s, ball-cloth while sliding
     double rolling_friction = 0.01;      ///< u_r, rolling resistance
     double spin_friction = 0.0127;       ///< u_sp, z-spin decays at 5 g u_sp / (2 R)

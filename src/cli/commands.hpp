@@ -21,4 +21,9 @@ int bench_command(const std::vector<std::string>& args);
 /// @return 0 ok, 2 bad usage, 3 an invariant of the game was broken.
 int selfplay_command(const std::vector<std::string>& args);
 
+/// `termpool experiment friction|mass [--table T] [--csv]`: the seed report's study.
+/// @param args the command-line arguments after `experiment`.
+/// @return 0 ok, 2 bad usage.
+int experiment_command(const std::vector<std::string>& args);
+
 } // namespace termpool::cli

@@ -123,12 +123,12 @@ bool Game::place_cue_ball(Vec2 p) {
             continue;
         b = Ball{};
         b.id = 0;
-        b.mass = params_.ball_mass;
+        b.mass = params_.cue_mass();
         b.position = p;
         return true;
     }
     Ball cue;
-    cue.mass = params_.ball_mass;
+    cue.mass = params_.cue_mass();
     cue.position = p;
     balls_.insert(balls_.begin(), cue);
     return true;

@@ -99,7 +99,7 @@ std::vector<Ball> make_rack(const Table& table, const PhysicsParams& params, Rac
     std::vector<Ball> balls;
     Ball cue;
     cue.id = 0;
-    cue.mass = params.ball_mass;
+    cue.mass = params.cue_mass();
     cue.position = table.head_spot();
     balls.push_back(cue);
     for (std::size_t s = 0; s < spots.size(); ++s) {

@@ -14,6 +14,13 @@
 namespace termpool::tui {
 namespace {
 
+PhysicsParams game_params(const GameOptions& options) {
+    PhysicsParams p;
+    p.friction = options.friction;
+    p.cue_ball_mass = options.cue_ball_mass;
+    return p;
+}
+
 constexpr int frame_ms = 16; // about 60 frames per second while something moves
 constexpr double spin_step = 0.1, fine_spin_step = 0.02;
 constexpr double power_step = 0.02;
@@ -36,7 +43,7 @@ bool calls_pocket(const Game& game, int target) {
 
 App::App(Terminal& terminal, const GameOptions& options)
     : term_(terminal), options_(options), table_(make_table(options.table)),
-      game_(options.game, table_, params_, 1, 1),
+      params_(game_params(options)), game_(options.game, table_, params_, 1, 1),
       seed_(static_cast<std::uint64_t>(Clock::now().time_since_epoch().count())) {
     new_game(1);
     for (int p = 0; p < 2; ++p)

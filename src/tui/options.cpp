@@ -2,6 +2,9 @@
 
 #include "tui/player_name.hpp"
 
+#include <cmath>
+#include <cstdlib>
+
 namespace termpool::tui {
 
 std::optional<GameOptions> parse_game_options(const std::vector<std::string>& args,
@@ -18,6 +21,65 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
         };
         if (a == "--ascii") {
             o.ascii = true;
+        } else if (a == "--friction") {
+            // physical | decay K | constant A | combined K A, as in `termpool simulate`.
+            const std::string* kind = value();
+            if (!kind)
+                return std::nullopt;
+            auto number = [&](const char* what) -> std::optional<double> {
+                if (i + 1 >= args.size()) {
+                    error = std::string("--friction ") + *kind + " needs " + what;
+                    return std::nullopt;
+                }
+                char* end = nullptr;
+                const double v = std::strtod(args[i + 1].c_str(), &end);
+                if (*end != '\0' || !(v > 0) || !std::isfinite(v)) {
+                    error = std::string(what) + " must be a positive number";
+                    return std::nullopt;
+                }
+                ++i;
+                return v;
+            };
+            FrictionModel f;
+            if (*kind == "decay") {
+                f.kind = FrictionKind::decay;
+                const auto k = number("K");
+                if (!k)
+                    return std::nullopt;
+                f.decay_rate = *k;
+            } else if (*kind == "constant") {
+                f.kind = FrictionKind::constant;
+                const auto acc = number("A");
+                if (!acc)
+                    return std::nullopt;
+                f.deceleration = *acc;
+            } else if (*kind == "combined") {
+                f.kind = FrictionKind::combined;
+                const auto k = number("K");
+                if (!k)
+                    return std::nullopt;
+                const auto acc = number("A");
+                if (!acc)
+                    return std::nullopt;
+                f.decay_rate = *k;
+                f.deceleration = *acc;
+            } else if (*kind != "physical") {
+                error = "unknown friction model '" + *kind +
+                        "' (physical, decay K, constant A or combined K A)";
+                return std::nullopt;
+            }
+            o.friction = f;
+        } else if (a == "--cue-ball-mass") {
+            const std::string* v = value();
+            if (!v)
+                return std::nullopt;
+            char* end = nullptr;
+            const double kg = std::strtod(v->c_str(), &end);
+            if (*end != '\0' || !(kg >= 0.05 && kg <= 1.0)) {
+                error = "--cue-ball-mass takes kilograms between 0.05 and 1";
+                return std::nullopt;
+            }
+            o.cue_ball_mass = kg;
         } else if (a == "--vs-computer" || a == "--watch") {
             // The level is optional: take the next word only when it names one.
             std::optional<Level>& seat = a == "--watch" ? o.watch : o.computer;

@@ -16,6 +16,8 @@ struct GameOptions {
     GameType game = GameType::eight_ball;   ///< --game
     TableSize table = TableSize::nine_foot; ///< --table
     bool ascii = false;                     ///< --ascii: plain ASCII and no colour
+    FrictionModel friction;                 ///< --friction MODEL [K] [A]
+    double cue_ball_mass = 0;               ///< --cue-ball-mass KG (0: like the others)
     std::optional<Level> watch;             ///< --watch [LEVEL]: the computer is player 1 too
     std::optional<Level> computer;          ///< --vs-computer [LEVEL]: the computer is player 2
 };
