@@ -72,11 +72,11 @@ TEST_CASE("a ball with another in the way is not chosen", "[computer]") {
     const Vec2 three = pocket_at(3) + out * 0.3, cue = three + out * 0.4;
     const Vec2 one{0.5, 0.3};
     const Vec2 nine = cue + (one - cue) * 0.5;
-    Game game = position(GameType::eight_ball,
-                         {ball_at(0, cue.x, cue.y), ball_at(3, three.x, three.y),
-                          ball_at(1, one.x, one.y), ball_at(9, nine.x, nine.y),
-                          ball_at(10, 0.4, 1.1)},
-                         1, Group::solids);
+    Game game =
+        position(GameType::eight_ball,
+                 {ball_at(0, cue.x, cue.y), ball_at(3, three.x, three.y), ball_at(1, one.x, one.y),
+                  ball_at(9, nine.x, nine.y), ball_at(10, 0.4, 1.1)},
+                 1, Group::solids);
     for (const Level level : {Level::medium, Level::hard, Level::pro}) {
         ComputerPlayer computer(level, 5);
         const ComputerShot shot = computer.shot(game);
