@@ -174,6 +174,29 @@ void check_break_output(const std::string& scenario) {
 
 } // namespace
 
+/// A scenario `simulate` must refuse, the line it must name and what it must say.
+struct Case {
+    const char* text;
+    int line;
+    const char* says;
+};
+
+/// Runs each bad scenario through the binary: exit 2, nothing on stdout, and the message
+/// names the file, the line and the problem.
+void check_refused(const std::vector<Case>& cases) {
+    TempDir dir;
+    int n = 0;
+    for (const Case& c : cases) {
+        const std::string file = dir.write("bad" + std::to_string(n++) + ".txt", c.text);
+        const Run r = run(dir, "simulate " + file);
+        INFO(c.text << "\nstderr: " << r.err);
+        CHECK(r.status == 2);
+        CHECK(r.out.empty());
+        CHECK(r.err.starts_with(file + ":" + std::to_string(c.line) + ": "));
+        CHECK(r.err.find(c.says) != std::string::npos);
+    }
+}
+
 TEST_CASE("simulate prints well-formed event, ball and rest lines", "[cli]") {
     TempDir dir;
     const Run r = run(dir, "simulate " + dir.write("shot.txt", simple_shot));
@@ -263,12 +286,7 @@ TEST_CASE("simulate without a strike prints the balls as given and rest 0", "[cl
 }
 
 TEST_CASE("simulate refuses bad input with FILE:LINE: and nothing on stdout", "[cli]") {
-    struct Case {
-        const char* text;
-        int line;
-        const char* says;
-    };
-    const Case cases[] = {
+    const std::vector<Case> cases = {
         {"table 9ft\nwobble\n", 2, "unknown directive"},
         {"ball 1 0.5\n", 1, "missing field"},
         {"\ntable 9ft 7ft\n", 2, "extra field"},
@@ -286,17 +304,7 @@ TEST_CASE("simulate refuses bad input with FILE:LINE: and nothing on stdout", "[
         {"friction combined 1 0\n", 1, "must be > 0"},
         {"ball 1 1 1 mass=0\n", 1, "mass must be > 0"},
     };
-    TempDir dir;
-    int n = 0;
-    for (const Case& c : cases) {
-        const std::string file = dir.write("bad" + std::to_string(n++) + ".txt", c.text);
-        const Run r = run(dir, "simulate " + file);
-        INFO(c.text << "\nstderr: " << r.err);
-        CHECK(r.status == 2);
-        CHECK(r.out.empty());
-        CHECK(r.err.starts_with(file + ":" + std::to_string(c.line) + ": "));
-        CHECK(r.err.find(c.says) != std::string::npos);
-    }
+    check_refused(cases);
 }
 
 TEST_CASE("simulate refuses unreadable files and extra arguments", "[cli]") {
@@ -445,12 +453,7 @@ TEST_CASE("simulate prints the choices owed and the other ways a game ends", "[c
 }
 
 TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
-    struct Case {
-        const char* text;
-        int line;
-        const char* says;
-    };
-    const Case cases[] = {
+    const std::vector<Case> cases = {
         {"game pool\n", 1, "unknown game 'pool'"},
         {"ball 0 1 1\nbreak\ngroups open\nstrike 1 0\n", 3, "cannot go with 'break'"},
         {"game 9ball\ngroups 1=solids\nball 0 1 1\nstrike 1 0\n", 2, "9-ball has no groups"},
@@ -466,17 +469,7 @@ TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
         {"rack 8ball\nbreak\n", 2, "without a strike"},
         {"game 8ball\ngame 9ball\n", 2, "more than one 'game' line"},
     };
-    TempDir dir;
-    int n = 0;
-    for (const Case& c : cases) {
-        const std::string file = dir.write("bad" + std::to_string(n++) + ".txt", c.text);
-        const Run r = run(dir, "simulate " + file);
-        INFO(c.text << "\nstderr: " << r.err);
-        CHECK(r.status == 2);
-        CHECK(r.out.empty());
-        CHECK(r.err.starts_with(file + ":" + std::to_string(c.line) + ": "));
-        CHECK(r.err.find(c.says) != std::string::npos);
-    }
+    check_refused(cases);
 }
 
 TEST_CASE("selfplay plays short games to their end and sums them up", "[cli][selfplay]") {
