@@ -193,7 +193,7 @@ void App::seat_computer(int player, Level level) {
     computers_[player - 1].emplace(level, seed_ + static_cast<std::uint64_t>(player));
     // Two computers (watching) are told apart by their seat.
     const std::string seat = options_.watch ? " " + std::to_string(player) : "";
-    names_[player - 1] = "Computer" + seat + " (" + level_name(level) + ")";
+    names_[player - 1] = "CPU" + seat + " (" + level_name(level) + ")";
 }
 
 int App::actor() const {
