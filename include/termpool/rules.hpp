@@ -187,6 +187,10 @@ public:
     /// spot is not legal or there is no ball in hand.
     bool place_cue_ball(Vec2 p);
 
+    /// True when a shot may be played now: the game is on, no choice is owed, and the cue ball
+    /// is on the table (where the ball in hand allows, if there is one).
+    bool ready_to_shoot() const;
+
     /// Makes the choice owed. Returns false when `choice` is not one of `choices()`.
     bool choose(Choice choice);
 

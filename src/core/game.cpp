@@ -226,17 +226,20 @@ void Game::finish_turn(Verdict& v, bool progress) {
     v.reason = reason_;
 }
 
+bool Game::ready_to_shoot() const {
+    const auto cue = std::find_if(balls_.begin(), balls_.end(), [](const Ball& b) {
+        return b.id == 0 && b.state != MotionState::pocketed;
+    });
+    return winner_ == 0 && chooser_ == 0 && cue != balls_.end() &&
+           (ball_in_hand_ == BallInHand::none || legal_placement(cue->position));
+}
+
 Verdict Game::apply(const ShotCall& call, const ShotResult& result) {
     Verdict refused;
     refused.next_shooter = shooter_;
     refused.player1_group = player1_group_;
     refused.ball_in_hand = ball_in_hand_;
-    const auto cue = std::find_if(balls_.begin(), balls_.end(), [](const Ball& b) {
-        return b.id == 0 && b.state != MotionState::pocketed;
-    });
-    const bool cue_ready = cue != balls_.end() &&
-                           (ball_in_hand_ == BallInHand::none || legal_placement(cue->position));
-    if (winner_ != 0 || chooser_ != 0 || !cue_ready || result.balls.size() != balls_.size())
+    if (!ready_to_shoot() || result.balls.size() != balls_.size())
         return refused;
 
     Facts facts = Facts::from(result.events);

@@ -1,0 +1,311 @@
+// The text form of a game record, and its replay.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <termpool/record.hpp>
+
+namespace termpool {
+namespace {
+
+std::string number(double v) {
+    // Shortest text that reads back to the same double.
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return ec == std::errc{} ? std::string(buffer, end) : "nan";
+}
+
+std::vector<std::string_view> fields(std::string_view line) {
+    std::vector<std::string_view> out;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+            ++i;
+        const std::size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t')
+            ++i;
+        if (i > start)
+            out.push_back(line.substr(start, i - start));
+    }
+    return out;
+}
+
+std::optional<double> to_double(std::string_view s) {
+    double v = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc{} || end != s.data() + s.size() || !std::isfinite(v))
+        return std::nullopt;
+    return v;
+}
+
+std::optional<std::uint64_t> to_u64(std::string_view s) {
+    std::uint64_t v = 0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc{} || end != s.data() + s.size())
+        return std::nullopt;
+    return v;
+}
+
+std::optional<Choice> to_choice(std::string_view s) {
+    for (const Choice c :
+         {Choice::play_on, Choice::re_rack, Choice::re_break, Choice::spot_eight,
+          Choice::take_solids, Choice::take_stripes, Choice::shoot, Choice::pass_back})
+        if (s == choice_name(c))
+            return c;
+    return std::nullopt;
+}
+
+// The name is the rest of the line after the keyword: names may hold spaces.
+std::string rest_after(std::string_view line, std::string_view keyword) {
+    std::string_view rest = line.substr(line.find(keyword) + keyword.size());
+    while (!rest.empty() && rest.front() == ' ')
+        rest.remove_prefix(1);
+    return std::string(rest);
+}
+
+} // namespace
+
+std::string format_record(const GameRecord& r) {
+    std::string out = "termpool-record " + std::to_string(record_version) + "\n";
+    out += std::string("game ") + game_type_name(r.game) + "\n";
+    out += std::string("table ") + table_size_name(r.table) + "\n";
+    out += "seed " + std::to_string(r.seed) + "\n";
+    out += "breaker " + std::to_string(r.breaker) + "\n";
+    for (int p = 0; p < 2; ++p) {
+        out += "player" + std::to_string(p + 1) + " " + r.names[p] + "\n";
+        if (r.computers[p])
+            out += "computer" + std::to_string(p + 1) + " " + level_name(*r.computers[p]) + "\n";
+    }
+    switch (r.friction.kind) {
+    case FrictionKind::physical:
+        break;
+    case FrictionKind::decay:
+        out += "friction decay " + number(r.friction.decay_rate) + "\n";
+        break;
+    case FrictionKind::constant:
+        out += "friction constant " + number(r.friction.deceleration) + "\n";
+        break;
+    case FrictionKind::combined:
+        out += "friction combined " + number(r.friction.decay_rate) + " " +
+               number(r.friction.deceleration) + "\n";
+        break;
+    }
+    if (r.cue_ball_mass > 0)
+        out += "cue-ball-mass " + number(r.cue_ball_mass) + "\n";
+    for (const RecordedAction& a : r.actions) {
+        switch (a.kind) {
+        case RecordedAction::Kind::place:
+            out += "place " + number(a.place.x) + " " + number(a.place.y) + "\n";
+            break;
+        case RecordedAction::Kind::choose:
+            out += std::string("choose ") + choice_name(a.choice) + "\n";
+            break;
+        case RecordedAction::Kind::shot:
+            out += "shot " + number(a.strike.speed) + " " + number(a.strike.angle_deg) + " " +
+                   number(a.strike.side) + " " + number(a.strike.follow);
+            if (a.call.call.safety)
+                out += " safety";
+            else if (a.call.call.ball != 0)
+                out += " call " + std::to_string(a.call.call.ball) + " " +
+                       std::to_string(a.call.call.pocket);
+            if (a.call.push_out)
+                out += " push-out";
+            out += "\n";
+            break;
+        }
+    }
+    out += "end\n";
+    return out;
+}
+
+std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
+    // A last line without its newline, other than "end", is where a write was cut off.
+    if (!text.empty() && text.back() != '\n') {
+        const std::size_t start =
+            text.rfind('\n') == std::string_view::npos ? 0 : text.rfind('\n') + 1;
+        const std::vector<std::string_view> last = fields(text.substr(start));
+        if (!(last.size() == 1 && last[0] == "end")) {
+            const int line = 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+            return RecordError{line, "truncated: the last line is incomplete"};
+        }
+    }
+    GameRecord r;
+    int line_number = 0;
+    bool header = false, ended = false;
+    std::size_t pos = 0;
+    while (pos < text.size()) {
+        std::size_t eol = text.find('\n', pos);
+        if (eol == std::string_view::npos)
+            eol = text.size();
+        std::string_view line = text.substr(pos, eol - pos);
+        pos = eol + 1;
+        ++line_number;
+        if (!line.empty() && line.back() == '\r')
+            line.remove_suffix(1);
+        const std::vector<std::string_view> f = fields(line);
+        if (f.empty())
+            continue;
+        auto fail = [&](std::string message) {
+            return RecordError{line_number, std::move(message)};
+        };
+        if (ended)
+            return fail("text after 'end'");
+        if (!header) {
+            if (f[0] != "termpool-record")
+                return fail("not a termpool record");
+            const auto v = f.size() == 2 ? to_u64(f[1]) : std::nullopt;
+            if (!v)
+                return fail("record version missing");
+            if (*v > static_cast<std::uint64_t>(record_version))
+                return fail("record version " + std::to_string(*v) + " is newer than this " +
+                            "termpool reads (" + std::to_string(record_version) + ")");
+            header = true;
+            continue;
+        }
+        const std::string_view key = f[0];
+        auto want = [&](std::size_t n) { return f.size() == n; };
+        if (key == "game" && want(2)) {
+            const auto g = parse_game_type(std::string(f[1]));
+            if (!g)
+                return fail("unknown game '" + std::string(f[1]) + "'");
+            r.game = *g;
+        } else if (key == "table" && want(2)) {
+            bool found = false;
+            for (const TableSize t :
+                 {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot})
+                if (f[1] == table_size_name(t))
+                    r.table = t, found = true;
+            if (!found)
+                return fail("unknown table '" + std::string(f[1]) + "'");
+        } else if (key == "seed" && want(2)) {
+            const auto s = to_u64(f[1]);
+            if (!s)
+                return fail("bad seed");
+            r.seed = *s;
+        } else if (key == "breaker" && want(2)) {
+            if (f[1] != "1" && f[1] != "2")
+                return fail("breaker must be 1 or 2");
+            r.breaker = f[1][0] - '0';
+        } else if ((key == "player1" || key == "player2") && f.size() >= 2) {
+            r.names[key.back() - '1'] = rest_after(line, key);
+        } else if ((key == "computer1" || key == "computer2") && want(2)) {
+            const auto level = parse_level(std::string(f[1]));
+            if (!level)
+                return fail("unknown level '" + std::string(f[1]) + "'");
+            r.computers[key.back() - '1'] = *level;
+        } else if (key == "friction" && f.size() >= 3) {
+            const auto k = to_double(f[2]);
+            if (!k || *k <= 0)
+                return fail("friction constants must be positive numbers");
+            if (f[1] == "decay" && want(3)) {
+                r.friction = {FrictionKind::decay, *k, 0, 0.005};
+            } else if (f[1] == "constant" && want(3)) {
+                r.friction = {FrictionKind::constant, 0, *k, 0.005};
+            } else if (f[1] == "combined" && want(4)) {
+                const auto a = to_double(f[3]);
+                if (!a || *a <= 0)
+                    return fail("friction constants must be positive numbers");
+                r.friction = {FrictionKind::combined, *k, *a, 0.005};
+            } else {
+                return fail("bad friction line");
+            }
+        } else if (key == "cue-ball-mass" && want(2)) {
+            const auto m = to_double(f[1]);
+            if (!m || *m <= 0)
+                return fail("cue-ball-mass must be a positive number");
+            r.cue_ball_mass = *m;
+        } else if (key == "place" && want(3)) {
+            const auto x = to_double(f[1]), y = to_double(f[2]);
+            if (!x || !y)
+                return fail("bad place coordinates");
+            RecordedAction a;
+            a.kind = RecordedAction::Kind::place;
+            a.place = {*x, *y};
+            a.line = line_number;
+            r.actions.push_back(a);
+        } else if (key == "choose" && want(2)) {
+            const auto c = to_choice(f[1]);
+            if (!c)
+                return fail("unknown choice '" + std::string(f[1]) + "'");
+            RecordedAction a;
+            a.kind = RecordedAction::Kind::choose;
+            a.choice = *c;
+            a.line = line_number;
+            r.actions.push_back(a);
+        } else if (key == "shot" && f.size() >= 5) {
+            RecordedAction a;
+            a.kind = RecordedAction::Kind::shot;
+            a.line = line_number;
+            const auto v = to_double(f[1]), phi = to_double(f[2]), side = to_double(f[3]),
+                       follow = to_double(f[4]);
+            if (!v || !phi || !side || !follow)
+                return fail("bad shot numbers");
+            if (*v < 0 || *v > max_strike_speed || std::abs(*side) > 0.5 || std::abs(*follow) > 0.5)
+                return fail("shot out of range");
+            a.strike = {*v, *phi, *side, *follow};
+            std::size_t i = 5;
+            while (i < f.size()) {
+                if (f[i] == "safety") {
+                    a.call.call.safety = true;
+                    ++i;
+                } else if (f[i] == "push-out") {
+                    a.call.push_out = true;
+                    ++i;
+                } else if (f[i] == "call" && i + 2 < f.size()) {
+                    const auto ball = to_u64(f[i + 1]), pocket = to_u64(f[i + 2]);
+                    if (!ball || !pocket || *ball < 1 || *ball > 15 || *pocket < 1 || *pocket > 6)
+                        return fail("bad call");
+                    a.call.call.ball = static_cast<int>(*ball);
+                    a.call.call.pocket = static_cast<int>(*pocket);
+                    i += 3;
+                } else {
+                    return fail("unknown shot field '" + std::string(f[i]) + "'");
+                }
+            }
+            r.actions.push_back(a);
+        } else if (key == "end" && want(1)) {
+            ended = true;
+        } else {
+            return fail("unknown or malformed line '" + std::string(key) + "'");
+        }
+    }
+    if (!header)
+        return RecordError{std::max(line_number, 1), "empty: not a termpool record"};
+    if (!ended)
+        return RecordError{line_number, "truncated: no 'end' line"};
+    return r;
+}
+
+PhysicsParams record_params(const GameRecord& r) {
+    PhysicsParams p;
+    p.friction = r.friction;
+    p.cue_ball_mass = r.cue_ball_mass;
+    return p;
+}
+
+std::variant<Game, RecordError> replay_record(const GameRecord& r) {
+    const PhysicsParams params = record_params(r);
+    Game game(r.game, make_table(r.table, params.ball_radius), params, r.breaker, r.seed);
+    for (const RecordedAction& a : r.actions) {
+        switch (a.kind) {
+        case RecordedAction::Kind::place:
+            if (!game.place_cue_ball(a.place))
+                return RecordError{a.line, "the cue ball cannot be placed there now"};
+            break;
+        case RecordedAction::Kind::choose:
+            if (!game.choose(a.choice))
+                return RecordError{a.line, std::string("'") + choice_name(a.choice) +
+                                               "' is not a choice owed now"};
+            break;
+        case RecordedAction::Kind::shot: {
+            if (!game.ready_to_shoot())
+                return RecordError{a.line, "no shot can be played now"};
+            game.play(a.strike, a.call);
+            break;
+        }
+        }
+    }
+    return game;
+}
+
+} // namespace termpool
