@@ -534,3 +534,39 @@ TEST_CASE("experiment mass prints both studies, as a table and as CSV", "[cli][e
     // A heavier object ball leaves slower.
     CHECK(lines[9].starts_with("object,0.8,"));
 }
+
+TEST_CASE("a save that cannot be read is named, kept as .bad, and never overwritten",
+          "[cli][save]") {
+    TempDir dir;
+    const std::string save = dir.path() + "/termpool/game.save";
+    const std::string env = "XDG_STATE_HOME=" + dir.path() + " ";
+    const struct {
+        const char* text;
+        const char* says;
+    } bad[] = {
+        {"termpool-record 1\ngame 8ball\nshot 2 0", "game.save:3: truncated"},
+        {"<html>not a save</html>\n", "game.save:1: not a termpool record"},
+        {"termpool-record 7\nend\n", "game.save:1: record version 7 is newer"},
+        {"termpool-record 1\nchoose re-rack\nend\n", "game.save:2: 're-rack' is not a choice"},
+    };
+    for (const auto& b : bad) {
+        std::system(("mkdir -p " + dir.path() + "/termpool").c_str());
+        {
+            std::ofstream out(save);
+            out << b.text;
+        }
+        std::remove((save + ".bad").c_str());
+        const std::string out = dir.path() + "/o", err = dir.path() + "/e";
+        const int raw =
+            std::system((env + "'" + binary() + "' --resume >" + out + " 2>" + err).c_str());
+        INFO(b.text);
+        CHECK(WEXITSTATUS(raw) == 2);
+        CHECK(slurp(err).find(b.says) != std::string::npos);
+        CHECK(slurp(save + ".bad") == b.text);
+    }
+    // Nothing to resume is not bad input.
+    std::remove((save + ".bad").c_str());
+    std::remove(save.c_str());
+    const int raw = std::system((env + "'" + binary() + "' --resume >/dev/null 2>&1").c_str());
+    CHECK(WEXITSTATUS(raw) == 1);
+}

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -80,8 +81,9 @@ TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]
     const std::string status_file = dir + "/status";
 
     Tmux t;
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"env TERM=xterm-256color LANG=C.UTF-8 " + binary +
-           "; echo \\$? > " + status_file + "; sleep 60\"");
+    t.tmux("new-session -d -s e2e -x 100 -y 32 \"env XDG_STATE_HOME=" + dir +
+           " TERM=xterm-256color LANG=C.UTF-8 " + binary + "; echo \\$? > " + status_file +
+           "; sleep 60\"");
     REQUIRE(t.wait_for_text("Name of player 1"));
 
     // Names at the prompt.
@@ -132,5 +134,48 @@ TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]
     CHECK(t.flag("mouse_any_flag") == "0");
     CHECK(t.flag("mouse_button_flag") == "0");
     std::remove(status_file.c_str());
-    rmdir(dir.c_str());
+    std::system(("rm -rf " + dir).c_str());
+}
+
+TEST_CASE("SIGHUP during a shot leaves a save that resumes", "[tui][e2e]") {
+    if (std::system("command -v tmux >/dev/null 2>&1") != 0) {
+        WARN("tmux is missing: the end-to-end test of saves is skipped");
+        return;
+    }
+    const char* bin = std::getenv("TERMPOOL_BIN");
+    const std::string binary = bin ? bin : "build/termpool";
+    char dir_template[] = "/tmp/termpool-save-XXXXXX";
+    const std::string dir = mkdtemp(dir_template);
+    const std::string status_file = dir + "/status";
+    const std::string save = dir + "/termpool/game.save";
+    const std::string env = "env XDG_STATE_HOME=" + dir + " TERM=xterm-256color LANG=C.UTF-8 ";
+
+    Tmux t;
+    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + binary +
+           " --player1 Ann --player2 Bob; echo \\$? > " + status_file + "; sleep 60\"");
+    REQUIRE(t.wait_for_text("place the cue ball"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    t.keys("Space");
+    // Hang up while the break is still rolling.
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const std::string pid = run("tmux -L " + t.socket + " display-message -p -t e2e '#{pane_pid}'");
+    run("pkill -HUP -P " + pid + " 2>/dev/null");
+    std::string status;
+    for (int i = 0; i < 100 && status.empty(); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::ifstream in(status_file);
+        std::getline(in, status);
+    }
+    CHECK(status == "129");
+    std::ifstream saved(save);
+    std::string text((std::istreambuf_iterator<char>(saved)), std::istreambuf_iterator<char>());
+    CHECK(text.find("\nshot 3.") != std::string::npos);
+    CHECK(text.find("\nend\n") != std::string::npos);
+
+    // Resumed, the game is where the shot left it.
+    t.tmux("kill-session -t e2e");
+    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + binary + " --resume; sleep 60\"");
+    CHECK(t.wait_for_text("Game resumed"));
+    std::system(("rm -rf " + dir).c_str());
 }

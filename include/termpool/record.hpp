@@ -5,6 +5,7 @@
 /// form is what the game saves (see the man page, FILES).
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -60,6 +61,9 @@ PhysicsParams record_params(const GameRecord& record);
 
 /// Plays the record's actions on a new game. An action the game refuses (a record edited into
 /// an impossible state) is an error at its line.
-std::variant<Game, RecordError> replay_record(const GameRecord& record);
+/// `on_shot`, when given, hears each shot's shooter and verdict.
+std::variant<Game, RecordError>
+replay_record(const GameRecord& record,
+              const std::function<void(int shooter, const Verdict& verdict)>& on_shot = {});
 
 } // namespace termpool

@@ -283,7 +283,9 @@ PhysicsParams record_params(const GameRecord& r) {
     return p;
 }
 
-std::variant<Game, RecordError> replay_record(const GameRecord& r) {
+std::variant<Game, RecordError>
+replay_record(const GameRecord& r,
+              const std::function<void(int shooter, const Verdict& verdict)>& on_shot) {
     const PhysicsParams params = record_params(r);
     Game game(r.game, make_table(r.table, params.ball_radius), params, r.breaker, r.seed);
     for (const RecordedAction& a : r.actions) {
@@ -300,7 +302,10 @@ std::variant<Game, RecordError> replay_record(const GameRecord& r) {
         case RecordedAction::Kind::shot: {
             if (!game.ready_to_shoot())
                 return RecordError{a.line, "no shot can be played now"};
-            game.play(a.strike, a.call);
+            const int shooter = game.shooter();
+            const Verdict v = game.play(a.strike, a.call);
+            if (on_shot)
+                on_shot(shooter, v);
             break;
         }
         }

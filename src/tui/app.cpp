@@ -9,6 +9,7 @@
 #include "tui/messages.hpp"
 #include "tui/player_name.hpp"
 #include "tui/pocket_cells.hpp"
+#include "tui/save_file.hpp"
 #include <termpool/computer.hpp>
 
 namespace termpool::tui {
@@ -66,7 +67,14 @@ App::App(Terminal& terminal, const GameOptions& options)
 }
 
 void App::new_game(int breaker) {
-    game_ = Game(options_.game, table_, params_, breaker, seed_++);
+    record_ = GameRecord{};
+    record_.game = options_.game;
+    record_.table = options_.table;
+    record_.seed = seed_++;
+    record_.breaker = breaker;
+    record_.friction = options_.friction;
+    record_.cue_ball_mass = options_.cue_ball_mass;
+    game_ = Game(options_.game, table_, params_, breaker, record_.seed);
     pocketed_by_[0].clear();
     pocketed_by_[1].clear();
     shown_balls_ = game_.balls();
@@ -178,7 +186,45 @@ void App::shoot() {
     play(strike, call);
 }
 
+bool App::place(Vec2 spot) {
+    if (!game_.place_cue_ball(spot))
+        return false;
+    RecordedAction action;
+    action.kind = RecordedAction::Kind::place;
+    action.place = spot;
+    record_.actions.push_back(action);
+    save();
+    return true;
+}
+
+void App::choose(Choice choice) {
+    if (!game_.choose(choice))
+        return;
+    RecordedAction action;
+    action.kind = RecordedAction::Kind::choose;
+    action.choice = choice;
+    record_.actions.push_back(action);
+    save();
+}
+
+void App::save() {
+    // The record is the whole game: rewritten after every action, so a dropped connection
+    // loses at most the shot in flight.
+    for (int p = 0; p < 2; ++p) {
+        record_.names[p] = names_[p];
+        record_.computers[p] =
+            computers_[p] ? std::optional<Level>(computers_[p]->level()) : std::nullopt;
+    }
+    std::string error;
+    if (!write_atomically(save_path(), format_record(record_), error))
+        message_ = "Could not save: " + error;
+}
+
 void App::play(const Strike& strike, const ShotCall& call) {
+    RecordedAction action;
+    action.strike = strike;
+    action.call = call;
+    record_.actions.push_back(action);
     call_ = call;
     shooter_before_ = game_.shooter();
     Trajectory trajectory(params_, game_.balls().size());
@@ -228,7 +274,7 @@ void App::computer_turn() {
         planning_ = false;
         const std::string who = names_[actor() - 1];
         const Choice choice = computer.choose(game_);
-        game_.choose(choice);
+        choose(choice);
         message_ = who + ": " + choice_words(choice);
         start_turn();
         return;
@@ -237,7 +283,7 @@ void App::computer_turn() {
         if (t < 0.7)
             return;
         planning_ = false;
-        if (game_.place_cue_ball(place_)) {
+        if (place(place_)) {
             mode_ = Mode::aiming;
             aim_at_easiest();
         }
@@ -266,6 +312,7 @@ void App::after_shot() {
         if (id != 0)
             pocketed_by_[shooter_before_ - 1].push_back(id);
     message_ = verdict_message(v, shooter_before_, names_);
+    save();
     start_turn();
 }
 
@@ -473,7 +520,7 @@ void App::handle_key(int key, const std::string& text) {
         const auto& choices = game_.choices();
         if (text.size() == 1 && text[0] >= '1' &&
             text[0] < '1' + static_cast<int>(choices.size())) {
-            game_.choose(choices[static_cast<std::size_t>(text[0] - '1')]);
+            choose(choices[static_cast<std::size_t>(text[0] - '1')]);
             if (game_.is_break()) {
                 pocketed_by_[0].clear();
                 pocketed_by_[1].clear();
@@ -495,8 +542,7 @@ void App::handle_key(int key, const std::string& text) {
             place_.y += 2 * step;
         else if (key == KEY_DOWN || text == "j")
             place_.y -= 2 * step;
-        else if ((key == key_enter || key == KEY_ENTER || text == " ") &&
-                 game_.place_cue_ball(place_)) {
+        else if ((key == key_enter || key == KEY_ENTER || text == " ") && place(place_)) {
             message_.clear();
             mode_ = Mode::aiming;
             aim_at_easiest();
@@ -573,7 +619,7 @@ void App::handle_mouse(const Input& in) {
     const Vec2 pointer = from_cell(layout_, table_.width, in.x, in.y);
     if (mode_ == Mode::placing) {
         place_ = pointer;
-        if ((in.clicked || in.released) && game_.place_cue_ball(place_)) {
+        if ((in.clicked || in.released) && place(place_)) {
             message_.clear();
             mode_ = Mode::aiming;
             aim_at_easiest();
@@ -648,7 +694,34 @@ int App::run() {
             in = term_.read(0);
         }
     }
+    // Quitting, or a signal: the game so far is kept (a shot still rolling is not: it replays
+    // from its start).
+    if (mode_ != Mode::names)
+        save();
     return 0;
+}
+
+void App::resume(const GameRecord& record, Game game) {
+    record_ = record;
+    game_ = std::move(game);
+    for (int p = 0; p < 2; ++p) {
+        names_[p] = record.names[p];
+        if (record.computers[p])
+            computers_[p].emplace(*record.computers[p], seed_ + static_cast<std::uint64_t>(p + 1));
+        else
+            computers_[p].reset();
+    }
+    // The panel's pocketed balls are not saved: they follow from the shots.
+    pocketed_by_[0].clear();
+    pocketed_by_[1].clear();
+    replay_record(record, [&](int shooter, const Verdict& v) {
+        for (const int id : v.pocketed)
+            if (id != 0)
+                pocketed_by_[shooter - 1].push_back(id);
+    });
+    entry_player_ = 0;
+    message_ = "Game resumed: " + names_[game_.shooter() - 1] + " to play";
+    start_turn();
 }
 
 } // namespace termpool::tui

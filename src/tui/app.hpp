@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <termpool/computer.hpp>
+#include <termpool/record.hpp>
 #include <termpool/rules.hpp>
 #include <termpool/simulator.hpp>
 
@@ -22,6 +23,10 @@ public:
     App(Terminal& terminal, const GameOptions& options);
     /// Runs until the players quit or a signal arrives; returns the exit status.
     int run();
+    /// Continues a saved game: `game` is `record` replayed.
+    void resume(const GameRecord& record, Game game);
+    /// Shows a line on the message line (for news from before the game started).
+    void tell(const std::string& message) { message_ = message; }
 
 private:
     enum class Mode { names, placing, aiming, animating, choosing, game_over };
@@ -32,6 +37,9 @@ private:
     void start_turn();
     void shoot();
     void play(const Strike& strike, const ShotCall& call);
+    bool place(Vec2 spot);
+    void choose(Choice choice);
+    void save();
     bool computer_to_act() const;
     void seat_computer(int player, Level level);
     int actor() const;
@@ -104,6 +112,8 @@ private:
     Clock::time_point plan_start_;
     std::optional<ComputerShot> plan_;
     double aim_from_ = 0;
+
+    GameRecord record_; // everything done so far, as saved
 
     std::string message_;
     std::vector<int> pocketed_by_[2];

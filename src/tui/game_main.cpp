@@ -5,7 +5,10 @@
 
 #include "tui/app.hpp"
 #include "tui/options.hpp"
+#include "tui/save_file.hpp"
+
 #include "tui/terminal.hpp"
+#include <termpool/record.hpp>
 
 namespace termpool::tui {
 
@@ -21,10 +24,62 @@ int run_game(const std::vector<std::string>& args) {
                      error.c_str());
         return 2;
     }
+    // A save that cannot be read is never overwritten: it is kept beside as NAME.bad.
+    const std::string path = save_path();
+    std::string read_error;
+    const std::optional<std::string> saved = read_whole_file(path, read_error);
+    std::optional<GameRecord> record;
+    std::optional<Game> resumed;
+    std::string notice;
+    if (saved) {
+        auto parsed = parse_record(*saved);
+        std::optional<RecordError> problem;
+        if (auto* e = std::get_if<RecordError>(&parsed)) {
+            problem = *e;
+        } else {
+            auto replayed = replay_record(std::get<GameRecord>(parsed));
+            if (auto* e2 = std::get_if<RecordError>(&replayed))
+                problem = *e2;
+            else if (options->resume) {
+                record = std::get<GameRecord>(parsed);
+                resumed.emplace(std::move(std::get<Game>(replayed)));
+            }
+        }
+        if (problem) {
+            std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), problem->line,
+                         problem->message.c_str());
+            std::rename(path.c_str(), (path + ".bad").c_str());
+            if (options->resume) {
+                std::fprintf(stderr, "termpool: kept it as %s.bad\n", path.c_str());
+                return 2;
+            }
+            notice = "The old save could not be read; it is kept as " + path + ".bad";
+        }
+    } else if (options->resume) {
+        std::fprintf(stderr, "termpool: no saved game to resume (%s)\n",
+                     read_error.empty() ? path.c_str() : read_error.c_str());
+        return 1;
+    }
+
+    GameOptions chosen = *options;
+    if (record) {
+        chosen.game = record->game;
+        chosen.table = record->table;
+        chosen.friction = record->friction;
+        chosen.cue_ball_mass = record->cue_ball_mass;
+        chosen.names[0] = record->names[0];
+        chosen.names[1] = record->names[1];
+        chosen.watch.reset();
+        chosen.computer.reset();
+    }
     int signal = 0;
     try {
         Terminal terminal(options->ascii, options->ascii);
-        App app(terminal, *options);
+        App app(terminal, chosen);
+        if (record)
+            app.resume(*record, std::move(*resumed));
+        else if (!notice.empty())
+            app.tell(notice);
         app.run();
         signal = Terminal::signal_number();
     } catch (const std::exception& e) {

@@ -21,6 +21,8 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
         };
         if (a == "--ascii") {
             o.ascii = true;
+        } else if (a == "--resume") {
+            o.resume = true;
         } else if (a == "--friction") {
             // physical | decay K | constant A | combined K A, as in `termpool simulate`.
             const std::string* kind = value();

@@ -15,6 +15,7 @@ struct GameOptions {
     std::optional<std::string> names[2];    ///< --player1, --player2 (cleaned)
     GameType game = GameType::eight_ball;   ///< --game
     TableSize table = TableSize::nine_foot; ///< --table
+    bool resume = false;                    ///< --resume: continue the last unfinished game
     bool ascii = false;                     ///< --ascii: plain ASCII and no colour
     FrictionModel friction;                 ///< --friction MODEL [K] [A]
     double cue_ball_mass = 0;               ///< --cue-ball-mass KG (0: like the others)

@@ -1,0 +1,20 @@
+#pragma once
+// Where the game is saved, and writing it so that a dropped connection never leaves half a
+// file: a temporary file, fsync, then rename over the old save.
+
+#include <optional>
+#include <string>
+
+namespace termpool::tui {
+
+/// $XDG_STATE_HOME/termpool/game.save, or ~/.local/state/termpool/game.save.
+std::string save_path();
+
+/// Writes `text` to `path` atomically, creating the directory. False (with `error`) on failure.
+bool write_atomically(const std::string& path, const std::string& text, std::string& error);
+
+/// The whole file, or nothing (with `error`) when it cannot be read; a missing file gives
+/// nothing with an empty error.
+std::optional<std::string> read_whole_file(const std::string& path, std::string& error);
+
+} // namespace termpool::tui
