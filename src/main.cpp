@@ -23,6 +23,8 @@ void print_usage(std::ostream& out) {
            "                               (standard input if FILE is omitted or -)\n"
            "  termpool bench [--breaks N] [--shots N] [--seed S]\n"
            "                               time the simulator on one core\n"
+           "  termpool --resume            continue the saved game\n"
+           "  termpool replay FILE         play a saved game back\n"
            "  termpool experiment friction [--table T] [--csv] | mass [--csv]\n"
            "                               the seed report's friction and mass study\n"
            "  termpool selfplay --games N --p1 LEVEL --p2 LEVEL [--game G] [--seed S]\n"
@@ -61,6 +63,9 @@ int main(int argc, char** argv) {
         }
         if (command == "bench") {
             return termpool::cli::bench_command(rest);
+        }
+        if (command == "replay") {
+            return termpool::tui::run_replay(rest);
         }
         if (command == "experiment") {
             return termpool::cli::experiment_command(rest);

@@ -570,3 +570,13 @@ TEST_CASE("a save that cannot be read is named, kept as .bad, and never overwrit
     const int raw = std::system((env + "'" + binary() + "' --resume >/dev/null 2>&1").c_str());
     CHECK(WEXITSTATUS(raw) == 1);
 }
+
+TEST_CASE("replay refuses a file that is not a game, naming the line", "[cli][save]") {
+    TempDir dir;
+    const std::string file = dir.write("bad.save", "termpool-record 1\ngame pool\nend\n");
+    const Run r = run(dir, "replay " + file);
+    CHECK(r.status == 2);
+    CHECK(r.err.starts_with(file + ":2: unknown game 'pool'"));
+    CHECK(run(dir, "replay").status == 2);
+    CHECK(run(dir, "replay " + dir.path() + "/missing.save").status == 2);
+}

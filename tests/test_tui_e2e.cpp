@@ -179,3 +179,36 @@ TEST_CASE("SIGHUP during a shot leaves a save that resumes", "[tui][e2e]") {
     CHECK(t.wait_for_text("Game resumed"));
     std::system(("rm -rf " + dir).c_str());
 }
+
+TEST_CASE("a saved game plays back with replay", "[tui][e2e]") {
+    if (std::system("command -v tmux >/dev/null 2>&1") != 0) {
+        WARN("tmux is missing: the end-to-end test of replays is skipped");
+        return;
+    }
+    const char* bin = std::getenv("TERMPOOL_BIN");
+    const std::string binary = bin ? bin : "build/termpool";
+    char dir_template[] = "/tmp/termpool-replay-XXXXXX";
+    const std::string dir = mkdtemp(dir_template);
+    {
+        std::ofstream out(dir + "/game.save");
+        out << "termpool-record 1\ngame 8ball\ntable 9ft\nseed 5\nbreaker 1\nplayer1 Ann\n"
+               "player2 Bob\nshot 12 0 0 0\nshot 2 90 0 0\nend\n";
+    }
+    const std::string status_file = dir + "/status";
+    Tmux t;
+    t.tmux("new-session -d -s e2e -x 100 -y 32 \"env TERM=xterm-256color LANG=C.UTF-8 " + binary +
+           " replay " + dir + "/game.save; echo \\$? > " + status_file + "; sleep 60\"");
+    REQUIRE(t.wait_for_text("Replay, shot 1 of 2"));
+    t.keys("Space");
+    t.keys("Right");
+    CHECK(t.wait_for_text("Ann"));
+    t.keys("q");
+    std::string status;
+    for (int i = 0; i < 100 && status.empty(); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::ifstream in(status_file);
+        std::getline(in, status);
+    }
+    CHECK(status == "0");
+    std::system(("rm -rf " + dir).c_str());
+}

@@ -208,6 +208,8 @@ void App::choose(Choice choice) {
 }
 
 void App::save() {
+    if (replaying_)
+        return; // a replay shows a game; it never writes over the one in progress
     // The record is the whole game: rewritten after every action, so a dropped connection
     // loses at most the shot in flight.
     for (int p = 0; p < 2; ++p) {
@@ -314,6 +316,8 @@ void App::after_shot() {
     message_ = verdict_message(v, shooter_before_, names_);
     save();
     start_turn();
+    if (replaying_)
+        mode_ = Mode::replay; // the replay shows the next action itself
 }
 
 void App::compose(View& v) const {
@@ -476,6 +480,10 @@ void App::handle(const Input& in) {
             help_ = false;
         return;
     }
+    if (replaying_) {
+        handle_replay_key(in);
+        return;
+    }
     if (computer_to_act() && !(in.kind == Input::Kind::text && (in.text == "q" || in.text == "?")))
         return;
     if (in.kind == Input::Kind::mouse) {
@@ -504,6 +512,7 @@ void App::handle_key(int key, const std::string& text) {
     }
     switch (mode_) {
     case Mode::names:
+    case Mode::replay:
         return;
     case Mode::animating:
         if (text == "x")
@@ -680,11 +689,13 @@ int App::run() {
                 shown_balls_ = trajectory_->sample(t);
             }
         }
-        if (computer_to_act())
+        if (replaying_)
+            replay_step();
+        else if (computer_to_act())
             computer_turn();
         term_.draw(frame(w, h));
-        const bool moving =
-            mode_ == Mode::animating || (mode_ == Mode::aiming && time_power_) || computer_to_act();
+        const bool moving = mode_ == Mode::animating || (mode_ == Mode::aiming && time_power_) ||
+                            computer_to_act() || (replaying_ && !paused_);
         Input in = term_.read(moving ? frame_ms : 500);
         // Drain what has queued up so that a fast mouse does not lag behind.
         while (in.kind != Input::Kind::none && running_) {
@@ -699,6 +710,109 @@ int App::run() {
     if (mode_ != Mode::names)
         save();
     return 0;
+}
+
+void App::start_replay(const GameRecord& record) {
+    replaying_ = true;
+    record_ = record;
+    for (int p = 0; p < 2; ++p) {
+        names_[p] = record.names[p];
+        computers_[p].reset();
+    }
+    entry_player_ = 0;
+    rewind_to(0);
+}
+
+void App::rewind_to(std::size_t action) {
+    // Rebuild the game from the start without animation, up to (not including) `action`.
+    game_ = Game(record_.game, table_, params_, record_.breaker, record_.seed);
+    pocketed_by_[0].clear();
+    pocketed_by_[1].clear();
+    next_action_ = 0;
+    while (next_action_ < action && next_action_ < record_.actions.size()) {
+        const RecordedAction& a = record_.actions[next_action_++];
+        if (a.kind == RecordedAction::Kind::place)
+            game_.place_cue_ball(a.place);
+        else if (a.kind == RecordedAction::Kind::choose)
+            game_.choose(a.choice);
+        else {
+            const int shooter = game_.shooter();
+            for (const int id : game_.play(a.strike, a.call).pocketed)
+                if (id != 0)
+                    pocketed_by_[shooter - 1].push_back(id);
+        }
+    }
+    trajectory_.reset();
+    shown_balls_ = game_.balls();
+    mode_ = Mode::replay; // no aiming, no placing: the replay only shows
+    message_ = "Replay (space pauses, Left/Right step a shot, x skips, q quits)";
+}
+
+void App::replay_step() {
+    if (paused_ || mode_ == Mode::animating)
+        return;
+    while (next_action_ < record_.actions.size()) {
+        const RecordedAction& a = record_.actions[next_action_++];
+        if (a.kind == RecordedAction::Kind::place) {
+            game_.place_cue_ball(a.place);
+        } else if (a.kind == RecordedAction::Kind::choose) {
+            game_.choose(a.choice);
+        } else {
+            std::size_t shot = 0, shots = 0;
+            for (std::size_t i = 0; i < record_.actions.size(); ++i) {
+                const bool is_shot = record_.actions[i].kind == RecordedAction::Kind::shot;
+                shots += is_shot;
+                shot += is_shot && i < next_action_;
+            }
+            const std::string last = message_.starts_with("Replay") ? "" : message_;
+            play(a.strike, a.call);
+            message_ = "Replay, shot " + std::to_string(shot) + " of " + std::to_string(shots) +
+                       " (space pauses, Left/Right step, x skips, q quits)" +
+                       (last.empty() ? "" : ". Before: " + last);
+            return;
+        }
+    }
+    message_ = "Replay ended: Left steps back, q quits";
+    paused_ = true;
+}
+
+void App::handle_replay_key(const Input& in) {
+    if (in.kind == Input::Kind::mouse) {
+        if (in.clicked && mode_ == Mode::animating)
+            shot_start_ -= std::chrono::hours(1);
+        return;
+    }
+    if (in.text == "q") {
+        running_ = false;
+    } else if (in.text == " ") {
+        paused_ = !paused_;
+    } else if (in.text == "x" && mode_ == Mode::animating) {
+        shot_start_ -= std::chrono::hours(1);
+    } else if (in.key == KEY_LEFT || in.key == KEY_RIGHT) {
+        // Step a whole shot: back to the start of the previous one, or on past the next.
+        std::size_t shot_starts = 0, target = 0;
+        for (std::size_t i = 0; i < record_.actions.size(); ++i) {
+            if (record_.actions[i].kind != RecordedAction::Kind::shot)
+                continue;
+            if (i + 1 <= next_action_ - (mode_ == Mode::animating ? 1 : 0))
+                shot_starts = i + 1;
+        }
+        if (in.key == KEY_LEFT) {
+            target = 0;
+            for (std::size_t i = 0; i + 1 < shot_starts; ++i)
+                if (record_.actions[i].kind == RecordedAction::Kind::shot)
+                    target = i + 1;
+        } else {
+            target = shot_starts;
+            for (std::size_t i = shot_starts; i < record_.actions.size(); ++i)
+                if (record_.actions[i].kind == RecordedAction::Kind::shot) {
+                    target = i + 1;
+                    break;
+                }
+        }
+        rewind_to(target);
+        paused_ = true;
+    }
 }
 
 void App::resume(const GameRecord& record, Game game) {

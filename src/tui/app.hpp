@@ -25,11 +25,13 @@ public:
     int run();
     /// Continues a saved game: `game` is `record` replayed.
     void resume(const GameRecord& record, Game game);
+    /// Plays a saved game back instead of playing: space pauses, Left/Right step a shot.
+    void start_replay(const GameRecord& record);
     /// Shows a line on the message line (for news from before the game started).
     void tell(const std::string& message) { message_ = message; }
 
 private:
-    enum class Mode { names, placing, aiming, animating, choosing, game_over };
+    enum class Mode { names, placing, aiming, animating, choosing, game_over, replay };
     using Clock = std::chrono::steady_clock;
 
     void new_game(int breaker);
@@ -40,6 +42,9 @@ private:
     bool place(Vec2 spot);
     void choose(Choice choice);
     void save();
+    void rewind_to(std::size_t action);
+    void replay_step();
+    void handle_replay_key(const Input& in);
     bool computer_to_act() const;
     void seat_computer(int player, Level level);
     int actor() const;
@@ -114,6 +119,9 @@ private:
     double aim_from_ = 0;
 
     GameRecord record_; // everything done so far, as saved
+    bool replaying_ = false;
+    bool paused_ = false;
+    std::size_t next_action_ = 0; // replay: the next action of record_ to show
 
     std::string message_;
     std::vector<int> pocketed_by_[2];

@@ -91,4 +91,52 @@ int run_game(const std::vector<std::string>& args) {
     return signal != 0 ? 128 + signal : 0;
 }
 
+int run_replay(const std::vector<std::string>& args) {
+    if (args.size() != 1) {
+        std::fprintf(stderr, "usage: termpool replay FILE\n");
+        return 2;
+    }
+    const std::string& path = args[0];
+    std::string error;
+    const std::optional<std::string> text = read_whole_file(path, error);
+    if (!text) {
+        std::fprintf(stderr, "termpool: cannot read %s\n",
+                     error.empty() ? (path + ": no such file").c_str() : error.c_str());
+        return 2;
+    }
+    auto parsed = parse_record(*text);
+    std::optional<RecordError> problem;
+    if (auto* e = std::get_if<RecordError>(&parsed)) {
+        problem = *e;
+    } else if (auto replayed = replay_record(std::get<GameRecord>(parsed));
+               std::holds_alternative<RecordError>(replayed)) {
+        problem = std::get<RecordError>(replayed);
+    }
+    if (problem) {
+        std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), problem->line, problem->message.c_str());
+        return 2;
+    }
+    const GameRecord& record = std::get<GameRecord>(parsed);
+    GameOptions options;
+    options.game = record.game;
+    options.table = record.table;
+    options.friction = record.friction;
+    options.cue_ball_mass = record.cue_ball_mass;
+    options.names[0] = record.names[0];
+    options.names[1] = record.names[1];
+    int signal = 0;
+    try {
+        Terminal terminal(false, false);
+        App app(terminal, options);
+        app.start_replay(record);
+        app.run();
+        signal = Terminal::signal_number();
+    } catch (const std::exception& e) {
+        restore_terminal_modes();
+        std::fprintf(stderr, "termpool: %s\n", e.what());
+        return 1;
+    }
+    return signal != 0 ? 128 + signal : 0;
+}
+
 } // namespace termpool::tui
