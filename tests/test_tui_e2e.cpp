@@ -28,7 +28,14 @@ std::string run(const std::string& command) {
 }
 
 struct Tmux {
-    std::string socket = "termpool-e2e-" + std::to_string(getpid());
+    // A socket of its own for each session: a server that is still shutting down must not
+    // take the next one's socket with it.
+    std::string socket =
+        "termpool-e2e-" + std::to_string(getpid()) + "-" + std::to_string(next_id());
+    static int next_id() {
+        static int id = 0;
+        return ++id;
+    }
     std::string tmux(const std::string& args) const {
         return run("tmux -L " + socket + " -f /dev/null " + args + " 2>&1");
     }
