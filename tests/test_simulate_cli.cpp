@@ -580,3 +580,19 @@ TEST_CASE("replay refuses a file that is not a game, naming the line", "[cli][sa
     CHECK(run(dir, "replay").status == 2);
     CHECK(run(dir, "replay " + dir.path() + "/missing.save").status == 2);
 }
+
+TEST_CASE("a bad config file stops the game with its line", "[cli][config]") {
+    TempDir dir;
+    std::system(("mkdir -p " + dir.path() + "/termpool").c_str());
+    {
+        std::ofstream out(dir.path() + "/termpool/config");
+        out << "game = 8ball\ntable = huge\n";
+    }
+    const std::string err = dir.path() + "/e";
+    const int raw =
+        std::system(("XDG_CONFIG_HOME=" + dir.path() + " XDG_STATE_HOME=" + dir.path() + " '" +
+                     binary() + "' --player1 A --player2 B </dev/null >/dev/null 2>" + err)
+                        .c_str());
+    CHECK(WEXITSTATUS(raw) == 2);
+    CHECK(slurp(err).find("termpool/config:2: unknown table 'huge'") != std::string::npos);
+}

@@ -50,6 +50,8 @@ App::App(Terminal& terminal, const GameOptions& options)
     for (int p = 0; p < 2; ++p)
         if (options.names[p])
             names_[p] = *options.names[p];
+    time_power_ = options.timed_power;
+    show_aid_ = options.aim_aid;
     if (options.watch)
         seat_computer(1, *options.watch);
     if (options.computer)

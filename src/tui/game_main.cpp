@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "tui/app.hpp"
+#include "tui/config.hpp"
 #include "tui/options.hpp"
 #include "tui/save_file.hpp"
 
@@ -13,8 +14,20 @@
 namespace termpool::tui {
 
 int run_game(const std::vector<std::string>& args) {
+    // The config file's defaults first; the command line overrides them.
+    GameOptions defaults;
+    std::string config_error;
+    if (const auto config = read_whole_file(config_path(), config_error)) {
+        std::vector<std::string> warnings;
+        if (const auto bad = apply_config(*config, defaults, warnings)) {
+            std::fprintf(stderr, "%s:%s\n", config_path().c_str(), bad->c_str());
+            return 2;
+        }
+        for (const std::string& w : warnings)
+            std::fprintf(stderr, "termpool: warning: %s\n", w.c_str());
+    }
     std::string error;
-    const auto options = parse_game_options(args, error);
+    const auto options = parse_game_options(args, error, defaults);
     if (!options) {
         std::fprintf(stderr,
                      "termpool: %s\nusage: termpool [--player1 NAME] [--player2 NAME] "

@@ -8,8 +8,7 @@
 namespace termpool::tui {
 
 std::optional<GameOptions> parse_game_options(const std::vector<std::string>& args,
-                                              std::string& error) {
-    GameOptions o;
+                                              std::string& error, GameOptions o) {
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         auto value = [&]() -> const std::string* {
@@ -85,7 +84,7 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
         } else if (a == "--vs-computer" || a == "--watch") {
             // The level is optional: take the next word only when it names one.
             std::optional<Level>& seat = a == "--watch" ? o.watch : o.computer;
-            seat = Level::medium;
+            seat = o.default_level;
             if (i + 1 < args.size() && !args[i + 1].starts_with("--")) {
                 const auto level = parse_level(args[i + 1]);
                 if (!level) {

@@ -15,6 +15,9 @@ struct GameOptions {
     std::optional<std::string> names[2];    ///< --player1, --player2 (cleaned)
     GameType game = GameType::eight_ball;   ///< --game
     TableSize table = TableSize::nine_foot; ///< --table
+    bool timed_power = false;               ///< config power-mode: start in timed power mode
+    bool aim_aid = true;                    ///< config aim-aid: show the aiming aid
+    Level default_level = Level::medium;    ///< config level: for --vs-computer without one
     bool resume = false;                    ///< --resume: continue the last unfinished game
     bool ascii = false;                     ///< --ascii: plain ASCII and no colour
     FrictionModel friction;                 ///< --friction MODEL [K] [A]
@@ -24,7 +27,8 @@ struct GameOptions {
 };
 
 /// Parses the game's options; on error returns nothing and sets `error`.
+/// `defaults` (from the config file) are what the command line starts from.
 std::optional<GameOptions> parse_game_options(const std::vector<std::string>& args,
-                                              std::string& error);
+                                              std::string& error, GameOptions defaults = {});
 
 } // namespace termpool::tui

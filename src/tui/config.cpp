@@ -1,0 +1,97 @@
+#include "tui/config.hpp"
+
+#include <cstdlib>
+
+#include "tui/player_name.hpp"
+
+namespace termpool::tui {
+namespace {
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
+        s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+        s.remove_suffix(1);
+    return s;
+}
+
+} // namespace
+
+std::string config_path() {
+    const char* config = std::getenv("XDG_CONFIG_HOME");
+    std::string base;
+    if (config && *config) {
+        base = config;
+    } else {
+        const char* home = std::getenv("HOME");
+        base = std::string(home && *home ? home : ".") + "/.config";
+    }
+    return base + "/termpool/config";
+}
+
+std::optional<std::string> apply_config(std::string_view text, GameOptions& o,
+                                        std::vector<std::string>& warnings) {
+    int number = 0;
+    std::size_t pos = 0;
+    while (pos <= text.size()) {
+        std::size_t eol = text.find('\n', pos);
+        if (eol == std::string_view::npos)
+            eol = text.size();
+        std::string_view line = text.substr(pos, eol - pos);
+        pos = eol + 1;
+        ++number;
+        if (const std::size_t hash = line.find('#'); hash != std::string_view::npos)
+            line = line.substr(0, hash);
+        line = trim(line);
+        if (line.empty())
+            continue;
+        const std::size_t eq = line.find('=');
+        auto fail = [&](const std::string& what) { return std::to_string(number) + ": " + what; };
+        if (eq == std::string_view::npos)
+            return fail("expected 'key = value'");
+        const std::string key(trim(line.substr(0, eq)));
+        const std::string value(trim(line.substr(eq + 1)));
+        if (key == "player1" || key == "player2") {
+            std::string why;
+            const auto name = clean_player_name(value, why);
+            if (!why.empty())
+                return fail(key + ": " + why);
+            if (name)
+                o.names[key == "player1" ? 0 : 1] = name;
+        } else if (key == "game") {
+            const auto g = parse_game_type(value);
+            if (!g)
+                return fail("unknown game '" + value + "' (8ball, 8ball-bar or 9ball)");
+            o.game = *g;
+        } else if (key == "table") {
+            bool found = false;
+            for (const TableSize t :
+                 {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot})
+                if (value == table_size_name(t))
+                    o.table = t, found = true;
+            if (!found)
+                return fail("unknown table '" + value + "' (7ft, 8ft or 9ft)");
+        } else if (key == "power-mode") {
+            if (value != "distance" && value != "timed")
+                return fail("power-mode is distance or timed, not '" + value + "'");
+            o.timed_power = value == "timed";
+        } else if (key == "aim-aid") {
+            if (value != "on" && value != "off")
+                return fail("aim-aid is on or off, not '" + value + "'");
+            o.aim_aid = value == "on";
+        } else if (key == "level") {
+            const auto level = parse_level(value);
+            if (!level)
+                return fail("unknown level '" + value + "' (easy, medium, hard or pro)");
+            o.default_level = *level;
+        } else {
+            warnings.push_back(config_path() + ":" + std::to_string(number) + ": unknown key '" +
+                               key + "' ignored");
+        }
+        if (eol == text.size())
+            break;
+    }
+    return std::nullopt;
+}
+
+} // namespace termpool::tui
