@@ -77,7 +77,8 @@ endif
 # ---------------------------------------------------------------------------
 
 .DEFAULT_GOAL := all
-.PHONY: all run test check bench deps ensure-deps install uninstall clean format format-check help
+.PHONY: all run test check bench deps ensure-deps install uninstall clean format format-check help \
+        fuzz fuzz-deps fuzz-run
 .DELETE_ON_ERROR:
 
 all: $(BIN)
@@ -134,6 +135,44 @@ deps:
 	  $${SUDO}apt-get install -y $(DEB_PACKAGES); \
 	fi
 
+# ---------------------------------------------------------------------------
+# Fuzzing: libFuzzer targets (tests/fuzz/*.cpp) built with clang, ASan and UBSan.
+# `make fuzz` builds them; `make fuzz-run FUZZ_SECONDS=600` runs each that long on its corpus.
+
+FUZZ_CXX      ?= clang++
+FUZZ_SECONDS  ?= 600
+FUZZ_DIR      := build/fuzz
+FUZZ_FLAGS    := -std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -Iinclude -Isrc
+FUZZ_LIB_SRCS := $(wildcard src/core/*.cpp) src/cli/scenario.cpp src/cli/numbers.cpp \
+                 src/tui/config.cpp src/tui/player_name.cpp src/tui/text_width.cpp \
+                 src/tui/options.cpp
+FUZZ_LIB_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_LIB_SRCS))
+FUZZ_TARGETS  := $(patsubst tests/fuzz/%.cpp,$(FUZZ_DIR)/%,$(wildcard tests/fuzz/*.cpp))
+
+fuzz: fuzz-deps $(FUZZ_TARGETS)
+
+fuzz-deps:
+	@if ! command -v $(FUZZ_CXX) >/dev/null 2>&1; then \
+	  if [ "$$(id -u)" -eq 0 ]; then SUDO=; else SUDO="sudo "; fi; \
+	  echo "$${SUDO}apt-get install -y clang libclang-rt-dev" && \
+	  $${SUDO}apt-get install -y clang libclang-rt-dev; \
+	fi
+
+$(FUZZ_DIR)/%.o: src/%.cpp
+	@mkdir -p $(dir $@)
+	$(FUZZ_CXX) $(FUZZ_FLAGS) -MMD -MP -c $< -o $@
+
+$(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.cpp $(FUZZ_LIB_OBJS)
+	$(FUZZ_CXX) $(FUZZ_FLAGS) -fsanitize=fuzzer $^ -o $@
+
+fuzz-run: fuzz
+	@for t in $(FUZZ_TARGETS); do \
+	  mkdir -p $$t.corpus; echo "+ $$t -max_total_time=$(FUZZ_SECONDS)"; \
+	  $$t -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 $$t.corpus || exit 1; \
+	done
+
+-include $(FUZZ_LIB_OBJS:.o=.d)
+
 install: $(BIN)
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man6
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/termpool
@@ -164,3 +203,5 @@ help:
 	@echo "  clean         remove build/"
 	@echo "  format        clang-format -i all sources"
 	@echo "  format-check  fail if any source is not clang-formatted"
+	@echo "  fuzz          build the libFuzzer targets in build/fuzz (clang)"
+	@echo "  fuzz-run      run each fuzz target FUZZ_SECONDS (600) on its corpus"
