@@ -225,10 +225,12 @@ void App::save() {
 }
 
 void App::play(const Strike& strike, const ShotCall& call) {
-    RecordedAction action;
-    action.strike = strike;
-    action.call = call;
-    record_.actions.push_back(action);
+    if (!replaying_) {
+        RecordedAction action;
+        action.strike = strike;
+        action.call = call;
+        record_.actions.push_back(action);
+    }
     call_ = call;
     shooter_before_ = game_.shooter();
     Trajectory trajectory(params_, game_.balls().size());
@@ -754,7 +756,7 @@ void App::replay_step() {
     if (paused_ || mode_ == Mode::animating)
         return;
     while (next_action_ < record_.actions.size()) {
-        const RecordedAction& a = record_.actions[next_action_++];
+        const RecordedAction a = record_.actions[next_action_++]; // a copy: play() may record
         if (a.kind == RecordedAction::Kind::place) {
             game_.place_cue_ball(a.place);
         } else if (a.kind == RecordedAction::Kind::choose) {
