@@ -7,6 +7,8 @@
 /// 4 (L,W), 5 (L/2,W), 6 (0,W).
 
 #include <array>
+#include <optional>
+#include <string_view>
 #include <termpool/vec.hpp>
 
 namespace termpool {
@@ -75,6 +77,9 @@ Table make_table(TableSize size, double ball_radius = 0.028575, const PocketSpec
 
 /// Name of a table size as used on the command line ("9ft").
 const char* table_size_name(TableSize size);
+
+/// Parses "7ft", "8ft" or "9ft"; nothing for anything else.
+std::optional<TableSize> parse_table_size(std::string_view name);
 
 /// True when a ball of radius `radius` centred at `p` lies on the playing surface.
 bool on_playing_surface(const Table& table, Vec2 p, double radius);

@@ -258,12 +258,10 @@ int experiment_command(const std::vector<std::string>& args) {
             csv = true;
         } else if (args[i] == "--table" && args[0] == "friction" && i + 1 < args.size()) {
             const std::string& v = args[++i];
-            bool found = false;
-            for (const TableSize t :
-                 {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot})
-                if (v == table_size_name(t))
-                    size = t, found = true;
-            if (!found) {
+            const std::optional<TableSize> parsed = parse_table_size(v);
+            if (parsed)
+                size = *parsed;
+            else {
                 std::fprintf(stderr, "termpool experiment: unknown table '%s'\n%s", v.c_str(),
                              usage);
                 return 2;

@@ -115,16 +115,10 @@ Problem parse_table(const Line& line, Draft& draft) {
         return p;
     if (Problem p = once(draft, "table", line))
         return p;
-    const std::string_view size = line.arg(0);
-    if (size == "9ft") {
-        draft.size = TableSize::nine_foot;
-    } else if (size == "8ft") {
-        draft.size = TableSize::eight_foot;
-    } else if (size == "7ft") {
-        draft.size = TableSize::seven_foot;
-    } else {
-        return "unknown table size " + quoted(size) + " (expected 9ft, 8ft or 7ft)";
-    }
+    const std::optional<TableSize> size = parse_table_size(line.arg(0));
+    if (!size)
+        return "unknown table size " + quoted(line.arg(0)) + " (expected 9ft, 8ft or 7ft)";
+    draft.size = *size;
     return {};
 }
 

@@ -44,6 +44,13 @@ const char* event_kind_name(EventKind kind) {
     return "?";
 }
 
+std::optional<TableSize> parse_table_size(std::string_view name) {
+    for (const TableSize t : {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot})
+        if (name == table_size_name(t))
+            return t;
+    return std::nullopt;
+}
+
 const char* table_size_name(TableSize size) {
     switch (size) {
     case TableSize::seven_foot:

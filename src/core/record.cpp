@@ -170,13 +170,10 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
                 return fail("unknown game '" + std::string(f[1]) + "'");
             r.game = *g;
         } else if (key == "table" && want(2)) {
-            bool found = false;
-            for (const TableSize t :
-                 {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot})
-                if (f[1] == table_size_name(t))
-                    r.table = t, found = true;
-            if (!found)
+            const std::optional<TableSize> size = parse_table_size(f[1]);
+            if (!size)
                 return fail("unknown table '" + std::string(f[1]) + "'");
+            r.table = *size;
         } else if (key == "seed" && want(2)) {
             const auto s = to_u64(f[1]);
             if (!s)

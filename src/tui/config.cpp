@@ -64,13 +64,10 @@ std::optional<std::string> apply_config(std::string_view text, GameOptions& o,
                 return fail("unknown game '" + value + "' (8ball, 8ball-bar or 9ball)");
             o.game = *g;
         } else if (key == "table") {
-            bool found = false;
-            for (const TableSize t :
-                 {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot})
-                if (value == table_size_name(t))
-                    o.table = t, found = true;
-            if (!found)
+            const std::optional<TableSize> size = parse_table_size(value);
+            if (!size)
                 return fail("unknown table '" + value + "' (7ft, 8ft or 9ft)");
+            o.table = *size;
         } else if (key == "power-mode") {
             if (value != "distance" && value != "timed")
                 return fail("power-mode is distance or timed, not '" + value + "'");

@@ -119,18 +119,12 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
             const std::string* v = value();
             if (!v)
                 return std::nullopt;
-            bool found = false;
-            for (const TableSize t :
-                 {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot}) {
-                if (*v == table_size_name(t)) {
-                    o.table = t;
-                    found = true;
-                }
-            }
-            if (!found) {
+            const std::optional<TableSize> size = parse_table_size(*v);
+            if (!size) {
                 error = "unknown table '" + *v + "' (7ft, 8ft or 9ft)";
                 return std::nullopt;
             }
+            o.table = *size;
         } else {
             error = "unknown option '" + a + "'";
             return std::nullopt;
