@@ -74,6 +74,23 @@ std::string mouse_motion(int x, int y) {
     return "-H 1b 5b 4d " + hex(32 + 35) + " " + hex(33 + x) + " " + hex(33 + y);
 }
 
+// The binary under test.
+std::string termpool_binary() {
+    const char* bin = std::getenv("TERMPOOL_BIN");
+    return bin ? bin : "build/termpool";
+}
+
+// What the pane's shell wrote to `file` as the game's exit status (waits up to 5 s).
+std::string exit_status(const std::string& file) {
+    std::string status;
+    for (int i = 0; i < 100 && status.empty(); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::ifstream in(file);
+        std::getline(in, status);
+    }
+    return status;
+}
+
 } // namespace
 
 TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]") {
@@ -81,8 +98,7 @@ TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]
         WARN("tmux is missing: the end-to-end test of the game is skipped");
         return;
     }
-    const char* bin = std::getenv("TERMPOOL_BIN");
-    const std::string binary = bin ? bin : "build/termpool";
+    const std::string binary = termpool_binary();
     char dir_template[] = "/tmp/termpool-e2e-XXXXXX";
     const std::string dir = mkdtemp(dir_template);
     const std::string status_file = dir + "/status";
@@ -131,12 +147,7 @@ TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]
     t.keys("q");
     REQUIRE(t.wait_for_text("Quit"));
     t.keys("y");
-    std::string status;
-    for (int i = 0; i < 100 && status.empty(); ++i) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        std::ifstream in(status_file);
-        std::getline(in, status);
-    }
+    const std::string status = exit_status(status_file);
     CHECK(status == "0");
     CHECK(t.flag("mouse_any_flag") == "0");
     CHECK(t.flag("mouse_button_flag") == "0");
@@ -149,8 +160,7 @@ TEST_CASE("SIGHUP during a shot leaves a save that resumes", "[tui][e2e]") {
         WARN("tmux is missing: the end-to-end test of saves is skipped");
         return;
     }
-    const char* bin = std::getenv("TERMPOOL_BIN");
-    const std::string binary = bin ? bin : "build/termpool";
+    const std::string binary = termpool_binary();
     char dir_template[] = "/tmp/termpool-save-XXXXXX";
     const std::string dir = mkdtemp(dir_template);
     const std::string status_file = dir + "/status";
@@ -168,12 +178,7 @@ TEST_CASE("SIGHUP during a shot leaves a save that resumes", "[tui][e2e]") {
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     const std::string pid = run("tmux -L " + t.socket + " display-message -p -t e2e '#{pane_pid}'");
     run("pkill -HUP -P " + pid + " 2>/dev/null");
-    std::string status;
-    for (int i = 0; i < 100 && status.empty(); ++i) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        std::ifstream in(status_file);
-        std::getline(in, status);
-    }
+    const std::string status = exit_status(status_file);
     CHECK(status == "129");
     std::ifstream saved(save);
     std::string text((std::istreambuf_iterator<char>(saved)), std::istreambuf_iterator<char>());
@@ -192,8 +197,7 @@ TEST_CASE("a saved game plays back with replay", "[tui][e2e]") {
         WARN("tmux is missing: the end-to-end test of replays is skipped");
         return;
     }
-    const char* bin = std::getenv("TERMPOOL_BIN");
-    const std::string binary = bin ? bin : "build/termpool";
+    const std::string binary = termpool_binary();
     char dir_template[] = "/tmp/termpool-replay-XXXXXX";
     const std::string dir = mkdtemp(dir_template);
     {
@@ -210,12 +214,7 @@ TEST_CASE("a saved game plays back with replay", "[tui][e2e]") {
     t.keys("Right");
     CHECK(t.wait_for_text("Ann"));
     t.keys("q");
-    std::string status;
-    for (int i = 0; i < 100 && status.empty(); ++i) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        std::ifstream in(status_file);
-        std::getline(in, status);
-    }
+    const std::string status = exit_status(status_file);
     CHECK(status == "0");
     std::system(("rm -rf " + dir).c_str());
 }

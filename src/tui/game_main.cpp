@@ -1,7 +1,9 @@
 #include "tui/game_main.hpp"
 
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
+#include <variant>
 
 #include "tui/app.hpp"
 #include "tui/config.hpp"
@@ -12,6 +14,57 @@
 #include <termpool/record.hpp>
 
 namespace termpool::tui {
+namespace {
+
+// A saved game, read and replayed to where it stands.
+struct LoadedGame {
+    GameRecord record;
+    Game game;
+};
+
+std::variant<LoadedGame, RecordError> load_game(const std::string& text) {
+    auto parsed = parse_record(text);
+    if (auto* problem = std::get_if<RecordError>(&parsed))
+        return *problem;
+    GameRecord& record = std::get<GameRecord>(parsed);
+    auto replayed = replay_record(record);
+    if (auto* problem = std::get_if<RecordError>(&replayed))
+        return *problem;
+    return LoadedGame{std::move(record), std::move(std::get<Game>(replayed))};
+}
+
+// The options a record was played with; how it is shown (ASCII, colour) stays as given.
+GameOptions options_from(const GameRecord& record, GameOptions options) {
+    options.game = record.game;
+    options.table = record.table;
+    options.friction = record.friction;
+    options.cue_ball_mass = record.cue_ball_mass;
+    options.names[0] = record.names[0];
+    options.names[1] = record.names[1];
+    options.watch.reset();
+    options.computer.reset();
+    return options;
+}
+
+// Runs the game in the terminal after `setup` has prepared it. The exit status is 1 without a
+// usable terminal, and what a signal would give after one ended the game.
+int in_terminal(const GameOptions& options, const std::function<void(App&)>& setup) {
+    int signal = 0;
+    try {
+        Terminal terminal(options.ascii, options.ascii);
+        App app(terminal, options);
+        setup(app);
+        app.run();
+        signal = Terminal::signal_number();
+    } catch (const std::exception& e) {
+        restore_terminal_modes();
+        std::fprintf(stderr, "termpool: %s\n", e.what());
+        return 1;
+    }
+    return signal != 0 ? 128 + signal : 0;
+}
+
+} // namespace
 
 int run_game(const std::vector<std::string>& args) {
     // The config file's defaults first; the command line overrides them.
@@ -41,24 +94,11 @@ int run_game(const std::vector<std::string>& args) {
     const std::string path = save_path();
     std::string read_error;
     const std::optional<std::string> saved = read_whole_file(path, read_error);
-    std::optional<GameRecord> record;
-    std::optional<Game> resumed;
+    std::optional<LoadedGame> loaded;
     std::string notice;
     if (saved) {
-        auto parsed = parse_record(*saved);
-        std::optional<RecordError> problem;
-        if (auto* e = std::get_if<RecordError>(&parsed)) {
-            problem = *e;
-        } else {
-            auto replayed = replay_record(std::get<GameRecord>(parsed));
-            if (auto* e2 = std::get_if<RecordError>(&replayed))
-                problem = *e2;
-            else if (options->resume) {
-                record = std::get<GameRecord>(parsed);
-                resumed.emplace(std::move(std::get<Game>(replayed)));
-            }
-        }
-        if (problem) {
+        auto result = load_game(*saved);
+        if (auto* problem = std::get_if<RecordError>(&result)) {
             std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), problem->line,
                          problem->message.c_str());
             std::rename(path.c_str(), (path + ".bad").c_str());
@@ -67,6 +107,8 @@ int run_game(const std::vector<std::string>& args) {
                 return 2;
             }
             notice = "The old save could not be read; it is kept as " + path + ".bad";
+        } else if (options->resume) {
+            loaded.emplace(std::move(std::get<LoadedGame>(result)));
         }
     } else if (options->resume) {
         std::fprintf(stderr, "termpool: no saved game to resume (%s)\n",
@@ -74,34 +116,13 @@ int run_game(const std::vector<std::string>& args) {
         return 1;
     }
 
-    GameOptions chosen = *options;
-    if (record) {
-        chosen.game = record->game;
-        chosen.table = record->table;
-        chosen.friction = record->friction;
-        chosen.cue_ball_mass = record->cue_ball_mass;
-        chosen.names[0] = record->names[0];
-        chosen.names[1] = record->names[1];
-        chosen.watch.reset();
-        chosen.computer.reset();
-    }
-    int signal = 0;
-    try {
-        Terminal terminal(options->ascii, options->ascii);
-        App app(terminal, chosen);
-        if (record)
-            app.resume(*record, std::move(*resumed));
-        else if (!notice.empty())
+    if (loaded)
+        return in_terminal(options_from(loaded->record, *options),
+                           [&](App& app) { app.resume(loaded->record, std::move(loaded->game)); });
+    return in_terminal(*options, [&](App& app) {
+        if (!notice.empty())
             app.tell(notice);
-        app.run();
-        signal = Terminal::signal_number();
-    } catch (const std::exception& e) {
-        restore_terminal_modes();
-        std::fprintf(stderr, "termpool: %s\n", e.what());
-        return 1;
-    }
-    // Leave as a signal would, now that the terminal is restored.
-    return signal != 0 ? 128 + signal : 0;
+    });
 }
 
 int run_replay(const std::vector<std::string>& args) {
@@ -117,39 +138,14 @@ int run_replay(const std::vector<std::string>& args) {
                      error.empty() ? (path + ": no such file").c_str() : error.c_str());
         return 2;
     }
-    auto parsed = parse_record(*text);
-    std::optional<RecordError> problem;
-    if (auto* e = std::get_if<RecordError>(&parsed)) {
-        problem = *e;
-    } else if (auto replayed = replay_record(std::get<GameRecord>(parsed));
-               std::holds_alternative<RecordError>(replayed)) {
-        problem = std::get<RecordError>(replayed);
-    }
-    if (problem) {
+    auto result = load_game(*text);
+    if (auto* problem = std::get_if<RecordError>(&result)) {
         std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), problem->line, problem->message.c_str());
         return 2;
     }
-    const GameRecord& record = std::get<GameRecord>(parsed);
-    GameOptions options;
-    options.game = record.game;
-    options.table = record.table;
-    options.friction = record.friction;
-    options.cue_ball_mass = record.cue_ball_mass;
-    options.names[0] = record.names[0];
-    options.names[1] = record.names[1];
-    int signal = 0;
-    try {
-        Terminal terminal(false, false);
-        App app(terminal, options);
-        app.start_replay(record);
-        app.run();
-        signal = Terminal::signal_number();
-    } catch (const std::exception& e) {
-        restore_terminal_modes();
-        std::fprintf(stderr, "termpool: %s\n", e.what());
-        return 1;
-    }
-    return signal != 0 ? 128 + signal : 0;
+    const GameRecord& record = std::get<LoadedGame>(result).record;
+    return in_terminal(options_from(record, GameOptions{}),
+                       [&](App& app) { app.start_replay(record); });
 }
 
 } // namespace termpool::tui
