@@ -83,10 +83,12 @@ struct World::Impl {
         boundary.resize(balls.size());
         pair_time.assign(balls.size() * balls.size(), infinity);
         row_min.assign(balls.size(), infinity);
-        for (std::size_t i = 0; i < balls.size(); ++i)
+        for (std::size_t i = 0; i < balls.size(); ++i) {
             set_slot(i, balls[i]);
+            refresh_boundary(i);
+        }
         for (std::size_t i = 0; i < slots.size(); ++i)
-            refresh(i, i);
+            refresh_pairs(i, i);
     }
 
     std::size_t count() const { return slots.size(); }
@@ -143,10 +145,32 @@ struct World::Impl {
         }
     }
 
-    // Recomputes everything that depends on the motion of ball i; `other` is a ball that changed
-    // in the same event, whose pair with i is computed only once.
-    void refresh(std::size_t i, std::size_t other) {
+    // Finds ball i's next contact with the table, then shrinks its box to the path up to that
+    // contact: the ball is recomputed there anyway, so pairs need not look further, and a fast
+    // ball's box then spans the stretch it really travels rather than its whole slide.
+    void refresh_boundary(std::size_t i) {
         boundary[i] = next_boundary(i);
+        Slot& s = slots[i];
+        if (!moves(s.ball) || !(boundary[i].time < s.end))
+            return;
+        if (seed_model()) {
+            const Ball last = core::advance(s.ball, boundary[i].time - s.start, params);
+            s.box_min = {std::min(s.ball.position.x, last.position.x),
+                         std::min(s.ball.position.y, last.position.y)};
+            s.box_max = {std::max(s.ball.position.x, last.position.x),
+                         std::max(s.ball.position.y, last.position.y)};
+        } else {
+            const double duration = boundary[i].time - s.start;
+            extend_range(s.ball.position.x, s.ball.velocity.x, s.acceleration.x, duration,
+                         s.box_min.x, s.box_max.x);
+            extend_range(s.ball.position.y, s.ball.velocity.y, s.acceleration.y, duration,
+                         s.box_min.y, s.box_max.y);
+        }
+    }
+
+    // Recomputes the pair contacts of ball i, whose boundary is already up to date; `other` is a
+    // ball that changed in the same event, whose pair with i is computed only once.
+    void refresh_pairs(std::size_t i, std::size_t other) {
         for (std::size_t k = 0; k < count(); ++k) {
             if (k == i || (k == other && k < i))
                 continue;
@@ -166,7 +190,7 @@ struct World::Impl {
         const double diameter = 2 * params.ball_radius;
         if (!boxes_within(a.box_min, a.box_max, b.box_min, b.box_max, diameter))
             return infinity;
-        const double horizon = std::min(a.end, b.end) - now;
+        const double horizon = std::min(boundary[i].time, boundary[k].time) - now;
         if (seed_model())
             return seed_pair_contact(i, k, horizon);
         const Path pa = path_now(i), pb = path_now(k);
@@ -351,8 +375,10 @@ struct World::Impl {
         core::resolve_ball_ball(a, b, params);
         set_slot(i, a);
         set_slot(j, b);
-        refresh(i, j);
-        refresh(j, i);
+        refresh_boundary(i);
+        refresh_boundary(j);
+        refresh_pairs(i, j);
+        refresh_pairs(j, i);
         return {now, EventKind::ball_ball, std::min(a.id, b.id), std::max(a.id, b.id)};
     }
 
@@ -396,14 +422,16 @@ struct World::Impl {
             break;
         }
         set_slot(i, b);
-        refresh(i, i);
+        refresh_boundary(i);
+        refresh_pairs(i, i);
         return event;
     }
 
     void strike(const Strike& strike, std::size_t cue) {
         Ball b = strike_cue_ball(state_now(cue), strike, params);
         set_slot(cue, b);
-        refresh(cue, cue);
+        refresh_boundary(cue);
+        refresh_pairs(cue, cue);
         if (moves(b))
             pending.push_back(
                 {now, b.state == MotionState::rolling ? EventKind::rolling : EventKind::sliding,
