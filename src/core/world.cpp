@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <termpool/simulator.hpp>
 
@@ -32,12 +33,11 @@ struct Slot {
     double start = 0;
     double end = infinity; // next transition
     Vec2 acceleration;     // physical model: constant over the piece
-    Vec2 box_min, box_max; // box of the centre's path over the piece
+    Vec2 box_min, box_max; // box of the centre's path over the piece, up to its table contact
 };
 
-struct Box {
-    Vec2 min, max;
-};
+// Whether a ball takes part in the pair search: gone, at rest (or spinning in place), or moving.
+enum class Presence : std::uint8_t { pocketed, still, moving };
 
 // Range of x0 + v t + a t^2 / 2 over [0, T].
 void extend_range(double x0, double v, double a, double T, double& lo, double& hi) {
@@ -67,6 +67,10 @@ struct World::Impl {
     PhysicsParams params;
     std::vector<Slot> slots;
     std::vector<BoundaryEvent> boundary;
+    // Copies of each slot's box and motion, kept in short arrays of their own so that the pair
+    // search over all balls culls without touching the slots.
+    std::vector<Vec2> box_min, box_max;
+    std::vector<Presence> presence;
     std::vector<double> pair_time; // [i * n + j], i < j
     // Earliest pair contact in each row of pair_time, so that finding the next event scans a
     // column of n values rather than all n^2 / 2 pairs.
@@ -81,6 +85,9 @@ struct World::Impl {
         : table(t), params(p), trajectory(p, balls.size()) {
         slots.resize(balls.size());
         boundary.resize(balls.size());
+        box_min.resize(balls.size());
+        box_max.resize(balls.size());
+        presence.resize(balls.size());
         pair_time.assign(balls.size() * balls.size(), infinity);
         row_min.assign(balls.size(), infinity);
         for (std::size_t i = 0; i < balls.size(); ++i) {
@@ -151,16 +158,24 @@ struct World::Impl {
     void refresh_boundary(std::size_t i) {
         boundary[i] = next_boundary(i);
         Slot& s = slots[i];
-        if (!moves(s.ball) || !(boundary[i].time < s.end))
-            return;
+        if (moves(s.ball) && boundary[i].time < s.end)
+            clip_box(s, boundary[i].time);
+        box_min[i] = s.box_min;
+        box_max[i] = s.box_max;
+        presence[i] = s.ball.state == MotionState::pocketed ? Presence::pocketed
+                      : moves(s.ball)                       ? Presence::moving
+                                                            : Presence::still;
+    }
+
+    void clip_box(Slot& s, double until) const {
         if (seed_model()) {
-            const Ball last = core::advance(s.ball, boundary[i].time - s.start, params);
+            const Ball last = core::advance(s.ball, until - s.start, params);
             s.box_min = {std::min(s.ball.position.x, last.position.x),
                          std::min(s.ball.position.y, last.position.y)};
             s.box_max = {std::max(s.ball.position.x, last.position.x),
                          std::max(s.ball.position.y, last.position.y)};
         } else {
-            const double duration = boundary[i].time - s.start;
+            const double duration = until - s.start;
             extend_range(s.ball.position.x, s.ball.velocity.x, s.acceleration.x, duration,
                          s.box_min.x, s.box_max.x);
             extend_range(s.ball.position.y, s.ball.velocity.y, s.acceleration.y, duration,
@@ -171,25 +186,26 @@ struct World::Impl {
     // Recomputes the pair contacts of ball i, whose boundary is already up to date; `other` is a
     // ball that changed in the same event, whose pair with i is computed only once.
     void refresh_pairs(std::size_t i, std::size_t other) {
+        const double diameter = 2 * params.ball_radius;
+        const Presence mine = presence[i];
+        const Vec2 lo = box_min[i] - Vec2{diameter, diameter};
+        const Vec2 hi = box_max[i] + Vec2{diameter, diameter};
         for (std::size_t k = 0; k < count(); ++k) {
             if (k == i || (k == other && k < i))
                 continue;
-            set_pair_time(i, k, now + pair_contact(i, k));
+            const Presence theirs = presence[k];
+            const bool candidate = mine != Presence::pocketed && theirs != Presence::pocketed &&
+                                   (mine == Presence::moving || theirs == Presence::moving) &&
+                                   lo.x <= box_max[k].x && box_min[k].x <= hi.x &&
+                                   lo.y <= box_max[k].y && box_min[k].y <= hi.y;
+            set_pair_time(i, k, candidate ? now + pair_contact(i, k) : infinity);
         }
     }
 
     // ---- contacts between two balls -------------------------------------------------------
 
     double pair_contact(std::size_t i, std::size_t k) const {
-        const Slot& a = slots[i];
-        const Slot& b = slots[k];
-        if (a.ball.state == MotionState::pocketed || b.ball.state == MotionState::pocketed)
-            return infinity;
-        if (!moves(a.ball) && !moves(b.ball))
-            return infinity;
         const double diameter = 2 * params.ball_radius;
-        if (!boxes_within(a.box_min, a.box_max, b.box_min, b.box_max, diameter))
-            return infinity;
         const double horizon = std::min(boundary[i].time, boundary[k].time) - now;
         if (seed_model())
             return seed_pair_contact(i, k, horizon);
