@@ -71,9 +71,11 @@ struct World::Impl {
     // search over all balls culls without touching the slots.
     std::vector<Vec2> box_min, box_max;
     std::vector<Presence> presence;
-    std::vector<double> pair_time; // [i * n + j], i < j
-    // Earliest pair contact in each row of pair_time, so that finding the next event scans a
-    // column of n values rather than all n^2 / 2 pairs.
+    // Contact time of every pair, kept in both orders ([i * n + j] == [j * n + i]) so that a
+    // ball's row holds all its pairs.
+    std::vector<double> pair_time;
+    // Earliest contact in each ball's row, so that finding the next event scans n values rather
+    // than all n^2 / 2 pairs.
     std::vector<double> row_min;
     double now = 0;
     std::size_t events = 0;
@@ -138,17 +140,16 @@ struct World::Impl {
             trajectory.add(i, now, ball);
     }
 
-    void set_pair_time(std::size_t i, std::size_t j, double time) {
-        if (j < i)
-            std::swap(i, j);
-        double& slot = pair_time[i * count() + j];
+    // Stores the contact time of pair (i, k) in row k, keeping row k's minimum.
+    void set_mirror_time(std::size_t k, std::size_t i, double time) {
+        double& slot = pair_time[k * count() + i];
         const double old = slot;
         slot = time;
-        if (time <= row_min[i]) {
-            row_min[i] = time;
-        } else if (old == row_min[i]) {
-            row_min[i] = *std::min_element(pair_time.begin() + i * count() + i + 1,
-                                           pair_time.begin() + (i + 1) * count());
+        if (time <= row_min[k]) {
+            row_min[k] = time;
+        } else if (old == row_min[k]) {
+            row_min[k] = *std::min_element(pair_time.begin() + k * count(),
+                                           pair_time.begin() + (k + 1) * count());
         }
     }
 
@@ -183,23 +184,34 @@ struct World::Impl {
         }
     }
 
-    // Recomputes the pair contacts of ball i, whose boundary is already up to date; `other` is a
-    // ball that changed in the same event, whose pair with i is computed only once.
-    void refresh_pairs(std::size_t i, std::size_t other) {
+    // Recomputes the pair contacts of ball i, whose boundary is already up to date. `done` is a
+    // ball that changed in the same event and was refreshed just before: their pair is current.
+    void refresh_pairs(std::size_t i, std::size_t done) {
         const double diameter = 2 * params.ball_radius;
         const Presence mine = presence[i];
         const Vec2 lo = box_min[i] - Vec2{diameter, diameter};
         const Vec2 hi = box_max[i] + Vec2{diameter, diameter};
+        const bool present = mine != Presence::pocketed;
+        const bool moving = mine == Presence::moving;
+        double* row = &pair_time[i * count()];
+        double earliest = infinity;
         for (std::size_t k = 0; k < count(); ++k) {
-            if (k == i || (k == other && k < i))
+            if (k == i)
                 continue;
-            const Presence theirs = presence[k];
-            const bool candidate = mine != Presence::pocketed && theirs != Presence::pocketed &&
-                                   (mine == Presence::moving || theirs == Presence::moving) &&
-                                   lo.x <= box_max[k].x && box_min[k].x <= hi.x &&
-                                   lo.y <= box_max[k].y && box_min[k].y <= hi.y;
-            set_pair_time(i, k, candidate ? now + pair_contact(i, k) : infinity);
+            if (k != done) {
+                // Bitwise & rather than &&: one branch per ball instead of six unpredictable ones.
+                const Presence theirs = presence[k];
+                const bool candidate = present & (theirs != Presence::pocketed) &
+                                       (moving | (theirs == Presence::moving)) &
+                                       (lo.x <= box_max[k].x) & (box_min[k].x <= hi.x) &
+                                       (lo.y <= box_max[k].y) & (box_min[k].y <= hi.y);
+                const double time = candidate ? now + pair_contact(i, k) : infinity;
+                row[k] = time;
+                set_mirror_time(k, i, time);
+            }
+            earliest = std::min(earliest, row[k]);
         }
+        row_min[i] = earliest;
     }
 
     // ---- contacts between two balls -------------------------------------------------------
@@ -367,6 +379,7 @@ struct World::Impl {
         }
         for (std::size_t i = 0; i < count(); ++i) {
             if (row_min[i] < best) {
+                // Every pair of an earlier ball was already seen in that ball's row.
                 const double* row = &pair_time[i * count()];
                 for (std::size_t j = i + 1; j < count(); ++j) {
                     if (row[j] < best) {
@@ -393,7 +406,7 @@ struct World::Impl {
         set_slot(j, b);
         refresh_boundary(i);
         refresh_boundary(j);
-        refresh_pairs(i, j);
+        refresh_pairs(i, i);
         refresh_pairs(j, i);
         return {now, EventKind::ball_ball, std::min(a.id, b.id), std::max(a.id, b.id)};
     }
