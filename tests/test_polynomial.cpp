@@ -598,3 +598,39 @@ TEST_CASE("first_contact_time: random quartics against a dense scan", "[polynomi
     CHECK(failures == 0);
     CHECK(compared > kCases / 4);
 }
+
+TEST_CASE("first_contact_time: random quadratics (a ball against a line) against a dense scan",
+          "[polynomial]") {
+    // Degree <= 2 takes a closed-form path: check it keeps the general search's conventions,
+    // including opening overlaps (f(0) <= 0) and concave gaps.
+    std::mt19937_64 rng(0x11feULL);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, unit(rng)); };
+    auto signed_mag = [&](double lo, double hi) {
+        return (unit(rng) < 0.5 ? -1.0 : 1.0) * log_uniform(lo, hi);
+    };
+    constexpr int kCases = 40000;
+    int compared = 0;
+    int failures = 0;
+    for (int n = 0; n < kCases && failures < 5; ++n) {
+        const double horizon = log_uniform(1e-3, 10.0);
+        Polynomial4 f;
+        f.c[0] = signed_mag(1e-6, 1.0);
+        f.c[1] = signed_mag(1e-4, 20.0);
+        f.c[2] = unit(rng) < 0.1 ? 0.0 : signed_mag(1e-3, 5.0);
+        const double got = first_contact_time(f, horizon);
+        const RandomCheck r = check_against_scan(f, horizon, got);
+        if (r.compared)
+            ++compared;
+        if (!r.ok) {
+            ++failures;
+            std::ostringstream os;
+            os.precision(17);
+            os << r.why << "\n  case " << n << " horizon " << horizon << " got " << got
+               << "\n  c = {" << f.c[0] << ", " << f.c[1] << ", " << f.c[2] << "}";
+            FAIL_CHECK(os.str());
+        }
+    }
+    CHECK(failures == 0);
+    CHECK(compared > kCases / 4);
+}
