@@ -140,11 +140,10 @@ struct World::Impl {
             trajectory.add(i, now, ball);
     }
 
-    // Stores the contact time of pair (i, k) in row k, keeping row k's minimum.
-    void set_mirror_time(std::size_t k, std::size_t i, double time) {
-        double& slot = pair_time[k * count() + i];
-        const double old = slot;
-        slot = time;
+    // Stores the new contact time of pair (i, k), which was `old`, in row k, keeping row k's
+    // minimum.
+    void set_mirror_time(std::size_t k, std::size_t i, double time, double old) {
+        pair_time[k * count() + i] = time;
         if (time <= row_min[k]) {
             row_min[k] = time;
         } else if (old == row_min[k]) {
@@ -206,8 +205,10 @@ struct World::Impl {
                                        (lo.x <= box_max[k].x) & (box_min[k].x <= hi.x) &
                                        (lo.y <= box_max[k].y) & (box_min[k].y <= hi.y);
                 const double time = candidate ? now + pair_contact(i, k) : infinity;
-                row[k] = time;
-                set_mirror_time(k, i, time);
+                if (time != row[k]) { // most pairs stay out of reach: infinity before and after
+                    set_mirror_time(k, i, time, row[k]);
+                    row[k] = time;
+                }
             }
             earliest = std::min(earliest, row[k]);
         }
