@@ -55,6 +55,14 @@ void extend_range(double x0, double v, double a, double T, double& lo, double& h
     }
 }
 
+Vec2 lower_corner(Vec2 a, Vec2 b) {
+    return {std::min(a.x, b.x), std::min(a.y, b.y)};
+}
+
+Vec2 upper_corner(Vec2 a, Vec2 b) {
+    return {std::max(a.x, b.x), std::max(a.y, b.y)};
+}
+
 bool boxes_within(Vec2 a_min, Vec2 a_max, Vec2 b_min, Vec2 b_max, double margin) {
     return a_min.x - margin <= b_max.x && b_min.x - margin <= a_max.x &&
            a_min.y - margin <= b_max.y && b_min.y - margin <= a_max.y;
@@ -264,13 +272,13 @@ struct World::Impl {
             const Ball b = state_now(i);
             for (int c = 0; c < 18; ++c) {
                 const CushionSegment& seg = table.cushions[c];
-                if (seg.pocket != 0 && !near_pocket(s, seg.pocket - 1))
+                if (seg.pocket != 0 && !near_pocket(s.box_min, s.box_max, seg.pocket - 1))
                     continue;
                 consider(seed_segment_contact(b, seg, horizon),
                          c < 6 ? BoundaryKind::rail : BoundaryKind::jaw_line, c);
             }
             for (int p = 0; p < 6; ++p) {
-                if (!near_pocket(s, p))
+                if (!near_pocket(s.box_min, s.box_max, p))
                     continue;
                 const Pocket& pocket = table.pockets[p];
                 consider(seed_line_contact(b, pocket.capture_point, pocket.capture_normal, horizon),
@@ -282,45 +290,60 @@ struct World::Impl {
         const Path path = path_now(i);
         for (int c = 0; c < 6; ++c) {
             const CushionSegment& seg = table.cushions[c];
-            if (!box_reaches_line(s, seg.start, seg.normal, R))
+            if (!box_reaches_line(s.box_min, s.box_max, seg.start, seg.normal, R))
                 continue;
             const double dt = core::path_line_contact_time(path, seg.start, seg.normal, R, horizon);
             if (now + dt < best.time && hits_segment(path, dt, seg))
                 consider(dt, BoundaryKind::rail, c);
         }
+        // Nothing of the table is met after the first rail hit, so the pockets are searched only
+        // up to it: for a fast ball that path's box is far smaller than the whole slide's.
+        const double reach = std::min(horizon, best.time - now);
+        Vec2 lo, hi;
+        extend_range(path.position.x, path.velocity.x, path.acceleration.x, reach, lo.x, hi.x);
+        extend_range(path.position.y, path.velocity.y, path.acceleration.y, reach, lo.y, hi.y);
         for (int p = 0; p < 6; ++p) {
-            if (!near_pocket(s, p))
+            if (!near_pocket(lo, hi, p))
                 continue;
+            // A pocket's region is wide; each jaw face and point is solved for only when the
+            // path's box comes within R of it (the point is a quartic, the dearest solve here).
             for (int side = 0; side < 2; ++side) {
                 const int c = 6 + 2 * p + side;
                 const CushionSegment& seg = table.cushions[c];
-                const double dt =
-                    core::path_line_contact_time(path, seg.start, seg.normal, R, horizon);
-                if (now + dt < best.time && hits_segment(path, dt, seg))
-                    consider(dt, BoundaryKind::jaw_line, c);
+                if (boxes_within(lo, hi, lower_corner(seg.start, seg.end),
+                                 upper_corner(seg.start, seg.end), R)) {
+                    const double dt =
+                        core::path_line_contact_time(path, seg.start, seg.normal, R, reach);
+                    if (now + dt < best.time && hits_segment(path, dt, seg))
+                        consider(dt, BoundaryKind::jaw_line, c);
+                }
                 const int point = 2 * p + side;
-                consider(core::path_point_contact_time(path, table.jaw_points[point], R, horizon),
-                         BoundaryKind::jaw_point, point);
+                const Vec2 jaw = table.jaw_points[point];
+                if (boxes_within(lo, hi, jaw, jaw, R))
+                    consider(core::path_point_contact_time(path, jaw, R, reach),
+                             BoundaryKind::jaw_point, point);
             }
             const Pocket& pocket = table.pockets[p];
-            consider(core::path_line_contact_time(path, pocket.capture_point, pocket.capture_normal,
-                                                  0, horizon),
-                     BoundaryKind::capture, p);
+            if (box_reaches_line(lo, hi, pocket.capture_point, pocket.capture_normal, 0))
+                consider(core::path_line_contact_time(path, pocket.capture_point,
+                                                      pocket.capture_normal, 0, reach),
+                         BoundaryKind::capture, p);
         }
         return best;
     }
 
-    bool near_pocket(const Slot& s, int p) const {
+    bool near_pocket(Vec2 box_min, Vec2 box_max, int p) const {
         const Pocket& pocket = table.pockets[p];
-        return boxes_within(s.box_min, s.box_max, pocket.region_min, pocket.region_max,
+        return boxes_within(box_min, box_max, pocket.region_min, pocket.region_max,
                             params.ball_radius);
     }
 
     // Whether any point of the slot's box is within `offset` of the line (rails are axis-aligned,
     // but this works for any line).
-    static bool box_reaches_line(const Slot& s, Vec2 point, Vec2 normal, double offset) {
-        const Vec2 corner{normal.x > 0 ? s.box_min.x : s.box_max.x,
-                          normal.y > 0 ? s.box_min.y : s.box_max.y};
+    static bool box_reaches_line(Vec2 box_min, Vec2 box_max, Vec2 point, Vec2 normal,
+                                 double offset) {
+        const Vec2 corner{normal.x > 0 ? box_min.x : box_max.x,
+                          normal.y > 0 ? box_min.y : box_max.y};
         return dot(corner - point, normal) <= offset;
     }
 
