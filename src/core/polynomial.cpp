@@ -407,7 +407,8 @@ namespace {
 
 // The search proper, for 0 < H and coefficients whose terms |c_k| H^k are far from the
 // overflow and underflow limits (squares and cubes of f, f', f'' and t must stay finite).
-double contact_time_in_range(const std::array<double, 5>& c, double H) noexcept {
+// `mag` is sum |c_k| H^k, which the caller has already computed.
+double contact_time_in_range(const std::array<double, 5>& c, double H, double mag) noexcept {
     const double H2 = H * H;
     const double H3 = H2 * H;
     const double H4 = H2 * H2;
@@ -425,9 +426,7 @@ double contact_time_in_range(const std::array<double, 5>& c, double H) noexcept 
     if (c[0] > 0.0) {
         const double f_low = c[0] + std::min(0.0, c[1]) * H + std::min(0.0, c[2]) * H2 +
                              std::min(0.0, c[3]) * H3 + std::min(0.0, c[4]) * H4;
-        const double f_mag = c[0] + std::fabs(c[1]) * H + std::fabs(c[2]) * H2 +
-                             std::fabs(c[3]) * H3 + std::fabs(c[4]) * H4;
-        if (f_low > 4.0 * kEps * f_mag)
+        if (f_low > 4.0 * kEps * mag)
             return kInf;
     }
 
@@ -542,7 +541,7 @@ double first_contact_time(const Polynomial4& poly, double horizon) noexcept {
     if (mag == 0.0)
         return kInf; // f == 0: f' is never negative
     if (mag >= 1e-60 && mag <= 1e60 && H >= 1e-30 && H <= 1e30) {
-        return contact_time_in_range(c, H);
+        return contact_time_in_range(c, H, mag);
     }
     const int time_exp = std::ilogb(H);
     int top = std::numeric_limits<int>::min();
@@ -556,7 +555,11 @@ double first_contact_time(const Polynomial4& poly, double horizon) noexcept {
         scaled[static_cast<std::size_t>(k)] =
             std::scalbn(c[static_cast<std::size_t>(k)], k * time_exp - top);
     }
-    const double t = contact_time_in_range(scaled, std::scalbn(H, -time_exp));
+    const double h = std::scalbn(H, -time_exp);
+    double scaled_mag = 0.0;
+    for (int k = 4; k >= 0; --k)
+        scaled_mag = scaled_mag * h + std::fabs(scaled[static_cast<std::size_t>(k)]);
+    const double t = contact_time_in_range(scaled, h, scaled_mag);
     return t == kInf ? kInf : std::scalbn(t, time_exp);
 }
 

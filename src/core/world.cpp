@@ -201,6 +201,7 @@ struct World::Impl {
         const bool present = mine != Presence::pocketed;
         const bool moving = mine == Presence::moving;
         double* row = &pair_time[i * count()];
+        const Path path = path_now(i);
         double earliest = infinity;
         for (std::size_t k = 0; k < count(); ++k) {
             if (k == i)
@@ -212,7 +213,7 @@ struct World::Impl {
                                        (moving | (theirs == Presence::moving)) &
                                        (lo.x <= box_max[k].x) & (box_min[k].x <= hi.x) &
                                        (lo.y <= box_max[k].y) & (box_min[k].y <= hi.y);
-                const double time = candidate ? now + pair_contact(i, k) : infinity;
+                const double time = candidate ? now + pair_contact(i, k, path) : infinity;
                 if (time != row[k]) { // most pairs stay out of reach: infinity before and after
                     set_mirror_time(k, i, time, row[k]);
                     row[k] = time;
@@ -225,13 +226,13 @@ struct World::Impl {
 
     // ---- contacts between two balls -------------------------------------------------------
 
-    double pair_contact(std::size_t i, std::size_t k) const {
+    // Seconds from now to the first contact of balls i and k; `pa` is ball i's path from now.
+    double pair_contact(std::size_t i, std::size_t k, const Path& pa) const {
         const double diameter = 2 * params.ball_radius;
         const double horizon = std::min(boundary[i].time, boundary[k].time) - now;
         if (seed_model())
             return seed_pair_contact(i, k, horizon);
-        const Path pa = path_now(i), pb = path_now(k);
-        return core::path_path_contact_time(pa, pb, diameter, horizon);
+        return core::path_path_contact_time(pa, path_now(k), diameter, horizon);
     }
 
     double seed_pair_contact(std::size_t i, std::size_t k, double horizon) const {
@@ -555,6 +556,7 @@ ShotResult simulate_shot(const Table& table, const PhysicsParams& params, std::v
         world.record(true);
     world.strike(strike);
     ShotResult result;
+    result.events.reserve(256); // a break takes about 140 events; growing costs several copies
     while (const auto event = world.step())
         result.events.push_back(*event);
     result.event_limit_hit = !world.at_rest();
