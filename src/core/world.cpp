@@ -36,8 +36,9 @@ struct Slot {
     Vec2 box_min, box_max; // box of the centre's path over the piece, up to its table contact
 };
 
-// Whether a ball takes part in the pair search: gone, at rest (or spinning in place), or moving.
-enum class Presence : std::uint8_t { pocketed, still, moving };
+struct Box {
+    Vec2 min, max;
+};
 
 // Range of x0 + v t + a t^2 / 2 over [0, T].
 void extend_range(double x0, double v, double a, double T, double& lo, double& hi) {
@@ -75,10 +76,11 @@ struct World::Impl {
     PhysicsParams params;
     std::vector<Slot> slots;
     std::vector<BoundaryEvent> boundary;
-    // Copies of each slot's box and motion, kept in short arrays of their own so that the pair
-    // search over all balls culls without touching the slots.
-    std::vector<Vec2> box_min, box_max;
-    std::vector<Presence> presence;
+    // Copies of each slot's box and whether it moves, kept in short arrays of their own so that
+    // the pair search over all balls culls without touching the slots. A pocketed ball's box is
+    // empty (min > max), so that every overlap test with it fails.
+    std::vector<Box> reach;
+    std::vector<std::uint8_t> moving;
     // Contact time of every pair, kept in both orders ([i * n + j] == [j * n + i]) so that a
     // ball's row holds all its pairs.
     std::vector<double> pair_time;
@@ -95,9 +97,8 @@ struct World::Impl {
         : table(t), params(p), trajectory(p, balls.size()) {
         slots.resize(balls.size());
         boundary.resize(balls.size());
-        box_min.resize(balls.size());
-        box_max.resize(balls.size());
-        presence.resize(balls.size());
+        reach.resize(balls.size());
+        moving.resize(balls.size());
         pair_time.assign(balls.size() * balls.size(), infinity);
         row_min.assign(balls.size(), infinity);
         for (std::size_t i = 0; i < balls.size(); ++i) {
@@ -148,18 +149,6 @@ struct World::Impl {
             trajectory.add(i, now, ball);
     }
 
-    // Stores the new contact time of pair (i, k), which was `old`, in row k, keeping row k's
-    // minimum.
-    void set_mirror_time(std::size_t k, std::size_t i, double time, double old) {
-        pair_time[k * count() + i] = time;
-        if (time <= row_min[k]) {
-            row_min[k] = time;
-        } else if (old == row_min[k]) {
-            row_min[k] = *std::min_element(pair_time.begin() + k * count(),
-                                           pair_time.begin() + (k + 1) * count());
-        }
-    }
-
     // Finds ball i's next contact with the table, then shrinks its box to the path up to that
     // contact: the ball is recomputed there anyway, so pairs need not look further, and a fast
     // ball's box then spans the stretch it really travels rather than its whole slide.
@@ -168,11 +157,10 @@ struct World::Impl {
         Slot& s = slots[i];
         if (moves(s.ball) && boundary[i].time < s.end)
             clip_box(s, boundary[i].time);
-        box_min[i] = s.box_min;
-        box_max[i] = s.box_max;
-        presence[i] = s.ball.state == MotionState::pocketed ? Presence::pocketed
-                      : moves(s.ball)                       ? Presence::moving
-                                                            : Presence::still;
+        reach[i] = s.ball.state == MotionState::pocketed
+                       ? Box{{infinity, infinity}, {-infinity, -infinity}}
+                       : Box{s.box_min, s.box_max};
+        moving[i] = moves(s.ball);
     }
 
     void clip_box(Slot& s, double until) const {
@@ -194,29 +182,40 @@ struct World::Impl {
     // Recomputes the pair contacts of ball i, whose boundary is already up to date. `done` is a
     // ball that changed in the same event and was refreshed just before: their pair is current.
     void refresh_pairs(std::size_t i, std::size_t done) {
+        // Locals rather than members: the solver calls in the loop would otherwise make the
+        // compiler reload every vector and recompute the ball count on each pass.
+        const std::size_t n = count();
         const double diameter = 2 * params.ball_radius;
-        const Presence mine = presence[i];
-        const Vec2 lo = box_min[i] - Vec2{diameter, diameter};
-        const Vec2 hi = box_max[i] + Vec2{diameter, diameter};
-        const bool present = mine != Presence::pocketed;
-        const bool moving = mine == Presence::moving;
-        double* row = &pair_time[i * count()];
+        const Box* boxes = reach.data();
+        const std::uint8_t* moves_now = moving.data();
+        const Vec2 lo = boxes[i].min - Vec2{diameter, diameter};
+        const Vec2 hi = boxes[i].max + Vec2{diameter, diameter};
+        // A ball at rest can only be hit by a moving one.
+        const std::uint8_t needs_motion = moves_now[i] ? 0 : 1;
+        double* times = pair_time.data();
+        double* row = times + i * n;
         const Path path = path_now(i);
         double earliest = infinity;
-        for (std::size_t k = 0; k < count(); ++k) {
+        for (std::size_t k = 0; k < n; ++k) {
             if (k == i)
                 continue;
             if (k != done) {
-                // Bitwise & rather than &&: one branch per ball instead of six unpredictable ones.
-                const Presence theirs = presence[k];
-                const bool candidate = present & (theirs != Presence::pocketed) &
-                                       (moving | (theirs == Presence::moving)) &
-                                       (lo.x <= box_max[k].x) & (box_min[k].x <= hi.x) &
-                                       (lo.y <= box_max[k].y) & (box_min[k].y <= hi.y);
+                // Bitwise & rather than &&: one branch per ball instead of five unpredictable ones.
+                const Box& box = boxes[k];
+                const bool candidate = (moves_now[k] >= needs_motion) & (lo.x <= box.max.x) &
+                                       (box.min.x <= hi.x) & (lo.y <= box.max.y) &
+                                       (box.min.y <= hi.y);
                 const double time = candidate ? now + pair_contact(i, k, path) : infinity;
                 if (time != row[k]) { // most pairs stay out of reach: infinity before and after
-                    set_mirror_time(k, i, time, row[k]);
-                    row[k] = time;
+                    // Row k gets the same time; its minimum is kept up to date.
+                    double* row_k = times + k * n;
+                    const double old = row[k];
+                    row[k] = row_k[i] = time;
+                    if (time <= row_min[k]) {
+                        row_min[k] = time;
+                    } else if (old == row_min[k]) {
+                        row_min[k] = *std::min_element(row_k, row_k + n);
+                    }
                 }
             }
             earliest = std::min(earliest, row[k]);
