@@ -105,8 +105,10 @@ struct World::Impl {
             set_slot(i, balls[i]);
             refresh_boundary(i);
         }
+        // Two balls at rest never meet: only the rows of moving balls need a search.
         for (std::size_t i = 0; i < slots.size(); ++i)
-            refresh_pairs(i, i);
+            if (moving[i])
+                refresh_pairs(i, i);
     }
 
     std::size_t count() const { return slots.size(); }
