@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+using termpool::core::first_contact_estimate;
 using termpool::core::first_contact_time;
 using termpool::core::Polynomial4;
 using termpool::core::solve_quadratic;
@@ -455,7 +456,9 @@ RandomCheck check_against_scan(const Polynomial4& f, double horizon, double got)
 
 } // namespace
 
-TEST_CASE("first_contact_time: random ball trajectories against a dense scan", "[polynomial]") {
+TEST_CASE("first_contact_time: random ball trajectories against a dense scan, and "
+          "first_contact_estimate against first_contact_time",
+          "[polynomial]") {
     std::mt19937_64 rng(0x5eedc0ffeeULL);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, unit(rng)); };
@@ -467,6 +470,7 @@ TEST_CASE("first_contact_time: random ball trajectories against a dense scan", "
     constexpr int kCases = 200000;
     int compared = 0;
     int hits = 0;
+    int bounds = 0;
     int failures = 0;
     for (int n = 0; n < kCases && failures < 5; ++n) {
         const int kind = static_cast<int>(unit(rng) * 4.0);
@@ -514,6 +518,19 @@ TEST_CASE("first_contact_time: random ball trajectories against a dense scan", "
         const double got = first_contact_time(f, horizon);
         if (got != kInf)
             ++hits;
+        // The estimate is either the same answer or a time no later than it.
+        const termpool::core::ContactEstimate estimate = first_contact_estimate(f, horizon);
+        bounds += estimate.exact ? 0 : 1;
+        if (estimate.exact ? estimate.time != got : !(estimate.time >= 0 && estimate.time <= got)) {
+            ++failures;
+            std::ostringstream os;
+            os.precision(17);
+            os << "estimate " << estimate.time << (estimate.exact ? " (exact)" : " (bound)")
+               << " against " << got << "\n  case " << n << " kind " << kind << " horizon "
+               << horizon << "\n  c = {" << f.c[0] << ", " << f.c[1] << ", " << f.c[2] << ", "
+               << f.c[3] << ", " << f.c[4] << "}";
+            FAIL_CHECK(os.str());
+        }
         const RandomCheck r = check_against_scan(f, horizon, got);
         if (r.compared)
             ++compared;
@@ -527,10 +544,11 @@ TEST_CASE("first_contact_time: random ball trajectories against a dense scan", "
             FAIL_CHECK(os.str());
         }
     }
-    INFO("compared " << compared << " hits " << hits);
+    INFO("compared " << compared << " hits " << hits << " bounds " << bounds);
     CHECK(failures == 0);
     // The generator must actually exercise both outcomes and mostly clear cases.
     CHECK(hits > kCases / 10);
+    CHECK(bounds > kCases / 20);
     CHECK(compared > kCases / 2);
 }
 

@@ -9,6 +9,8 @@
 #include <termpool/params.hpp>
 #include <termpool/vec.hpp>
 
+#include "core/polynomial.hpp"
+
 namespace termpool::core {
 
 /// A ball centre moving with constant acceleration: r(t) = position + velocity t + acceleration
@@ -22,6 +24,11 @@ struct Path {
 
 /// First time two centres are `distance` apart and closing (degree-4 polynomial roots).
 double path_path_contact_time(const Path& a, const Path& b, double distance, double horizon);
+
+/// path_path_contact_time, or a lower bound on it (seconds from now as well) when that is much
+/// cheaper: see first_contact_estimate.
+ContactEstimate path_path_contact_estimate(const Path& a, const Path& b, double distance,
+                                           double horizon);
 
 /// First time the centre comes within `offset` of the line through `point` (from the side
 /// `normal` points to) while moving towards it.

@@ -66,4 +66,18 @@ int solve_quadratic(double a, double b, double c, double roots[2]) noexcept;
 ///   Coefficients must be finite. No allocation, no recursion, bounded iteration count.
 double first_contact_time(const Polynomial4& f, double horizon) noexcept;
 
+/// Either the first contact time or, when settling it would take a full search, a lower bound
+/// on it that costs almost nothing (see first_contact_estimate).
+struct ContactEstimate {
+    double time; ///< first_contact_time, or a time no later than it
+    bool exact;  ///< true when `time` is first_contact_time itself
+};
+
+/// first_contact_time when cheap tests settle it, otherwise a lower bound on it. Over
+/// [0, horizon] f stays above a quadratic (its cubic and quartic terms bounded by t^2 terms);
+/// when that quadratic has no root there, there is no contact, and otherwise no contact comes
+/// before its first root. A simulator can keep the bound and search only when it becomes the
+/// earliest of all its events; most such contacts are overtaken by other events first.
+ContactEstimate first_contact_estimate(const Polynomial4& f, double horizon) noexcept;
+
 } // namespace termpool::core

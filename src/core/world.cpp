@@ -84,6 +84,9 @@ struct World::Impl {
     // Contact time of every pair, kept in both orders ([i * n + j] == [j * n + i]) so that a
     // ball's row holds all its pairs.
     std::vector<double> pair_time;
+    // 1 where pair_time holds only a lower bound on the contact (same layout): the search is put
+    // off until the bound is the earliest of all events, and most never get that far.
+    std::vector<std::uint8_t> pair_bound;
     // Earliest contact in each ball's row, so that finding the next event scans n values rather
     // than all n^2 / 2 pairs.
     std::vector<double> row_min;
@@ -100,6 +103,7 @@ struct World::Impl {
         reach.resize(balls.size());
         moving.resize(balls.size());
         pair_time.assign(balls.size() * balls.size(), infinity);
+        pair_bound.assign(balls.size() * balls.size(), 0);
         row_min.assign(balls.size(), infinity);
         for (std::size_t i = 0; i < balls.size(); ++i) {
             set_slot(i, balls[i]);
@@ -207,7 +211,14 @@ struct World::Impl {
                 const bool candidate = (moves_now[k] >= needs_motion) & (lo.x <= box.max.x) &
                                        (box.min.x <= hi.x) & (lo.y <= box.max.y) &
                                        (box.min.y <= hi.y);
-                const double time = candidate ? now + pair_contact(i, k, path) : infinity;
+                core::ContactEstimate estimate{infinity, true};
+                if (candidate) {
+                    estimate = pair_contact(i, k, path);
+                    estimate.time += now;
+                }
+                const double time = estimate.time;
+                const std::uint8_t bound = estimate.exact ? 0 : 1;
+                pair_bound[i * n + k] = pair_bound[k * n + i] = bound;
                 if (time != row[k]) { // most pairs stay out of reach: infinity before and after
                     // Row k gets the same time; its minimum is kept up to date.
                     double* row_k = times + k * n;
@@ -227,13 +238,28 @@ struct World::Impl {
 
     // ---- contacts between two balls -------------------------------------------------------
 
-    // Seconds from now to the first contact of balls i and k; `pa` is ball i's path from now.
-    double pair_contact(std::size_t i, std::size_t k, const Path& pa) const {
+    // Seconds from now to the first contact of balls i and k, or a lower bound on them;
+    // `pa` is ball i's path from now.
+    core::ContactEstimate pair_contact(std::size_t i, std::size_t k, const Path& pa) const {
         const double diameter = 2 * params.ball_radius;
         const double horizon = std::min(boundary[i].time, boundary[k].time) - now;
         if (seed_model())
-            return seed_pair_contact(i, k, horizon);
-        return core::path_path_contact_time(pa, path_now(k), diameter, horizon);
+            return {seed_pair_contact(i, k, horizon), true};
+        return core::path_path_contact_estimate(pa, path_now(k), diameter, horizon);
+    }
+
+    // Replaces the lower bound kept for pair (i, j) by its contact time.
+    void refine_pair(std::size_t i, std::size_t j) {
+        const std::size_t n = count();
+        const double horizon = std::min(boundary[i].time, boundary[j].time) - now;
+        const double time = now + core::path_path_contact_time(path_now(i), path_now(j),
+                                                               2 * params.ball_radius, horizon);
+        pair_time[i * n + j] = pair_time[j * n + i] = time;
+        pair_bound[i * n + j] = pair_bound[j * n + i] = 0;
+        for (const std::size_t r : {i, j}) {
+            const double* row = pair_time.data() + r * n;
+            row_min[r] = *std::min_element(row, row + n);
+        }
     }
 
     double seed_pair_contact(std::size_t i, std::size_t k, double horizon) const {
@@ -387,42 +413,50 @@ struct World::Impl {
 
     // ---- stepping ---------------------------------------------------------------------------
 
+    struct NextEvent {
+        double time = infinity;
+        std::size_t i = 0, j = 0;
+        bool is_pair = false;
+    };
+
     std::optional<Event> step() {
         if (!pending.empty()) {
             const Event e = pending.front();
             pending.erase(pending.begin());
             return e;
         }
-        std::size_t best_i = 0, best_j = 0;
-        double best = infinity;
-        bool is_pair = false;
-        for (std::size_t i = 0; i < count(); ++i) {
-            if (boundary[i].time < best) {
-                best = boundary[i].time;
-                best_i = i;
-                is_pair = false;
-            }
-        }
-        for (std::size_t i = 0; i < count(); ++i) {
-            if (row_min[i] < best) {
-                // Every pair of an earlier ball was already seen in that ball's row.
-                const double* row = &pair_time[i * count()];
-                for (std::size_t j = i + 1; j < count(); ++j) {
-                    if (row[j] < best) {
-                        best = row[j];
-                        best_i = i;
-                        best_j = j;
-                        is_pair = true;
-                    }
-                }
-            }
-        }
-        if (!(best < infinity))
+        const NextEvent next = earliest_event();
+        if (!(next.time < infinity))
             return std::nullopt;
         if (++events > max_events)
             return std::nullopt;
-        now = std::max(now, best);
-        return is_pair ? resolve_pair(best_i, best_j) : resolve_boundary(best_i);
+        now = std::max(now, next.time);
+        return next.is_pair ? resolve_pair(next.i, next.j) : resolve_boundary(next.i);
+    }
+
+    // The earliest event; ties go to the table, then to the lowest pair. A pair that holds only
+    // a bound is searched when it comes first, and the choice is made again.
+    NextEvent earliest_event() {
+        for (;;) {
+            NextEvent next;
+            for (std::size_t i = 0; i < count(); ++i) {
+                if (boundary[i].time < next.time)
+                    next = {boundary[i].time, i, 0, false};
+            }
+            for (std::size_t i = 0; i < count(); ++i) {
+                if (row_min[i] < next.time) {
+                    // Every pair of an earlier ball was already seen in that ball's row.
+                    const double* row = &pair_time[i * count()];
+                    for (std::size_t j = i + 1; j < count(); ++j) {
+                        if (row[j] < next.time)
+                            next = {row[j], i, j, true};
+                    }
+                }
+            }
+            if (!next.is_pair || !pair_bound[next.i * count() + next.j])
+                return next;
+            refine_pair(next.i, next.j);
+        }
     }
 
     Event resolve_pair(std::size_t i, std::size_t j) {
