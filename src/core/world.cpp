@@ -199,6 +199,7 @@ struct World::Impl {
         // A ball at rest can only be hit by a moving one.
         const std::uint8_t needs_motion = moves_now[i] ? 0 : 1;
         double* times = pair_time.data();
+        std::uint8_t* bounds = pair_bound.data();
         double* row = times + i * n;
         const Path path = path_now(i);
         double earliest = infinity;
@@ -211,14 +212,13 @@ struct World::Impl {
                 const bool candidate = (moves_now[k] >= needs_motion) & (lo.x <= box.max.x) &
                                        (box.min.x <= hi.x) & (lo.y <= box.max.y) &
                                        (box.min.y <= hi.y);
-                core::ContactEstimate estimate{infinity, true};
+                double time = infinity;
                 if (candidate) {
-                    estimate = pair_contact(i, k, path);
-                    estimate.time += now;
+                    const core::ContactEstimate estimate = pair_contact(i, k, path);
+                    time = now + estimate.time;
+                    // (The flag of a pair out of reach does not matter: it is never chosen.)
+                    bounds[i * n + k] = bounds[k * n + i] = estimate.exact ? 0 : 1;
                 }
-                const double time = estimate.time;
-                const std::uint8_t bound = estimate.exact ? 0 : 1;
-                pair_bound[i * n + k] = pair_bound[k * n + i] = bound;
                 if (time != row[k]) { // most pairs stay out of reach: infinity before and after
                     // Row k gets the same time; its minimum is kept up to date.
                     double* row_k = times + k * n;
@@ -437,12 +437,13 @@ struct World::Impl {
     // The earliest event; ties go to the table, then to the lowest pair. A pair that holds only
     // a bound is searched when it comes first, and the choice is made again.
     NextEvent earliest_event() {
+        NextEvent first_boundary;
+        for (std::size_t i = 0; i < count(); ++i) {
+            if (boundary[i].time < first_boundary.time)
+                first_boundary = {boundary[i].time, i, 0, false};
+        }
         for (;;) {
-            NextEvent next;
-            for (std::size_t i = 0; i < count(); ++i) {
-                if (boundary[i].time < next.time)
-                    next = {boundary[i].time, i, 0, false};
-            }
+            NextEvent next = first_boundary;
             for (std::size_t i = 0; i < count(); ++i) {
                 if (row_min[i] < next.time) {
                     // Every pair of an earlier ball was already seen in that ball's row.
