@@ -7,6 +7,7 @@
 #include <termpool/rack.hpp>
 
 #include "cli/numbers.hpp"
+#include "core/text_lines.hpp"
 
 namespace termpool::cli {
 namespace {
@@ -47,30 +48,10 @@ struct Draft {
     std::map<std::string, int, std::less<>> given;
 };
 
-constexpr std::string_view whitespace = " \t\r\v\f";
-
 std::vector<Line> split_lines(std::string_view text) {
     std::vector<Line> lines;
-    int number = 0;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        std::size_t end = text.find('\n', start);
-        if (end == std::string_view::npos)
-            end = text.size();
-        std::string_view rest = text.substr(start, end - start);
-        start = end + 1;
-        ++number;
-        rest = rest.substr(0, rest.find('#'));
-        Line line{number, {}};
-        for (;;) {
-            const std::size_t first = rest.find_first_not_of(whitespace);
-            if (first == std::string_view::npos)
-                break;
-            rest.remove_prefix(first);
-            const std::size_t last = std::min(rest.find_first_of(whitespace), rest.size());
-            line.fields.push_back(rest.substr(0, last));
-            rest.remove_prefix(last);
-        }
+    for (const core::TextLine& text_line : core::text_lines(text)) {
+        Line line{text_line.number, core::split_fields(core::strip_comment(text_line.text))};
         if (!line.fields.empty())
             lines.push_back(std::move(line));
     }

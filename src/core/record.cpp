@@ -4,6 +4,8 @@
 #include <cmath>
 #include <termpool/record.hpp>
 
+#include "core/text_lines.hpp"
+
 namespace termpool {
 namespace {
 
@@ -12,21 +14,6 @@ std::string number(double v) {
     char buffer[64];
     const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
     return ec == std::errc{} ? std::string(buffer, end) : "nan";
-}
-
-std::vector<std::string_view> fields(std::string_view line) {
-    std::vector<std::string_view> out;
-    std::size_t i = 0;
-    while (i < line.size()) {
-        while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
-            ++i;
-        const std::size_t start = i;
-        while (i < line.size() && line[i] != ' ' && line[i] != '\t')
-            ++i;
-        if (i > start)
-            out.push_back(line.substr(start, i - start));
-    }
-    return out;
 }
 
 std::optional<double> to_double(std::string_view s) {
@@ -122,7 +109,7 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
     if (!text.empty() && text.back() != '\n') {
         const std::size_t start =
             text.rfind('\n') == std::string_view::npos ? 0 : text.rfind('\n') + 1;
-        const std::vector<std::string_view> last = fields(text.substr(start));
+        const std::vector<std::string_view> last = core::split_fields(text.substr(start));
         if (!(last.size() == 1 && last[0] == "end")) {
             const int line = 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n'));
             return RecordError{line, "truncated: the last line is incomplete"};
@@ -131,17 +118,10 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
     GameRecord r;
     int line_number = 0;
     bool header = false, ended = false;
-    std::size_t pos = 0;
-    while (pos < text.size()) {
-        std::size_t eol = text.find('\n', pos);
-        if (eol == std::string_view::npos)
-            eol = text.size();
-        std::string_view line = text.substr(pos, eol - pos);
-        pos = eol + 1;
-        ++line_number;
-        if (!line.empty() && line.back() == '\r')
-            line.remove_suffix(1);
-        const std::vector<std::string_view> f = fields(line);
+    for (const core::TextLine& text_line : core::text_lines(text)) {
+        const std::string_view line = text_line.text;
+        line_number = text_line.number;
+        const std::vector<std::string_view> f = core::split_fields(line);
         if (f.empty())
             continue;
         auto fail = [&](std::string message) {

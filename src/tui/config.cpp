@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 
+#include "core/text_lines.hpp"
 #include "tui/player_name.hpp"
 
 namespace termpool::tui {
@@ -31,18 +32,9 @@ std::string config_path() {
 
 std::optional<std::string> apply_config(std::string_view text, GameOptions& o,
                                         std::vector<std::string>& warnings) {
-    int number = 0;
-    std::size_t pos = 0;
-    while (pos <= text.size()) {
-        std::size_t eol = text.find('\n', pos);
-        if (eol == std::string_view::npos)
-            eol = text.size();
-        std::string_view line = text.substr(pos, eol - pos);
-        pos = eol + 1;
-        ++number;
-        if (const std::size_t hash = line.find('#'); hash != std::string_view::npos)
-            line = line.substr(0, hash);
-        line = trim(line);
+    for (const core::TextLine& text_line : core::text_lines(text)) {
+        const int number = text_line.number;
+        const std::string_view line = trim(core::strip_comment(text_line.text));
         if (line.empty())
             continue;
         const std::size_t eq = line.find('=');
@@ -85,8 +77,6 @@ std::optional<std::string> apply_config(std::string_view text, GameOptions& o,
             warnings.push_back(config_path() + ":" + std::to_string(number) + ": unknown key '" +
                                key + "' ignored");
         }
-        if (eol == text.size())
-            break;
     }
     return std::nullopt;
 }

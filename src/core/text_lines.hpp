@@ -1,0 +1,26 @@
+#pragma once
+// The line-oriented text formats (scenarios, game records, the config file) read their input
+// the same way: numbered lines, comments, whitespace-separated fields.
+
+#include <string_view>
+#include <vector>
+
+namespace termpool::core {
+
+/// One line of a text: its number (from 1) and its content, without the newline or a carriage
+/// return before it.
+struct TextLine {
+    int number = 0;        ///< 1 for the first line
+    std::string_view text; ///< a view into the text passed to text_lines
+};
+
+/// The lines of `text` in order; a last line without a newline counts too.
+std::vector<TextLine> text_lines(std::string_view text);
+
+/// `line` up to its `#` comment, if it has one.
+std::string_view strip_comment(std::string_view line);
+
+/// The fields of `line`, separated by runs of blanks (space, tab, CR, VT, FF).
+std::vector<std::string_view> split_fields(std::string_view line);
+
+} // namespace termpool::core
