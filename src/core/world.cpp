@@ -33,7 +33,6 @@ struct Slot {
     double start = 0;
     double end = infinity; // next transition
     Vec2 acceleration;     // physical model: constant over the piece
-    Vec2 box_min, box_max; // box of the centre's path over the piece, up to its table contact
 };
 
 struct Box {
@@ -56,17 +55,24 @@ void extend_range(double x0, double v, double a, double T, double& lo, double& h
     }
 }
 
-Vec2 lower_corner(Vec2 a, Vec2 b) {
-    return {std::min(a.x, b.x), std::min(a.y, b.y)};
+// Box of a centre moving along `path` for `duration` seconds.
+Box path_box(const Path& path, double duration) {
+    Box box;
+    extend_range(path.position.x, path.velocity.x, path.acceleration.x, duration, box.min.x,
+                 box.max.x);
+    extend_range(path.position.y, path.velocity.y, path.acceleration.y, duration, box.min.y,
+                 box.max.y);
+    return box;
 }
 
-Vec2 upper_corner(Vec2 a, Vec2 b) {
-    return {std::max(a.x, b.x), std::max(a.y, b.y)};
+// The box with corners a and b.
+Box box_of(Vec2 a, Vec2 b) {
+    return {{std::min(a.x, b.x), std::min(a.y, b.y)}, {std::max(a.x, b.x), std::max(a.y, b.y)}};
 }
 
-bool boxes_within(Vec2 a_min, Vec2 a_max, Vec2 b_min, Vec2 b_max, double margin) {
-    return a_min.x - margin <= b_max.x && b_min.x - margin <= a_max.x &&
-           a_min.y - margin <= b_max.y && b_min.y - margin <= a_max.y;
+bool boxes_within(const Box& a, const Box& b, double margin) {
+    return a.min.x - margin <= b.max.x && b.min.x - margin <= a.max.x &&
+           a.min.y - margin <= b.max.y && b.min.y - margin <= a.max.y;
 }
 
 } // namespace
@@ -76,9 +82,9 @@ struct World::Impl {
     PhysicsParams params;
     std::vector<Slot> slots;
     std::vector<BoundaryEvent> boundary;
-    // Copies of each slot's box and whether it moves, kept in short arrays of their own so that
-    // the pair search over all balls culls without touching the slots. A pocketed ball's box is
-    // empty (min > max), so that every overlap test with it fails.
+    // Box of each slot's path, up to the ball's next table contact, and whether the ball moves:
+    // short arrays of their own, so that the pair search over all balls culls without touching
+    // the slots. A pocketed ball's box is empty (min > max): every overlap test with it fails.
     std::vector<Box> reach;
     std::vector<std::uint8_t> moving;
     // Contact time of every pair, kept in both orders ([i * n + j] == [j * n + i]) so that a
@@ -137,20 +143,10 @@ struct World::Impl {
         const double duration = core::time_to_transition(ball, params);
         s.end = now + duration;
         s.acceleration = seed_model() ? Vec2{} : core::physical_acceleration(ball, params);
-        if (!moves(ball)) {
-            s.box_min = s.box_max = ball.position;
-        } else if (seed_model()) {
-            const Ball last = core::advance(ball, duration, params);
-            s.box_min = {std::min(ball.position.x, last.position.x),
-                         std::min(ball.position.y, last.position.y)};
-            s.box_max = {std::max(ball.position.x, last.position.x),
-                         std::max(ball.position.y, last.position.y)};
-        } else {
-            extend_range(ball.position.x, ball.velocity.x, s.acceleration.x, duration, s.box_min.x,
-                         s.box_max.x);
-            extend_range(ball.position.y, ball.velocity.y, s.acceleration.y, duration, s.box_min.y,
-                         s.box_max.y);
-        }
+        reach[i] = ball.state == MotionState::pocketed
+                       ? Box{{infinity, infinity}, {-infinity, -infinity}}
+                       : slot_box(s, duration);
+        moving[i] = moves(ball);
         if (recording)
             trajectory.add(i, now, ball);
     }
@@ -160,29 +156,19 @@ struct World::Impl {
     // ball's box then spans the stretch it really travels rather than its whole slide.
     void refresh_boundary(std::size_t i) {
         boundary[i] = next_boundary(i);
-        Slot& s = slots[i];
+        const Slot& s = slots[i];
         if (moves(s.ball) && boundary[i].time < s.end)
-            clip_box(s, boundary[i].time);
-        reach[i] = s.ball.state == MotionState::pocketed
-                       ? Box{{infinity, infinity}, {-infinity, -infinity}}
-                       : Box{s.box_min, s.box_max};
-        moving[i] = moves(s.ball);
+            reach[i] = slot_box(s, boundary[i].time - s.start);
     }
 
-    void clip_box(Slot& s, double until) const {
-        if (seed_model()) {
-            const Ball last = core::advance(s.ball, until - s.start, params);
-            s.box_min = {std::min(s.ball.position.x, last.position.x),
-                         std::min(s.ball.position.y, last.position.y)};
-            s.box_max = {std::max(s.ball.position.x, last.position.x),
-                         std::max(s.ball.position.y, last.position.y)};
-        } else {
-            const double duration = until - s.start;
-            extend_range(s.ball.position.x, s.ball.velocity.x, s.acceleration.x, duration,
-                         s.box_min.x, s.box_max.x);
-            extend_range(s.ball.position.y, s.ball.velocity.y, s.acceleration.y, duration,
-                         s.box_min.y, s.box_max.y);
-        }
+    // Box of the slot's centre over the first `duration` seconds of its piece.
+    Box slot_box(const Slot& s, double duration) const {
+        const Ball& b = s.ball;
+        if (!moves(b))
+            return {b.position, b.position};
+        if (seed_model()) // straight lines
+            return box_of(b.position, core::advance(b, duration, params).position);
+        return path_box({b.position, b.velocity, s.acceleration, duration}, duration);
     }
 
     // Recomputes the pair contacts of ball i, whose boundary is already up to date. `done` is a
@@ -241,19 +227,24 @@ struct World::Impl {
     // Seconds from now to the first contact of balls i and k, or a lower bound on them;
     // `pa` is ball i's path from now.
     core::ContactEstimate pair_contact(std::size_t i, std::size_t k, const Path& pa) const {
-        const double diameter = 2 * params.ball_radius;
-        const double horizon = std::min(boundary[i].time, boundary[k].time) - now;
         if (seed_model())
-            return {seed_pair_contact(i, k, horizon), true};
-        return core::path_path_contact_estimate(pa, path_now(k), diameter, horizon);
+            return {seed_pair_contact(i, k, pair_horizon(i, k)), true};
+        return core::path_path_contact_estimate(pa, path_now(k), 2 * params.ball_radius,
+                                                pair_horizon(i, k));
+    }
+
+    // How far ahead a pair's contact is searched: both balls are searched afresh at their next
+    // table event.
+    double pair_horizon(std::size_t i, std::size_t k) const {
+        return std::min(boundary[i].time, boundary[k].time) - now;
     }
 
     // Replaces the lower bound kept for pair (i, j) by its contact time.
     void refine_pair(std::size_t i, std::size_t j) {
         const std::size_t n = count();
-        const double horizon = std::min(boundary[i].time, boundary[j].time) - now;
-        const double time = now + core::path_path_contact_time(path_now(i), path_now(j),
-                                                               2 * params.ball_radius, horizon);
+        const double time =
+            now + core::path_path_contact_time(path_now(i), path_now(j), 2 * params.ball_radius,
+                                               pair_horizon(i, j));
         pair_time[i * n + j] = pair_time[j * n + i] = time;
         pair_bound[i * n + j] = pair_bound[j * n + i] = 0;
         for (const std::size_t r : {i, j}) {
@@ -300,13 +291,13 @@ struct World::Impl {
             const Ball b = state_now(i);
             for (int c = 0; c < 18; ++c) {
                 const CushionSegment& seg = table.cushions[c];
-                if (seg.pocket != 0 && !near_pocket(s.box_min, s.box_max, seg.pocket - 1))
+                if (seg.pocket != 0 && !near_pocket(reach[i], seg.pocket - 1))
                     continue;
                 consider(seed_segment_contact(b, seg, horizon),
                          c < 6 ? BoundaryKind::rail : BoundaryKind::jaw_line, c);
             }
             for (int p = 0; p < 6; ++p) {
-                if (!near_pocket(s.box_min, s.box_max, p))
+                if (!near_pocket(reach[i], p))
                     continue;
                 const Pocket& pocket = table.pockets[p];
                 consider(seed_line_contact(b, pocket.capture_point, pocket.capture_normal, horizon),
@@ -318,7 +309,7 @@ struct World::Impl {
         const Path path = path_now(i);
         for (int c = 0; c < 6; ++c) {
             const CushionSegment& seg = table.cushions[c];
-            if (!box_reaches_line(s.box_min, s.box_max, seg.start, seg.normal, R))
+            if (!box_reaches_line(reach[i], seg.start, seg.normal, R))
                 continue;
             const double dt = core::path_line_contact_time(path, seg.start, seg.normal, R, horizon);
             if (now + dt < best.time && hits_segment(path, dt, seg))
@@ -326,52 +317,47 @@ struct World::Impl {
         }
         // Nothing of the table is met after the first rail hit, so the pockets are searched only
         // up to it: for a fast ball that path's box is far smaller than the whole slide's.
-        const double reach = std::min(horizon, best.time - now);
-        Vec2 lo, hi;
-        extend_range(path.position.x, path.velocity.x, path.acceleration.x, reach, lo.x, hi.x);
-        extend_range(path.position.y, path.velocity.y, path.acceleration.y, reach, lo.y, hi.y);
+        const double until_rail = std::min(horizon, best.time - now);
+        const Box to_rail = path_box(path, until_rail);
         for (int p = 0; p < 6; ++p) {
-            if (!near_pocket(lo, hi, p))
+            if (!near_pocket(to_rail, p))
                 continue;
             // A pocket's region is wide; each jaw face and point is solved for only when the
             // path's box comes within R of it (the point is a quartic, the dearest solve here).
             for (int side = 0; side < 2; ++side) {
                 const int c = 6 + 2 * p + side;
                 const CushionSegment& seg = table.cushions[c];
-                if (boxes_within(lo, hi, lower_corner(seg.start, seg.end),
-                                 upper_corner(seg.start, seg.end), R)) {
+                if (boxes_within(to_rail, box_of(seg.start, seg.end), R)) {
                     const double dt =
-                        core::path_line_contact_time(path, seg.start, seg.normal, R, reach);
+                        core::path_line_contact_time(path, seg.start, seg.normal, R, until_rail);
                     if (now + dt < best.time && hits_segment(path, dt, seg))
                         consider(dt, BoundaryKind::jaw_line, c);
                 }
                 const int point = 2 * p + side;
                 const Vec2 jaw = table.jaw_points[point];
-                if (boxes_within(lo, hi, jaw, jaw, R))
-                    consider(core::path_point_contact_time(path, jaw, R, reach),
+                if (boxes_within(to_rail, {jaw, jaw}, R))
+                    consider(core::path_point_contact_time(path, jaw, R, until_rail),
                              BoundaryKind::jaw_point, point);
             }
             const Pocket& pocket = table.pockets[p];
-            if (box_reaches_line(lo, hi, pocket.capture_point, pocket.capture_normal, 0))
+            if (box_reaches_line(to_rail, pocket.capture_point, pocket.capture_normal, 0))
                 consider(core::path_line_contact_time(path, pocket.capture_point,
-                                                      pocket.capture_normal, 0, reach),
+                                                      pocket.capture_normal, 0, until_rail),
                          BoundaryKind::capture, p);
         }
         return best;
     }
 
-    bool near_pocket(Vec2 box_min, Vec2 box_max, int p) const {
+    bool near_pocket(const Box& box, int p) const {
         const Pocket& pocket = table.pockets[p];
-        return boxes_within(box_min, box_max, pocket.region_min, pocket.region_max,
-                            params.ball_radius);
+        return boxes_within(box, {pocket.region_min, pocket.region_max}, params.ball_radius);
     }
 
     // Whether any point of the slot's box is within `offset` of the line (rails are axis-aligned,
     // but this works for any line).
-    static bool box_reaches_line(Vec2 box_min, Vec2 box_max, Vec2 point, Vec2 normal,
-                                 double offset) {
-        const Vec2 corner{normal.x > 0 ? box_min.x : box_max.x,
-                          normal.y > 0 ? box_min.y : box_max.y};
+    static bool box_reaches_line(const Box& box, Vec2 point, Vec2 normal, double offset) {
+        const Vec2 corner{normal.x > 0 ? box.min.x : box.max.x,
+                          normal.y > 0 ? box.min.y : box.max.y};
         return dot(corner - point, normal) <= offset;
     }
 
