@@ -454,6 +454,30 @@ RandomCheck check_against_scan(const Polynomial4& f, double horizon, double got)
     return out;
 }
 
+// Counts the random cases of one test and reports each failure with the case that caused it.
+struct ScanTally {
+    int compared = 0;
+    int failures = 0;
+
+    void fail(const std::string& why, int n, double horizon, double got, const Polynomial4& f) {
+        ++failures;
+        std::ostringstream os;
+        os.precision(17);
+        os << why << "\n  case " << n << " horizon " << horizon << " got " << got << "\n  c = {"
+           << f.c[0] << ", " << f.c[1] << ", " << f.c[2] << ", " << f.c[3] << ", " << f.c[4] << "}";
+        FAIL_CHECK(os.str());
+    }
+
+    // first_contact_time's answer `got` against the dense scan.
+    void check(int n, const Polynomial4& f, double horizon, double got) {
+        const RandomCheck r = check_against_scan(f, horizon, got);
+        if (r.compared)
+            ++compared;
+        if (!r.ok)
+            fail(r.why, n, horizon, got, f);
+    }
+};
+
 } // namespace
 
 TEST_CASE("first_contact_time: random ball trajectories against a dense scan, and "
@@ -468,11 +492,10 @@ TEST_CASE("first_contact_time: random ball trajectories against a dense scan, an
     };
 
     constexpr int kCases = 200000;
-    int compared = 0;
+    ScanTally tally;
     int hits = 0;
     int bounds = 0;
-    int failures = 0;
-    for (int n = 0; n < kCases && failures < 5; ++n) {
+    for (int n = 0; n < kCases && tally.failures < 5; ++n) {
         const int kind = static_cast<int>(unit(rng) * 4.0);
         Vec2 d;
         Vec2 v;
@@ -522,34 +545,19 @@ TEST_CASE("first_contact_time: random ball trajectories against a dense scan, an
         const termpool::core::ContactEstimate estimate = first_contact_estimate(f, horizon);
         bounds += estimate.exact ? 0 : 1;
         if (estimate.exact ? estimate.time != got : !(estimate.time >= 0 && estimate.time <= got)) {
-            ++failures;
-            std::ostringstream os;
-            os.precision(17);
-            os << "estimate " << estimate.time << (estimate.exact ? " (exact)" : " (bound)")
-               << " against " << got << "\n  case " << n << " kind " << kind << " horizon "
-               << horizon << "\n  c = {" << f.c[0] << ", " << f.c[1] << ", " << f.c[2] << ", "
-               << f.c[3] << ", " << f.c[4] << "}";
-            FAIL_CHECK(os.str());
+            tally.fail("estimate " + std::to_string(estimate.time) +
+                           (estimate.exact ? " (exact)" : " (bound)") + ", kind " +
+                           std::to_string(kind),
+                       n, horizon, got, f);
         }
-        const RandomCheck r = check_against_scan(f, horizon, got);
-        if (r.compared)
-            ++compared;
-        if (!r.ok) {
-            ++failures;
-            std::ostringstream os;
-            os.precision(17);
-            os << r.why << "\n  case " << n << " kind " << kind << " horizon " << horizon << " got "
-               << got << "\n  c = {" << f.c[0] << ", " << f.c[1] << ", " << f.c[2] << ", " << f.c[3]
-               << ", " << f.c[4] << "}";
-            FAIL_CHECK(os.str());
-        }
+        tally.check(n, f, horizon, got);
     }
-    INFO("compared " << compared << " hits " << hits << " bounds " << bounds);
-    CHECK(failures == 0);
+    INFO("compared " << tally.compared << " hits " << hits << " bounds " << bounds);
+    CHECK(tally.failures == 0);
     // The generator must actually exercise both outcomes and mostly clear cases.
     CHECK(hits > kCases / 10);
     CHECK(bounds > kCases / 20);
-    CHECK(compared > kCases / 2);
+    CHECK(tally.compared > kCases / 2);
 }
 
 TEST_CASE("first_contact_time: random quartics against a dense scan", "[polynomial]") {
@@ -559,9 +567,8 @@ TEST_CASE("first_contact_time: random quartics against a dense scan", "[polynomi
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, unit(rng)); };
     constexpr int kCases = 60000;
-    int compared = 0;
-    int failures = 0;
-    for (int n = 0; n < kCases && failures < 5; ++n) {
+    ScanTally tally;
+    for (int n = 0; n < kCases && tally.failures < 5; ++n) {
         const int kind = static_cast<int>(unit(rng) * 3.0);
         Polynomial4 f;
         double horizon = log_uniform(1e-3, 10.0);
@@ -599,22 +606,10 @@ TEST_CASE("first_contact_time: random quartics against a dense scan", "[polynomi
             f = Polynomial4{{sign * m * m * k + e, sign * (-2.0 * m * k), sign * (k + m * m),
                              sign * (-2.0 * m), sign}};
         }
-        const double got = first_contact_time(f, horizon);
-        const RandomCheck r = check_against_scan(f, horizon, got);
-        if (r.compared)
-            ++compared;
-        if (!r.ok) {
-            ++failures;
-            std::ostringstream os;
-            os.precision(17);
-            os << r.why << "\n  case " << n << " kind " << kind << " horizon " << horizon << " got "
-               << got << "\n  c = {" << f.c[0] << ", " << f.c[1] << ", " << f.c[2] << ", " << f.c[3]
-               << ", " << f.c[4] << "}";
-            FAIL_CHECK(os.str());
-        }
+        tally.check(n, f, horizon, first_contact_time(f, horizon));
     }
-    CHECK(failures == 0);
-    CHECK(compared > kCases / 4);
+    CHECK(tally.failures == 0);
+    CHECK(tally.compared > kCases / 4);
 }
 
 TEST_CASE("first_contact_time: random quadratics (a ball against a line) against a dense scan",
@@ -628,27 +623,15 @@ TEST_CASE("first_contact_time: random quadratics (a ball against a line) against
         return (unit(rng) < 0.5 ? -1.0 : 1.0) * log_uniform(lo, hi);
     };
     constexpr int kCases = 40000;
-    int compared = 0;
-    int failures = 0;
-    for (int n = 0; n < kCases && failures < 5; ++n) {
+    ScanTally tally;
+    for (int n = 0; n < kCases && tally.failures < 5; ++n) {
         const double horizon = log_uniform(1e-3, 10.0);
         Polynomial4 f;
         f.c[0] = signed_mag(1e-6, 1.0);
         f.c[1] = signed_mag(1e-4, 20.0);
         f.c[2] = unit(rng) < 0.1 ? 0.0 : signed_mag(1e-3, 5.0);
-        const double got = first_contact_time(f, horizon);
-        const RandomCheck r = check_against_scan(f, horizon, got);
-        if (r.compared)
-            ++compared;
-        if (!r.ok) {
-            ++failures;
-            std::ostringstream os;
-            os.precision(17);
-            os << r.why << "\n  case " << n << " horizon " << horizon << " got " << got
-               << "\n  c = {" << f.c[0] << ", " << f.c[1] << ", " << f.c[2] << "}";
-            FAIL_CHECK(os.str());
-        }
+        tally.check(n, f, horizon, first_contact_time(f, horizon));
     }
-    CHECK(failures == 0);
-    CHECK(compared > kCases / 4);
+    CHECK(tally.failures == 0);
+    CHECK(tally.compared > kCases / 4);
 }
