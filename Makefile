@@ -144,8 +144,8 @@ FUZZ_SECONDS  ?= 600
 FUZZ_DIR      := build/fuzz
 FUZZ_FLAGS    := -std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -Iinclude -Isrc
 FUZZ_LIB_SRCS := $(wildcard src/core/*.cpp) src/cli/scenario.cpp src/cli/numbers.cpp \
-                 src/tui/config.cpp src/tui/player_name.cpp src/tui/text_width.cpp \
-                 src/tui/options.cpp
+                 src/tui/config.cpp src/tui/xdg_dir.cpp src/tui/player_name.cpp \
+                 src/tui/text_width.cpp src/tui/options.cpp
 FUZZ_LIB_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_LIB_SRCS))
 FUZZ_TARGETS  := $(patsubst tests/fuzz/%.cpp,$(FUZZ_DIR)/%,$(wildcard tests/fuzz/*.cpp))
 

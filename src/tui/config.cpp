@@ -1,9 +1,8 @@
 #include "tui/config.hpp"
 
-#include <cstdlib>
-
 #include "core/text_lines.hpp"
 #include "tui/player_name.hpp"
+#include "tui/xdg_dir.hpp"
 
 namespace termpool::tui {
 namespace {
@@ -19,15 +18,7 @@ std::string_view trim(std::string_view s) {
 } // namespace
 
 std::string config_path() {
-    const char* config = std::getenv("XDG_CONFIG_HOME");
-    std::string base;
-    if (config && *config) {
-        base = config;
-    } else {
-        const char* home = std::getenv("HOME");
-        base = std::string(home && *home ? home : ".") + "/.config";
-    }
-    return base + "/termpool/config";
+    return xdg_dir("XDG_CONFIG_HOME", ".config") + "/termpool/config";
 }
 
 std::optional<std::string> apply_config(std::string_view text, GameOptions& o,

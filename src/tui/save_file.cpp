@@ -1,13 +1,14 @@
 #include "tui/save_file.hpp"
 
 #include <cerrno>
-#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <fstream>
 #include <sstream>
 #include <sys/stat.h>
 #include <unistd.h>
+
+#include "tui/xdg_dir.hpp"
 
 namespace termpool::tui {
 namespace {
@@ -21,15 +22,7 @@ void make_directories(const std::string& dir) {
 } // namespace
 
 std::string save_path() {
-    const char* state = std::getenv("XDG_STATE_HOME");
-    std::string base;
-    if (state && *state) {
-        base = state;
-    } else {
-        const char* home = std::getenv("HOME");
-        base = std::string(home && *home ? home : ".") + "/.local/state";
-    }
-    return base + "/termpool/game.save";
+    return xdg_dir("XDG_STATE_HOME", ".local/state") + "/termpool/game.save";
 }
 
 bool write_atomically(const std::string& path, const std::string& text, std::string& error) {
