@@ -271,3 +271,36 @@ TEST_CASE("targets are ranked easiest first", "[tui]") {
     CHECK(dot(dir, want) == Approx(1).margin(1e-9));
     CHECK(targets_easiest_first(table, balls, R, cue, {}).empty());
 }
+
+TEST_CASE("the proposed aim never meets another ball first", "[tui]") {
+    // Ball 2 sits on the straight line from the cue ball to ball 1, which is the easiest pot
+    // on an empty table; ball 1 is legal, ball 2 is not.
+    const Vec2 cue{0.6, 0.6};
+    const std::vector<Ball> balls{ball_at(0, cue.x, cue.y), ball_at(1, 1.6, 0.6),
+                                  ball_at(2, 1.1, 0.6)};
+    const auto ranked = rank_targets(table, balls, R, cue, {1});
+    REQUIRE(ranked.size() == 1);
+    // Straight at ball 1 the cue ball would hit ball 2 first.
+    CHECK(
+        preview_shot(table, balls, R, cue, aim_from_pointer(cue, balls[1].position)).object_ball ==
+        2);
+    const AimPreview p = preview_shot(table, balls, R, cue, ranked[0].aim_deg);
+    CHECK(p.object_ball == 1);
+
+    // A blocker on the line from ball 1 to its best pocket makes that pocket harder.
+    const std::vector<Ball> open{ball_at(0, 1.4, 0.4), ball_at(1, 2.0, 0.2)};
+    const std::vector<Ball> blocked{ball_at(0, 1.4, 0.4), ball_at(1, 2.0, 0.2),
+                                    ball_at(5, 2.2, 0.14)};
+    const auto easy = rank_targets(table, open, R, {1.4, 0.4}, {1});
+    const auto hard = rank_targets(table, blocked, R, {1.4, 0.4}, {1});
+    REQUIRE(easy.size() == 1);
+    REQUIRE(hard.size() == 1);
+    CHECK(easy[0].pocket == 3);
+    CHECK(hard[0].difficulty > easy[0].difficulty);
+
+    // Fully hidden behind ball 2: no clear line, so it is ranked after a visible target.
+    const std::vector<Ball> hidden{ball_at(0, 0.6, 0.6), ball_at(1, 1.2, 0.6), ball_at(2, 0.7, 0.6),
+                                   ball_at(3, 0.6, 1.0)};
+    const auto order = targets_easiest_first(table, hidden, R, {0.6, 0.6}, {1, 3});
+    CHECK(order == std::vector<int>{3, 1});
+}

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 namespace termpool::tui {
 namespace {
@@ -184,13 +185,83 @@ AimPreview preview_shot(const Table& table, const std::vector<Ball>& balls, doub
     return out;
 }
 
+namespace {
+
+// The id of the first ball a cue ball sent from `cue` at `aim_deg` meets, -1 for none.
+int first_ball_hit(const Table& table, const std::vector<Ball>& balls, double R, Vec2 cue,
+                   double aim_deg) {
+    const Hit hit = cast(table, balls, R, cue, unit_from_angle(radians(aim_deg)), 0, 0);
+    return hit.ball >= 0 ? balls[static_cast<std::size_t>(hit.ball)].id : -1;
+}
+
+// An aim that meets ball `target` before any other ball: at its centre if that is clear, else
+// across its silhouette from the middle outwards. Nothing when every line is blocked.
+std::optional<double> clear_aim_at(const Table& table, const std::vector<Ball>& balls, double R,
+                                   Vec2 cue, const Ball& target) {
+    const Vec2 to_ball = target.position - cue;
+    const double distance = length(to_ball);
+    const double centre = aim_from_pointer(cue, target.position);
+    if (distance <= 2 * R)
+        return centre;
+    const double half_width = degrees(std::asin(2 * R / distance));
+    constexpr int steps = 8;
+    for (int k = 0; k <= steps; ++k)
+        for (const int sign : {1, -1}) {
+            const double aim = turn(centre, sign * half_width * 0.95 * k / steps);
+            if (first_ball_hit(table, balls, R, cue, aim) == target.id)
+                return aim;
+            if (k == 0)
+                break;
+        }
+    return std::nullopt;
+}
+
+// One-rail kicks at ball `target` for a cue ball that has no straight line to it: for each
+// rail, aim at the target's mirror image in the line the cue ball's centre meets the rail on,
+// and keep the aim when the cue ball reaches that rail first and then the target before any
+// other ball. The shortest such path, or nothing. (The real rebound differs a little from the
+// mirror, so this is the shot a player would try, not a promise.)
+std::optional<std::pair<double, double>> kick_aim_at(const Table& table,
+                                                     const std::vector<Ball>& balls, double R,
+                                                     Vec2 cue, const Ball& target) {
+    std::optional<std::pair<double, double>> best; // aim, path length
+    for (int k = 0; k < 6; ++k) {
+        const CushionSegment& rail = table.cushions[static_cast<std::size_t>(k)];
+        const Vec2 on_line = rail.start + rail.normal * R;
+        const Vec2 image =
+            target.position - rail.normal * (2 * dot(target.position - on_line, rail.normal));
+        const double aim = aim_from_pointer(cue, image);
+        const Vec2 d = unit_from_angle(radians(aim));
+        const Hit first = cast(table, balls, R, cue, d, 0, 0);
+        if (first.ball >= 0 || first.cushion != k || !std::isfinite(first.t))
+            continue;
+        const Vec2 bounce = cue + d * first.t;
+        const Vec2 out = d - rail.normal * (2 * dot(d, rail.normal));
+        const Hit second = cast(table, balls, R, bounce, out, 0, 0);
+        if (second.ball < 0 || balls[static_cast<std::size_t>(second.ball)].id != target.id)
+            continue;
+        const double path = first.t + second.t;
+        if (!best || path < best->second)
+            best = std::pair{aim, path};
+    }
+    return best;
+}
+
+} // namespace
+
 std::vector<TargetChoice> rank_targets(const Table& table, const std::vector<Ball>& balls, double R,
                                        Vec2 cue, const std::vector<int>& legal) {
     // Weights: one degree of cut counts as much as 5 cm of travel; a side pocket entered at
-    // an angle is harder still, and beyond 60 degrees from square the ball hits the jaw.
+    // an angle is harder still, and beyond 60 degrees from square the ball hits the jaw. A
+    // pocket whose path another ball blocks costs as much as a thin cut. A target is only
+    // offered along a line on which the cue ball meets it first, so that shooting the proposed
+    // aim never fouls by hitting another ball first; a target hidden behind other balls is
+    // offered as a one-rail kick, and one with no line at all comes last.
     constexpr double per_metre = 20.0;
     constexpr double max_cut = 80.0;
     constexpr double side_limit = 60.0;
+    constexpr double blocked_pocket = 60.0;
+    constexpr double no_pocket = 1000.0, kick_only = 1500.0, no_clear_line = 2000.0;
     std::vector<TargetChoice> out;
     for (const Ball& b : balls) {
         if (b.id == 0 || b.state == MotionState::pocketed)
@@ -198,8 +269,12 @@ std::vector<TargetChoice> rank_targets(const Table& table, const std::vector<Bal
         if (std::find(legal.begin(), legal.end(), b.id) == legal.end())
             continue;
         const Vec2 to_ball = b.position - cue;
-        TargetChoice best{b.id, 0, aim_from_pointer(cue, b.position),
-                          1000 + per_metre * length(to_ball)};
+        const std::optional<double> direct = clear_aim_at(table, balls, R, cue, b);
+        TargetChoice best{b.id, 0, direct.value_or(aim_from_pointer(cue, b.position)),
+                          (direct ? no_pocket : no_clear_line) + per_metre * length(to_ball)};
+        if (!direct)
+            if (const auto kick = kick_aim_at(table, balls, R, cue, b))
+                best = {b.id, 0, kick->first, kick_only + per_metre * kick->second};
         for (const Pocket& pocket : table.pockets) {
             const Vec2 to_pocket = pocket.position - b.position;
             const double pocket_distance = length(to_pocket);
@@ -223,8 +298,16 @@ std::vector<TargetChoice> rank_targets(const Table& table, const std::vector<Bal
                     continue;
                 score += off_square / 2;
             }
+            if (score >= best.difficulty)
+                continue;
+            const double aim = aim_from_pointer(cue, ghost);
+            if (first_ball_hit(table, balls, R, cue, aim) != b.id)
+                continue;
+            const Hit on_the_way = cast(table, balls, R, b.position, u, 0, b.id);
+            if (on_the_way.ball >= 0 && on_the_way.t < pocket_distance)
+                score += blocked_pocket;
             if (score < best.difficulty)
-                best = {b.id, pocket.number, aim_from_pointer(cue, ghost), score};
+                best = {b.id, pocket.number, aim, score};
         }
         out.push_back(best);
     }

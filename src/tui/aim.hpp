@@ -72,7 +72,10 @@ struct TargetChoice {
 
 /// The legal targets (ids in `legal`, which are on the table) ranked easiest first: for each,
 /// the pocket with the smallest cut angle and distance (cue ball to ghost ball, ball to pocket).
-/// Straight lines only; blockers are not considered.
+/// Straight lines only. Every aim offered meets its target before any other ball; a pocket
+/// whose line is blocked is passed over (the cue ball's line) or ranked harder (the object
+/// ball's). A hidden target is offered as a one-rail kick (mirror aim) after the visible ones,
+/// and one with no line at all comes last, aimed at its centre.
 std::vector<TargetChoice> rank_targets(const Table& table, const std::vector<Ball>& balls, double R,
                                        Vec2 cue, const std::vector<int>& legal);
 

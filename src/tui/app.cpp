@@ -45,11 +45,13 @@ bool calls_pocket(const Game& game, int target) {
 App::App(Terminal& terminal, const GameOptions& options)
     : term_(terminal), options_(options), table_(make_table(options.table)),
       params_(game_params(options)), game_(options.game, table_, params_, 1, 1),
-      seed_(static_cast<std::uint64_t>(Clock::now().time_since_epoch().count())) {
-    new_game(1);
+      seed_(options.seed.value_or(
+          static_cast<std::uint64_t>(Clock::now().time_since_epoch().count()))) {
+    // Names first: the first message already says who breaks.
     for (int p = 0; p < 2; ++p)
         if (options.names[p])
             names_[p] = *options.names[p];
+    new_game(1);
     time_power_ = options.timed_power;
     show_aid_ = options.aim_aid;
     if (options.watch)
@@ -99,6 +101,8 @@ void App::start_turn() {
     pocket_chosen_ = false;
     target_index_ = -1;
     side_ = follow_ = 0;
+    show_marker_ = false; // the pointer's mark belongs to the last aim
+    dragging_ = false;
     if (game_.winner() != 0) {
         mode_ = Mode::game_over;
         return;
@@ -107,6 +111,10 @@ void App::start_turn() {
         mode_ = Mode::choosing;
         return;
     }
+    // WPA 9-ball: a player on two fouls must be told before the shot that a third loses.
+    if (game_.type() == GameType::nine_ball && game_.consecutive_fouls(game_.shooter()) >= 2)
+        message_ += (message_.empty() ? "" : "; ") + names_[game_.shooter() - 1] +
+                    " is on two fouls: a third in a row loses the game";
     const Ball cue = [&] {
         for (const Ball& b : game_.balls())
             if (b.id == 0)
@@ -124,8 +132,29 @@ void App::start_turn() {
                             : cue.position;
         return;
     }
+    start_aiming();
+}
+
+void App::start_aiming() {
     mode_ = Mode::aiming;
     aim_at_easiest();
+    const std::string& who = names_[game_.shooter() - 1];
+    if (game_.push_out_allowed()) {
+        const std::string hint = "u declares a push-out";
+        message_ = message_.empty() ? who + ": aim and shoot, or " + hint : message_ + "; " + hint;
+    } else if (message_.empty()) {
+        message_ = who + ": aim (mouse or Left/Right), set power (Up/Down), Space shoots";
+    }
+}
+
+bool App::try_place(Vec2 spot) {
+    if (!place(spot)) {
+        message_ = "The cue ball cannot go there: " + placement_problem(game_, spot);
+        return false;
+    }
+    message_.clear();
+    start_aiming();
+    return true;
 }
 
 void App::aim_at_easiest() {
@@ -290,8 +319,8 @@ void App::computer_turn() {
             return;
         planning_ = false;
         if (place(place_)) {
-            mode_ = Mode::aiming;
-            aim_at_easiest();
+            message_.clear();
+            start_aiming();
         }
         return;
     }
@@ -555,18 +584,22 @@ void App::handle_key(int key, const std::string& text) {
             place_.y += 2 * step;
         else if (key == KEY_DOWN || text == "j")
             place_.y -= 2 * step;
-        else if ((key == key_enter || key == KEY_ENTER || text == " ") && place(place_)) {
-            message_.clear();
-            mode_ = Mode::aiming;
-            aim_at_easiest();
-        }
+        else if (key == key_enter || key == KEY_ENTER || text == " ")
+            try_place(place_);
+        // The keys keep the cue ball on the cloth, where the player can see it.
+        const double R = params_.ball_radius;
+        place_.x = std::clamp(place_.x, R, table_.length - R);
+        place_.y = std::clamp(place_.y, R, table_.width - R);
         return;
     }
     case Mode::aiming:
         break;
     }
 
-    // Aiming.
+    // Aiming. Keys move the aim away from the pointer, so its mark goes.
+    if (key == KEY_LEFT || key == KEY_RIGHT || key == KEY_SLEFT || key == KEY_SRIGHT ||
+        text == "h" || text == "l" || text == "H" || text == "L" || text == "[" || text == "]")
+        show_marker_ = false;
     if (key == KEY_LEFT || text == "h")
         aim_deg_ = turn(aim_deg_, 1);
     else if (key == KEY_RIGHT || text == "l")
@@ -632,11 +665,8 @@ void App::handle_mouse(const Input& in) {
     const Vec2 pointer = from_cell(layout_, table_.width, in.x, in.y);
     if (mode_ == Mode::placing) {
         place_ = pointer;
-        if ((in.clicked || in.released) && place(place_)) {
-            message_.clear();
-            mode_ = Mode::aiming;
-            aim_at_easiest();
-        }
+        if (in.clicked || in.released)
+            try_place(place_);
         return;
     }
     if (mode_ != Mode::aiming)
@@ -660,7 +690,10 @@ void App::handle_mouse(const Input& in) {
     marker_ = pointer;
     show_marker_ = true;
     aim_deg_ = aim_from_pointer(cue_position(), pointer);
-    if (!time_power_)
+    // Hovering only aims; the pointer's distance sets the power while a button is held, so
+    // a power set with the keys survives a look around the table.
+    const bool holding = in.pressed || dragging_;
+    if (!time_power_ && holding)
         power_ = power_from_distance(length(pointer - cue_position()));
     if (in.pressed) {
         if (time_power_) {

@@ -37,6 +37,8 @@ private:
     void new_game(int breaker);
     void after_shot();
     void start_turn();
+    void start_aiming();
+    bool try_place(Vec2 spot);
     void shoot();
     void play(const Strike& strike, const ShotCall& call);
     bool place(Vec2 spot);

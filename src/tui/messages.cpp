@@ -1,5 +1,7 @@
 #include "tui/messages.hpp"
 
+#include <algorithm>
+
 namespace termpool::tui {
 
 std::string foul_words(Foul foul) {
@@ -71,6 +73,26 @@ std::string win_message(const Verdict& v, int shooter, const std::string names[2
         break;
     }
     return winner + " wins";
+}
+
+std::string placement_problem(const Game& game, Vec2 spot) {
+    if (game.legal_placement(spot))
+        return "";
+    if (game.ball_in_hand() == BallInHand::none)
+        return "there is no ball in hand";
+    const double R = game.params().ball_radius;
+    if (!on_playing_surface(game.table(), spot, R))
+        return "that is off the cloth";
+    if (game.ball_in_hand() == BallInHand::kitchen && spot.x > game.table().head_string_x())
+        return "in the kitchen only (left of the head string)";
+    const auto& balls = game.balls();
+    const auto touched = std::find_if(balls.begin(), balls.end(), [&](const Ball& b) {
+        return b.id != 0 && b.state != MotionState::pocketed &&
+               length_squared(b.position - spot) < 4 * R * R;
+    });
+    if (touched != balls.end())
+        return "it would touch the " + std::to_string(touched->id);
+    return "not allowed there";
 }
 
 std::string verdict_message(const Verdict& v, int shooter, const std::string names[2]) {

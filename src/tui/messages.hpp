@@ -12,6 +12,9 @@ std::string foul_words(Foul foul);
 std::string choice_words(Choice choice);
 /// The end of the game: "Ann pocketed the 8 early — Bob wins". `names` are players 1 and 2.
 std::string win_message(const Verdict& verdict, int shooter, const std::string names[2]);
+/// Why the cue ball may not go to `spot` now ("behind the head string only", "it would touch
+/// the 5", ...); empty when it may.
+std::string placement_problem(const Game& game, Vec2 spot);
 /// The message line after a shot by `shooter`.
 std::string verdict_message(const Verdict& verdict, int shooter, const std::string names[2]);
 

@@ -2,6 +2,7 @@
 
 #include "tui/player_name.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
@@ -125,6 +126,19 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
                 return std::nullopt;
             }
             o.table = *size;
+        } else if (a == "--seed") {
+            // The first rack's seed, so that a game can be set up again exactly.
+            const std::string* v = value();
+            if (!v)
+                return std::nullopt;
+            char* end = nullptr;
+            errno = 0;
+            const unsigned long long seed = std::strtoull(v->c_str(), &end, 10);
+            if (v->empty() || *end != '\0' || errno != 0 || v->front() == '-') {
+                error = "--seed takes a whole number from 0 to 18446744073709551615";
+                return std::nullopt;
+            }
+            o.seed = seed;
         } else {
             error = "unknown option '" + a + "'";
             return std::nullopt;

@@ -1,6 +1,7 @@
 #pragma once
 // Command-line options of the game.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <termpool/computer.hpp>
@@ -24,6 +25,7 @@ struct GameOptions {
     double cue_ball_mass = 0;               ///< --cue-ball-mass KG (0: like the others)
     std::optional<Level> watch;             ///< --watch [LEVEL]: the computer is player 1 too
     std::optional<Level> computer;          ///< --vs-computer [LEVEL]: the computer is player 2
+    std::optional<std::uint64_t> seed;      ///< --seed S: the first rack's seed (else the clock)
 };
 
 /// Parses the game's options; on error returns nothing and sets `error`.

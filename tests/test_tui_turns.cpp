@@ -1,0 +1,213 @@
+// The start of a turn as a player meets it, through the real binary in tmux: the names the
+// player gave, the aim proposed, what to do next, why a placement is refused, the power kept
+// while the pointer only hovers, and the pointer's mark going when keys take over.
+#include <catch2/catch.hpp>
+#include <string>
+#include <termpool/record.hpp>
+#include <termpool/table.hpp>
+#include <variant>
+
+#include "tmux_session.hpp"
+#include "tui/aim.hpp"
+
+using termpool::test::file_text;
+using termpool::test::TempDir;
+using termpool::test::TmuxSession;
+
+namespace {
+
+// send-keys arguments that type `bytes` raw.
+std::string raw(const std::string& bytes) {
+    std::string args = "-H";
+    for (const char c : bytes) {
+        char b[8];
+        std::snprintf(b, sizeof b, " %02x", static_cast<unsigned char>(c));
+        args += b;
+    }
+    return args;
+}
+
+// An SGR mouse report (xterm-256color's kmous is \E[<) at cell (x, y): `button` 35 is motion
+// with no button held, 0 a press of button 1 (`release` for its release).
+std::string mouse_report(int button, int x, int y, bool release = false) {
+    return raw("\033[<" + std::to_string(button) + ";" + std::to_string(x + 1) + ";" +
+               std::to_string(y + 1) + (release ? "m" : "M"));
+}
+
+// The game in tmux at 100x32 with its state in `dir`.
+void start_game(const TmuxSession& t, const std::string& dir, const std::string& args) {
+    t.start("env XDG_STATE_HOME=" + dir + " TERM=xterm-256color LANG=C.UTF-8 " +
+            termpool::test::termpool_binary() + " " + args + "; sleep 60");
+}
+
+// The character at column x, row y of a captured screen (by bytes: fine for ASCII cells).
+std::string cell_text(const std::string& screen, int x, int y) {
+    std::size_t start = 0;
+    for (int row = 0; row < y && start != std::string::npos; ++row) {
+        start = screen.find('\n', start);
+        if (start != std::string::npos)
+            ++start;
+    }
+    if (start == std::string::npos)
+        return "";
+    const std::string line = screen.substr(start, screen.find('\n', start) - start);
+    // Multi-byte glyphs come before column x on a table row; count display columns instead.
+    int col = 0;
+    for (std::size_t i = 0; i < line.size();) {
+        std::size_t n = 1;
+        const unsigned char c = static_cast<unsigned char>(line[i]);
+        if (c >= 0xF0)
+            n = 4;
+        else if (c >= 0xE0)
+            n = 3;
+        else if (c >= 0xC0)
+            n = 2;
+        if (col == x)
+            return line.substr(i, n);
+        i += n;
+        ++col;
+    }
+    return "";
+}
+
+} // namespace
+
+TEST_CASE("the status line names the players and says what to do", "[tui][e2e]") {
+    if (!termpool::test::have_tmux())
+        return;
+    TempDir dir;
+    TmuxSession t;
+    start_game(t, dir.path, "--player1 Ann --player2 Bob --seed 1");
+    // The name given on the command line, not "Player 1".
+    REQUIRE(t.wait_for_text("Ann breaks: place the cue ball in the kitchen"));
+    CHECK(t.screen().find("Player 1") == std::string::npos);
+
+    // Out of the kitchen the placement is refused, with the reason.
+    t.repeat("Right", 30);
+    t.keys("Enter");
+    CHECK(t.wait_for_text("cannot go there: in the kitchen only"));
+    // The keys keep the cue ball on the cloth: many more steps still leave it on the table.
+    t.repeat("Up", 40);
+    t.keys("Enter");
+    CHECK(t.wait_for_text("cannot go there: in the kitchen only"));
+    // Back in the kitchen it goes, and the line says what comes next.
+    t.repeat("Left", 30);
+    t.repeat("Down", 20);
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    CHECK(t.wait_for_text("Ann: aim"));
+    CHECK(t.screen().find("Space shoots") != std::string::npos);
+}
+
+TEST_CASE("hovering aims but keeps the power; keys take the pointer's mark away", "[tui][e2e]") {
+    if (!termpool::test::have_tmux())
+        return;
+    TempDir dir;
+    TmuxSession t;
+    start_game(t, dir.path, "--player1 Ann --player2 Bob --seed 1");
+    REQUIRE(t.wait_for_text("place the cue ball"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    // Distance mode: ten steps down from 30% power gives 20%, 2.6 m/s on the break.
+    t.repeat("Down", 5);
+    REQUIRE(t.wait_for_text("] 2.6 m/s"));
+    // A hover over a far ball aims there, and the power stays.
+    const std::string before = t.screen();
+    t.keys(mouse_report(35, 86, 6));
+    REQUIRE(t.wait_for([&](const std::string& s) { return s != before; }, 5));
+    CHECK(t.wait_for_text("] 2.6 m/s", 1));
+    CHECK(cell_text(t.screen(), 86, 6) == "+");
+    // The keys turn the aim: the mark of the pointer is gone.
+    t.keys("Left");
+    CHECK(t.wait_for([](const std::string& s) { return cell_text(s, 86, 6) != "+"; }, 5));
+    // Dragging sets the power from the pointer's distance (far: full power, 12.0 m/s).
+    t.keys(mouse_report(0, 90, 12));
+    CHECK(t.wait_for_text("] 12.0 m/s", 5));
+}
+
+TEST_CASE("9-ball: Space at the start of each turn never hits a wrong ball first", "[tui][e2e]") {
+    if (!termpool::test::have_tmux())
+        return;
+    TempDir dir;
+    const std::string save = dir.path + "/termpool/game.save";
+    TmuxSession t;
+    start_game(t, dir.path, "--game 9ball --player1 Ann --player2 Bob --seed 2");
+    REQUIRE(t.wait_for_text("place the cue ball"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    t.repeat("Up", 40);
+    // The push-out is offered in words after the break.
+    auto shots_saved = [&] {
+        const std::string text = file_text(save);
+        int n = 0;
+        for (std::size_t at = text.find("\nshot "); at != std::string::npos;
+             at = text.find("\nshot ", at + 1))
+            ++n;
+        return n;
+    };
+    constexpr int shots = 11;
+    bool push_out_hint = false;
+    for (int shot = 0; shot < shots; ++shot) {
+        // Wait for a turn to start: aiming, or a ball in hand to place where proposed.
+        REQUIRE(t.wait_for(
+            [](const std::string& s) {
+                return s.find("[ shoot ]") != std::string::npos ||
+                       s.find("place the cue ball") != std::string::npos ||
+                       s.find("rematch") != std::string::npos;
+            },
+            20));
+        if (t.screen().find("rematch") != std::string::npos)
+            break;
+        if (t.screen().find("[ shoot ]") == std::string::npos) {
+            t.keys("Enter");
+            REQUIRE(t.wait_for_text("[ shoot ]"));
+        }
+        if (shot == 1)
+            push_out_hint = t.screen().find("u declares a push-out") != std::string::npos;
+        t.keys("Space");
+        t.keys("x");
+        REQUIRE(t.wait_for([&](const std::string&) { return shots_saved() == shot + 1; }, 20));
+    }
+    CHECK(push_out_hint);
+    t.keys("q");
+    t.keys("y");
+
+    // Replayed: every shot after the break went where the game proposed, at the easiest legal
+    // ball, and none that had a straight line to it hit a wrong ball first or no ball at all.
+    auto parsed = termpool::parse_record(file_text(save));
+    REQUIRE(std::holds_alternative<termpool::GameRecord>(parsed));
+    const termpool::GameRecord& record = std::get<termpool::GameRecord>(parsed);
+    termpool::Game game(record.game, termpool::make_table(record.table),
+                        termpool::record_params(record), record.breaker, record.seed);
+    int judged = 0, straight = 0;
+    for (const termpool::RecordedAction& a : record.actions) {
+        if (a.kind == termpool::RecordedAction::Kind::place) {
+            REQUIRE(game.place_cue_ball(a.place));
+            continue;
+        }
+        if (a.kind == termpool::RecordedAction::Kind::choose) {
+            REQUIRE(game.choose(a.choice));
+            continue;
+        }
+        const bool is_break = game.is_break();
+        termpool::Vec2 cue;
+        for (const termpool::Ball& b : game.balls())
+            if (b.id == 0)
+                cue = b.position;
+        const auto ranked = termpool::tui::rank_targets(
+            game.table(), game.balls(), game.params().ball_radius, cue, game.legal_targets());
+        const termpool::Verdict v = game.play(a.strike, a.call);
+        if (is_break || ranked.empty())
+            continue;
+        ++judged;
+        CAPTURE(judged, a.strike.angle_deg, ranked[0].ball, ranked[0].aim_deg);
+        CHECK(a.strike.angle_deg == Approx(ranked[0].aim_deg).margin(1e-9));
+        if (ranked[0].difficulty < 1500) { // a straight line, not a kick
+            ++straight;
+            CHECK(v.foul != termpool::Foul::wrong_ball_first);
+            CHECK(v.foul != termpool::Foul::no_contact);
+        }
+    }
+    CHECK(judged >= 5);
+    CHECK(straight >= 3);
+}
