@@ -64,6 +64,9 @@ int main(int argc, char** argv) {
         if (command == "bench") {
             return termpool::cli::bench_command(rest);
         }
+        if (command == "practice") {
+            return termpool::tui::run_practice(rest);
+        }
         if (command == "replay") {
             return termpool::tui::run_replay(rest);
         }

@@ -58,16 +58,23 @@ App::App(Terminal& terminal, const GameOptions& options)
         seat_computer(1, *options.watch);
     if (options.computer)
         seat_computer(2, *options.computer);
-    // Ask for the names the command line did not give.
+    if (options.practice) {
+        const RackType rack =
+            options.game == GameType::nine_ball ? RackType::nine_ball : RackType::eight_ball;
+        practice_.emplace(table_, params_, rack, seed_++);
+        sync_practice();
+        message_ = "Practice: no referee. m moves a ball, r takes a shot again, t racks again";
+    }
+    // Ask for the names the command line did not give (practice has one player).
     if (!options.names[0] && !computers_[0]) {
         entry_player_ = 1;
-    } else if (!options.names[1] && !computers_[1]) {
+    } else if (!options.names[1] && !computers_[1] && !practice_) {
         entry_player_ = 2;
     }
     mode_ = entry_player_ != 0 ? Mode::names : Mode::placing;
     mode_after_entry_ = Mode::placing;
     if (mode_ != Mode::names)
-        start_turn();
+        begin();
 }
 
 void App::new_game(int breaker) {
@@ -91,6 +98,12 @@ Vec2 App::cue_position() const {
         if (b.id == 0 && b.state != MotionState::pocketed)
             return b.position;
     return table_.head_spot();
+}
+
+void App::begin() {
+    if (!practice_)
+        message_ = names_[game_.shooter() - 1] + " breaks: place the cue ball in the kitchen";
+    start_turn();
 }
 
 void App::start_turn() {
@@ -143,7 +156,8 @@ void App::start_aiming() {
         const std::string hint = "u declares a push-out";
         message_ = message_.empty() ? who + ": aim and shoot, or " + hint : message_ + "; " + hint;
     } else if (message_.empty()) {
-        message_ = who + ": aim (mouse or Left/Right), set power (Up/Down), Space shoots";
+        message_ = who + ": aim (mouse or Left/Right), set power (Up/Down), Space shoots" +
+                   (practice_ ? "; m moves a ball" : "");
     }
 }
 
@@ -157,9 +171,19 @@ bool App::try_place(Vec2 spot) {
     return true;
 }
 
+std::vector<int> App::targets() const {
+    if (!practice_)
+        return game_.legal_targets();
+    std::vector<int> all; // no referee: every ball is fair
+    for (const Ball& b : game_.balls())
+        if (b.id != 0 && b.state != MotionState::pocketed)
+            all.push_back(b.id);
+    return all;
+}
+
 void App::aim_at_easiest() {
-    const std::vector<TargetChoice> order = rank_targets(table_, game_.balls(), params_.ball_radius,
-                                                         cue_position(), game_.legal_targets());
+    const std::vector<TargetChoice> order =
+        rank_targets(table_, game_.balls(), params_.ball_radius, cue_position(), targets());
     if (!order.empty()) {
         target_index_ = std::clamp(target_index_, 0, static_cast<int>(order.size()) - 1);
         aim_deg_ = order[static_cast<std::size_t>(target_index_)].aim_deg;
@@ -239,8 +263,8 @@ void App::choose(Choice choice) {
 }
 
 void App::save() {
-    if (replaying_)
-        return; // a replay shows a game; it never writes over the one in progress
+    if (replaying_ || practice_)
+        return; // a replay shows a game, practice has none: neither writes over a saved game
     // The record is the whole game: rewritten after every action, so a dropped connection
     // loses at most the shot in flight.
     for (int p = 0; p < 2; ++p) {
@@ -254,16 +278,18 @@ void App::save() {
 }
 
 void App::play(const Strike& strike, const ShotCall& call) {
-    if (!replaying_) {
+    if (!replaying_ && !practice_) {
         RecordedAction action;
         action.strike = strike;
         action.call = call;
         record_.actions.push_back(action);
     }
     call_ = call;
+    last_strike_ = strike;
     shooter_before_ = game_.shooter();
     Trajectory trajectory(params_, game_.balls().size());
-    result_ = simulate_shot(table_, params_, game_.balls(), strike, &trajectory);
+    result_ = practice_ ? practice_->shoot(strike, &trajectory)
+                        : simulate_shot(table_, params_, game_.balls(), strike, &trajectory);
     trajectory_ = std::move(trajectory);
     shot_start_ = Clock::now();
     mode_ = Mode::animating;
@@ -341,6 +367,11 @@ void App::computer_turn() {
 }
 
 void App::after_shot() {
+    if (practice_) {
+        trajectory_.reset();
+        practice_shot_done();
+        return;
+    }
     const Verdict v = game_.apply(call_, result_);
     trajectory_.reset();
     for (const int id : v.pocketed)
@@ -401,6 +432,8 @@ void App::compose(View& v) const {
         v.marker = marker_;
         v.called_pocket = safety_ ? 0 : called_pocket_;
     }
+    if (mode_ == Mode::moving)
+        compose_moving(v);
     if (mode_ == Mode::choosing) {
         std::string text = names_[game_.chooser() - 1] + ", choose:";
         for (std::size_t i = 0; i < game_.choices().size(); ++i)
@@ -459,8 +492,7 @@ void App::handle_text_entry(const Input& in) {
             entry_.clear();
             entry_error_.clear();
             entry_player_ = 0;
-            message_ = names_[game_.shooter() - 1] + " breaks: place the cue ball in the kitchen";
-            start_turn();
+            begin();
             return;
         }
         std::string error;
@@ -474,15 +506,13 @@ void App::handle_text_entry(const Input& in) {
         entry_.clear();
         entry_error_.clear();
         const bool starting = mode_ == Mode::names;
-        if (starting && entry_player_ == 1 && !options_.names[1] && !computers_[1]) {
+        if (starting && entry_player_ == 1 && !options_.names[1] && !computers_[1] && !practice_) {
             entry_player_ = 2;
             return;
         }
         entry_player_ = 0;
-        if (starting) {
-            message_ = names_[game_.shooter() - 1] + " breaks: place the cue ball in the kitchen";
-            start_turn();
-        }
+        if (starting)
+            begin();
     } else if (in.key == key_escape && mode_ != Mode::names) {
         entry_player_ = 0;
         entry_.clear();
@@ -547,6 +577,9 @@ void App::handle_key(int key, const std::string& text) {
     case Mode::names:
     case Mode::replay:
         return;
+    case Mode::moving:
+        handle_moving_key(key, text);
+        return;
     case Mode::animating:
         if (text == "x")
             shot_start_ -= std::chrono::hours(1);
@@ -593,6 +626,8 @@ void App::handle_key(int key, const std::string& text) {
         return;
     }
     case Mode::aiming:
+        if (practice_ && handle_practice_key(text))
+            return;
         break;
     }
 
@@ -617,7 +652,7 @@ void App::handle_key(int key, const std::string& text) {
         return;
     } else if (text == "[" || text == "]") {
         target_index_ += text == "]" ? 1 : -1;
-        const int n = static_cast<int>(game_.legal_targets().size());
+        const int n = static_cast<int>(targets().size());
         if (n > 0)
             target_index_ = (target_index_ % n + n) % n;
         aim_at_easiest();
@@ -662,6 +697,10 @@ void App::handle_mouse(const Input& in) {
     }
     if (!layout_.fits)
         return;
+    if (mode_ == Mode::moving) {
+        handle_moving_mouse(in);
+        return;
+    }
     const Vec2 pointer = from_cell(layout_, table_.width, in.x, in.y);
     if (mode_ == Mode::placing) {
         place_ = pointer;

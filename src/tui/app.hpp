@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <termpool/computer.hpp>
+#include <termpool/practice.hpp>
 #include <termpool/record.hpp>
 #include <termpool/rules.hpp>
 #include <termpool/simulator.hpp>
@@ -31,11 +32,12 @@ public:
     void tell(const std::string& message) { message_ = message; }
 
 private:
-    enum class Mode { names, placing, aiming, animating, choosing, game_over, replay };
+    enum class Mode { names, placing, aiming, animating, choosing, game_over, replay, moving };
     using Clock = std::chrono::steady_clock;
 
     void new_game(int breaker);
     void after_shot();
+    void begin();
     void start_turn();
     void start_aiming();
     bool try_place(Vec2 spot);
@@ -61,6 +63,18 @@ private:
     void aim_at_easiest();
     double current_power() const;
     Vec2 cue_position() const;
+    std::vector<int> targets() const;
+
+    // Practice (app_practice.cpp): no referee, any ball moved, the last shot taken again.
+    void sync_practice();
+    void practice_shot_done();
+    bool handle_practice_key(const std::string& text);
+    void start_moving();
+    void hold_ball(int id);
+    void put_down(Vec2 spot);
+    void handle_moving_key(int key, const std::string& text);
+    void handle_moving_mouse(const Input& in);
+    void compose_moving(View& view) const;
 
     Terminal& term_;
     GameOptions options_;
@@ -105,10 +119,16 @@ private:
     // Ball in hand.
     Vec2 place_;
 
+    // Practice: the table, and the ball being moved (-1: none held) with where it came from.
+    std::optional<PracticeTable> practice_;
+    int held_ball_ = -1;
+    Vec2 held_at_;
+
     // The shot being shown.
     std::optional<Trajectory> trajectory_;
     ShotResult result_;
     ShotCall call_;
+    Strike last_strike_; // practice: `r` sets it up again
     int shooter_before_ = 1;
     Clock::time_point shot_start_;
     std::vector<Ball> shown_balls_;

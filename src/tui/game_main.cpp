@@ -125,6 +125,31 @@ int run_game(const std::vector<std::string>& args) {
     });
 }
 
+int run_practice(const std::vector<std::string>& args) {
+    GameOptions defaults;
+    std::string config_error;
+    if (const auto config = read_whole_file(config_path(), config_error)) {
+        std::vector<std::string> warnings;
+        if (const auto bad = apply_config(*config, defaults, warnings)) {
+            std::fprintf(stderr, "%s:%s\n", config_path().c_str(), bad->c_str());
+            return 2;
+        }
+    }
+    std::string error;
+    auto options = parse_game_options(args, error, defaults);
+    if (options && (options->resume || options->watch || options->computer))
+        error = "practice is one player at the table: no --resume, --vs-computer or --watch";
+    if (!options || !error.empty()) {
+        std::fprintf(stderr,
+                     "termpool: %s\nusage: termpool practice [--game 8ball|8ball-bar|9ball] "
+                     "[--table 7ft|8ft|9ft] [--player1 NAME] [--seed S] [--ascii]\n",
+                     error.c_str());
+        return 2;
+    }
+    options->practice = true;
+    return in_terminal(*options, [](App&) {});
+}
+
 int run_replay(const std::vector<std::string>& args) {
     if (args.size() != 1) {
         std::fprintf(stderr, "usage: termpool replay FILE\n");

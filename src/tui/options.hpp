@@ -26,6 +26,7 @@ struct GameOptions {
     std::optional<Level> watch;             ///< --watch [LEVEL]: the computer is player 1 too
     std::optional<Level> computer;          ///< --vs-computer [LEVEL]: the computer is player 2
     std::optional<std::uint64_t> seed;      ///< --seed S: the first rack's seed (else the clock)
+    bool practice = false;                  ///< `termpool practice`: one player, no referee
 };
 
 /// Parses the game's options; on error returns nothing and sets `error`.

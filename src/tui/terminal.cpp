@@ -80,6 +80,8 @@ Palette palette(Colour c) {
 
 } // namespace
 
+const int key_left = KEY_LEFT, key_right = KEY_RIGHT, key_up = KEY_UP, key_down = KEY_DOWN;
+
 void restore_terminal_modes() {
     write_raw(mouse_motion_off);
     write_raw("\033[?25h");

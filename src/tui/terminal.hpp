@@ -28,6 +28,8 @@ struct Input {
 /// Keys with names curses does not have.
 inline constexpr int key_enter = '\n';
 inline constexpr int key_escape = 27;
+/// The arrow keys' codes in Input::key, for code that does not include curses.
+extern const int key_left, key_right, key_up, key_down;
 
 /// Curses colour pairs, made on first use for each (foreground, background) role pair.
 class ColourPairs {
