@@ -253,10 +253,10 @@ TEST_CASE("preview: at a cushion the path ends R from it", "[tui]") {
 
 TEST_CASE("targets are ranked easiest first", "[tui]") {
     // Ball 1 sits straight between the cue ball and corner pocket 3; ball 2 needs a thin cut
-    // to any pocket; ball 3 is not a legal target.
+    // to any pocket; ball 3 is not a legal target (and off ball 1's line to the pocket).
     const Vec2 cue{1.4, 0.4};
     const std::vector<Ball> balls{ball_at(0, cue.x, cue.y), ball_at(1, 2.0, 0.2),
-                                  ball_at(2, 1.9, 1.0), ball_at(3, 2.3, 0.1)};
+                                  ball_at(2, 1.9, 1.0), ball_at(3, 2.3, 0.9)};
     const std::vector<int> order = targets_easiest_first(table, balls, R, cue, {1, 2});
     REQUIRE(order == std::vector<int>{1, 2});
     const auto ranked = rank_targets(table, balls, R, cue, {1, 2});
@@ -273,11 +273,11 @@ TEST_CASE("targets are ranked easiest first", "[tui]") {
 }
 
 TEST_CASE("the proposed aim never meets another ball first", "[tui]") {
-    // Ball 2 sits on the straight line from the cue ball to ball 1, which is the easiest pot
-    // on an empty table; ball 1 is legal, ball 2 is not.
+    // Ball 2 covers the straight line from the cue ball to ball 1 but leaves a thin edge of
+    // it in view; ball 1 is legal, ball 2 is not.
     const Vec2 cue{0.6, 0.6};
     const std::vector<Ball> balls{ball_at(0, cue.x, cue.y), ball_at(1, 1.6, 0.6),
-                                  ball_at(2, 1.1, 0.6)};
+                                  ball_at(2, 1.1, 0.64)};
     const auto ranked = rank_targets(table, balls, R, cue, {1});
     REQUIRE(ranked.size() == 1);
     // Straight at ball 1 the cue ball would hit ball 2 first.
@@ -303,4 +303,8 @@ TEST_CASE("the proposed aim never meets another ball first", "[tui]") {
                                    ball_at(3, 0.6, 1.0)};
     const auto order = targets_easiest_first(table, hidden, R, {0.6, 0.6}, {1, 3});
     CHECK(order == std::vector<int>{3, 1});
+    // It is offered as a one-rail kick: the cue ball meets a rail first.
+    const auto kick = rank_targets(table, hidden, R, {0.6, 0.6}, {1});
+    REQUIRE(kick.size() == 1);
+    CHECK(preview_shot(table, hidden, R, {0.6, 0.6}, kick[0].aim_deg).cushion >= 0);
 }
