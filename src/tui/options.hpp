@@ -3,7 +3,9 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <termpool/computer.hpp>
+#include <termpool/race.hpp>
 #include <termpool/rules.hpp>
 #include <termpool/table.hpp>
 #include <vector>
@@ -24,7 +26,15 @@ struct GameOptions {
     double cue_ball_mass = 0;               ///< --cue-ball-mass KG (0: like the others)
     std::optional<Level> watch;             ///< --watch [LEVEL]: the computer is player 1 too
     std::optional<Level> computer;          ///< --vs-computer [LEVEL]: the computer is player 2
+
+    // The match: a single game unless a race is set.
+    int race_to = 1;                             ///< --race N: racks to win (1: one game)
+    BreakRule break_rule = BreakRule::alternate; ///< --breaks: who breaks each next rack
 };
+
+/// Parses a race length for --race and the config's `race`: a whole number from 1 to
+/// max_race_to; nothing otherwise.
+std::optional<int> parse_race_to(std::string_view text);
 
 /// Parses the game's options; on error returns nothing and sets `error`.
 /// `defaults` (from the config file) are what the command line starts from.
