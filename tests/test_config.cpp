@@ -63,3 +63,71 @@ TEST_CASE("unknown keys warn, bad values name their line", "[config]") {
         CHECK(error->starts_with(b.says));
     }
 }
+
+TEST_CASE("a race and its break rule come from the command line or the config", "[config][race]") {
+    std::string why;
+    const auto single = parse_game_options({}, why);
+    REQUIRE(single);
+    CHECK(single->race_to == 1);
+    CHECK(single->break_rule == BreakRule::alternate);
+
+    const auto race = parse_game_options({"--race", "5", "--breaks", "winner"}, why);
+    REQUIRE(race);
+    CHECK(race->race_to == 5);
+    CHECK(race->break_rule == BreakRule::winner);
+
+    GameOptions o;
+    std::vector<std::string> warnings;
+    CHECK_FALSE(apply_config("race = 7\nbreaks = winner\n", o, warnings));
+    CHECK(warnings.empty());
+    CHECK(o.race_to == 7);
+    CHECK(o.break_rule == BreakRule::winner);
+    // The command line wins over the config.
+    const auto over = parse_game_options({"--race", "1", "--breaks", "alternate"}, why, o);
+    REQUIRE(over);
+    CHECK(over->race_to == 1);
+    CHECK(over->break_rule == BreakRule::alternate);
+    const auto kept = parse_game_options({"--game", "9ball"}, why, o);
+    REQUIRE(kept);
+    CHECK(kept->race_to == 7);
+}
+
+TEST_CASE("bad races and break rules are refused", "[config][race]") {
+    const struct {
+        std::vector<std::string> args;
+        const char* says;
+    } bad[] = {
+        {{"--race", "0"}, "--race takes a number of racks from 1 to 99, not '0'"},
+        {{"--race", "100"}, "--race takes a number of racks from 1 to 99, not '100'"},
+        {{"--race", "3x"}, "--race takes a number of racks from 1 to 99, not '3x'"},
+        {{"--race", "-2"}, "--race takes a number of racks from 1 to 99, not '-2'"},
+        {{"--race", ""}, "--race takes a number of racks from 1 to 99, not ''"},
+        {{"--race"}, "--race needs a value"},
+        {{"--breaks", "loser"}, "unknown break rule 'loser' (alternate or winner)"},
+        {{"--breaks"}, "--breaks needs a value"},
+    };
+    for (const auto& b : bad) {
+        std::string why;
+        INFO(b.says);
+        CHECK_FALSE(parse_game_options(b.args, why));
+        CHECK(why == b.says);
+    }
+    const struct {
+        const char* text;
+        const char* says;
+    } bad_config[] = {
+        {"race = 0\n", "1: race is a number of racks from 1 to 99, not '0'"},
+        {"\nrace = many\n", "2: race is a number of racks from 1 to 99, not 'many'"},
+        {"race =\n", "1: race is a number of racks from 1 to 99, not ''"},
+        {"breaks = loser\n", "1: breaks is alternate or winner, not 'loser'"},
+    };
+    for (const auto& b : bad_config) {
+        GameOptions o;
+        std::vector<std::string> w;
+        const auto error = apply_config(b.text, o, w);
+        INFO(b.text);
+        REQUIRE(error);
+        CHECK(*error == b.says);
+        CHECK(o.race_to == 1);
+    }
+}

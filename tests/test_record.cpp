@@ -1,5 +1,6 @@
 // Game records: a whole game written out, read back and replayed bit for bit; bad records are
 // refused at their line.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <termpool/computer.hpp>
 #include <termpool/record.hpp>
@@ -10,39 +11,81 @@ using namespace termpool;
 
 namespace {
 
-// Two computers play a game, and every action goes into a record as the game would save it.
-std::pair<GameRecord, Game> played_game(GameType type, std::uint64_t seed) {
+// The player to act makes one move on `game`, and it goes into `record` as the game would save it.
+void play_one_action(Game& game, ComputerPlayer (&players)[2], GameRecord& record) {
+    const int actor = game.chooser() != 0 ? game.chooser() : game.shooter();
+    ComputerPlayer& player = players[actor - 1];
+    RecordedAction action;
+    if (game.chooser() != 0) {
+        action.kind = RecordedAction::Kind::choose;
+        action.choice = player.choose(game);
+        game.choose(action.choice);
+    } else if (game.ball_in_hand() != BallInHand::none && !game.ready_to_shoot()) {
+        action.kind = RecordedAction::Kind::place;
+        action.place = player.place_cue_ball(game);
+        game.place_cue_ball(action.place);
+    } else {
+        const ComputerShot shot = player.shot(game);
+        action.strike = shot.strike;
+        action.call = shot.call;
+        game.play(shot.strike, shot.call);
+    }
+    record.actions.push_back(action);
+}
+
+GameRecord two_players(GameType type, std::uint64_t seed) {
     GameRecord record;
     record.game = type;
     record.seed = seed;
     record.names[0] = "Ann Lee";
     record.names[1] = "Bjørn";
     record.computers[1] = Level::medium;
-    const PhysicsParams params = record_params(record);
-    Game game(type, make_table(record.table), params, record.breaker, record.seed);
+    return record;
+}
+
+// Two computers play a game, and every action goes into a record as the game would save it.
+std::pair<GameRecord, Game> played_game(GameType type, std::uint64_t seed) {
+    GameRecord record = two_players(type, seed);
+    Game game(type, make_table(record.table), record_params(record), record.breaker, record.seed);
     ComputerPlayer players[2] = {ComputerPlayer(Level::easy, seed),
                                  ComputerPlayer(Level::medium, seed + 1)};
-    for (int turn = 0; turn < 300 && game.winner() == 0; ++turn) {
-        const int actor = game.chooser() != 0 ? game.chooser() : game.shooter();
-        ComputerPlayer& player = players[actor - 1];
-        RecordedAction action;
-        if (game.chooser() != 0) {
-            action.kind = RecordedAction::Kind::choose;
-            action.choice = player.choose(game);
-            game.choose(action.choice);
-        } else if (game.ball_in_hand() != BallInHand::none && !game.ready_to_shoot()) {
-            action.kind = RecordedAction::Kind::place;
-            action.place = player.place_cue_ball(game);
-            game.place_cue_ball(action.place);
-        } else {
-            const ComputerShot shot = player.shot(game);
-            action.strike = shot.strike;
-            action.call = shot.call;
-            game.play(shot.strike, shot.call);
-        }
-        record.actions.push_back(action);
-    }
+    for (int turn = 0; turn < 300 && game.winner() == 0; ++turn)
+        play_one_action(game, players, record);
     return {record, game};
+}
+
+// A whole match as the game plays one: each rack after the first starts with a rack action.
+struct PlayedMatch {
+    GameRecord record;
+    Game game;                 // the last rack
+    MatchState score;          // as counted while playing
+    std::vector<int> breakers; // of each rack
+};
+
+PlayedMatch played_match(GameType type, std::uint64_t seed, int race_to, BreakRule rule) {
+    GameRecord record = two_players(type, seed);
+    record.race_to = race_to;
+    record.break_rule = rule;
+    Game game(type, make_table(record.table), record_params(record), record.breaker, record.seed);
+    MatchState score{race_to, rule, {0, 0}};
+    std::vector<int> breakers = {record.breaker};
+    ComputerPlayer players[2] = {ComputerPlayer(Level::pro, seed),
+                                 ComputerPlayer(Level::pro, seed + 1)};
+    for (int turn = 0; turn < 600 && score.match_winner() == 0; ++turn) {
+        play_one_action(game, players, record);
+        if (game.winner() == 0)
+            continue;
+        score.record_rack(game.winner());
+        if (score.match_winner() != 0)
+            break;
+        const int breaker = score.next_breaker(breakers.back(), game.winner());
+        const RecordedAction rack =
+            rack_action(record, static_cast<int>(breakers.size()) + 1, breaker);
+        record.actions.push_back(rack);
+        game = Game(type, make_table(record.table), record_params(record), rack.breaker, rack.seed);
+        breakers.push_back(breaker);
+    }
+    return {record, game, score, breakers};
 }
 
 std::string error_of(const std::string& text) {
@@ -108,5 +151,155 @@ TEST_CASE("bad records are refused at their line", "[record]") {
               "2: 're-rack' is not a choice owed now");
         CHECK(error_of("termpool-record 1\nplace 1.905 0.635\nend\n") ==
               "2: the cue ball cannot be placed there now");
+    }
+}
+
+TEST_CASE("a version-1 save is read and written back byte for byte", "[record]") {
+    // A save as this format's first version writes it: no race lines, version 1.
+    const std::string v1 = "termpool-record 1\n"
+                           "game 9ball\n"
+                           "table 8ft\n"
+                           "seed 42\n"
+                           "breaker 2\n"
+                           "player1 Ann Lee\n"
+                           "player2 Bob\n"
+                           "computer2 hard\n"
+                           "friction combined 0.25 0.125\n"
+                           "cue-ball-mass 0.17\n"
+                           "place 0.5 0.7\n"
+                           "shot 5.5 0.25 0.1 -0.2\n"
+                           "end\n";
+    const auto parsed = parse_record(v1);
+    REQUIRE(std::holds_alternative<GameRecord>(parsed));
+    const GameRecord& record = std::get<GameRecord>(parsed);
+    CHECK(record.game == GameType::nine_ball);
+    CHECK(record.breaker == 2);
+    CHECK(format_record(record) == v1);
+    const auto replayed = replay_record(record);
+    REQUIRE(std::holds_alternative<Game>(replayed));
+    CHECK(std::get<Game>(replayed).breaker() == 2);
+}
+
+TEST_CASE("a recorded race replays rack by rack to the same balls and score", "[record][race]") {
+    const struct {
+        GameType type;
+        BreakRule rule;
+        std::uint64_t seed;
+    } matches[] = {{GameType::nine_ball, BreakRule::alternate, 11},
+                   {GameType::eight_ball, BreakRule::winner, 5}};
+    for (const auto& m : matches) {
+        const PlayedMatch played = played_match(m.type, m.seed, 2, m.rule);
+        INFO(game_type_name(m.type) << ", " << break_rule_name(m.rule));
+        REQUIRE(played.score.match_winner() != 0);
+        REQUIRE(played.breakers.size() >= 2);
+        // The seeds are chosen so that the winner rule lets a player break twice running.
+        CHECK((std::adjacent_find(played.breakers.begin(), played.breakers.end()) !=
+               played.breakers.end()) == (m.rule == BreakRule::winner));
+        const std::string text = format_record(played.record);
+        CHECK(text.starts_with("termpool-record 2\n"));
+        CHECK(text.find(std::string("\nrace 2\nbreaks ") + break_rule_name(m.rule) + "\n") !=
+              std::string::npos);
+        const auto parsed = parse_record(text);
+        REQUIRE(std::holds_alternative<GameRecord>(parsed));
+        const GameRecord& back = std::get<GameRecord>(parsed);
+        CHECK(back.race_to == 2);
+        CHECK(back.break_rule == m.rule);
+        CHECK(format_record(back) == text);
+
+        // The listeners hear each rack start, and every shot after the start of its rack.
+        std::vector<int> breakers;
+        std::vector<int> shots_per_rack;
+        const auto replayed = replay_match(
+            back, [&](int, const Verdict&) { ++shots_per_rack.back(); },
+            [&](int rack, int breaker) {
+                CHECK(rack == static_cast<int>(breakers.size()) + 1);
+                breakers.push_back(breaker);
+                shots_per_rack.push_back(0);
+            });
+        REQUIRE(std::holds_alternative<ReplayedMatch>(replayed));
+        const ReplayedMatch& again = std::get<ReplayedMatch>(replayed);
+        CHECK(breakers == played.breakers);
+        CHECK(std::count(shots_per_rack.begin(), shots_per_rack.end(), 0) == 0);
+        CHECK(again.rack == static_cast<int>(played.breakers.size()));
+        CHECK(again.rack_breaker == played.breakers.back());
+        CHECK(again.score == played.score);
+        CHECK(again.score.match_winner() == played.score.match_winner());
+        CHECK(again.game.balls() == played.game.balls());
+        CHECK(again.game.winner() == played.game.winner());
+        // replay_record gives the same last rack.
+        const auto last = replay_record(back);
+        REQUIRE(std::holds_alternative<Game>(last));
+        CHECK(std::get<Game>(last).balls() == played.game.balls());
+    }
+}
+
+TEST_CASE("a single game is still written as version 1, without race lines", "[record][race]") {
+    const auto [record, game] = played_game(GameType::nine_ball, 4);
+    const std::string text = format_record(record);
+    CHECK(text.starts_with("termpool-record 1\n"));
+    CHECK(text.find("race") == std::string::npos);
+    CHECK(text.find("breaks") == std::string::npos);
+    const auto replayed = replay_match(record);
+    REQUIRE(std::holds_alternative<ReplayedMatch>(replayed));
+    const MatchState& score = std::get<ReplayedMatch>(replayed).score;
+    CHECK(score.race_to == 1);
+    CHECK(score.match_winner() == game.winner());
+}
+
+TEST_CASE("bad race records are refused at their line", "[record][race]") {
+    const PlayedMatch played = played_match(GameType::nine_ball, 11, 2, BreakRule::alternate);
+    const std::string good = format_record(played.record);
+    REQUIRE(error_of(good).empty());
+    auto line_of = [&](const std::string& text, std::size_t at) {
+        return std::to_string(1 + std::count(text.begin(), text.begin() + at, '\n'));
+    };
+
+    SECTION("a rack action in the middle of a rack") {
+        CHECK(error_of("termpool-record 2\nrace 2\nbreaks alternate\nrack 2 5\nend\n") ==
+              "4: a rack starts only when the one before is won");
+    }
+    SECTION("a breaker other than the rule's") {
+        const std::size_t at = good.find("\nrack ") + 1;
+        const char breaker = good[at + 5];
+        std::string wrong = good;
+        wrong[at + 5] = breaker == '1' ? '2' : '1';
+        CHECK(error_of(wrong) == line_of(wrong, at) + ": player " + std::string(1, breaker) +
+                                     " breaks this rack (the alternate rule)");
+    }
+    SECTION("a rack after the match is won") {
+        std::string more = good;
+        const std::size_t at = more.rfind("end\n");
+        more.insert(at, "rack 1 77\n");
+        CHECK(error_of(more) == line_of(more, at) + ": the match is over: no rack follows");
+        // A single game is a race to 1: won with its only rack.
+        const auto [record, game] = played_game(GameType::eight_ball, 3);
+        REQUIRE(game.winner() != 0);
+        GameRecord single = record;
+        single.actions.push_back(rack_action(single, 2, 3 - record.breaker));
+        const std::string text = format_record(single);
+        CHECK(error_of(text) ==
+              line_of(text, text.rfind("rack ")) + ": the match is over: no rack follows");
+    }
+    SECTION("bad race lines") {
+        const struct {
+            const char* text;
+            const char* says;
+        } bad[] = {
+            {"termpool-record 2\nrace 0\nend\n", "2: race must be a number of racks from 1 to 99"},
+            {"termpool-record 2\nrace 100\nend\n",
+             "2: race must be a number of racks from 1 to 99"},
+            {"termpool-record 2\nrace two\nend\n",
+             "2: race must be a number of racks from 1 to 99"},
+            {"termpool-record 2\nrace 3 4\nend\n", "2: unknown or malformed line 'race'"},
+            {"termpool-record 2\nbreaks loser\nend\n",
+             "2: unknown break rule 'loser' (alternate or winner)"},
+            {"termpool-record 2\nrace 3\nrack 3 1\nend\n", "3: rack breaker must be 1 or 2"},
+            {"termpool-record 2\nrace 3\nrack 1 -4\nend\n", "3: bad rack seed"},
+            {"termpool-record 2\nrace 3\nrack 1\nend\n", "3: unknown or malformed line 'rack'"},
+            {"termpool-record 1\nrace 3\nend\n", "2: 'race' lines need record version 2"},
+            {"termpool-record 1\nrack 1 4\nend\n", "2: 'rack' lines need record version 2"},
+        };
+        for (const auto& b : bad)
+            CHECK(error_of(b.text) == b.says);
     }
 }

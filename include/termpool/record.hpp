@@ -1,8 +1,8 @@
 #pragma once
 /// \file
-/// A game as a record: the rules context, the seed and the list of what the players did. The
-/// simulator is deterministic, so replaying the record rebuilds the game exactly. The text
-/// form is what the game saves (see the man page, FILES).
+/// A game, or a race-to-N match of games, as a record: the rules context, the seed and the list
+/// of what the players did. The simulator is deterministic, so replaying the record rebuilds
+/// the game exactly. The text form is what the game saves (see the man page, FILES).
 
 #include <cstdint>
 #include <functional>
@@ -10,36 +10,42 @@
 #include <string>
 #include <string_view>
 #include <termpool/computer.hpp>
+#include <termpool/race.hpp>
 #include <termpool/rules.hpp>
 #include <variant>
 #include <vector>
 
 namespace termpool {
 
-/// Version of the text form written by this build.
-inline constexpr int record_version = 1;
+/// Newest version of the text form, read and written by this build. Version 2 added races;
+/// a single game is still written as version 1, so that older builds read it.
+inline constexpr int record_version = 2;
 
-/// One thing a player did.
+/// One thing a player did, or the start of a match's next rack.
 struct RecordedAction {
-    enum class Kind { place, choose, shot };
+    enum class Kind { place, choose, shot, rack };
     Kind kind = Kind::shot;          ///< which
     Vec2 place;                      ///< place: where the cue ball went
     Choice choice = Choice::play_on; ///< choose: the option taken
     Strike strike;                   ///< shot: the strike
     ShotCall call;                   ///< shot: the call
+    int breaker = 1;                 ///< rack: who breaks it (as the break rule says)
+    std::uint64_t seed = 1;          ///< rack: its rack seed
     int line = 0;                    ///< the line it was read from (0 when made in memory)
 };
 
-/// A whole game.
+/// A whole game, or a whole match: its racks after the first each start with a rack action.
 struct GameRecord {
     GameType game = GameType::eight_ball;            ///< the rules
     TableSize table = TableSize::nine_foot;          ///< the table
-    std::uint64_t seed = 1;                          ///< the rack seed
+    std::uint64_t seed = 1;                          ///< the first rack's seed
     int breaker = 1;                                 ///< who broke the first rack
     std::string names[2] = {"Player 1", "Player 2"}; ///< the players
     std::optional<Level> computers[2];               ///< a computer in a seat, and its level
     FrictionModel friction;                          ///< the cloth model
     double cue_ball_mass = 0;                        ///< 0: like the other balls
+    int race_to = 1;                                 ///< racks to win the match; 0 or 1: one game
+    BreakRule break_rule = BreakRule::alternate;     ///< who breaks each next rack
     std::vector<RecordedAction> actions;             ///< in order
 };
 
@@ -59,11 +65,39 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text);
 /// The physics a record is played with.
 PhysicsParams record_params(const GameRecord& record);
 
-/// Plays the record's actions on a new game. An action the game refuses (a record edited into
-/// an impossible state) is an error at its line.
-/// `on_shot`, when given, hears each shot's shooter and verdict.
-std::variant<Game, RecordError>
-replay_record(const GameRecord& record,
-              const std::function<void(int shooter, const Verdict& verdict)>& on_shot = {});
+/// Hears each shot of a replay: who shot and what it meant.
+using ShotListener = std::function<void(int shooter, const Verdict& verdict)>;
+/// Hears the start of each rack of a replay, the first included, before its first action: its
+/// number (from 1) and who breaks it.
+using RackListener = std::function<void(int rack, int breaker)>;
+
+/// A match replayed to where its record stands.
+struct ReplayedMatch {
+    Game game;            ///< the current rack
+    MatchState score;     ///< the race and racks won; the current rack counts once it is won
+    int rack = 1;         ///< the current rack's number, from 1
+    int rack_breaker = 1; ///< who was given the current rack's break (re-racks aside)
+};
+
+/// Plays the record's actions on a new game, and each rack action's rack after the one before.
+/// An action the game refuses (a record edited into an impossible state) is an error at its
+/// line; so is a rack action before the rack is won, after the match is, or with a breaker
+/// other than the break rule's.
+std::variant<ReplayedMatch, RecordError> replay_match(const GameRecord& record,
+                                                      const ShotListener& on_shot = {},
+                                                      const RackListener& on_rack = {});
+
+/// `replay_match`, for the current rack's game only.
+std::variant<Game, RecordError> replay_record(const GameRecord& record,
+                                              const ShotListener& on_shot = {},
+                                              const RackListener& on_rack = {});
+
+/// The seed for rack `rack` (from 1) of a match: the record's seed for the first, a mix of it
+/// and the number for the others. Rack actions store the seed, so this may change freely.
+std::uint64_t rack_seed(std::uint64_t record_seed, int rack);
+
+/// The action that starts rack `rack` (2, 3, ...) of `record`'s match with `breaker` to break,
+/// seeded with `rack_seed`.
+RecordedAction rack_action(const GameRecord& record, int rack, int breaker);
 
 } // namespace termpool

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <termpool/random.hpp>
 #include <termpool/record.hpp>
 
 #include "core/text_lines.hpp"
@@ -49,10 +50,19 @@ std::string rest_after(std::string_view line, std::string_view keyword) {
     return std::string(rest);
 }
 
+// Lines that version 1 did not have: a record without them is written as version 1, so that a
+// single game reads in older builds.
+bool needs_version_2(const GameRecord& r) {
+    return r.race_to > 1 || std::any_of(r.actions.begin(), r.actions.end(), [](const auto& a) {
+               return a.kind == RecordedAction::Kind::rack;
+           });
+}
+
 } // namespace
 
 std::string format_record(const GameRecord& r) {
-    std::string out = "termpool-record " + std::to_string(record_version) + "\n";
+    std::string out =
+        "termpool-record " + std::to_string(needs_version_2(r) ? record_version : 1) + "\n";
     out += std::string("game ") + game_type_name(r.game) + "\n";
     out += std::string("table ") + table_size_name(r.table) + "\n";
     out += "seed " + std::to_string(r.seed) + "\n";
@@ -78,6 +88,10 @@ std::string format_record(const GameRecord& r) {
     }
     if (r.cue_ball_mass > 0)
         out += "cue-ball-mass " + number(r.cue_ball_mass) + "\n";
+    if (r.race_to > 1) {
+        out += "race " + std::to_string(r.race_to) + "\n";
+        out += std::string("breaks ") + break_rule_name(r.break_rule) + "\n";
+    }
     for (const RecordedAction& a : r.actions) {
         switch (a.kind) {
         case RecordedAction::Kind::place:
@@ -97,6 +111,9 @@ std::string format_record(const GameRecord& r) {
             if (a.call.push_out)
                 out += " push-out";
             out += "\n";
+            break;
+        case RecordedAction::Kind::rack:
+            out += "rack " + std::to_string(a.breaker) + " " + std::to_string(a.seed) + "\n";
             break;
         }
     }
@@ -118,6 +135,7 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
     GameRecord r;
     int line_number = 0;
     bool header = false, ended = false;
+    std::uint64_t version = 0;
     for (const core::TextLine& text_line : core::text_lines(text)) {
         const std::string_view line = text_line.text;
         line_number = text_line.number;
@@ -139,10 +157,13 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
                 return fail("record version " + std::to_string(*v) + " is newer than this " +
                             "termpool reads (" + std::to_string(record_version) + ")");
             header = true;
+            version = *v;
             continue;
         }
         const std::string_view key = f[0];
         auto want = [&](std::size_t n) { return f.size() == n; };
+        if (version < 2 && (key == "race" || key == "breaks" || key == "rack"))
+            return fail("'" + std::string(key) + "' lines need record version 2");
         if (key == "game" && want(2)) {
             const auto g = parse_game_type(std::string(f[1]));
             if (!g)
@@ -190,6 +211,29 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
             if (!m || *m <= 0)
                 return fail("cue-ball-mass must be a positive number");
             r.cue_ball_mass = *m;
+        } else if (key == "race" && want(2)) {
+            const auto n = to_u64(f[1]);
+            if (!n || *n < 1 || *n > static_cast<std::uint64_t>(max_race_to))
+                return fail("race must be a number of racks from 1 to " +
+                            std::to_string(max_race_to));
+            r.race_to = static_cast<int>(*n);
+        } else if (key == "breaks" && want(2)) {
+            const auto rule = parse_break_rule(f[1]);
+            if (!rule)
+                return fail("unknown break rule '" + std::string(f[1]) + "' (alternate or winner)");
+            r.break_rule = *rule;
+        } else if (key == "rack" && want(3)) {
+            if (f[1] != "1" && f[1] != "2")
+                return fail("rack breaker must be 1 or 2");
+            const auto s = to_u64(f[2]);
+            if (!s)
+                return fail("bad rack seed");
+            RecordedAction a;
+            a.kind = RecordedAction::Kind::rack;
+            a.breaker = f[1][0] - '0';
+            a.seed = *s;
+            a.line = line_number;
+            r.actions.push_back(a);
         } else if (key == "place" && want(3)) {
             const auto x = to_double(f[1]), y = to_double(f[2]);
             if (!x || !y)
@@ -259,34 +303,82 @@ PhysicsParams record_params(const GameRecord& r) {
     return p;
 }
 
-std::variant<Game, RecordError>
-replay_record(const GameRecord& r,
-              const std::function<void(int shooter, const Verdict& verdict)>& on_shot) {
+std::variant<ReplayedMatch, RecordError>
+replay_match(const GameRecord& r, const ShotListener& on_shot, const RackListener& on_rack) {
     const PhysicsParams params = record_params(r);
-    Game game(r.game, make_table(r.table, params.ball_radius), params, r.breaker, r.seed);
+    const Table table = make_table(r.table, params.ball_radius);
+    ReplayedMatch m{Game(r.game, table, params, r.breaker, r.seed),
+                    MatchState{r.race_to, r.break_rule, {0, 0}}, 1, r.breaker};
+    // A rack is counted once, when the action that won it has been played.
+    bool counted = false;
+    if (on_rack)
+        on_rack(m.rack, m.rack_breaker);
     for (const RecordedAction& a : r.actions) {
         switch (a.kind) {
         case RecordedAction::Kind::place:
-            if (!game.place_cue_ball(a.place))
+            if (!m.game.place_cue_ball(a.place))
                 return RecordError{a.line, "the cue ball cannot be placed there now"};
             break;
         case RecordedAction::Kind::choose:
-            if (!game.choose(a.choice))
+            if (!m.game.choose(a.choice))
                 return RecordError{a.line, std::string("'") + choice_name(a.choice) +
                                                "' is not a choice owed now"};
             break;
         case RecordedAction::Kind::shot: {
-            if (!game.ready_to_shoot())
+            if (!m.game.ready_to_shoot())
                 return RecordError{a.line, "no shot can be played now"};
-            const int shooter = game.shooter();
-            const Verdict v = game.play(a.strike, a.call);
+            const int shooter = m.game.shooter();
+            const Verdict v = m.game.play(a.strike, a.call);
             if (on_shot)
                 on_shot(shooter, v);
             break;
         }
+        case RecordedAction::Kind::rack: {
+            if (m.score.match_winner() != 0)
+                return RecordError{a.line, "the match is over: no rack follows"};
+            if (m.game.winner() == 0)
+                return RecordError{a.line, "a rack starts only when the one before is won"};
+            const int breaker = m.score.next_breaker(m.rack_breaker, m.game.winner());
+            if (a.breaker != breaker)
+                return RecordError{a.line, "player " + std::to_string(breaker) +
+                                               " breaks this rack (the " +
+                                               break_rule_name(r.break_rule) + " rule)"};
+            m.game = Game(r.game, table, params, a.breaker, a.seed);
+            ++m.rack;
+            m.rack_breaker = a.breaker;
+            counted = false;
+            if (on_rack)
+                on_rack(m.rack, m.rack_breaker);
+            break;
         }
+        }
+        if (!counted && m.game.winner() != 0)
+            counted = m.score.record_rack(m.game.winner());
     }
-    return game;
+    return m;
+}
+
+std::variant<Game, RecordError> replay_record(const GameRecord& record, const ShotListener& on_shot,
+                                              const RackListener& on_rack) {
+    auto replayed = replay_match(record, on_shot, on_rack);
+    if (const RecordError* e = std::get_if<RecordError>(&replayed))
+        return *e;
+    return std::move(std::get<ReplayedMatch>(replayed).game);
+}
+
+std::uint64_t rack_seed(std::uint64_t record_seed, int rack) {
+    if (rack <= 1)
+        return record_seed;
+    Random mix(record_seed ^ (static_cast<std::uint64_t>(rack) << 40));
+    return mix.next();
+}
+
+RecordedAction rack_action(const GameRecord& record, int rack, int breaker) {
+    RecordedAction a;
+    a.kind = RecordedAction::Kind::rack;
+    a.breaker = breaker;
+    a.seed = rack_seed(record.seed, rack);
+    return a;
 }
 
 } // namespace termpool

@@ -51,6 +51,17 @@ std::optional<std::string> apply_config(std::string_view text, GameOptions& o,
             if (!size)
                 return fail("unknown table '" + value + "' (7ft, 8ft or 9ft)");
             o.table = *size;
+        } else if (key == "race") {
+            const auto n = parse_race_to(value);
+            if (!n)
+                return fail("race is a number of racks from 1 to " + std::to_string(max_race_to) +
+                            ", not '" + value + "'");
+            o.race_to = *n;
+        } else if (key == "breaks") {
+            const auto rule = parse_break_rule(value);
+            if (!rule)
+                return fail("breaks is alternate or winner, not '" + value + "'");
+            o.break_rule = *rule;
         } else if (key == "power-mode") {
             if (value != "distance" && value != "timed")
                 return fail("power-mode is distance or timed, not '" + value + "'");

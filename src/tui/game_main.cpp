@@ -39,6 +39,8 @@ GameOptions options_from(const GameRecord& record, GameOptions options) {
     options.table = record.table;
     options.friction = record.friction;
     options.cue_ball_mass = record.cue_ball_mass;
+    options.race_to = record.race_to;
+    options.break_rule = record.break_rule;
     options.names[0] = record.names[0];
     options.names[1] = record.names[1];
     options.watch.reset();

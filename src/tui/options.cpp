@@ -3,10 +3,19 @@
 #include "tui/player_name.hpp"
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 
 namespace termpool::tui {
+
+std::optional<int> parse_race_to(std::string_view text) {
+    int n = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (ec != std::errc{} || end != text.data() + text.size() || n < 1 || n > max_race_to)
+        return std::nullopt;
+    return n;
+}
 
 std::optional<GameOptions> parse_game_options(const std::vector<std::string>& args,
                                               std::string& error, GameOptions o) {
@@ -139,6 +148,27 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
                 return std::nullopt;
             }
             o.seed = seed;
+        } else if (a == "--race") {
+            const std::string* v = value();
+            if (!v)
+                return std::nullopt;
+            const auto n = parse_race_to(*v);
+            if (!n) {
+                error = "--race takes a number of racks from 1 to " + std::to_string(max_race_to) +
+                        ", not '" + *v + "'";
+                return std::nullopt;
+            }
+            o.race_to = *n;
+        } else if (a == "--breaks") {
+            const std::string* v = value();
+            if (!v)
+                return std::nullopt;
+            const auto rule = parse_break_rule(*v);
+            if (!rule) {
+                error = "unknown break rule '" + *v + "' (alternate or winner)";
+                return std::nullopt;
+            }
+            o.break_rule = *rule;
         } else {
             error = "unknown option '" + a + "'";
             return std::nullopt;

@@ -4,7 +4,9 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <termpool/computer.hpp>
+#include <termpool/race.hpp>
 #include <termpool/rules.hpp>
 #include <termpool/table.hpp>
 #include <vector>
@@ -27,7 +29,15 @@ struct GameOptions {
     std::optional<Level> computer;          ///< --vs-computer [LEVEL]: the computer is player 2
     std::optional<std::uint64_t> seed;      ///< --seed S: the first rack's seed (else the clock)
     bool practice = false;                  ///< `termpool practice`: one player, no referee
+
+    // The match: a single game unless a race is set.
+    int race_to = 1;                             ///< --race N: racks to win (1: one game)
+    BreakRule break_rule = BreakRule::alternate; ///< --breaks: who breaks each next rack
 };
+
+/// Parses a race length for --race and the config's `race`: a whole number from 1 to
+/// max_race_to; nothing otherwise.
+std::optional<int> parse_race_to(std::string_view text);
 
 /// Parses the game's options; on error returns nothing and sets `error`.
 /// `defaults` (from the config file) are what the command line starts from.

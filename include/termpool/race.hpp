@@ -1,0 +1,48 @@
+#pragma once
+/// \file
+/// Race to N: a match of racks, won by the first player to win N of them. Only the score and
+/// who breaks next; the racks themselves are Games.
+
+#include <optional>
+#include <string_view>
+
+namespace termpool {
+
+/// Who breaks the next rack of a match.
+enum class BreakRule {
+    alternate, ///< the players take turns (WPA's default for match play)
+    winner,    ///< the winner of a rack breaks the next one
+};
+
+/// "alternate" or "winner".
+const char* break_rule_name(BreakRule rule);
+/// Parses a break rule's name; nothing for an unknown one.
+std::optional<BreakRule> parse_break_rule(std::string_view name);
+
+/// The longest race the game offers.
+inline constexpr int max_race_to = 99;
+
+/// The score of a match.
+struct MatchState {
+    int race_to = 1;                             ///< racks to win; 0 or 1: a single game
+    BreakRule break_rule = BreakRule::alternate; ///< who breaks each next rack
+    int racks_won[2] = {0, 0};                   ///< by player 1 and player 2
+
+    /// True for a race of more than one rack.
+    bool is_race() const { return race_to > 1; }
+    /// The racks won so far by both players.
+    int racks_played() const { return racks_won[0] + racks_won[1]; }
+    /// 1 or 2 once a player has won the race, else 0.
+    int match_winner() const;
+    /// Who breaks the rack after one that `rack_breaker` was given to break and `rack_winner`
+    /// won: 1 or 2.
+    int next_breaker(int rack_breaker, int rack_winner) const;
+    /// Counts a rack won by `winner` (1 or 2). Returns false, and counts nothing, for another
+    /// value or once the match is decided.
+    bool record_rack(int winner);
+
+    /// Equal scores of equal races.
+    bool operator==(const MatchState&) const = default;
+};
+
+} // namespace termpool

@@ -1,0 +1,45 @@
+// The score of a race-to-N match and who breaks next.
+#include <termpool/race.hpp>
+
+namespace termpool {
+
+const char* break_rule_name(BreakRule rule) {
+    switch (rule) {
+    case BreakRule::alternate:
+        return "alternate";
+    case BreakRule::winner:
+        return "winner";
+    }
+    return "?";
+}
+
+std::optional<BreakRule> parse_break_rule(std::string_view name) {
+    for (const BreakRule r : {BreakRule::alternate, BreakRule::winner})
+        if (name == break_rule_name(r))
+            return r;
+    return std::nullopt;
+}
+
+int MatchState::match_winner() const {
+    // A race to 0 is a single game too: one rack decides it.
+    const int needed = race_to > 1 ? race_to : 1;
+    for (int p = 0; p < 2; ++p)
+        if (racks_won[p] >= needed)
+            return p + 1;
+    return 0;
+}
+
+int MatchState::next_breaker(int rack_breaker, int rack_winner) const {
+    if (break_rule == BreakRule::winner)
+        return rack_winner == 2 ? 2 : 1;
+    return rack_breaker == 1 ? 2 : 1;
+}
+
+bool MatchState::record_rack(int winner) {
+    if ((winner != 1 && winner != 2) || match_winner() != 0)
+        return false;
+    ++racks_won[winner - 1];
+    return true;
+}
+
+} // namespace termpool
