@@ -5,33 +5,12 @@
 #include <termpool/computer.hpp>
 #include <termpool/record.hpp>
 
+#include "record_helpers.hpp"
 #include "rules_helpers.hpp"
 
 using namespace termpool;
 
 namespace {
-
-// The player to act makes one move on `game`, and it goes into `record` as the game would save it.
-void play_one_action(Game& game, ComputerPlayer (&players)[2], GameRecord& record) {
-    const int actor = game.chooser() != 0 ? game.chooser() : game.shooter();
-    ComputerPlayer& player = players[actor - 1];
-    RecordedAction action;
-    if (game.chooser() != 0) {
-        action.kind = RecordedAction::Kind::choose;
-        action.choice = player.choose(game);
-        game.choose(action.choice);
-    } else if (game.ball_in_hand() != BallInHand::none && !game.ready_to_shoot()) {
-        action.kind = RecordedAction::Kind::place;
-        action.place = player.place_cue_ball(game);
-        game.place_cue_ball(action.place);
-    } else {
-        const ComputerShot shot = player.shot(game);
-        action.strike = shot.strike;
-        action.call = shot.call;
-        game.play(shot.strike, shot.call);
-    }
-    record.actions.push_back(action);
-}
 
 GameRecord two_players(GameType type, std::uint64_t seed) {
     GameRecord record;
@@ -50,7 +29,7 @@ std::pair<GameRecord, Game> played_game(GameType type, std::uint64_t seed) {
     ComputerPlayer players[2] = {ComputerPlayer(Level::easy, seed),
                                  ComputerPlayer(Level::medium, seed + 1)};
     for (int turn = 0; turn < 300 && game.winner() == 0; ++turn)
-        play_one_action(game, players, record);
+        test::play_one_action(game, players, record);
     return {record, game};
 }
 
@@ -72,7 +51,7 @@ PlayedMatch played_match(GameType type, std::uint64_t seed, int race_to, BreakRu
     ComputerPlayer players[2] = {ComputerPlayer(Level::pro, seed),
                                  ComputerPlayer(Level::pro, seed + 1)};
     for (int turn = 0; turn < 600 && score.match_winner() == 0; ++turn) {
-        play_one_action(game, players, record);
+        test::play_one_action(game, players, record);
         if (game.winner() == 0)
             continue;
         score.record_rack(game.winner());

@@ -115,6 +115,9 @@ TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]
     REQUIRE(t.wait_for_text("Name of player 2"));
     t.keys("-l Bob");
     t.keys("Enter");
+    // The last question: the race length; Enter keeps a single game.
+    REQUIRE(t.wait_for_text("Race to how many racks?"));
+    t.keys("Enter");
     REQUIRE(t.wait_for_text("place the cue ball"));
     CHECK(t.flag("mouse_any_flag") == "1");
 

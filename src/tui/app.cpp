@@ -85,12 +85,52 @@ void App::new_game(int breaker) {
     record_.breaker = breaker;
     record_.friction = options_.friction;
     record_.cue_ball_mass = options_.cue_ball_mass;
+    record_.race_to = options_.race_to;
+    record_.break_rule = options_.break_rule;
+    match_ = MatchState{options_.race_to, options_.break_rule, {0, 0}};
+    rack_ = 1;
+    rack_breaker_ = breaker;
     game_ = Game(options_.game, table_, params_, breaker, record_.seed);
     pocketed_by_[0].clear();
     pocketed_by_[1].clear();
     shown_balls_ = game_.balls();
     trajectory_.reset();
     message_ = names_[breaker - 1] + " breaks: place the cue ball in the kitchen";
+}
+
+void App::next_rack() {
+    const int breaker = match_.next_breaker(rack_breaker_, game_.winner());
+    const RecordedAction rack = rack_action(record_, ++rack_, breaker);
+    record_.actions.push_back(rack);
+    start_rack(rack);
+    save();
+    message_ = "Rack " + std::to_string(rack_) + ": " + names_[breaker - 1] +
+               " breaks: place the cue ball in the kitchen";
+    start_turn();
+}
+
+void App::start_rack(const RecordedAction& rack) {
+    game_ = Game(record_.game, table_, params_, rack.breaker, rack.seed);
+    rack_breaker_ = rack.breaker;
+    pocketed_by_[0].clear();
+    pocketed_by_[1].clear();
+    shown_balls_ = game_.balls();
+}
+
+std::string App::game_over_text() const {
+    const auto score = [&] {
+        return names_[0] + " " + std::to_string(match_.racks_won[0]) + ", " + names_[1] + " " +
+               std::to_string(match_.racks_won[1]);
+    };
+    if (!match_.is_race())
+        return message_ + "\n\nr  rematch (loser breaks)\nn  new game\nq  quit";
+    const std::string race = "Race to " + std::to_string(match_.race_to) + ": " + score();
+    if (const int winner = match_.match_winner())
+        return message_ + "\n\n" + names_[winner - 1] + " wins the match\n" + race +
+               "\n\nr  rematch (loser breaks)\nn  new match\nq  quit";
+    const int breaker = match_.next_breaker(rack_breaker_, game_.winner());
+    return message_ + "\n\n" + race + "\n\nEnter  next rack (" + names_[breaker - 1] +
+           " breaks)\nq      quit (the match is saved)";
 }
 
 Vec2 App::cue_position() const {
@@ -374,6 +414,8 @@ void App::after_shot() {
     }
     const Verdict v = game_.apply(call_, result_);
     trajectory_.reset();
+    if (v.winner != 0)
+        match_.record_rack(v.winner);
     for (const int id : v.pocketed)
         if (id != 0)
             pocketed_by_[shooter_before_ - 1].push_back(id);
@@ -441,7 +483,7 @@ void App::compose(View& v) const {
         v.overlay = text;
     }
     if (mode_ == Mode::game_over)
-        v.overlay = message_ + "\n\nr  rematch (loser breaks)\nn  new game\nq  quit";
+        v.overlay = game_over_text();
     if (mode_ == Mode::names || entry_player_ != 0) {
         std::string text = "termpool \u2014 " + std::string(game_type_name(game_.type())) +
                            "\n\nName of player " + std::to_string(entry_player_) + ": " + entry_ +
@@ -451,6 +493,13 @@ void App::compose(View& v) const {
         if (!entry_error_.empty())
             text += "\n" + entry_error_;
         v.overlay = text;
+    }
+    if (asking_race_) {
+        v.overlay = "termpool \u2014 " + std::string(game_type_name(game_.type())) +
+                    "\n\nRace to how many racks? " + entry_ + "_\n(Enter keeps " +
+                    std::to_string(std::max(1, options_.race_to)) + "; 1 is a single game)";
+        if (!entry_error_.empty())
+            v.overlay += "\n" + entry_error_;
     }
     if (confirm_quit_)
         v.overlay = "Quit the game?  y / n";
@@ -492,7 +541,7 @@ void App::handle_text_entry(const Input& in) {
             entry_.clear();
             entry_error_.clear();
             entry_player_ = 0;
-            begin();
+            ask_race();
             return;
         }
         std::string error;
@@ -512,12 +561,55 @@ void App::handle_text_entry(const Input& in) {
         }
         entry_player_ = 0;
         if (starting)
-            begin();
+            ask_race();
     } else if (in.key == key_escape && mode_ != Mode::names) {
         entry_player_ = 0;
         entry_.clear();
         entry_error_.clear();
     }
+}
+
+void App::ask_race() {
+    // The last question of the name prompt: how long a match (practice has none).
+    if (practice_) {
+        begin();
+        return;
+    }
+    asking_race_ = true;
+    entry_.clear();
+    entry_error_.clear();
+}
+
+void App::handle_race_entry(const Input& in) {
+    if (in.kind == Input::Kind::text && in.text.size() == 1 && in.text[0] >= '0' &&
+        in.text[0] <= '9' && entry_.size() < 2) {
+        entry_ += in.text;
+        entry_error_.clear();
+        return;
+    }
+    if (in.kind != Input::Kind::key)
+        return;
+    if (in.key == KEY_BACKSPACE || in.key == 127 || in.key == 8) {
+        if (!entry_.empty())
+            entry_.pop_back();
+        return;
+    }
+    if (in.key != key_enter && in.key != KEY_ENTER && in.key != key_escape)
+        return;
+    if (in.key != key_escape && !entry_.empty()) {
+        const std::optional<int> race = parse_race_to(entry_);
+        if (!race) {
+            entry_error_ = "a race is 1 to " + std::to_string(max_race_to) + " racks";
+            return;
+        }
+        options_.race_to = *race;
+        record_.race_to = *race;
+        match_.race_to = *race;
+    }
+    asking_race_ = false;
+    entry_.clear();
+    entry_error_.clear();
+    begin();
 }
 
 void App::handle(const Input& in) {
@@ -529,6 +621,10 @@ void App::handle(const Input& in) {
         return;
     if (entry_player_ != 0) {
         handle_text_entry(in);
+        return;
+    }
+    if (asking_race_) {
+        handle_race_entry(in);
         return;
     }
     if (confirm_quit_) {
@@ -585,6 +681,11 @@ void App::handle_key(int key, const std::string& text) {
             shot_start_ -= std::chrono::hours(1);
         return;
     case Mode::game_over:
+        if (match_.is_race() && match_.match_winner() == 0) {
+            if (key == key_enter || key == KEY_ENTER || text == " " || text == "r")
+                next_rack();
+            return;
+        }
         if (text == "r" || text == "n") {
             const int loser = 3 - game_.winner();
             new_game(text == "r" ? loser : 1);
@@ -800,28 +901,39 @@ void App::start_replay(const GameRecord& record) {
 }
 
 void App::rewind_to(std::size_t action) {
-    // Rebuild the game from the start without animation, up to (not including) `action`.
-    game_ = Game(record_.game, table_, params_, record_.breaker, record_.seed);
-    pocketed_by_[0].clear();
-    pocketed_by_[1].clear();
-    next_action_ = 0;
-    while (next_action_ < action && next_action_ < record_.actions.size()) {
-        const RecordedAction& a = record_.actions[next_action_++];
-        if (a.kind == RecordedAction::Kind::place)
-            game_.place_cue_ball(a.place);
-        else if (a.kind == RecordedAction::Kind::choose)
-            game_.choose(a.choice);
-        else {
-            const int shooter = game_.shooter();
-            for (const int id : game_.play(a.strike, a.call).pocketed)
-                if (id != 0)
-                    pocketed_by_[shooter - 1].push_back(id);
-        }
-    }
+    // Rebuild the match from the start without animation, up to (not including) `action`.
+    GameRecord upto = record_;
+    upto.actions.resize(std::min(action, record_.actions.size()));
+    replay_from(upto);
+    next_action_ = upto.actions.size();
     trajectory_.reset();
     shown_balls_ = game_.balls();
     mode_ = Mode::replay; // no aiming, no placing: the replay only shows
     message_ = "Replay (space pauses, Left/Right step a shot, x skips, q quits)";
+}
+
+bool App::replay_from(const GameRecord& record) {
+    pocketed_by_[0].clear();
+    pocketed_by_[1].clear();
+    auto replayed = replay_match(
+        record,
+        [&](int shooter, const Verdict& v) {
+            for (const int id : v.pocketed)
+                if (id != 0)
+                    pocketed_by_[shooter - 1].push_back(id);
+        },
+        [&](int, int) {
+            pocketed_by_[0].clear();
+            pocketed_by_[1].clear();
+        });
+    auto* match = std::get_if<ReplayedMatch>(&replayed);
+    if (!match)
+        return false;
+    game_ = std::move(match->game);
+    match_ = match->score;
+    rack_ = match->rack;
+    rack_breaker_ = match->rack_breaker;
+    return true;
 }
 
 void App::replay_step() {
@@ -831,6 +943,8 @@ void App::replay_step() {
         const RecordedAction a = record_.actions[next_action_++]; // a copy: play() may record
         if (a.kind == RecordedAction::Kind::place) {
             game_.place_cue_ball(a.place);
+        } else if (a.kind == RecordedAction::Kind::rack) {
+            start_rack(a);
         } else if (a.kind == RecordedAction::Kind::choose) {
             game_.choose(a.choice);
         } else {
@@ -891,9 +1005,8 @@ void App::handle_replay_key(const Input& in) {
     }
 }
 
-void App::resume(const GameRecord& record, Game game) {
+void App::resume(const GameRecord& record) {
     record_ = record;
-    game_ = std::move(game);
     for (int p = 0; p < 2; ++p) {
         names_[p] = record.names[p];
         if (record.computers[p])
@@ -901,14 +1014,8 @@ void App::resume(const GameRecord& record, Game game) {
         else
             computers_[p].reset();
     }
-    // The panel's pocketed balls are not saved: they follow from the shots.
-    pocketed_by_[0].clear();
-    pocketed_by_[1].clear();
-    replay_record(record, [&](int shooter, const Verdict& v) {
-        for (const int id : v.pocketed)
-            if (id != 0)
-                pocketed_by_[shooter - 1].push_back(id);
-    });
+    // The panel's pocketed balls and the score are not saved: they follow from the actions.
+    replay_from(record_);
     entry_player_ = 0;
     message_ = "Game resumed: " + names_[game_.shooter() - 1] + " to play";
     start_turn();

@@ -24,8 +24,9 @@ public:
     App(Terminal& terminal, const GameOptions& options);
     /// Runs until the players quit or a signal arrives; returns the exit status.
     int run();
-    /// Continues a saved game: `game` is `record` replayed.
-    void resume(const GameRecord& record, Game game);
+    /// Continues a saved game (or match) from where `record` stands; `record` must replay
+    /// (game_main checks that before the terminal starts).
+    void resume(const GameRecord& record);
     /// Plays a saved game back instead of playing: space pauses, Left/Right step a shot.
     void start_replay(const GameRecord& record);
     /// Shows a line on the message line (for news from before the game started).
@@ -36,6 +37,9 @@ private:
     using Clock = std::chrono::steady_clock;
 
     void new_game(int breaker);
+    void next_rack();
+    void start_rack(const RecordedAction& rack);
+    std::string game_over_text() const;
     void after_shot();
     void begin();
     void start_turn();
@@ -47,6 +51,7 @@ private:
     void choose(Choice choice);
     void save();
     void rewind_to(std::size_t action);
+    bool replay_from(const GameRecord& record);
     void replay_step();
     void handle_replay_key(const Input& in);
     bool computer_to_act() const;
@@ -59,6 +64,8 @@ private:
     void handle_key(int key, const std::string& text);
     void handle_mouse(const Input& in);
     void handle_text_entry(const Input& in);
+    void ask_race();
+    void handle_race_entry(const Input& in);
     void update_preview();
     void aim_at_easiest();
     double current_power() const;
@@ -92,6 +99,7 @@ private:
     std::string entry_;
     std::string entry_error_;
     Mode mode_after_entry_ = Mode::placing;
+    bool asking_race_ = false; // the name prompt's last question: the race length
 
     // Overlays.
     bool help_ = false;
@@ -141,6 +149,9 @@ private:
     double aim_from_ = 0;
 
     GameRecord record_; // everything done so far, as saved
+    MatchState match_;  // the race and the racks won
+    int rack_ = 1;      // the current rack's number
+    int rack_breaker_ = 1;
     bool replaying_ = false;
     bool paused_ = false;
     std::size_t next_action_ = 0; // replay: the next action of record_ to show

@@ -120,7 +120,7 @@ int run_game(const std::vector<std::string>& args) {
 
     if (loaded)
         return in_terminal(options_from(loaded->record, *options),
-                           [&](App& app) { app.resume(loaded->record, std::move(loaded->game)); });
+                           [&](App& app) { app.resume(loaded->record); });
     return in_terminal(*options, [&](App& app) {
         if (!notice.empty())
             app.tell(notice);

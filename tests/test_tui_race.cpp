@@ -1,0 +1,143 @@
+// Race to N in the real binary: the race asked at the end of the name prompt, the score after
+// a rack, the next rack (the break alternating), and the match winner; the save holds the
+// whole match.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <string>
+#include <termpool/record.hpp>
+#include <variant>
+
+#include "record_helpers.hpp"
+#include "tmux_session.hpp"
+
+using namespace termpool;
+using termpool::test::file_text;
+using termpool::test::TempDir;
+using termpool::test::TmuxSession;
+
+namespace {
+
+// Two pro computers play 9-ball racks of a race to `race_to` until `racks` racks are won; the
+// record names two people, as a hot-seat match would save it.
+GameRecord race_record(int race_to, int racks, std::uint64_t seed) {
+    GameRecord record;
+    record.game = GameType::nine_ball;
+    record.seed = seed;
+    record.names[0] = "Ann";
+    record.names[1] = "Bob";
+    record.race_to = race_to;
+    MatchState score{race_to, BreakRule::alternate, {0, 0}};
+    Game game(record.game, make_table(record.table), record_params(record), 1, seed);
+    ComputerPlayer players[2] = {ComputerPlayer(Level::pro, seed),
+                                 ComputerPlayer(Level::pro, seed + 1)};
+    int breaker = 1;
+    for (int turn = 0; turn < 600; ++turn) {
+        test::play_one_action(game, players, record);
+        if (game.winner() == 0)
+            continue;
+        score.record_rack(game.winner());
+        if (score.racks_played() == racks || score.match_winner() != 0)
+            break;
+        breaker = score.next_breaker(breaker, game.winner());
+        const RecordedAction rack = rack_action(record, score.racks_played() + 1, breaker);
+        record.actions.push_back(rack);
+        game = Game(record.game, make_table(record.table), record_params(record), rack.breaker,
+                    rack.seed);
+    }
+    return record;
+}
+
+void write_save(const std::string& dir, const GameRecord& record) {
+    std::system(("mkdir -p " + dir + "/termpool").c_str());
+    std::ofstream(dir + "/termpool/game.save") << format_record(record);
+}
+
+std::string game(const std::string& dir, const std::string& args) {
+    return "env XDG_STATE_HOME=" + dir + " TERM=xterm-256color LANG=C.UTF-8 " +
+           test::termpool_binary() + " " + args + "; sleep 60";
+}
+
+} // namespace
+
+TEST_CASE("the name prompt ends with the race length", "[tui][e2e][race]") {
+    if (!test::have_tmux())
+        return;
+    TempDir dir;
+    TmuxSession t;
+    t.start(game(dir.path, "--seed 4"));
+    REQUIRE(t.wait_for_text("Name of player 1"));
+    t.keys("-l Ann");
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("Name of player 2"));
+    t.keys("-l Bob");
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("Race to how many racks?"));
+    t.keys("-l 123");
+    CHECK(t.wait_for_text("Race to how many racks? 12_"));
+    t.keys("BSpace BSpace 0 Enter");
+    CHECK(t.wait_for_text("a race is 1 to 99 racks"));
+    t.keys("BSpace 3 Enter");
+    REQUIRE(t.wait_for_text("Ann breaks: place the cue ball"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    t.keys("q");
+    t.keys("y");
+    // The save holds the race.
+    const std::string save = dir.path + "/termpool/game.save";
+    REQUIRE(t.wait_for(
+        [&](const std::string&) { return file_text(save).find("\nplace ") != std::string::npos; }));
+    CHECK(file_text(save).find("\nrace 3\nbreaks alternate\n") != std::string::npos);
+}
+
+TEST_CASE("a race: the score after a rack, the next rack, the match winner", "[tui][e2e][race]") {
+    if (!test::have_tmux())
+        return;
+    TempDir dir;
+    const std::string save = dir.path + "/termpool/game.save";
+    // Rack 1 won, the race to 2 goes on.
+    const GameRecord one_rack = race_record(2, 1, 11);
+    write_save(dir.path, one_rack);
+    auto replayed = replay_match(one_rack);
+    REQUIRE(std::holds_alternative<ReplayedMatch>(replayed));
+    const int first_winner = std::get<ReplayedMatch>(replayed).game.winner();
+    REQUIRE(first_winner != 0);
+    {
+        TmuxSession t;
+        t.start(game(dir.path, "--resume"));
+        const std::string score =
+            first_winner == 1 ? "Race to 2: Ann 1, Bob 0" : "Race to 2: Ann 0, Bob 1";
+        REQUIRE(t.wait_for_text(score));
+        // Alternate breaks: Ann broke rack 1, so Bob breaks rack 2.
+        CHECK(t.screen().find("next rack (Bob breaks)") != std::string::npos);
+        t.keys("Enter");
+        REQUIRE(t.wait_for_text("Rack 2: Bob breaks"));
+        t.keys("q");
+        t.keys("y");
+        REQUIRE(t.wait_for([&](const std::string&) {
+            return file_text(save).find("\nrack 2 ") != std::string::npos;
+        }));
+    }
+    // The saved match replays to rack 2 with the score of rack 1.
+    auto parsed = parse_record(file_text(save));
+    REQUIRE(std::holds_alternative<GameRecord>(parsed));
+    auto again = replay_match(std::get<GameRecord>(parsed));
+    REQUIRE(std::holds_alternative<ReplayedMatch>(again));
+    CHECK(std::get<ReplayedMatch>(again).rack == 2);
+    CHECK(std::get<ReplayedMatch>(again).rack_breaker == 2);
+    CHECK(std::get<ReplayedMatch>(again).score.racks_played() == 1);
+
+    // A match decided: the winner is announced and a rematch offered.
+    TempDir done;
+    const GameRecord whole = race_record(2, 3, 11);
+    auto decided = replay_match(whole);
+    REQUIRE(std::holds_alternative<ReplayedMatch>(decided));
+    const MatchState& final_score = std::get<ReplayedMatch>(decided).score;
+    REQUIRE(final_score.match_winner() != 0);
+    write_save(done.path, whole);
+    TmuxSession t;
+    t.start(game(done.path, "--resume"));
+    REQUIRE(t.wait_for_text("wins the match"));
+    const std::string winner = final_score.match_winner() == 1 ? "Ann" : "Bob";
+    CHECK(t.screen().find(winner + " wins the match") != std::string::npos);
+    CHECK(t.screen().find("r  rematch") != std::string::npos);
+}
