@@ -66,4 +66,17 @@ std::variant<Game, RecordError>
 replay_record(const GameRecord& record,
               const std::function<void(int shooter, const Verdict& verdict)>& on_shot = {});
 
+/// One shot of a replay, for listeners that need more than who shot and the verdict.
+struct ReplayedShot {
+    int shooter = 1;        ///< who played it
+    bool was_break = false; ///< it was a break
+    ShotCall call;          ///< the call as the game took it (push_out only when allowed)
+    Verdict verdict;        ///< what it meant
+};
+
+/// replay_record, with `on_shot` hearing each shot in full.
+std::variant<Game, RecordError>
+replay_record_shots(const GameRecord& record,
+                    const std::function<void(const ReplayedShot& shot)>& on_shot);
+
 } // namespace termpool

@@ -262,6 +262,15 @@ PhysicsParams record_params(const GameRecord& r) {
 std::variant<Game, RecordError>
 replay_record(const GameRecord& r,
               const std::function<void(int shooter, const Verdict& verdict)>& on_shot) {
+    return replay_record_shots(r, [&](const ReplayedShot& shot) {
+        if (on_shot)
+            on_shot(shot.shooter, shot.verdict);
+    });
+}
+
+std::variant<Game, RecordError>
+replay_record_shots(const GameRecord& r,
+                    const std::function<void(const ReplayedShot& shot)>& on_shot) {
     const PhysicsParams params = record_params(r);
     Game game(r.game, make_table(r.table, params.ball_radius), params, r.breaker, r.seed);
     for (const RecordedAction& a : r.actions) {
@@ -278,10 +287,11 @@ replay_record(const GameRecord& r,
         case RecordedAction::Kind::shot: {
             if (!game.ready_to_shoot())
                 return RecordError{a.line, "no shot can be played now"};
-            const int shooter = game.shooter();
-            const Verdict v = game.play(a.strike, a.call);
+            ReplayedShot shot{game.shooter(), game.is_break(), a.call, {}};
+            shot.call.push_out = a.call.push_out && game.push_out_allowed();
+            shot.verdict = game.play(a.strike, a.call);
             if (on_shot)
-                on_shot(shooter, v);
+                on_shot(shot);
             break;
         }
         }
