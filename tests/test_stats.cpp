@@ -460,14 +460,14 @@ TEST_CASE("names that would break a line or the terminal are cleaned", "[stats][
 }
 
 TEST_CASE("a damaged totals file is refused at its line", "[stats][file]") {
-    const std::string head = "termpool stats 1\n";
+    const std::string head = "termpool-stats 1\n";
     const std::string ok = "player 1 2 30 20 10 12 3 1 5 Ann\n";
     CHECK(parse_error(head + ok) == "");
     CHECK(parse_error("# comment\n\n" + head + ok) == "");
-    CHECK(parse_error("") == "1: no 'termpool stats 1' line: not a stats file, or cut short");
+    CHECK(parse_error("") == "1: no 'termpool-stats 1' line: not a stats file, or cut short");
     CHECK(parse_error("player 1 2 3\n") ==
-          "1: not a termpool stats file (expected 'termpool stats 1')");
-    CHECK(parse_error("termpool stats 2\n") ==
+          "1: not a termpool stats file (expected 'termpool-stats 1')");
+    CHECK(parse_error("termpool-stats 2\n") ==
           "1: written by a newer termpool (version 2; this one reads 1)");
     CHECK(parse_error(head + ok + "player 1 2 30 20 10 12 3 1\n") == "3: missing the longest run");
     CHECK(parse_error(head + ok + "player 1 2 30 20 10 12 3 1 5\n") ==
@@ -511,7 +511,7 @@ TEST_CASE("saving a game's figures adds them to the totals", "[stats][file]") {
 TEST_CASE("a damaged totals file is reported with its line and kept as .bad", "[stats][file]") {
     const TempDir dir;
     const std::string path = dir.path() + "/termpool/stats";
-    const std::string damaged = "termpool stats 1\nplayer 1 1 9 9 9 9 0 0 0 Ann\nplayer 1 1 9\n";
+    const std::string damaged = "termpool-stats 1\nplayer 1 1 9 9 9 9 0 0 0 Ann\nplayer 1 1 9\n";
     spill(path, damaged);
     const std::string names[2] = {"Ann", "Bob"};
     const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
@@ -619,11 +619,11 @@ TEST_CASE("termpool stats prints the totals, says when there are none, refuses d
     CHECK(r.status == 1);
     CHECK(r.err.find("no statistics for 'Nobody'") != std::string::npos);
 
-    spill(path, "termpool stats 1\nplayer 1 1 1\n");
+    spill(path, "termpool-stats 1\nplayer 1 1 1\n");
     r = run_stats(dir, state, "");
     CHECK(r.status == 2);
     CHECK(r.err.starts_with(path + ":2: missing the pot attempts\n"));
-    CHECK(slurp(path) == "termpool stats 1\nplayer 1 1 1\n"); // left as it is
+    CHECK(slurp(path) == "termpool-stats 1\nplayer 1 1 1\n"); // left as it is
 
     r = run_stats(dir, state, "--help");
     CHECK(r.status == 0);

@@ -93,7 +93,7 @@ std::optional<std::string> contradiction(const PlayerStats& s) {
 }
 
 std::string header() {
-    return "termpool stats " + std::to_string(stats_version);
+    return "termpool-stats " + std::to_string(stats_version);
 }
 
 } // namespace
@@ -143,8 +143,8 @@ std::variant<StatsStore, StatsError> parse_stats(std::string_view text) {
         };
         std::string_view rest = content;
         if (!have_header) {
-            const std::string_view a = next_field(rest), b = next_field(rest), v = next_field(rest);
-            if (a != "termpool" || b != "stats" || v.empty() || !trim(rest).empty())
+            const std::string_view magic = next_field(rest), v = next_field(rest);
+            if (magic != "termpool-stats" || v.empty() || !trim(rest).empty())
                 return fail("not a termpool stats file (expected '" + header() + "')");
             std::string error;
             const auto version = parse_count(v, error);

@@ -7,7 +7,7 @@
 // finished a game; '#' starts a comment line. The name comes last and runs to the end of the
 // line, so it may hold spaces and any printable UTF-8:
 //
-//     termpool stats 1
+//     termpool-stats 1
 //     # won played shots attempts pots potted fouls break-and-runs longest-run name
 //     player 3 5 212 150 98 120 12 1 7 Ann Lee
 
