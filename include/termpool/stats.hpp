@@ -12,8 +12,8 @@
 ///   push-out ends a visit too: the opponent decides what happens next.
 /// - a shot is *legal* when it neither fouls nor loses the rack.
 /// - *balls potted*: object balls pocketed on the player's legal shots, breaks included,
-///   less those the rules put back on the table (a 9 on a push-out, the 8 on an 8-ball
-///   break).
+///   less those the rules put back on the table (a 9 on a push-out, an 8 on an 8-ball
+///   break that does not win).
 /// - a *pot attempt* is any shot but a break, a called safety or a push-out; it *succeeds*
 ///   when it is legal, pockets at least one object ball and the shooter keeps the table (or
 ///   wins the rack with it).

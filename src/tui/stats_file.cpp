@@ -5,7 +5,6 @@
 #include <charconv>
 #include <fcntl.h>
 #include <sys/file.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include "core/text_lines.hpp"
@@ -239,13 +238,6 @@ StatsFile read_stats_file(const std::string& path) {
 }
 
 StatsLock::StatsLock(const std::string& path) {
-    // The directory may not exist before the first game: write_atomically would make it, so
-    // the lock makes it too.
-    const std::size_t slash = path.rfind('/');
-    if (slash != std::string::npos)
-        for (std::size_t i = 1; i <= slash; ++i)
-            if (i == slash || path[i] == '/')
-                ::mkdir(path.substr(0, i).c_str(), 0700);
     fd_ = ::open((path + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
     if (fd_ < 0)
         return;

@@ -80,8 +80,9 @@ struct StatsFile {
 StatsFile read_stats_file(const std::string& path);
 
 /// Holds an exclusive lock beside `path` (`path`.lock) while it lives, so that two games
-/// ending at once do not lose one another's figures. Without a lock (a read-only directory)
-/// the work goes on unlocked: the write itself is still atomic.
+/// ending at once do not lose one another's figures. Without a lock file (before the first
+/// save makes the directory, or in a read-only one) the work goes on unlocked: the write
+/// itself is still atomic.
 class StatsLock {
 public:
     /// Waits for the lock on `path`.
