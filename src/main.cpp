@@ -2,6 +2,7 @@
 
 #include "cli/commands.hpp"
 #include "tui/game_main.hpp"
+#include "tui/stats_command.hpp"
 
 #include <exception>
 #include <iostream>
@@ -29,6 +30,8 @@ void print_usage(std::ostream& out) {
            "                               the seed report's friction and mass study\n"
            "  termpool selfplay --games N --p1 LEVEL --p2 LEVEL [--game G] [--seed S]\n"
            "           [--jobs J]        computer against computer\n"
+           "  termpool stats [--reset NAME]\n"
+           "                               players' totals over their finished games\n"
            "\n"
            "options:\n"
            "  -h, --help                   print this help and exit\n"
@@ -75,6 +78,9 @@ int main(int argc, char** argv) {
         }
         if (command == "selfplay") {
             return termpool::cli::selfplay_command(rest);
+        }
+        if (command == "stats") {
+            return termpool::tui::stats_command(rest);
         }
     } catch (const std::exception& e) {
         std::cerr << "termpool: error: " << e.what() << '\n';

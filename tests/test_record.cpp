@@ -189,7 +189,7 @@ TEST_CASE("a recorded race replays rack by rack to the same balls and score", "[
         std::vector<int> breakers;
         std::vector<int> shots_per_rack;
         const auto replayed = replay_match(
-            back, [&](int, const Verdict&) { ++shots_per_rack.back(); },
+            back, [&](const ReplayedShot&) { ++shots_per_rack.back(); },
             [&](int rack, int breaker) {
                 CHECK(rack == static_cast<int>(breakers.size()) + 1);
                 breakers.push_back(breaker);

@@ -65,8 +65,16 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text);
 /// The physics a record is played with.
 PhysicsParams record_params(const GameRecord& record);
 
-/// Hears each shot of a replay: who shot and what it meant.
-using ShotListener = std::function<void(int shooter, const Verdict& verdict)>;
+/// One shot of a replay, for listeners that need more than who shot and the verdict.
+struct ReplayedShot {
+    int shooter = 1;        ///< who played it
+    bool was_break = false; ///< it was a break
+    ShotCall call;          ///< the call as the game took it (push_out only when allowed)
+    Verdict verdict;        ///< what it meant
+};
+
+/// Hears each shot of a replay: who shot, how, and what it meant.
+using ShotListener = std::function<void(const ReplayedShot& shot)>;
 /// Hears the start of each rack of a replay, the first included, before its first action: its
 /// number (from 1) and who breaks it.
 using RackListener = std::function<void(int rack, int breaker)>;

@@ -327,10 +327,11 @@ replay_match(const GameRecord& r, const ShotListener& on_shot, const RackListene
         case RecordedAction::Kind::shot: {
             if (!m.game.ready_to_shoot())
                 return RecordError{a.line, "no shot can be played now"};
-            const int shooter = m.game.shooter();
-            const Verdict v = m.game.play(a.strike, a.call);
+            ReplayedShot shot{m.game.shooter(), m.game.is_break(), a.call, {}};
+            shot.call.push_out = a.call.push_out && m.game.push_out_allowed();
+            shot.verdict = m.game.play(a.strike, a.call);
             if (on_shot)
-                on_shot(shooter, v);
+                on_shot(shot);
             break;
         }
         case RecordedAction::Kind::rack: {

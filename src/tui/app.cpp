@@ -917,10 +917,10 @@ bool App::replay_from(const GameRecord& record) {
     pocketed_by_[1].clear();
     auto replayed = replay_match(
         record,
-        [&](int shooter, const Verdict& v) {
-            for (const int id : v.pocketed)
+        [&](const ReplayedShot& shot) {
+            for (const int id : shot.verdict.pocketed)
                 if (id != 0)
-                    pocketed_by_[shooter - 1].push_back(id);
+                    pocketed_by_[shot.shooter - 1].push_back(id);
         },
         [&](int, int) {
             pocketed_by_[0].clear();

@@ -1,0 +1,105 @@
+// Player statistics: the tally of a game's shots (definitions in termpool/stats.hpp).
+#include <termpool/stats.hpp>
+
+#include <algorithm>
+#include <limits>
+
+namespace termpool {
+namespace {
+
+// Object balls that count as potted for a legal shot: those that stay down.
+int balls_kept_down(const Verdict& v) {
+    // An 8 on an 8-ball break that does not win owes the breaker a choice: spot it or
+    // re-break. Either way it does not stay down.
+    const bool eight_comes_back = std::ranges::count(v.choices, Choice::spot_eight) > 0;
+    int n = 0;
+    for (const int id : v.pocketed)
+        if (id != 0 && std::ranges::count(v.respotted, id) == 0 && !(eight_comes_back && id == 8))
+            ++n;
+    return n;
+}
+
+} // namespace
+
+void PlayerStats::add(const PlayerStats& more) {
+    // Totals read from a file may be as large as an int holds: they stop there rather than
+    // wrap (and an upper bound kept by each count, like pots made <= attempts, still holds).
+    auto sum = [](int& total, int more_of) {
+        const long long s = static_cast<long long>(total) + std::max(more_of, 0);
+        total = static_cast<int>(std::min<long long>(s, std::numeric_limits<int>::max()));
+    };
+    sum(racks_won, more.racks_won);
+    sum(racks_played, more.racks_played);
+    sum(shots, more.shots);
+    sum(pot_attempts, more.pot_attempts);
+    sum(pots_made, more.pots_made);
+    sum(balls_potted, more.balls_potted);
+    sum(fouls, more.fouls);
+    sum(break_and_runs, more.break_and_runs);
+    longest_run = std::max(longest_run, more.longest_run);
+}
+
+std::optional<double> pot_success(const PlayerStats& stats) {
+    if (stats.pot_attempts <= 0)
+        return std::nullopt;
+    return static_cast<double>(stats.pots_made) / stats.pot_attempts;
+}
+
+void StatsTally::on_shot(int shooter, bool was_break, const ShotCall& call, const Verdict& v) {
+    if (shooter != 1 && shooter != 2)
+        return;
+    PlayerStats& me = stats_[shooter - 1];
+    const int other = 3 - shooter;
+    if (was_break || visitor_ != shooter) {
+        visitor_ = shooter;
+        run_ = 0;
+        run_from_break_ = was_break;
+    }
+
+    const bool foul = v.foul != Foul::none;
+    const bool lost = v.winner == other;
+    const bool legal = !foul && !lost;
+    const int potted = legal ? balls_kept_down(v) : 0;
+    const bool keeps_table = v.winner == shooter || (v.winner == 0 && v.next_shooter == shooter);
+
+    ++me.shots;
+    if (foul)
+        ++me.fouls;
+    me.balls_potted += potted;
+    if (!was_break && !call.call.safety && !call.push_out) {
+        ++me.pot_attempts;
+        if (legal && potted > 0 && keeps_table)
+            ++me.pots_made;
+    }
+    run_ += potted;
+    me.longest_run = std::max(me.longest_run, run_);
+
+    if (v.winner == 1 || v.winner == 2) {
+        ++stats_[0].racks_played;
+        ++stats_[1].racks_played;
+        ++stats_[v.winner - 1].racks_won;
+        if (v.winner == shooter && run_from_break_)
+            ++me.break_and_runs;
+    }
+    if (foul || v.winner != 0 || !keeps_table)
+        visitor_ = 0;
+}
+
+std::variant<StatsTally, RecordError> tally_record(const GameRecord& record) {
+    StatsTally tally;
+    const auto replayed = replay_match(record, [&](const ReplayedShot& shot) {
+        tally.on_shot(shot.shooter, shot.was_break, shot.call, shot.verdict);
+    });
+    if (const RecordError* problem = std::get_if<RecordError>(&replayed))
+        return *problem;
+    return tally;
+}
+
+std::variant<std::array<PlayerStats, 2>, RecordError> stats_of_record(const GameRecord& record) {
+    const auto tally = tally_record(record);
+    if (const RecordError* problem = std::get_if<RecordError>(&tally))
+        return *problem;
+    return std::get<StatsTally>(tally).both();
+}
+
+} // namespace termpool

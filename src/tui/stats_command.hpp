@@ -1,0 +1,22 @@
+#pragma once
+// `termpool stats`: every player's totals from the stats file, as a table.
+
+#include <string>
+#include <vector>
+
+#include "tui/stats_file.hpp"
+
+namespace termpool::tui {
+
+/// The totals as an aligned table (names padded by their display width), a header line
+/// first and a short legend after; one line per player, in the store's order.
+std::string stats_table(const StatsStore& store);
+
+/// `termpool stats [--reset NAME] [--help]`: prints the table, or removes one player's
+/// totals.
+/// @param args the command-line arguments after `stats`.
+/// @return 0 ok (no file yet included), 1 the file could not be read or written or NAME has
+///         no totals, 2 bad usage or a damaged file.
+int stats_command(const std::vector<std::string>& args);
+
+} // namespace termpool::tui

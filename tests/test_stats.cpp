@@ -1,0 +1,634 @@
+// Player statistics: the tally of a game's shots, the totals file (text form, damaged files
+// kept aside, atomic writes), the game-over summary and `termpool stats`.
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <termpool/computer.hpp>
+#include <termpool/stats.hpp>
+#include <unistd.h>
+
+#include "rules_helpers.hpp"
+#include "tui/stats_command.hpp"
+#include "tui/stats_file.hpp"
+#include "tui/stats_summary.hpp"
+#include "tui/text_width.hpp"
+
+using namespace termpool;
+using namespace termpool::test;
+using termpool::tui::StatsStore;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Hand-made verdicts
+
+/// A legal shot potting `balls`; the shooter keeps the table when anything dropped.
+Verdict potted(int shooter, std::vector<int> balls) {
+    Verdict v;
+    v.pocketed = std::move(balls);
+    v.next_shooter = v.pocketed.empty() ? 3 - shooter : shooter;
+    return v;
+}
+
+/// A legal shot that wins the rack for `shooter`, potting `balls`.
+Verdict wins(int shooter, std::vector<int> balls) {
+    Verdict v = potted(shooter, std::move(balls));
+    v.winner = shooter;
+    return v;
+}
+
+/// A foul (a scratch) that also drops `balls`.
+Verdict foul(int shooter, std::vector<int> balls = {}) {
+    Verdict v;
+    v.foul = Foul::scratch;
+    v.fouls = {Foul::scratch};
+    v.pocketed = std::move(balls);
+    v.pocketed.push_back(0);
+    v.next_shooter = 3 - shooter;
+    v.ball_in_hand = BallInHand::anywhere;
+    return v;
+}
+
+const ShotCall plain;
+
+ShotCall safety() {
+    ShotCall c;
+    c.call.safety = true;
+    return c;
+}
+
+ShotCall push_out() {
+    ShotCall c;
+    c.push_out = true;
+    return c;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Games played by the computer
+
+/// Two computers play a seeded game to its end, every action recorded; `live` is fed each shot
+/// as the game goes, as the front end would.
+GameRecord computer_game(GameType type, std::uint64_t seed, StatsTally& live) {
+    GameRecord record;
+    record.game = type;
+    record.seed = seed;
+    record.names[0] = "CPU 1 (medium)";
+    record.names[1] = "CPU 2 (hard)";
+    Game game(type, make_table(record.table), record_params(record), record.breaker, seed);
+    ComputerPlayer players[2] = {ComputerPlayer(Level::medium, seed),
+                                 ComputerPlayer(Level::hard, seed + 1)};
+    for (int turn = 0; turn < 300 && game.winner() == 0; ++turn) {
+        const int actor = game.chooser() != 0 ? game.chooser() : game.shooter();
+        ComputerPlayer& player = players[actor - 1];
+        RecordedAction action;
+        if (game.chooser() != 0) {
+            action.kind = RecordedAction::Kind::choose;
+            action.choice = player.choose(game);
+            game.choose(action.choice);
+        } else if (game.ball_in_hand() != BallInHand::none && !game.ready_to_shoot()) {
+            action.kind = RecordedAction::Kind::place;
+            action.place = player.place_cue_ball(game);
+            game.place_cue_ball(action.place);
+        } else {
+            const ComputerShot shot = player.shot(game);
+            action.strike = shot.strike;
+            action.call = shot.call;
+            action.call.push_out = action.call.push_out && game.push_out_allowed();
+            const int shooter = game.shooter();
+            const bool was_break = game.is_break();
+            const Verdict v = game.play(shot.strike, action.call);
+            live.on_shot(shooter, was_break, action.call, v);
+        }
+        record.actions.push_back(action);
+    }
+    return record;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Files
+
+/// A directory under $TMPDIR (or /tmp), removed with everything in it.
+class TempDir {
+public:
+    TempDir() {
+        const char* base = std::getenv("TMPDIR");
+        std::string pattern = std::string(base && *base ? base : "/tmp") + "/termpool-stats-XXXXXX";
+        REQUIRE(mkdtemp(pattern.data()) != nullptr);
+        path_ = pattern;
+    }
+    ~TempDir() {
+        std::error_code ignored;
+        std::filesystem::remove_all(path_, ignored);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+
+    const std::string& path() const { return path_; }
+
+private:
+    std::string path_;
+};
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+void spill(const std::string& path, const std::string& text) {
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+/// The names of the files in `dir`, sorted.
+std::vector<std::string> files_in(const std::string& dir) {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+    return lines;
+}
+
+std::string parse_error(const std::string& text) {
+    const auto parsed = tui::parse_stats(text);
+    if (const auto* e = std::get_if<tui::StatsError>(&parsed))
+        return std::to_string(e->line) + ": " + e->message;
+    return "";
+}
+
+/// What one run of the binary did.
+struct Run {
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+/// Runs `termpool stats ARGS` with XDG_STATE_HOME at `state`.
+Run run_stats(const TempDir& dir, const std::string& state, const std::string& args) {
+    const char* bin = std::getenv("TERMPOOL_BIN");
+    const std::string binary = bin && *bin ? bin : "build/termpool";
+    const std::string out = dir.path() + "/stdout", err = dir.path() + "/stderr";
+    const std::string command =
+        "XDG_STATE_HOME='" + state + "' '" + binary + "' stats " + args + " >" + out + " 2>" + err;
+    const int raw = std::system(command.c_str());
+    Run r;
+    r.status = raw != -1 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+}
+
+PlayerStats some_stats(int seed) {
+    PlayerStats s;
+    s.racks_won = seed % 2;
+    s.racks_played = 1;
+    s.shots = 10 + seed;
+    s.pot_attempts = 8 + seed;
+    s.pots_made = 5;
+    s.balls_potted = 6;
+    s.fouls = 1;
+    s.break_and_runs = 0;
+    s.longest_run = 2 + seed % 3;
+    return s;
+}
+
+} // namespace
+
+// =============================================================================================
+// The tally
+
+TEST_CASE("a break-and-run: the breaker wins the rack and the opponent never shoots", "[stats]") {
+    StatsTally t;
+    t.on_shot(1, true, plain, potted(1, {3, 11}));
+    t.on_shot(1, false, plain, potted(1, {1}));
+    t.on_shot(1, false, plain, potted(1, {2, 4}));
+    t.on_shot(1, false, plain, wins(1, {8}));
+    const PlayerStats& a = t.of(1);
+    CHECK(a.break_and_runs == 1);
+    CHECK(a.racks_won == 1);
+    CHECK(a.racks_played == 1);
+    CHECK(t.of(2).racks_played == 1);
+    CHECK(t.of(2).racks_won == 0);
+    CHECK(a.shots == 4);
+    CHECK(a.balls_potted == 6);
+    CHECK(a.longest_run == 6);  // the break's balls are part of the run
+    CHECK(a.pot_attempts == 3); // the break is not an attempt
+    CHECK(a.pots_made == 3);
+}
+
+TEST_CASE("no break-and-run once the opponent has shot, nor for a win from their break",
+          "[stats]") {
+    SECTION("the breaker misses, then wins") {
+        StatsTally t;
+        t.on_shot(1, true, plain, potted(1, {3}));
+        t.on_shot(1, false, plain, potted(1, {})); // a miss
+        t.on_shot(2, false, plain, potted(2, {}));
+        t.on_shot(1, false, plain, wins(1, {8}));
+        CHECK(t.of(1).racks_won == 1);
+        CHECK(t.of(1).break_and_runs == 0);
+    }
+    SECTION("the breaker's opponent wins") {
+        StatsTally t;
+        t.on_shot(1, true, plain, potted(1, {}));
+        t.on_shot(2, false, plain, wins(2, {9}));
+        CHECK(t.of(2).racks_won == 1);
+        CHECK(t.of(2).break_and_runs == 0);
+        CHECK(t.of(1).break_and_runs == 0);
+    }
+    SECTION("a re-break starts the count again") {
+        StatsTally t;
+        t.on_shot(1, true, plain, potted(1, {})); // an illegal break: the opponent re-racks
+        t.on_shot(2, true, plain, potted(2, {5}));
+        t.on_shot(2, false, plain, wins(2, {8}));
+        CHECK(t.of(2).break_and_runs == 1);
+    }
+    SECTION("a push-out hands the table over") {
+        StatsTally t;
+        t.on_shot(1, true, plain, potted(1, {2}));
+        Verdict pushed;
+        pushed.next_shooter = 2;
+        pushed.chooser = 2;
+        pushed.choices = {Choice::shoot, Choice::pass_back};
+        t.on_shot(1, false, push_out(), pushed);
+        t.on_shot(1, false, plain, wins(1, {1, 9})); // passed back
+        CHECK(t.of(1).break_and_runs == 0);
+        CHECK(t.of(1).pot_attempts == 1);
+    }
+}
+
+TEST_CASE("a golden break counts as a break-and-run (a real 9-ball game)", "[stats]") {
+    Game game = position(
+        GameType::nine_ball,
+        with_extra({ball_at(0, 0.5, 0.635), ball_at(1, 1.9, 0.635), ball_at(9, 2.1, 0.635)},
+                   {2, 3}),
+        1, Group::open, true);
+    const Verdict v =
+        game.apply(plain, hand_made(game, {hit(0, 1), hit(1, 9, 0.15), drop(9, 3, 0.4)}));
+    REQUIRE(v.winner == 1);
+    REQUIRE(v.reason == WinReason::nine_pocketed);
+    StatsTally t;
+    t.on_shot(1, true, plain, v);
+    CHECK(t.of(1).break_and_runs == 1);
+    CHECK(t.of(1).balls_potted == 1);
+    CHECK(t.of(1).longest_run == 1);
+    CHECK(t.of(1).pot_attempts == 0);
+}
+
+TEST_CASE("the 8 on an 8-ball break comes back and is not counted as potted", "[stats]") {
+    Game game = position(
+        GameType::eight_ball,
+        with_extra({ball_at(0, 0.5, 0.635), ball_at(1, 1.9, 0.635), ball_at(8, 2.1, 0.635)},
+                   {2, 9, 10}),
+        1, Group::open, true);
+    const Verdict v = game.apply(
+        plain, hand_made(game, {hit(0, 1), hit(1, 8, 0.15), drop(8, 3, 0.4), drop(2, 1, 0.5)}));
+    REQUIRE(v.winner == 0);
+    REQUIRE(v.chooser == 1);
+    StatsTally t;
+    t.on_shot(1, true, plain, v);
+    CHECK(t.of(1).balls_potted == 1); // the 2 only
+    CHECK(t.of(1).fouls == 0);
+}
+
+TEST_CASE("the longest run is the best visit, across visits", "[stats]") {
+    StatsTally t;
+    t.on_shot(1, true, plain, potted(1, {}));
+    t.on_shot(2, false, plain, potted(2, {1}));
+    t.on_shot(2, false, plain, potted(2, {2}));
+    t.on_shot(2, false, plain, potted(2, {})); // 2 balls in this visit
+    t.on_shot(1, false, plain, potted(1, {9}));
+    t.on_shot(1, false, plain, foul(1)); // the foul ends the visit
+    t.on_shot(2, false, plain, potted(2, {3}));
+    t.on_shot(2, false, plain, potted(2, {4}));
+    t.on_shot(2, false, plain, potted(2, {5, 6}));
+    t.on_shot(2, false, plain, potted(2, {})); // 4 balls in this one
+    t.on_shot(1, false, plain, potted(1, {10}));
+    CHECK(t.of(2).longest_run == 4);
+    CHECK(t.of(2).balls_potted == 6);
+    CHECK(t.of(1).longest_run == 1); // the 9 and the 10 were separate visits
+    CHECK(t.of(1).balls_potted == 2);
+    CHECK(t.of(1).racks_played == 0); // the rack is not over
+}
+
+TEST_CASE("pot success counts attempts that pot and keep the table", "[stats]") {
+    StatsTally t;
+    t.on_shot(1, true, plain, potted(1, {4}));    // a break: not an attempt
+    t.on_shot(1, false, plain, potted(1, {5}));   // made
+    t.on_shot(1, false, safety(), potted(1, {})); // a safety: not an attempt
+    t.on_shot(2, false, plain, potted(2, {}));    // a miss
+    Verdict wrong_ball = potted(1, {12});         // potted the opponent's ball: turn passes
+    wrong_ball.next_shooter = 2;
+    t.on_shot(1, false, plain, wrong_ball);   // tried, not made
+    t.on_shot(2, false, plain, foul(2, {6})); // tried, a foul, nothing counted
+    t.on_shot(1, false, plain, wins(1, {8})); // made
+    const PlayerStats& a = t.of(1);
+    CHECK(a.pot_attempts == 3);
+    CHECK(a.pots_made == 2);
+    CHECK(a.balls_potted == 4); // 4, 5, 12 (legal, if no use) and 8
+    REQUIRE(pot_success(a).has_value());
+    CHECK(*pot_success(a) == Approx(2.0 / 3));
+    const PlayerStats& b = t.of(2);
+    CHECK(b.pot_attempts == 2);
+    CHECK(b.pots_made == 0);
+    CHECK(b.balls_potted == 0);
+    CHECK_FALSE(pot_success(PlayerStats{}).has_value());
+}
+
+TEST_CASE("fouls are counted and their balls are not potted", "[stats]") {
+    StatsTally t;
+    t.on_shot(1, true, plain, foul(1, {3}));
+    t.on_shot(2, false, plain, foul(2));
+    t.on_shot(1, false, plain, foul(1, {7}));
+    Verdict lost; // the 8 early: no foul, but the rack is lost and nothing is potted
+    lost.pocketed = {8, 2};
+    lost.winner = 1;
+    lost.next_shooter = 2;
+    t.on_shot(2, false, plain, lost);
+    CHECK(t.of(1).fouls == 2);
+    CHECK(t.of(2).fouls == 1);
+    CHECK(t.of(1).balls_potted == 0);
+    CHECK(t.of(2).balls_potted == 0);
+    CHECK(t.of(1).racks_won == 1);
+    CHECK(t.of(1).shots == 2);
+    CHECK(t.of(2).shots == 2);
+}
+
+TEST_CASE("totals add up, the longest run is the longer one", "[stats]") {
+    PlayerStats total = some_stats(1);
+    total.add(some_stats(2));
+    CHECK(total.shots == 23);
+    CHECK(total.racks_played == 2);
+    CHECK(total.longest_run == 4);
+    PlayerStats huge;
+    huge.shots = std::numeric_limits<int>::max() - 1;
+    huge.add(some_stats(1));
+    CHECK(huge.shots == std::numeric_limits<int>::max());
+}
+
+TEST_CASE("stats of a whole game played by the computer add up", "[stats][game]") {
+    for (const GameType type : {GameType::eight_ball, GameType::nine_ball}) {
+        StatsTally live;
+        const GameRecord record = computer_game(type, 11, live);
+        const auto stats = stats_of_record(record);
+        REQUIRE(std::holds_alternative<std::array<PlayerStats, 2>>(stats));
+        const auto& s = std::get<std::array<PlayerStats, 2>>(stats);
+        INFO(game_type_name(type) << ": " << tui::stats_summary(record.names, s.data()));
+        // Replaying the record hears the same shots as the game did.
+        CHECK(s == live.both());
+        CHECK(s[0].racks_won + s[1].racks_won == 1);
+        CHECK(s[0].racks_played == 1);
+        CHECK(s[1].racks_played == 1);
+        CHECK(s[0].balls_potted + s[1].balls_potted <= (type == GameType::nine_ball ? 9 : 15));
+        CHECK(s[0].balls_potted + s[1].balls_potted > 0);
+        const auto shots = std::count_if(
+            record.actions.begin(), record.actions.end(),
+            [](const RecordedAction& a) { return a.kind == RecordedAction::Kind::shot; });
+        CHECK(s[0].shots + s[1].shots == shots);
+        for (const PlayerStats& p : s) {
+            CHECK(p.pots_made <= p.pot_attempts);
+            CHECK(p.pot_attempts <= p.shots);
+            CHECK(p.fouls <= p.shots);
+            CHECK(p.longest_run <= p.balls_potted);
+            CHECK(p.break_and_runs <= p.racks_won);
+        }
+    }
+}
+
+TEST_CASE("stats of a record the game refuses name its line", "[stats]") {
+    GameRecord record;
+    RecordedAction choose;
+    choose.kind = RecordedAction::Kind::choose;
+    choose.choice = Choice::re_rack;
+    choose.line = 7;
+    record.actions.push_back(choose);
+    const auto stats = stats_of_record(record);
+    REQUIRE(std::holds_alternative<RecordError>(stats));
+    CHECK(std::get<RecordError>(stats).line == 7);
+}
+
+// =============================================================================================
+// The totals file
+
+TEST_CASE("the totals file reads back what it wrote, UTF-8 names with spaces included",
+          "[stats][file]") {
+    StatsStore store;
+    const std::string names[2] = {"Bjørn Ås 北京", "CPU (hard)"};
+    const PlayerStats game1[2] = {some_stats(1), some_stats(2)};
+    tui::add_game(store, names, game1);
+    const std::string swapped[2] = {"CPU (hard)", "# not a comment"};
+    tui::add_game(store, swapped, game1);
+    REQUIRE(store.players.size() == 3);
+    const std::string text = tui::format_stats(store);
+    const auto parsed = tui::parse_stats(text);
+    REQUIRE(std::holds_alternative<StatsStore>(parsed));
+    const StatsStore& back = std::get<StatsStore>(parsed);
+    REQUIRE(back.players.size() == 3);
+    CHECK(back.players[0].name == "Bjørn Ås 北京");
+    CHECK(back.players[0].stats == some_stats(1));
+    CHECK(back.players[1].name == "CPU (hard)");
+    PlayerStats cpu = some_stats(2);
+    cpu.add(some_stats(1));
+    CHECK(back.players[1].stats == cpu);
+    CHECK(back.players[2].name == "# not a comment");
+    CHECK(tui::format_stats(back) == text);
+}
+
+TEST_CASE("names that would break a line or the terminal are cleaned", "[stats][file]") {
+    CHECK(tui::stats_name("  Ann\tLee\n ") == "Ann?Lee?");
+    CHECK(tui::stats_name("\x1b[31mred") == "?[31mred");
+    CHECK(tui::stats_name("caf\xc3") == "caf?");
+    CHECK(tui::stats_name("   ") == "?");
+    StatsStore store;
+    const std::string names[2] = {"Ann\nplayer 9 9 9 9 9 9 9 9 9 Eve", "Bob"};
+    const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
+    tui::add_game(store, names, stats);
+    const auto parsed = tui::parse_stats(tui::format_stats(store));
+    REQUIRE(std::holds_alternative<StatsStore>(parsed));
+    CHECK(std::get<StatsStore>(parsed).players.size() == 2);
+}
+
+TEST_CASE("a damaged totals file is refused at its line", "[stats][file]") {
+    const std::string head = "termpool-stats 1\n";
+    const std::string ok = "player 1 2 30 20 10 12 3 1 5 Ann\n";
+    CHECK(parse_error(head + ok) == "");
+    CHECK(parse_error("# comment\n\n" + head + ok) == "");
+    CHECK(parse_error("") == "1: no 'termpool-stats 1' line: not a stats file, or cut short");
+    CHECK(parse_error("player 1 2 3\n") ==
+          "1: not a termpool stats file (expected 'termpool-stats 1')");
+    CHECK(parse_error("termpool-stats 2\n") ==
+          "1: written by a newer termpool (version 2; this one reads 1)");
+    CHECK(parse_error(head + ok + "player 1 2 30 20 10 12 3 1\n") == "3: missing the longest run");
+    CHECK(parse_error(head + ok + "player 1 2 30 20 10 12 3 1 5\n") ==
+          "3: missing the player's name");
+    CHECK(parse_error(head + "player 1 2 30 -20 10 12 3 1 5 Bo\n") ==
+          "2: pot attempts: '-20' is not a count");
+    CHECK(parse_error(head + "player 1 2 30 20 10 12 3 1 99999999999 Bo\n") ==
+          "2: longest run: count 99999999999 is too large");
+    CHECK(parse_error(head + "player 3 2 30 20 10 12 3 1 5 Bo\n") ==
+          "2: more racks won (3) than racks played (2)");
+    CHECK(parse_error(head + "player 1 2 30 20 21 22 3 1 5 Bo\n") ==
+          "2: more pots made (21) than pot attempts (20)");
+    CHECK(parse_error(head + ok + "\nplayer 0 0 0 0 0 0 0 0 0 Ann\n") ==
+          "4: 'Ann' is listed twice (first at line 2)");
+    CHECK(parse_error(head + "plyer 0 0 0 0 0 0 0 0 0 Ann\n") ==
+          "2: unknown line 'plyer' (expected 'player')");
+    CHECK(parse_error(head + "player 0 0 0 0 0 0 0 0 0 A\x01n\n") ==
+          "2: control characters in the name");
+    CHECK(parse_error(head + "player 0 0 0 0 0 0 0 0 0 caf\xc3\n") ==
+          "2: the name is not valid UTF-8");
+    CHECK(parse_error(head + "player 1 2 30 20 10 12 3 1 5 Ann Lee\r\n") == "");
+}
+
+TEST_CASE("saving a game's figures adds them to the totals", "[stats][file]") {
+    const TempDir dir;
+    const std::string path = dir.path() + "/termpool/stats";
+    const std::string names[2] = {"Ann Lee", "CPU (hard)"};
+    const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
+    CHECK(tui::save_game_stats(path, names, stats) == "");
+    CHECK(tui::save_game_stats(path, names, stats) == "");
+    const tui::StatsFile file = tui::read_stats_file(path);
+    REQUIRE(file.state == tui::StatsFile::State::read);
+    REQUIRE(file.store.players.size() == 2);
+    PlayerStats twice = some_stats(1);
+    twice.add(some_stats(1));
+    CHECK(file.store.find("Ann Lee")->stats == twice);
+    // The write went through a temporary file that is gone now.
+    CHECK(files_in(dir.path() + "/termpool") == std::vector<std::string>{"stats", "stats.lock"});
+}
+
+TEST_CASE("a damaged totals file is reported with its line and kept as .bad", "[stats][file]") {
+    const TempDir dir;
+    const std::string path = dir.path() + "/termpool/stats";
+    const std::string damaged = "termpool-stats 1\nplayer 1 1 9 9 9 9 0 0 0 Ann\nplayer 1 1 9\n";
+    spill(path, damaged);
+    const std::string names[2] = {"Ann", "Bob"};
+    const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
+    const std::string notice = tui::save_game_stats(path, names, stats);
+    CHECK(notice ==
+          path + ":3: missing the pot attempts; kept as " + path + ".bad, new totals started");
+    CHECK(slurp(path + ".bad") == damaged);
+    const tui::StatsFile fresh = tui::read_stats_file(path);
+    REQUIRE(fresh.state == tui::StatsFile::State::read);
+    CHECK(fresh.store.find("Ann")->stats == some_stats(1)); // this game only
+
+    // A second damaged file never replaces the first.
+    spill(path, "garbage\n");
+    CHECK(tui::save_game_stats(path, names, stats).find("kept as " + path + ".bad.1") !=
+          std::string::npos);
+    CHECK(slurp(path + ".bad") == damaged);
+    CHECK(slurp(path + ".bad.1") == "garbage\n");
+}
+
+TEST_CASE("a failed write leaves the old totals whole and no temporary file", "[stats][file]") {
+    const TempDir dir;
+    const std::string path = dir.path() + "/termpool/stats";
+    const std::string names[2] = {"Ann", "Bob"};
+    const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
+    REQUIRE(tui::save_game_stats(path, names, stats) == "");
+    const std::string before = slurp(path);
+    // write_atomically writes PATH.tmp.PID first: a directory in its way makes it fail.
+    const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+    std::filesystem::create_directory(temporary);
+    const std::string notice = tui::save_game_stats(path, names, stats);
+    CHECK(notice.starts_with("could not save the statistics: " + temporary));
+    CHECK(slurp(path) == before);
+    std::filesystem::remove(temporary);
+    CHECK(files_in(dir.path() + "/termpool") == std::vector<std::string>{"stats", "stats.lock"});
+}
+
+// =============================================================================================
+// What the player sees
+
+TEST_CASE("the game-over summary fits 36 columns, one column per player", "[stats][tui]") {
+    const std::string names[2] = {"北京北京北京北京北京", "A very long name here"};
+    PlayerStats s[2];
+    s[0].racks_won = 1;
+    s[0].racks_played = s[1].racks_played = 1;
+    s[0].balls_potted = 7;
+    s[0].pot_attempts = 8;
+    s[0].pots_made = 6;
+    s[0].longest_run = 5;
+    s[1].fouls = 2;
+    const std::string text = tui::stats_summary(names, s);
+    const auto lines = lines_of(text);
+    REQUIRE(lines.size() == 7);
+    for (const std::string& line : lines) {
+        INFO(line);
+        CHECK(tui::display_width(line) <= tui::stats_summary_columns);
+    }
+    CHECK(lines[0].find("北京北京北") != std::string::npos);
+    CHECK(lines[1] == "Racks won               1          0");
+    CHECK(lines[3] == "Pot success           75%          -");
+    CHECK(lines[4] == "Fouls                   0          2");
+    CHECK(lines[5] == "Longest run             5          0");
+}
+
+TEST_CASE("the stats table lines up names of any width", "[stats][tui]") {
+    StatsStore store;
+    store.players = {{"Ann", some_stats(1)}, {"北京 Bjørn", some_stats(2)}};
+    const auto lines = lines_of(tui::stats_table(store));
+    REQUIRE(lines.size() >= 3);
+    CHECK(lines[0].starts_with("Player"));
+    CHECK(lines[1].starts_with("Ann "));
+    CHECK(lines[1].find("5/9") != std::string::npos); // pots made of attempts
+    CHECK(lines[1].find("56%") != std::string::npos); // 5/9
+    CHECK(lines[2].find("50%") != std::string::npos); // 5/10
+    // Every column is right-aligned, so every line ends in the same column.
+    CHECK(tui::display_width(lines[1]) == tui::display_width(lines[0]));
+    CHECK(tui::display_width(lines[2]) == tui::display_width(lines[0]));
+}
+
+TEST_CASE("termpool stats prints the totals, says when there are none, refuses damage",
+          "[stats][cli]") {
+    const TempDir dir;
+    const std::string state = dir.path() + "/state";
+    const std::string path = state + "/termpool/stats";
+
+    Run r = run_stats(dir, state, "");
+    CHECK(r.status == 0);
+    CHECK(r.out == "No statistics yet: they are kept in " + path + " after each finished game.\n");
+
+    const std::string names[2] = {"Bjørn Ås", "CPU (hard)"};
+    const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
+    REQUIRE(tui::save_game_stats(path, names, stats) == "");
+    r = run_stats(dir, state, "");
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    const auto lines = lines_of(r.out);
+    REQUIRE(lines.size() >= 3);
+    CHECK(lines[0] == "Player      Racks  Balls  Pots  Pot success  Fouls  B&R  Run");
+    CHECK(lines[1] == "Bjørn Ås      1/1      6   5/9          56%      1    0    3");
+    CHECK(lines[2] == "CPU (hard)    0/1      6  5/10          50%      1    0    4");
+
+    r = run_stats(dir, state, "--reset 'Bjørn Ås'");
+    CHECK(r.status == 0);
+    CHECK(tui::read_stats_file(path).store.players.size() == 1);
+    r = run_stats(dir, state, "--reset Nobody");
+    CHECK(r.status == 1);
+    CHECK(r.err.find("no statistics for 'Nobody'") != std::string::npos);
+
+    spill(path, "termpool-stats 1\nplayer 1 1 1\n");
+    r = run_stats(dir, state, "");
+    CHECK(r.status == 2);
+    CHECK(r.err.starts_with(path + ":2: missing the pot attempts\n"));
+    CHECK(slurp(path) == "termpool-stats 1\nplayer 1 1 1\n"); // left as it is
+
+    r = run_stats(dir, state, "--help");
+    CHECK(r.status == 0);
+    CHECK(r.out.starts_with("usage: termpool stats [--reset NAME] [--help]\n"));
+    r = run_stats(dir, state, "--frobnicate");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("usage: termpool stats") != std::string::npos);
+}
