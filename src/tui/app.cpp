@@ -10,6 +10,8 @@
 #include "tui/player_name.hpp"
 #include "tui/pocket_cells.hpp"
 #include "tui/save_file.hpp"
+#include "tui/stats_file.hpp"
+#include "tui/stats_summary.hpp"
 #include <termpool/computer.hpp>
 
 namespace termpool::tui {
@@ -88,6 +90,7 @@ void App::new_game(int breaker) {
     record_.race_to = options_.race_to;
     record_.break_rule = options_.break_rule;
     match_ = MatchState{options_.race_to, options_.break_rule, {0, 0}};
+    tally_ = StatsTally{};
     rack_ = 1;
     rack_breaker_ = breaker;
     game_ = Game(options_.game, table_, params_, breaker, record_.seed);
@@ -117,19 +120,29 @@ void App::start_rack(const RecordedAction& rack) {
     shown_balls_ = game_.balls();
 }
 
+void App::save_stats() {
+    // Once per finished game or match; computers are kept under their names ("CPU (hard)").
+    const PlayerStats figures[2] = {tally_.of(1), tally_.of(2)};
+    const std::string notice = save_game_stats(stats_path(), names_, figures);
+    if (!notice.empty())
+        message_ += " (" + notice + ")";
+}
+
 std::string App::game_over_text() const {
     const auto score = [&] {
         return names_[0] + " " + std::to_string(match_.racks_won[0]) + ", " + names_[1] + " " +
                std::to_string(match_.racks_won[1]);
     };
+    const PlayerStats figures[2] = {tally_.of(1), tally_.of(2)};
+    const std::string summary = "\n\n" + stats_summary(names_, figures);
     if (!match_.is_race())
-        return message_ + "\n\nr  rematch (loser breaks)\nn  new game\nq  quit";
+        return message_ + summary + "\n\nr  rematch (loser breaks)\nn  new game\nq  quit";
     const std::string race = "Race to " + std::to_string(match_.race_to) + ": " + score();
     if (const int winner = match_.match_winner())
-        return message_ + "\n\n" + names_[winner - 1] + " wins the match\n" + race +
+        return message_ + "\n\n" + names_[winner - 1] + " wins the match\n" + race + summary +
                "\n\nr  rematch (loser breaks)\nn  new match\nq  quit";
     const int breaker = match_.next_breaker(rack_breaker_, game_.winner());
-    return message_ + "\n\n" + race + "\n\nEnter  next rack (" + names_[breaker - 1] +
+    return message_ + "\n\n" + race + summary + "\n\nEnter  next rack (" + names_[breaker - 1] +
            " breaks)\nq      quit (the match is saved)";
 }
 
@@ -327,6 +340,7 @@ void App::play(const Strike& strike, const ShotCall& call) {
     call_ = call;
     last_strike_ = strike;
     shooter_before_ = game_.shooter();
+    break_before_ = game_.is_break();
     Trajectory trajectory(params_, game_.balls().size());
     result_ = practice_ ? practice_->shoot(strike, &trajectory)
                         : simulate_shot(table_, params_, game_.balls(), strike, &trajectory);
@@ -414,6 +428,7 @@ void App::after_shot() {
     }
     const Verdict v = game_.apply(call_, result_);
     trajectory_.reset();
+    tally_.on_shot(shooter_before_, break_before_, call_, v);
     if (v.winner != 0)
         match_.record_rack(v.winner);
     for (const int id : v.pocketed)
@@ -421,6 +436,8 @@ void App::after_shot() {
             pocketed_by_[shooter_before_ - 1].push_back(id);
     message_ = verdict_message(v, shooter_before_, names_);
     save();
+    if (v.winner != 0 && match_.match_winner() != 0 && !replaying_)
+        save_stats();
     start_turn();
     if (replaying_)
         mode_ = Mode::replay; // the replay shows the next action itself
@@ -915,9 +932,11 @@ void App::rewind_to(std::size_t action) {
 bool App::replay_from(const GameRecord& record) {
     pocketed_by_[0].clear();
     pocketed_by_[1].clear();
+    tally_ = StatsTally{};
     auto replayed = replay_match(
         record,
         [&](const ReplayedShot& shot) {
+            tally_.on_shot(shot.shooter, shot.was_break, shot.call, shot.verdict);
             for (const int id : shot.verdict.pocketed)
                 if (id != 0)
                     pocketed_by_[shot.shooter - 1].push_back(id);

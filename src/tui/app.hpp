@@ -10,6 +10,7 @@
 #include <termpool/record.hpp>
 #include <termpool/rules.hpp>
 #include <termpool/simulator.hpp>
+#include <termpool/stats.hpp>
 
 #include "tui/options.hpp"
 #include "tui/terminal.hpp"
@@ -40,6 +41,7 @@ private:
     void next_rack();
     void start_rack(const RecordedAction& rack);
     std::string game_over_text() const;
+    void save_stats();
     void after_shot();
     void begin();
     void start_turn();
@@ -152,6 +154,8 @@ private:
     MatchState match_;  // the race and the racks won
     int rack_ = 1;      // the current rack's number
     int rack_breaker_ = 1;
+    StatsTally tally_;          // the players' figures in this game or match
+    bool break_before_ = false; // the shot being shown is a break
     bool replaying_ = false;
     bool paused_ = false;
     std::size_t next_action_ = 0; // replay: the next action of record_ to show

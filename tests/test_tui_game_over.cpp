@@ -1,0 +1,46 @@
+// The end of a game in the real binary: the players' figures on the game-over screen, added to
+// the statistics file, and shown by `termpool stats`.
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "tmux_session.hpp"
+
+using termpool::test::file_text;
+using termpool::test::TempDir;
+using termpool::test::TmuxSession;
+
+TEST_CASE("game over shows the figures and keeps them for termpool stats", "[tui][e2e][stats]") {
+    if (!termpool::test::have_tmux())
+        return;
+    TempDir dir;
+    TmuxSession t;
+    // Bar rules, rack seed 9: the full-power break at the proposed aim drops the 8, which wins.
+    t.start("env XDG_STATE_HOME=" + dir.path + " TERM=xterm-256color LANG=C.UTF-8 " +
+            termpool::test::termpool_binary() +
+            " --game 8ball-bar --seed 9 --player1 Ann --player2 Bob; sleep 60");
+    REQUIRE(t.wait_for_text("place the cue ball"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    t.repeat("Up", 40);
+    REQUIRE(t.wait_for_text("12.0 m/s"));
+    t.keys("Space");
+    t.keys("x");
+    REQUIRE(t.wait_for_text("rematch", 20));
+    const std::string screen = t.screen();
+    CHECK(screen.find("Ann pocketed the 8 on the break") != std::string::npos);
+    CHECK(screen.find("Racks won") != std::string::npos);
+    CHECK(screen.find("Break-and-runs") != std::string::npos);
+
+    // The totals file has the game: Ann won the one rack played, from her break.
+    const std::string totals = file_text(dir.path + "/termpool/stats");
+    CHECK(totals.find("termpool-stats 1\n") == 0);
+    CHECK(totals.find(" Ann\n") != std::string::npos);
+    CHECK(totals.find("player 1 1 ") != std::string::npos);
+    CHECK(totals.find("player 0 1 0 ") != std::string::npos); // Bob never shot
+
+    // termpool stats lists both.
+    const std::string listing = termpool::test::run_command(
+        "env XDG_STATE_HOME=" + dir.path + " " + termpool::test::termpool_binary() + " stats");
+    CHECK(listing.find("Ann") != std::string::npos);
+    CHECK(listing.find("Bob") != std::string::npos);
+}
