@@ -141,3 +141,17 @@ TEST_CASE("a race: the score after a rack, the next rack, the match winner", "[t
     CHECK(t.screen().find(winner + " wins the match") != std::string::npos);
     CHECK(t.screen().find("r  rematch") != std::string::npos);
 }
+
+TEST_CASE("two computers in a race go on to the next rack by themselves", "[tui][e2e][race]") {
+    if (!test::have_tmux())
+        return;
+    TempDir dir;
+    GameRecord record = race_record(3, 1, 11);
+    record.computers[0] = Level::easy;
+    record.computers[1] = Level::easy;
+    write_save(dir.path, record);
+    TmuxSession t;
+    t.start(game(dir.path, "--resume"));
+    REQUIRE(t.wait_for_text("Race to 3"));
+    CHECK(t.wait_for_text("Rack 2: ", 10));
+}

@@ -171,6 +171,7 @@ void App::start_turn() {
     dragging_ = false;
     if (game_.winner() != 0) {
         mode_ = Mode::game_over;
+        game_over_at_ = Clock::now();
         return;
     }
     if (game_.chooser() != 0) {
@@ -355,6 +356,12 @@ void App::seat_computer(int player, Level level) {
     // Two computers (watching) are told apart by their seat.
     const std::string seat = options_.watch ? " " + std::to_string(player) : "";
     names_[player - 1] = "CPU" + seat + " (" + level_name(level) + ")";
+}
+
+bool App::computers_watched_rack_over() const {
+    // Two computers in a race go on by themselves, after a look at the score.
+    return mode_ == Mode::game_over && computers_[0] && computers_[1] && match_.is_race() &&
+           match_.match_winner() == 0 && Clock::now() - game_over_at_ > std::chrono::seconds(4);
 }
 
 int App::actor() const {
@@ -887,6 +894,8 @@ int App::run() {
             replay_step();
         else if (computer_to_act())
             computer_turn();
+        else if (computers_watched_rack_over())
+            next_rack();
         term_.draw(frame(w, h));
         const bool moving = mode_ == Mode::animating || (mode_ == Mode::aiming && time_power_) ||
                             computer_to_act() || (replaying_ && !paused_);

@@ -57,6 +57,7 @@ private:
     void replay_step();
     void handle_replay_key(const Input& in);
     bool computer_to_act() const;
+    bool computers_watched_rack_over() const;
     void seat_computer(int player, Level level);
     int actor() const;
     void computer_turn();
@@ -161,6 +162,7 @@ private:
     std::size_t next_action_ = 0; // replay: the next action of record_ to show
 
     std::string message_;
+    Clock::time_point game_over_at_; // when the last rack ended
     std::vector<int> pocketed_by_[2];
     std::string overlay_;
 };
