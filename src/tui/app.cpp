@@ -801,7 +801,7 @@ void App::handle_key(int key, const std::string& text) {
         push_out_ = !push_out_;
         message_ =
             push_out_ ? "Push-out: no foul but a scratch; then the other player chooses" : "";
-    } else if (text == "0") {
+    } else if (text == "0" && !practice_) {
         safety_ = !safety_;
         message_ = safety_ ? "Safety called: the turn passes whatever drops" : "";
     } else if (text.size() == 1 && text[0] >= '1' && text[0] <= '6') {
