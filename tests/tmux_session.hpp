@@ -1,0 +1,134 @@
+#pragma once
+// Driving the real binary in tmux, as a player would: a tmux server of its own, keys, the
+// screen, the shell's record of the exit status, and a scratch directory for saves.
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <iterator>
+#include <string>
+#include <thread>
+#include <unistd.h>
+
+namespace tmux_session {
+
+/// What `command` (run by sh) prints on stdout.
+inline std::string run(const std::string& command) {
+    std::string out;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe)
+        return out;
+    std::array<char, 4096> buffer{};
+    while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+        out.append(buffer.data(), n);
+    pclose(pipe);
+    return out;
+}
+
+/// A tmux server of its own, killed with the value; its session is called e2e.
+struct Tmux {
+    // A socket of its own for each session: a server that is still shutting down must not
+    // take the next one's socket with it.
+    std::string socket =
+        "termpool-e2e-" + std::to_string(getpid()) + "-" + std::to_string(next_id());
+    static int next_id() {
+        static int id = 0;
+        return ++id;
+    }
+    /// Runs a tmux command on this server; its output, errors included.
+    std::string tmux(const std::string& args) const {
+        return run("tmux -L " + socket + " -f /dev/null " + args + " 2>&1");
+    }
+    /// The pane's text.
+    std::string screen() const { return tmux("capture-pane -p -t e2e"); }
+    /// A format variable of the pane (mouse_any_flag, pane_pid, ...).
+    std::string flag(const std::string& name) const {
+        std::string v = tmux("display-message -p -t e2e '#{" + name + "}'");
+        while (!v.empty() && (v.back() == '\n' || v.back() == '\r'))
+            v.pop_back();
+        return v;
+    }
+    /// send-keys to the pane.
+    void keys(const std::string& args) const { tmux("send-keys -t e2e " + args); }
+    /// Polls the screen until `ok` holds; false after `seconds`.
+    bool wait_for(const std::function<bool(const std::string&)>& ok, double seconds = 10) const {
+        const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        while (std::chrono::steady_clock::now() < end) {
+            if (ok(screen()))
+                return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        return false;
+    }
+    /// Polls the screen until it shows `text`.
+    bool wait_for_text(const std::string& text, double seconds = 10) const {
+        return wait_for([&](const std::string& s) { return s.find(text) != std::string::npos; },
+                        seconds);
+    }
+    ~Tmux() { tmux("kill-server"); }
+};
+
+/// Two hex digits, for send-keys -H.
+inline std::string hex(int value) {
+    char b[8];
+    std::snprintf(b, sizeof b, "%02x", value);
+    return b;
+}
+
+/// An SGR mouse report (what xterm-256color's kmous, ESC [ <, announces): motion with no button
+/// held, at the 0-based cell x, y; send-keys arguments.
+inline std::string mouse_motion(int x, int y) {
+    std::string bytes = "-H 1b 5b 3c";
+    for (const char c : "35;" + std::to_string(x + 1) + ";" + std::to_string(y + 1) + "M")
+        bytes += " " + hex(static_cast<unsigned char>(c));
+    return bytes;
+}
+
+/// The binary under test.
+inline std::string termpool_binary() {
+    const char* bin = std::getenv("TERMPOOL_BIN");
+    return bin ? bin : "build/termpool";
+}
+
+/// The whole file, empty when it cannot be read.
+inline std::string file_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+/// What the pane's shell wrote to `file` as the game's exit status (waits up to 5 s).
+inline std::string exit_status(const std::string& file) {
+    std::string status;
+    for (int i = 0; i < 100 && status.empty(); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::ifstream in(file);
+        std::getline(in, status);
+    }
+    return status;
+}
+
+/// A fresh directory under /tmp, removed with the value.
+struct ScratchDir {
+    std::string path;
+    explicit ScratchDir(const std::string& name) {
+        std::string pattern = "/tmp/" + name + "-XXXXXX";
+        if (const char* made = mkdtemp(pattern.data()))
+            path = made;
+    }
+    ~ScratchDir() {
+        if (!path.empty())
+            std::system(("rm -rf " + path).c_str());
+    }
+    ScratchDir(const ScratchDir&) = delete;
+    ScratchDir& operator=(const ScratchDir&) = delete;
+};
+
+/// True when tmux can be run; a test without it warns and passes.
+inline bool have_tmux() {
+    return std::system("command -v tmux >/dev/null 2>&1") == 0;
+}
+
+} // namespace tmux_session
