@@ -147,7 +147,9 @@ Palette palette(Colour c) {
     case Colour::orange:
         return {208, COLOR_YELLOW};
     case Colour::green:
-        return {34, COLOR_GREEN};
+        // Bright, so that the 6 stands out on the felt (28) and the cushion (22) and takes
+        // black digits; with 8 colours green is the felt's, so cyan is the nearest free one.
+        return {46, COLOR_CYAN};
     case Colour::maroon:
         return {88, COLOR_RED};
     case Colour::aim:
