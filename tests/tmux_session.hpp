@@ -119,8 +119,12 @@ struct ScratchDir {
             path = made;
     }
     ~ScratchDir() {
-        if (!path.empty())
-            std::system(("rm -rf " + path).c_str());
+        // A game that was just killed may still be writing its last save: try again a while.
+        for (int i = 0; i < 40 && !path.empty(); ++i) {
+            if (std::system(("rm -rf " + path + " 2>/dev/null").c_str()) == 0)
+                break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
     }
     ScratchDir(const ScratchDir&) = delete;
     ScratchDir& operator=(const ScratchDir&) = delete;

@@ -220,7 +220,7 @@ void App::save() {
             computers_[p] ? std::optional<Level>(computers_[p]->level()) : std::nullopt;
     }
     std::string error;
-    if (!write_atomically(save_path(), format_record(record_), error))
+    if (!write_atomically(options_.save_path, format_record(record_), error))
         message_ = "Could not save: " + error;
 }
 
