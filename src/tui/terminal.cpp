@@ -191,15 +191,14 @@ Terminal::Terminal(bool ascii, bool no_colour) {
     nonl();
     keypad(stdscr, TRUE);
     cursor_hidden = curs_set(0) != ERR;
-    // Tracking goes on only where curses decodes the reports (vt100 knows no mouse): elsewhere
-    // a click would arrive as keys, its button byte a Space that shoots. The any-motion mode
-    // is xterm's and only decoded where terminfo announces xterm reports (kmous).
-    if (mousemask(ALL_MOUSE_EVENTS | REPORT_MOUSE_POSITION, nullptr) != 0) {
+    // Tracking goes on only where curses decodes the reports: terminfo announces them (kmous;
+    // vt100 has none) and mousemask finds support. Elsewhere a click would arrive as keys, its
+    // button byte a Space that shoots.
+    if (has_string_capability("kmous") &&
+        mousemask(ALL_MOUSE_EVENTS | REPORT_MOUSE_POSITION, nullptr) != 0) {
         mouseinterval(0);
-        if (has_string_capability("kmous")) {
-            write_raw(mouse_motion_on);
-            motion_tracking_on = true;
-        }
+        write_raw(mouse_motion_on);
+        motion_tracking_on = true;
     }
     alternate_screen_ = has_string_capability("smcup");
 
