@@ -9,6 +9,7 @@
 #include <fstream>
 #include <functional>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <unistd.h>
@@ -68,7 +69,22 @@ struct Tmux {
         return wait_for([&](const std::string& s) { return s.find(text) != std::string::npos; },
                         seconds);
     }
-    ~Tmux() { tmux("kill-server"); }
+    /// Kills the server, then waits (up to 3 s) for the panes' processes to end: a game saves
+    /// on its way out, and must be done before the test removes the save's directory.
+    ~Tmux() {
+        const std::string panes = tmux("list-panes -a -F '#{pane_pid}'");
+        tmux("kill-server");
+        std::istringstream in(panes);
+        for (std::string pid; in >> pid;) {
+            if (pid.find_first_not_of("0123456789") != std::string::npos)
+                continue; // no server, no panes
+            // Each pane is a session of its own, led by the pane's process; zombies (waiting
+            // for init to reap them) are done.
+            const std::string running = "ps -o stat= -s " + pid + " | grep -v '^Z'";
+            for (int i = 0; i < 60 && !run(running).empty(); ++i)
+                std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+    }
 };
 
 /// Two hex digits, for send-keys -H.
