@@ -14,28 +14,27 @@ namespace {
 constexpr const char* kVersion = "0.1.0";
 
 void print_usage(std::ostream& out) {
-    out << "usage: termpool [COMMAND] [ARGS...]\n"
+    out << "usage: termpool [OPTIONS]            play pool in the terminal\n"
+           "       termpool COMMAND [ARGS...]\n"
+           "\n"
+           "options of the game:\n"
+        << termpool::tui::game_options_usage()
+        << "  --version             print the version and exit\n"
            "\n"
            "commands:\n"
-           "  termpool [--player1 NAME] [--player2 NAME] [--game 8ball|8ball-bar|9ball]\n"
-           "           [--table 7ft|8ft|9ft] [--ascii]\n"
-           "                               play pool in the terminal\n"
-           "  termpool simulate [FILE]     run the physics simulator on FILE\n"
-           "                               (standard input if FILE is omitted or -)\n"
-           "  termpool bench [--breaks N] [--shots N] [--seed S]\n"
-           "                               time the simulator on one core\n"
-           "  termpool --resume            continue the saved game\n"
-           "  termpool replay FILE         play a saved game back\n"
-           "  termpool experiment friction [--table T] [--csv] | mass [--csv]\n"
-           "                               the seed report's friction and mass study\n"
-           "  termpool selfplay --games N --p1 LEVEL --p2 LEVEL [--game G] [--seed S]\n"
-           "           [--jobs J]        computer against computer\n"
-           "  termpool stats [--reset NAME]\n"
-           "                               players' totals over their finished games\n"
-           "\n"
-           "options:\n"
-           "  -h, --help                   print this help and exit\n"
-           "  --version                    print the version and exit\n";
+           "  practice [--game G]   practise alone at the table\n"
+           "  stats [--reset NAME]  the players' totals over their finished games\n"
+           "  replay [FILE]         play a saved game back (default: the game saved last)\n"
+           "  simulate [FILE]       run the physics simulator on a scenario (standard input\n"
+           "                        if FILE is omitted or -)\n"
+           "  bench [--breaks N] [--shots N] [--seed S]\n"
+           "                        time the simulator on one core\n"
+           "  bench --render        time the terminal front end: frames and bytes sent\n"
+           "  experiment friction [--table T] [--csv] | mass [--csv]\n"
+           "                        the seed report's friction and mass study\n"
+           "  selfplay --games N --p1 LEVEL --p2 LEVEL [--game G] [--seed S] [--jobs J]\n"
+           "                        computer against computer\n"
+           "  COMMAND --help        the options of one command\n";
 }
 
 } // namespace

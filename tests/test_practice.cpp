@@ -105,12 +105,12 @@ TEST_CASE("practice: a pocketed cue ball comes back to the head spot", "[practic
 
 TEST_CASE("termpool practice in tmux: one name, shoot, take it again, move a ball",
           "[practice][tui][e2e]") {
-    if (!termpool::test::have_tmux())
+    if (!tmux_session::have_tmux())
         return;
-    termpool::test::TempDir dir;
-    termpool::test::TmuxSession t;
+    tmux_session::ScratchDir dir("termpool-test");
+    tmux_session::Tmux t;
     t.start("env XDG_STATE_HOME=" + dir.path + " TERM=xterm-256color LANG=C.UTF-8 " +
-            termpool::test::termpool_binary() + " practice --seed 3; sleep 60");
+            tmux_session::termpool_binary() + " practice --seed 3; sleep 60");
     REQUIRE(t.wait_for_text("Name of player 1"));
     t.keys("-l Zed");
     t.keys("Enter");
@@ -141,5 +141,5 @@ TEST_CASE("termpool practice in tmux: one name, shoot, take it again, move a bal
     t.keys("q");
     t.keys("y");
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    CHECK(termpool::test::file_text(dir.path + "/termpool/game.save").empty());
+    CHECK(tmux_session::file_text(dir.path + "/termpool/game.save").empty());
 }

@@ -577,7 +577,7 @@ TEST_CASE("replay refuses a file that is not a game, naming the line", "[cli][sa
     const Run r = run(dir, "replay " + file);
     CHECK(r.status == 2);
     CHECK(r.err.starts_with(file + ":2: unknown game 'pool'"));
-    CHECK(run(dir, "replay").status == 2);
+    CHECK(run(dir, "replay one two").status == 2);
     CHECK(run(dir, "replay " + dir.path() + "/missing.save").status == 2);
 }
 

@@ -1,97 +1,17 @@
 // The real binary in tmux, driven as a player would: names, ball in hand, the break, a mouse
 // motion, a terminal too small, and quitting.
-#include <array>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <functional>
 #include <iterator>
-#include <sstream>
 #include <string>
 #include <thread>
-#include <unistd.h>
 
-namespace {
+#include "tmux_session.hpp"
 
-std::string run(const std::string& command) {
-    std::string out;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe)
-        return out;
-    std::array<char, 4096> buffer{};
-    while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
-        out.append(buffer.data(), n);
-    pclose(pipe);
-    return out;
-}
-
-struct Tmux {
-    // A socket of its own for each session: a server that is still shutting down must not
-    // take the next one's socket with it.
-    std::string socket =
-        "termpool-e2e-" + std::to_string(getpid()) + "-" + std::to_string(next_id());
-    static int next_id() {
-        static int id = 0;
-        return ++id;
-    }
-    std::string tmux(const std::string& args) const {
-        return run("tmux -L " + socket + " -f /dev/null " + args + " 2>&1");
-    }
-    std::string screen() const { return tmux("capture-pane -p -t e2e"); }
-    std::string flag(const std::string& name) const {
-        std::string v = tmux("display-message -p -t e2e '#{" + name + "}'");
-        while (!v.empty() && (v.back() == '\n' || v.back() == '\r'))
-            v.pop_back();
-        return v;
-    }
-    void keys(const std::string& args) const { tmux("send-keys -t e2e " + args); }
-    bool wait_for(const std::function<bool(const std::string&)>& ok, double seconds = 10) const {
-        const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-        while (std::chrono::steady_clock::now() < end) {
-            if (ok(screen()))
-                return true;
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        }
-        return false;
-    }
-    bool wait_for_text(const std::string& text, double seconds = 10) const {
-        return wait_for([&](const std::string& s) { return s.find(text) != std::string::npos; },
-                        seconds);
-    }
-    ~Tmux() { tmux("kill-server"); }
-};
-
-std::string hex(int value) {
-    char b[8];
-    std::snprintf(b, sizeof b, "%02x", value);
-    return b;
-}
-
-// An X10 mouse report (what xterm-256color's kmous announces): motion with no button held.
-std::string mouse_motion(int x, int y) {
-    return "-H 1b 5b 4d " + hex(32 + 35) + " " + hex(33 + x) + " " + hex(33 + y);
-}
-
-// The binary under test.
-std::string termpool_binary() {
-    const char* bin = std::getenv("TERMPOOL_BIN");
-    return bin ? bin : "build/termpool";
-}
-
-// What the pane's shell wrote to `file` as the game's exit status (waits up to 5 s).
-std::string exit_status(const std::string& file) {
-    std::string status;
-    for (int i = 0; i < 100 && status.empty(); ++i) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        std::ifstream in(file);
-        std::getline(in, status);
-    }
-    return status;
-}
-
-} // namespace
+using namespace tmux_session;
 
 TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]") {
     if (std::system("command -v tmux >/dev/null 2>&1") != 0) {

@@ -5,18 +5,18 @@
 
 #include "tmux_session.hpp"
 
-using termpool::test::file_text;
-using termpool::test::TempDir;
-using termpool::test::TmuxSession;
+using tmux_session::file_text;
+using tmux_session::ScratchDir;
+using tmux_session::Tmux;
 
 TEST_CASE("game over shows the figures and keeps them for termpool stats", "[tui][e2e][stats]") {
-    if (!termpool::test::have_tmux())
+    if (!tmux_session::have_tmux())
         return;
-    TempDir dir;
-    TmuxSession t;
+    ScratchDir dir("termpool-test");
+    Tmux t;
     // Bar rules, rack seed 9: the full-power break at the proposed aim drops the 8, which wins.
     t.start("env XDG_STATE_HOME=" + dir.path + " TERM=xterm-256color LANG=C.UTF-8 " +
-            termpool::test::termpool_binary() +
+            tmux_session::termpool_binary() +
             " --game 8ball-bar --seed 9 --player1 Ann --player2 Bob; sleep 60");
     REQUIRE(t.wait_for_text("place the cue ball"));
     t.keys("Enter");
@@ -39,8 +39,8 @@ TEST_CASE("game over shows the figures and keeps them for termpool stats", "[tui
     CHECK(totals.find("player 0 1 0 ") != std::string::npos); // Bob never shot
 
     // termpool stats lists both.
-    const std::string listing = termpool::test::run_command(
-        "env XDG_STATE_HOME=" + dir.path + " " + termpool::test::termpool_binary() + " stats");
+    const std::string listing = tmux_session::run("env XDG_STATE_HOME=" + dir.path + " " +
+                                                  tmux_session::termpool_binary() + " stats");
     CHECK(listing.find("Ann") != std::string::npos);
     CHECK(listing.find("Bob") != std::string::npos);
 }

@@ -11,9 +11,9 @@
 #include "tmux_session.hpp"
 
 using namespace termpool;
-using termpool::test::file_text;
-using termpool::test::TempDir;
-using termpool::test::TmuxSession;
+using tmux_session::file_text;
+using tmux_session::ScratchDir;
+using tmux_session::Tmux;
 
 namespace {
 
@@ -54,16 +54,16 @@ void write_save(const std::string& dir, const GameRecord& record) {
 
 std::string game(const std::string& dir, const std::string& args) {
     return "env XDG_STATE_HOME=" + dir + " TERM=xterm-256color LANG=C.UTF-8 " +
-           test::termpool_binary() + " " + args + "; sleep 60";
+           tmux_session::termpool_binary() + " " + args + "; sleep 60";
 }
 
 } // namespace
 
 TEST_CASE("the name prompt ends with the race length", "[tui][e2e][race]") {
-    if (!test::have_tmux())
+    if (!tmux_session::have_tmux())
         return;
-    TempDir dir;
-    TmuxSession t;
+    ScratchDir dir("termpool-test");
+    Tmux t;
     t.start(game(dir.path, "--seed 4"));
     REQUIRE(t.wait_for_text("Name of player 1"));
     t.keys("-l Ann");
@@ -90,9 +90,9 @@ TEST_CASE("the name prompt ends with the race length", "[tui][e2e][race]") {
 }
 
 TEST_CASE("a race: the score after a rack, the next rack, the match winner", "[tui][e2e][race]") {
-    if (!test::have_tmux())
+    if (!tmux_session::have_tmux())
         return;
-    TempDir dir;
+    ScratchDir dir("termpool-test");
     const std::string save = dir.path + "/termpool/game.save";
     // Rack 1 won, the race to 2 goes on.
     const GameRecord one_rack = race_record(2, 1, 11);
@@ -102,7 +102,7 @@ TEST_CASE("a race: the score after a rack, the next rack, the match winner", "[t
     const int first_winner = std::get<ReplayedMatch>(replayed).game.winner();
     REQUIRE(first_winner != 0);
     {
-        TmuxSession t;
+        Tmux t;
         t.start(game(dir.path, "--resume"));
         const std::string score =
             first_winner == 1 ? "Race to 2: Ann 1, Bob 0" : "Race to 2: Ann 0, Bob 1";
@@ -127,14 +127,14 @@ TEST_CASE("a race: the score after a rack, the next rack, the match winner", "[t
     CHECK(std::get<ReplayedMatch>(again).score.racks_played() == 1);
 
     // A match decided: the winner is announced and a rematch offered.
-    TempDir done;
+    ScratchDir done("termpool-test");
     const GameRecord whole = race_record(2, 3, 11);
     auto decided = replay_match(whole);
     REQUIRE(std::holds_alternative<ReplayedMatch>(decided));
     const MatchState& final_score = std::get<ReplayedMatch>(decided).score;
     REQUIRE(final_score.match_winner() != 0);
     write_save(done.path, whole);
-    TmuxSession t;
+    Tmux t;
     t.start(game(done.path, "--resume"));
     REQUIRE(t.wait_for_text("wins the match"));
     const std::string winner = final_score.match_winner() == 1 ? "Ann" : "Bob";
@@ -143,14 +143,14 @@ TEST_CASE("a race: the score after a rack, the next rack, the match winner", "[t
 }
 
 TEST_CASE("two computers in a race go on to the next rack by themselves", "[tui][e2e][race]") {
-    if (!test::have_tmux())
+    if (!tmux_session::have_tmux())
         return;
-    TempDir dir;
+    ScratchDir dir("termpool-test");
     GameRecord record = race_record(3, 1, 11);
     record.computers[0] = Level::easy;
     record.computers[1] = Level::easy;
     write_save(dir.path, record);
-    TmuxSession t;
+    Tmux t;
     t.start(game(dir.path, "--resume"));
     REQUIRE(t.wait_for_text("Race to 3"));
     CHECK(t.wait_for_text("Rack 2: ", 10));

@@ -10,34 +10,17 @@
 #include "tmux_session.hpp"
 #include "tui/aim.hpp"
 
-using termpool::test::file_text;
-using termpool::test::TempDir;
-using termpool::test::TmuxSession;
+using tmux_session::file_text;
+using tmux_session::mouse_report;
+using tmux_session::ScratchDir;
+using tmux_session::Tmux;
 
 namespace {
 
-// send-keys arguments that type `bytes` raw.
-std::string raw(const std::string& bytes) {
-    std::string args = "-H";
-    for (const char c : bytes) {
-        char b[8];
-        std::snprintf(b, sizeof b, " %02x", static_cast<unsigned char>(c));
-        args += b;
-    }
-    return args;
-}
-
-// An SGR mouse report (xterm-256color's kmous is \E[<) at cell (x, y): `button` 35 is motion
-// with no button held, 0 a press of button 1 (`release` for its release).
-std::string mouse_report(int button, int x, int y, bool release = false) {
-    return raw("\033[<" + std::to_string(button) + ";" + std::to_string(x + 1) + ";" +
-               std::to_string(y + 1) + (release ? "m" : "M"));
-}
-
 // The game in tmux at 100x32 with its state in `dir`.
-void start_game(const TmuxSession& t, const std::string& dir, const std::string& args) {
+void start_game(const Tmux& t, const std::string& dir, const std::string& args) {
     t.start("env XDG_STATE_HOME=" + dir + " TERM=xterm-256color LANG=C.UTF-8 " +
-            termpool::test::termpool_binary() + " " + args + "; sleep 60");
+            tmux_session::termpool_binary() + " " + args + "; sleep 60");
 }
 
 // The character at column x, row y of a captured screen (by bytes: fine for ASCII cells).
@@ -73,10 +56,10 @@ std::string cell_text(const std::string& screen, int x, int y) {
 } // namespace
 
 TEST_CASE("the status line names the players and says what to do", "[tui][e2e]") {
-    if (!termpool::test::have_tmux())
+    if (!tmux_session::have_tmux())
         return;
-    TempDir dir;
-    TmuxSession t;
+    ScratchDir dir("termpool-test");
+    Tmux t;
     start_game(t, dir.path, "--player1 Ann --player2 Bob --seed 1");
     // The name given on the command line, not "Player 1".
     REQUIRE(t.wait_for_text("Ann breaks: place the cue ball in the kitchen"));
@@ -100,10 +83,10 @@ TEST_CASE("the status line names the players and says what to do", "[tui][e2e]")
 }
 
 TEST_CASE("hovering aims but keeps the power; keys take the pointer's mark away", "[tui][e2e]") {
-    if (!termpool::test::have_tmux())
+    if (!tmux_session::have_tmux())
         return;
-    TempDir dir;
-    TmuxSession t;
+    ScratchDir dir("termpool-test");
+    Tmux t;
     start_game(t, dir.path, "--player1 Ann --player2 Bob --seed 1");
     REQUIRE(t.wait_for_text("place the cue ball"));
     t.keys("Enter");
@@ -126,11 +109,11 @@ TEST_CASE("hovering aims but keeps the power; keys take the pointer's mark away"
 }
 
 TEST_CASE("9-ball: Space at the start of each turn never hits a wrong ball first", "[tui][e2e]") {
-    if (!termpool::test::have_tmux())
+    if (!tmux_session::have_tmux())
         return;
-    TempDir dir;
+    ScratchDir dir("termpool-test");
     const std::string save = dir.path + "/termpool/game.save";
-    TmuxSession t;
+    Tmux t;
     start_game(t, dir.path, "--game 9ball --player1 Ann --player2 Bob --seed 2");
     REQUIRE(t.wait_for_text("place the cue ball"));
     t.keys("Enter");

@@ -247,6 +247,11 @@ int mass_study(bool csv) {
 } // namespace
 
 int experiment_command(const std::vector<std::string>& args) {
+    if (std::ranges::any_of(args,
+                            [](const std::string& a) { return a == "-h" || a == "--help"; })) {
+        std::fputs(usage, stdout);
+        return 0;
+    }
     if (args.empty() || (args[0] != "friction" && args[0] != "mass")) {
         std::fputs(usage, stderr);
         return 2;

@@ -192,6 +192,11 @@ std::pair<double, double> wilson(double wins, double n) {
 } // namespace
 
 int selfplay_command(const std::vector<std::string>& args) {
+    if (std::ranges::any_of(args,
+                            [](const std::string& a) { return a == "-h" || a == "--help"; })) {
+        std::fputs(usage, stdout);
+        return 0;
+    }
     std::string error;
     const auto options = parse(args, error);
     if (!options) {

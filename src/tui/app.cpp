@@ -156,7 +156,17 @@ Vec2 App::cue_position() const {
 void App::begin() {
     if (!practice_)
         message_ = names_[game_.shooter() - 1] + " breaks: place the cue ball in the kitchen";
+    if (!notice_.empty())
+        message_ = notice_ + "  " + message_;
+    notice_.clear();
     start_turn();
+}
+
+void App::tell(const std::string& message) {
+    if (mode_ == Mode::names)
+        notice_ += (notice_.empty() ? "" : "  ") + message;
+    else
+        message_ = message + (message_.empty() ? "" : "  " + message_);
 }
 
 void App::start_turn() {
@@ -327,7 +337,7 @@ void App::save() {
             computers_[p] ? std::optional<Level>(computers_[p]->level()) : std::nullopt;
     }
     std::string error;
-    if (!write_atomically(save_path(), format_record(record_), error))
+    if (!write_atomically(options_.save_path, format_record(record_), error))
         message_ = "Could not save: " + error;
 }
 

@@ -30,8 +30,9 @@ public:
     void resume(const GameRecord& record);
     /// Plays a saved game back instead of playing: space pauses, Left/Right step a shot.
     void start_replay(const GameRecord& record);
-    /// Shows a line on the message line (for news from before the game started).
-    void tell(const std::string& message) { message_ = message; }
+    /// Puts news from before the game started (a config warning, where the game is saved) in
+    /// front of the message line; while the names are asked for, it waits for the first one.
+    void tell(const std::string& message);
 
 private:
     enum class Mode { names, placing, aiming, animating, choosing, game_over, replay, moving };
@@ -162,6 +163,7 @@ private:
     std::size_t next_action_ = 0; // replay: the next action of record_ to show
 
     std::string message_;
+    std::string notice_;             // told before the first message
     Clock::time_point game_over_at_; // when the last rack ended
     std::vector<int> pocketed_by_[2];
     std::string overlay_;

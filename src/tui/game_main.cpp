@@ -1,20 +1,51 @@
 #include "tui/game_main.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 #include <stdexcept>
+#include <sys/stat.h>
+#include <utility>
 #include <variant>
 
 #include "tui/app.hpp"
 #include "tui/config.hpp"
 #include "tui/options.hpp"
 #include "tui/save_file.hpp"
+#include "tui/save_slots.hpp"
 
 #include "tui/terminal.hpp"
 #include <termpool/record.hpp>
 
 namespace termpool::tui {
 namespace {
+
+constexpr const char* options_usage =
+    "  --player1 NAME, --player2 NAME\n"
+    "                        the players' names (asked for when not given)\n"
+    "  --game 8ball|8ball-bar|9ball\n"
+    "                        the game (default 8ball)\n"
+    "  --table 7ft|8ft|9ft   the table (default 9ft)\n"
+    "  --race N              a match: the first to win N racks (1 to 99; default 1, or\n"
+    "                        asked at the end of the name prompt)\n"
+    "  --breaks alternate|winner\n"
+    "                        who breaks each next rack of a match (default alternate)\n"
+    "  --seed S              the first rack's seed, to set a game up again exactly\n"
+    "  --vs-computer [LEVEL] the computer is player 2; LEVEL is easy, medium, hard or pro\n"
+    "                        (default medium, or the config file's level)\n"
+    "  --watch [LEVEL]       the computer plays both sides\n"
+    "  --friction physical | decay K | constant A | combined K A\n"
+    "                        the cloth model (default physical)\n"
+    "  --cue-ball-mass KG    the cue ball's mass, 0.05 to 1 (default: as the others)\n"
+    "  --ascii               plain ASCII, no colour\n"
+    "  --resume [N | FILE]   continue a saved game: the only one, save N (1 is game.save,\n"
+    "                        N is game-N.save) or FILE; with several, list them\n"
+    "  -h, --help            print this help and exit\n";
+
+void print_game_usage(std::FILE* out) {
+    std::fprintf(out, "usage: termpool [OPTIONS]   (commands: termpool --help)\n%s", options_usage);
+}
 
 // A saved game, read and replayed to where it stands.
 struct LoadedGame {
@@ -33,6 +64,37 @@ std::variant<LoadedGame, RecordError> load_game(const std::string& text) {
     return LoadedGame{std::move(record), std::move(std::get<Game>(replayed))};
 }
 
+// A save read from disk, or why not: missing (nothing), unreadable (error), or not a game
+// (problem; a slot's save is then moved aside as .bad, never overwritten).
+struct SaveRead {
+    std::optional<std::string> text;
+    std::string error;
+    std::optional<RecordError> problem;
+    std::optional<LoadedGame> loaded;
+};
+
+SaveRead read_save(const std::string& path) {
+    SaveRead r;
+    r.text = read_whole_file(path, r.error);
+    if (!r.text)
+        return r;
+    auto result = load_game(*r.text);
+    if (auto* problem = std::get_if<RecordError>(&result)) {
+        r.problem = *problem;
+        if (slot_of(path) != 0)
+            std::rename(path.c_str(), (path + ".bad").c_str());
+    } else {
+        r.loaded.emplace(std::move(std::get<LoadedGame>(result)));
+    }
+    return r;
+}
+
+void report_bad_save(const std::string& path, const RecordError& problem) {
+    std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), problem.line, problem.message.c_str());
+    if (slot_of(path) != 0)
+        std::fprintf(stderr, "termpool: kept it as %s.bad\n", path.c_str());
+}
+
 // The options a record was played with; how it is shown (ASCII, colour) stays as given.
 GameOptions options_from(const GameRecord& record, GameOptions options) {
     options.game = record.game;
@@ -49,7 +111,8 @@ GameOptions options_from(const GameRecord& record, GameOptions options) {
 }
 
 // Runs the game in the terminal after `setup` has prepared it. The exit status is 1 without a
-// usable terminal, and what a signal would give after one ended the game.
+// usable terminal, and what a signal would give after one ended the game (a terminal that
+// hung up counts as SIGHUP).
 int in_terminal(const GameOptions& options, const std::function<void(App&)>& setup) {
     int signal = 0;
     try {
@@ -66,11 +129,186 @@ int in_terminal(const GameOptions& options, const std::function<void(App&)>& set
     return signal != 0 ? 128 + signal : 0;
 }
 
+// How to continue the save at `path`: plain --resume while it is the only save.
+std::string resume_command(const std::string& path) {
+    const int slot = slot_of(path);
+    if (slot == 0)
+        return "termpool --resume " + path;
+    const std::vector<int> slots = existing_slots();
+    if (slots.size() == 1 && slots.front() == slot)
+        return "termpool --resume";
+    return "termpool --resume " + std::to_string(slot);
+}
+
+// After curses has ended: where the game is and how to go on with it, when there is a game.
+void tell_where_saved(const std::string& path, const std::optional<std::string>& before,
+                      bool resumed) {
+    std::string ignored;
+    const std::optional<std::string> after = read_whole_file(path, ignored);
+    if (!after || (!resumed && after == before))
+        return; // nothing was played (the names were never entered)
+    std::printf("Game saved in %s; continue it with: %s\n", display_path(path).c_str(),
+                resume_command(path).c_str());
+}
+
+// One line of the --resume list: the slot, the players, the game, how far, when.
+std::string describe(int slot, const std::string& path, const LoadedGame& saved) {
+    const GameRecord& r = saved.record;
+    const auto shots = std::count_if(r.actions.begin(), r.actions.end(), [](const auto& a) {
+        return a.kind == RecordedAction::Kind::shot;
+    });
+    const int winner = saved.game.winner();
+    const std::string progress = winner != 0
+                                     ? "won by " + r.names[winner - 1]
+                                     : std::to_string(shots) + (shots == 1 ? " shot" : " shots");
+    char when[32] = "";
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0) {
+        std::tm local{};
+        if (localtime_r(&st.st_mtime, &local))
+            std::strftime(when, sizeof when, "%Y-%m-%d %H:%M", &local);
+    }
+    char line[512];
+    std::snprintf(line, sizeof line, "  %d  %s v %s, %s, %s, %s, saved %s  (%s)", slot,
+                  r.names[0].c_str(), r.names[1].c_str(), game_type_name(r.game),
+                  table_size_name(r.table), progress.c_str(), when, display_path(path).c_str());
+    return line;
+}
+
+// A save chosen to go on with, locked for as long as the game runs.
+struct Chosen {
+    SaveLock lock;
+    LoadedGame game;
+};
+
+// `--resume N` or `--resume FILE`: that save, or the exit status after saying why not.
+std::variant<Chosen, int> resume_named(const std::string& which) {
+    const bool number =
+        std::all_of(which.begin(), which.end(), [](char c) { return c >= '0' && c <= '9'; });
+    const int slot = number && which.size() <= 3 ? std::stoi(which) : 0;
+    if (number && (slot < 1 || slot_of(slot_path(slot)) != slot)) {
+        std::fprintf(stderr, "termpool: there is no save %s (termpool --resume lists them)\n",
+                     which.c_str());
+        return 2;
+    }
+    const std::string path = number ? slot_path(slot) : which;
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) {
+        std::fprintf(stderr, "termpool: no saved game to resume (%s)\n", path.c_str());
+        return 1;
+    }
+    SaveLock lock(path);
+    if (lock.state() == SaveLock::State::busy) {
+        std::fprintf(stderr, "termpool: %s is in use by another termpool game\n",
+                     display_path(path).c_str());
+        return 1;
+    }
+    SaveRead read = read_save(path);
+    if (read.problem) {
+        report_bad_save(path, *read.problem);
+        return 2;
+    }
+    if (!read.loaded) {
+        std::fprintf(stderr, "termpool: no saved game to resume (%s)\n",
+                     read.error.empty() ? path.c_str() : read.error.c_str());
+        return 1;
+    }
+    return Chosen{std::move(lock), std::move(*read.loaded)};
+}
+
+// Plain `--resume`: the one save no other game holds, or a list of them to pick from.
+std::variant<Chosen, int> resume_only() {
+    std::vector<Chosen> free;
+    std::vector<std::string> busy;
+    bool bad = false;
+    for (const int slot : existing_slots()) {
+        const std::string path = slot_path(slot);
+        SaveLock lock(path);
+        if (lock.state() == SaveLock::State::busy) {
+            busy.push_back(display_path(path));
+            continue;
+        }
+        SaveRead read = read_save(path);
+        if (read.problem) {
+            report_bad_save(path, *read.problem);
+            bad = true;
+        } else if (read.loaded) {
+            free.push_back(Chosen{std::move(lock), std::move(*read.loaded)});
+        } else if (!read.error.empty()) {
+            std::fprintf(stderr, "termpool: cannot read %s\n", read.error.c_str());
+        }
+    }
+    if (free.size() == 1)
+        return std::move(free.front());
+    if (free.empty()) {
+        if (bad)
+            return 2;
+        std::string why = display_path(save_dir());
+        for (const std::string& b : busy)
+            why += "; " + b + " is in use by another termpool game";
+        std::fprintf(stderr, "termpool: no saved game to resume (%s)\n", why.c_str());
+        return 1;
+    }
+    std::printf("Saved games you can continue (termpool --resume N, or --resume FILE):\n");
+    for (const Chosen& c : free)
+        std::printf("%s\n", describe(slot_of(c.lock.path()), c.lock.path(), c.game).c_str());
+    return 0;
+}
+
+int resume_game(const GameOptions& options, const std::vector<std::string>& notices) {
+    auto choice = options.resume_from.empty() ? resume_only() : resume_named(options.resume_from);
+    if (const int* status = std::get_if<int>(&choice))
+        return *status;
+    Chosen& chosen = std::get<Chosen>(choice);
+    const std::string path = chosen.lock.path();
+    GameOptions resumed = options_from(chosen.game.record, options);
+    resumed.save_path = path;
+    const int status = in_terminal(resumed, [&](App& app) {
+        app.resume(chosen.game.record);
+        for (const std::string& n : notices)
+            app.tell(n);
+    });
+    tell_where_saved(path, std::nullopt, true);
+    return status;
+}
+
+// A new game in the first save no other game holds; `notices` are shown in the game.
+int new_game(GameOptions options, std::vector<std::string> notices) {
+    const SaveLock lock = claim_free_slot();
+    const std::string& path = lock.path();
+    if (slot_of(path) > 1)
+        notices.push_back("Another termpool game is running: this one is saved in " +
+                          display_path(path));
+    // A save that cannot be read is never overwritten: it is kept beside as NAME.bad.
+    const SaveRead read = read_save(path);
+    if (read.problem) {
+        std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), read.problem->line,
+                     read.problem->message.c_str());
+        notices.push_back("The old save could not be read; it is kept as " + path + ".bad");
+    }
+    options.save_path = path;
+    const std::optional<std::string> before = read.problem ? std::nullopt : read.text;
+    const int status = in_terminal(options, [&](App& app) {
+        std::string told;
+        for (const std::string& n : notices)
+            told += (told.empty() ? "" : "  ") + n;
+        if (!told.empty())
+            app.tell(told);
+    });
+    tell_where_saved(path, before, false);
+    return status;
+}
+
 } // namespace
+
+const char* game_options_usage() {
+    return options_usage;
+}
 
 int run_game(const std::vector<std::string>& args) {
     // The config file's defaults first; the command line overrides them.
     GameOptions defaults;
+    std::vector<std::string> notices;
     std::string config_error;
     if (const auto config = read_whole_file(config_path(), config_error)) {
         std::vector<std::string> warnings;
@@ -78,53 +316,25 @@ int run_game(const std::vector<std::string>& args) {
             std::fprintf(stderr, "%s:%s\n", config_path().c_str(), bad->c_str());
             return 2;
         }
-        for (const std::string& w : warnings)
+        // On stderr for the record, and in the game, where the player is looking.
+        for (const std::string& w : warnings) {
             std::fprintf(stderr, "termpool: warning: %s\n", w.c_str());
+            notices.push_back("Warning: " + w);
+        }
     }
     std::string error;
     const auto options = parse_game_options(args, error, defaults);
     if (!options) {
-        std::fprintf(stderr,
-                     "termpool: %s\nusage: termpool [--player1 NAME] [--player2 NAME] "
-                     "[--game 8ball|8ball-bar|9ball] [--table 7ft|8ft|9ft] [--ascii]\n"
-                     "               [--vs-computer [LEVEL]] [--watch [LEVEL]]   (LEVEL: easy, "
-                     "medium, hard, pro)\n",
-                     error.c_str());
+        std::fprintf(stderr, "termpool: %s\n", error.c_str());
+        print_game_usage(stderr);
         return 2;
     }
-    // A save that cannot be read is never overwritten: it is kept beside as NAME.bad.
-    const std::string path = save_path();
-    std::string read_error;
-    const std::optional<std::string> saved = read_whole_file(path, read_error);
-    std::optional<LoadedGame> loaded;
-    std::string notice;
-    if (saved) {
-        auto result = load_game(*saved);
-        if (auto* problem = std::get_if<RecordError>(&result)) {
-            std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), problem->line,
-                         problem->message.c_str());
-            std::rename(path.c_str(), (path + ".bad").c_str());
-            if (options->resume) {
-                std::fprintf(stderr, "termpool: kept it as %s.bad\n", path.c_str());
-                return 2;
-            }
-            notice = "The old save could not be read; it is kept as " + path + ".bad";
-        } else if (options->resume) {
-            loaded.emplace(std::move(std::get<LoadedGame>(result)));
-        }
-    } else if (options->resume) {
-        std::fprintf(stderr, "termpool: no saved game to resume (%s)\n",
-                     read_error.empty() ? path.c_str() : read_error.c_str());
-        return 1;
+    if (options->help) {
+        print_game_usage(stdout);
+        return 0;
     }
-
-    if (loaded)
-        return in_terminal(options_from(loaded->record, *options),
-                           [&](App& app) { app.resume(loaded->record); });
-    return in_terminal(*options, [&](App& app) {
-        if (!notice.empty())
-            app.tell(notice);
-    });
+    return options->resume ? resume_game(*options, notices)
+                           : new_game(*options, std::move(notices));
 }
 
 int run_practice(const std::vector<std::string>& args) {
@@ -141,11 +351,18 @@ int run_practice(const std::vector<std::string>& args) {
     auto options = parse_game_options(args, error, defaults);
     if (options && (options->resume || options->watch || options->computer))
         error = "practice is one player at the table: no --resume, --vs-computer or --watch";
+    constexpr const char* usage =
+        "usage: termpool practice [--game 8ball|8ball-bar|9ball] [--table 7ft|8ft|9ft]\n"
+        "                         [--player1 NAME] [--seed S] [--friction MODEL]\n"
+        "                         [--cue-ball-mass KG] [--ascii]\n"
+        "One player at the table, no referee: m moves a ball, r takes the last shot again,\n"
+        "t racks again.\n";
+    if (options && options->help) {
+        std::fputs(usage, stdout);
+        return 0;
+    }
     if (!options || !error.empty()) {
-        std::fprintf(stderr,
-                     "termpool: %s\nusage: termpool practice [--game 8ball|8ball-bar|9ball] "
-                     "[--table 7ft|8ft|9ft] [--player1 NAME] [--seed S] [--ascii]\n",
-                     error.c_str());
+        std::fprintf(stderr, "termpool: %s\n%s", error.c_str(), usage);
         return 2;
     }
     options->practice = true;
@@ -153,11 +370,37 @@ int run_practice(const std::vector<std::string>& args) {
 }
 
 int run_replay(const std::vector<std::string>& args) {
-    if (args.size() != 1) {
-        std::fprintf(stderr, "usage: termpool replay FILE\n");
+    constexpr const char* usage = "usage: termpool replay [FILE]   (default: the game saved "
+                                  "last)\n  space pauses, Left/Right step a shot, x skips the "
+                                  "animation, q quits\n";
+    if (args.size() == 1 && (args[0] == "-h" || args[0] == "--help")) {
+        std::fputs(usage, stdout);
+        return 0;
+    }
+    if (args.size() > 1) {
+        std::fputs(usage, stderr);
         return 2;
     }
-    const std::string& path = args[0];
+    std::string path = args.empty() ? "" : args[0];
+    if (path.empty()) {
+        // The save written last, whichever game holds it: a replay only reads.
+        std::pair<std::time_t, long> newest{0, 0};
+        for (const int slot : existing_slots()) {
+            struct stat st {};
+            if (::stat(slot_path(slot).c_str(), &st) != 0)
+                continue;
+            const std::pair<std::time_t, long> written{st.st_mtim.tv_sec, st.st_mtim.tv_nsec};
+            if (path.empty() || written > newest) {
+                newest = written;
+                path = slot_path(slot);
+            }
+        }
+        if (path.empty()) {
+            std::fprintf(stderr, "termpool: no saved game to replay (%s)\n",
+                         display_path(save_dir()).c_str());
+            return 1;
+        }
+    }
     std::string error;
     const std::optional<std::string> text = read_whole_file(path, error);
     if (!text) {

@@ -31,7 +31,12 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
         if (a == "--ascii") {
             o.ascii = true;
         } else if (a == "--resume") {
+            // The save is optional: a slot number or a file, never an option.
             o.resume = true;
+            if (i + 1 < args.size() && !args[i + 1].empty() && !args[i + 1].starts_with("-"))
+                o.resume_from = args[++i];
+        } else if (a == "-h" || a == "--help") {
+            o.help = true;
         } else if (a == "--friction") {
             // physical | decay K | constant A | combined K A, as in `termpool simulate`.
             const std::string* kind = value();

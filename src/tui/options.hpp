@@ -21,7 +21,10 @@ struct GameOptions {
     bool timed_power = false;               ///< config power-mode: start in timed power mode
     bool aim_aid = true;                    ///< config aim-aid: show the aiming aid
     Level default_level = Level::medium;    ///< config level: for --vs-computer without one
-    bool resume = false;                    ///< --resume: continue the last unfinished game
+    bool resume = false;                    ///< --resume [N|FILE]: continue a saved game
+    std::string resume_from;                ///< --resume N or FILE; empty: the only one
+    std::string save_path;                  ///< where App saves (run_game picks the slot)
+    bool help = false;                      ///< -h, --help: print the usage and exit
     bool ascii = false;                     ///< --ascii: plain ASCII and no colour
     FrictionModel friction;                 ///< --friction MODEL [K] [A]
     double cue_ball_mass = 0;               ///< --cue-ball-mass KG (0: like the others)

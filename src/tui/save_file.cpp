@@ -11,7 +11,6 @@
 #include "tui/xdg_dir.hpp"
 
 namespace termpool::tui {
-namespace {
 
 void make_directories(const std::string& dir) {
     for (std::size_t i = 1; i <= dir.size(); ++i)
@@ -19,10 +18,12 @@ void make_directories(const std::string& dir) {
             ::mkdir(dir.substr(0, i).c_str(), 0700);
 }
 
-} // namespace
+std::string save_dir() {
+    return xdg_dir("XDG_STATE_HOME", ".local/state") + "/termpool";
+}
 
 std::string save_path() {
-    return xdg_dir("XDG_STATE_HOME", ".local/state") + "/termpool/game.save";
+    return save_dir() + "/game.save";
 }
 
 bool write_atomically(const std::string& path, const std::string& text, std::string& error) {

@@ -7,8 +7,14 @@
 
 namespace termpool::tui {
 
-/// $XDG_STATE_HOME/termpool/game.save, or ~/.local/state/termpool/game.save.
+/// $XDG_STATE_HOME/termpool, or ~/.local/state/termpool: where games are saved.
+std::string save_dir();
+
+/// The first save, save_dir()/game.save (see save_slots.hpp for the others).
 std::string save_path();
+
+/// Creates `dir` and its parents (mode 0700) where they are missing.
+void make_directories(const std::string& dir);
 
 /// Writes `text` to `path` atomically, creating the directory. False (with `error`) on failure.
 bool write_atomically(const std::string& path, const std::string& text, std::string& error);

@@ -7,7 +7,10 @@
 #include <cstring>
 #include <langinfo.h>
 #include <ncursesw/curses.h>
+#include <poll.h>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 #include <unistd.h>
 
 namespace termpool::tui {
@@ -24,17 +27,98 @@ void on_signal(int sig) {
 constexpr char mouse_motion_on[] = "\033[?1003h";
 constexpr char mouse_motion_off[] = "\033[?1003l\033[?1002l\033[?1000l";
 
-void write_raw(const char* s) {
+// What the constructor changed that restore_terminal_modes must undo, so that an exit path
+// where curses never started prints nothing.
+bool motion_tracking_on = false;
+bool cursor_hidden = false;
+
+// How long the rest of a control sequence may take once ESC [ has arrived.
+constexpr int sequence_rest_ms = 50;
+
+void write_raw(std::string_view s) {
     // Straight to the terminal: also used where stdio buffers may not be flushed any more.
-    const ssize_t ignored = ::write(STDOUT_FILENO, s, std::strlen(s));
+    const ssize_t ignored = ::write(STDOUT_FILENO, s.data(), s.size());
     (void)ignored;
 }
 
-// xterm-256 indices and the 8-colour fallbacks of each role.
-struct Palette {
-    short c256;
-    short c8;
-};
+// True when terminfo has the string capability `name` (tigetstr: null when absent, -1 when
+// `name` is no string capability).
+bool has_string_capability(const char* name) {
+    const char* value = tigetstr(name);
+    return value != nullptr && value != reinterpret_cast<const char*>(-1) && *value != '\0';
+}
+
+// Clears the screen and homes the cursor with terminfo's clear (putp resolves its padding);
+// for after endwin, which leaves the cursor on the bottom line.
+void clear_screen_now() {
+    if (has_string_capability("clear"))
+        putp(tigetstr("clear"));
+}
+
+// True when the terminal's input has hung up or failed: curses then reports every read as a
+// timeout, and the game would wait for keys forever.
+bool input_gone() {
+    pollfd fd{STDIN_FILENO, POLLIN, 0};
+    return ::poll(&fd, 1, 0) == 1 && (fd.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0;
+}
+
+// The Escape key, or nothing for a control sequence curses did not know. Curses hands over
+// ESC alone when what follows matches no key of the terminal's: a mouse report it cannot
+// decode (ESC [ M b x y, ESC [ < b;x;y M) or another CSI. Those are swallowed whole, so that
+// none of their bytes acts as a key (the button byte of a click is a Space).
+Input after_escape() {
+    Input escape;
+    escape.kind = Input::Kind::key;
+    escape.key = key_escape;
+    timeout(0);
+    wint_t c = 0;
+    int status = get_wch(&c);
+    if (status == ERR)
+        return escape;
+    if (status == KEY_CODE_YES || c != '[') {
+        // Esc, then a key of its own: both count.
+        if (status == KEY_CODE_YES)
+            ungetch(static_cast<int>(c));
+        else
+            unget_wch(c);
+        return escape;
+    }
+    timeout(sequence_rest_ms);
+    auto next = [&] {
+        status = get_wch(&c);
+        if (status == KEY_CODE_YES)
+            ungetch(static_cast<int>(c)); // a key after a cut-off sequence stays a key
+        return status == OK;
+    };
+    Input nothing;
+    if (!next())
+        return nothing;
+    if (c == 'M') {
+        // X10 mouse report: three bytes of button, column and row follow.
+        for (int i = 0; i < 3; ++i)
+            if (!next())
+                break;
+        return nothing;
+    }
+    // CSI: parameter and intermediate bytes (0x20..0x3F), then one final byte (0x40..0x7E).
+    bool plain = true;
+    for (int i = 0; i < 64 && c >= 0x20 && c <= 0x3F; ++i) {
+        plain = false;
+        if (!next())
+            return nothing;
+    }
+    // ESC [ A..D are the arrows of terminals whose terminfo only knows ESC O A..D.
+    if (plain && c >= 'A' && c <= 'D') {
+        constexpr int arrows[4] = {KEY_UP, KEY_DOWN, KEY_RIGHT, KEY_LEFT};
+        Input arrow;
+        arrow.kind = Input::Kind::key;
+        arrow.key = arrows[c - 'A'];
+        return arrow;
+    }
+    return nothing;
+}
+
+} // namespace
 
 Palette palette(Colour c) {
     switch (c) {
@@ -63,7 +147,9 @@ Palette palette(Colour c) {
     case Colour::orange:
         return {208, COLOR_YELLOW};
     case Colour::green:
-        return {34, COLOR_GREEN};
+        // Bright, so that the 6 stands out on the felt (28) and the cushion (22) and takes
+        // black digits; with 8 colours green is the felt's, so cyan is the nearest free one.
+        return {46, COLOR_CYAN};
     case Colour::maroon:
         return {88, COLOR_RED};
     case Colour::aim:
@@ -78,13 +164,14 @@ Palette palette(Colour c) {
     return {-1, -1};
 }
 
-} // namespace
-
 const int key_left = KEY_LEFT, key_right = KEY_RIGHT, key_up = KEY_UP, key_down = KEY_DOWN;
 
 void restore_terminal_modes() {
-    write_raw(mouse_motion_off);
-    write_raw("\033[?25h");
+    if (motion_tracking_on)
+        write_raw(mouse_motion_off);
+    if (cursor_hidden)
+        write_raw("\033[?25h");
+    motion_tracking_on = cursor_hidden = false;
 }
 
 Terminal::Terminal(bool ascii, bool no_colour) {
@@ -105,10 +192,17 @@ Terminal::Terminal(bool ascii, bool no_colour) {
     noecho();
     nonl();
     keypad(stdscr, TRUE);
-    curs_set(0);
-    mousemask(ALL_MOUSE_EVENTS | REPORT_MOUSE_POSITION, nullptr);
-    mouseinterval(0);
-    write_raw(mouse_motion_on);
+    cursor_hidden = curs_set(0) != ERR;
+    // Tracking goes on only where curses decodes the reports: terminfo announces them (kmous;
+    // vt100 has none) and mousemask finds support. Elsewhere a click would arrive as keys, its
+    // button byte a Space that shoots.
+    if (has_string_capability("kmous") &&
+        mousemask(ALL_MOUSE_EVENTS | REPORT_MOUSE_POSITION, nullptr) != 0) {
+        mouseinterval(0);
+        write_raw(mouse_motion_on);
+        motion_tracking_on = true;
+    }
+    alternate_screen_ = has_string_capability("smcup");
 
     const bool colour_wanted = !no_colour && !std::getenv("NO_COLOR");
     if (colour_wanted && has_colors()) {
@@ -124,12 +218,18 @@ Terminal::Terminal(bool ascii, bool no_colour) {
     sigemptyset(&action.sa_mask);
     for (const int sig : {SIGINT, SIGTERM, SIGHUP})
         sigaction(sig, &action, nullptr);
+    // A terminal that went away (ssh dropped, a pipe closed) must not kill the game before it
+    // is saved: writes then fail with EPIPE instead, and the hangup is seen on the input.
+    std::signal(SIGPIPE, SIG_IGN);
 }
 
 Terminal::~Terminal() {
     restore_terminal_modes();
     curs_set(1);
     endwin();
+    // Without an alternate screen (vt100, linux) the last frame would stay behind the prompt.
+    if (!alternate_screen_)
+        clear_screen_now();
     delscreen(screen_);
 }
 
@@ -200,6 +300,10 @@ Input Terminal::read(int timeout_ms) {
     wint_t ch = 0;
     const int status = get_wch(&ch);
     if (status == ERR) {
+        // The terminal hung up without a SIGHUP reaching us (the parent ignores it, or the
+        // game is no session leader): leave as SIGHUP would.
+        if (!pending_signal && input_gone())
+            pending_signal = SIGHUP;
         if (pending_signal)
             in.kind = Input::Kind::signal;
         return in;
@@ -226,6 +330,8 @@ Input Terminal::read(int timeout_ms) {
         in.key = static_cast<int>(ch);
         return in;
     }
+    if (ch == key_escape)
+        return after_escape();
     // A character: control characters are keys, the rest is text (UTF-8 encoded).
     if (ch < 32 || ch == 127) {
         in.kind = Input::Kind::key;

@@ -31,6 +31,16 @@ inline constexpr int key_escape = 27;
 /// The arrow keys' codes in Input::key, for code that does not include curses.
 extern const int key_left, key_right, key_up, key_down;
 
+/// How a colour role is shown: an xterm-256 index and the 8-colour fallback (a curses colour
+/// number 0..7, COLOR_BLACK..COLOR_WHITE); -1 for the terminal's default in both.
+struct Palette {
+    short c256; ///< with 256 colours
+    short c8;   ///< with 8 colours
+};
+
+/// The colours of a role.
+Palette palette(Colour role);
+
 /// Curses colour pairs, made on first use for each (foreground, background) role pair.
 class ColourPairs {
 public:
@@ -51,7 +61,8 @@ public:
     /// Starts curses. `ascii` and `no_colour` force the plain versions. Throws
     /// std::runtime_error when there is no usable terminal.
     Terminal(bool ascii, bool no_colour);
-    /// Restores the terminal: mouse reporting off, cursor visible, curses ended.
+    /// Restores the terminal: mouse reporting off, cursor visible, curses ended; where there
+    /// is no alternate screen to return from, the screen is cleared.
     ~Terminal();
     Terminal(const Terminal&) = delete;
     Terminal& operator=(const Terminal&) = delete;
@@ -66,19 +77,24 @@ public:
     /// cells that changed.
     void draw(const Grid& grid);
     /// Waits up to `timeout_ms` (negative: until something happens) for one input event.
+    /// A terminal that hung up reads as SIGHUP (Input::Kind::signal). Mouse reports and other
+    /// control sequences curses cannot decode give Kind::none, never keys.
     Input read(int timeout_ms);
-    /// True once SIGINT, SIGTERM or SIGHUP arrived; the caller should leave.
+    /// True once SIGINT, SIGTERM or SIGHUP arrived, or the terminal hung up; the caller should
+    /// leave.
     static bool signalled();
     /// The signal that arrived, 0 for none.
     static int signal_number();
 
 private:
     Capabilities caps_;
+    bool alternate_screen_ = false; // terminfo has smcup: the screen comes back on exit
     ::screen* screen_ = nullptr;
     ColourPairs pairs_;
 };
 
-/// Restores mouse reporting and the cursor from anywhere (used at exit paths).
+/// Restores mouse reporting and the cursor from anywhere (used at exit paths); writes nothing
+/// when no Terminal changed them.
 void restore_terminal_modes();
 
 } // namespace termpool::tui

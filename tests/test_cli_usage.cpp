@@ -1,0 +1,101 @@
+// Every command's --help and -h print its usage on stdout and exit 0; the main usage names
+// every option and command; without a terminal the game prints its message and nothing else.
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <string>
+#include <sys/wait.h>
+
+#include "tmux_session.hpp"
+
+using namespace tmux_session;
+
+namespace {
+
+struct Output {
+    int status = -1;
+    std::string out; // stdout, or both streams when asked
+};
+
+// Runs `sh -c command` with the saves and the config in `dir`, so that no file of the user's
+// is read or written.
+Output run_in(const ScratchDir& dir, const std::string& command) {
+    const std::string full =
+        "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path + " " + command;
+    Output o;
+    FILE* pipe = popen(full.c_str(), "r");
+    if (!pipe)
+        return o;
+    char buffer[4096];
+    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe))
+        o.out.append(buffer, n);
+    const int raw = pclose(pipe);
+    o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return o;
+}
+
+} // namespace
+
+TEST_CASE("every command's --help and -h print its usage on stdout and exit 0", "[cli][usage]") {
+    const ScratchDir dir("termpool-usage");
+    const std::string bin = "'" + termpool_binary() + "'";
+    for (const std::string command : {"", "simulate", "bench", "replay", "experiment", "selfplay",
+                                      "practice", "stats", "--ascii", "--player1 Ann"}) {
+        for (const std::string help : {"--help", "-h"}) {
+            const std::string args = command.empty() ? help : command + " " + help;
+            INFO("termpool " << args);
+            // stderr goes to a file of its own: it must stay empty.
+            const std::string err = dir.path + "/err";
+            const Output o = run_in(dir, bin + " " + args + " </dev/null 2>" + err);
+            CHECK(o.status == 0);
+            CHECK(o.out.starts_with("usage: termpool"));
+            CHECK(file_text(err).empty());
+        }
+    }
+}
+
+TEST_CASE("the usage names every option of the game and every command", "[cli][usage]") {
+    const ScratchDir dir("termpool-usage");
+    const Output o = run_in(dir, "'" + termpool_binary() + "' --help");
+    REQUIRE(o.status == 0);
+    for (const char* item : {"--player1 NAME",
+                             "--player2 NAME",
+                             "--game 8ball|8ball-bar|9ball",
+                             "--table 7ft|8ft|9ft",
+                             "--race N",
+                             "--breaks alternate|winner",
+                             "--seed S",
+                             "--vs-computer [LEVEL]",
+                             "--watch [LEVEL]",
+                             "--friction physical | decay K | constant A | combined K A",
+                             "--cue-ball-mass KG",
+                             "--ascii",
+                             "--resume [N | FILE]",
+                             "--version",
+                             "practice [--game G]",
+                             "stats",
+                             "replay [FILE]",
+                             "simulate [FILE]",
+                             "bench [--breaks N] [--shots N] [--seed S]",
+                             "bench --render",
+                             "experiment friction",
+                             "selfplay --games N"}) {
+        INFO(item);
+        CHECK(o.out.find(item) != std::string::npos);
+    }
+    // The game's own usage (after a bad option) lists the same options.
+    const Output bad = run_in(dir, "'" + termpool_binary() + "' --colour 2>&1");
+    CHECK(bad.status == 2);
+    CHECK(bad.out.find("unknown option '--colour'") != std::string::npos);
+    for (const char* item : {"--vs-computer [LEVEL]", "--friction", "--resume [N | FILE]"}) {
+        INFO(item);
+        CHECK(bad.out.find(item) != std::string::npos);
+    }
+}
+
+TEST_CASE("without a terminal the game says so and prints nothing else", "[cli][usage]") {
+    const ScratchDir dir("termpool-usage");
+    const Output o = run_in(dir, "sh -c \"echo | '" + termpool_binary() + "' 2>&1\"");
+    CHECK(o.status == 1);
+    CHECK(o.out == "termpool: the game needs a terminal (try termpool --help)\n");
+    CHECK(o.out.find('\033') == std::string::npos);
+}

@@ -1,0 +1,139 @@
+// Saves in the real binary, in tmux: two games at once under one account keep two saves,
+// --resume lists and picks them (by number or file), replay without a file shows the save,
+// and a config warning is shown in the game.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+#include "tmux_session.hpp"
+
+using namespace tmux_session;
+
+namespace {
+
+// The text of another session's pane.
+std::string pane(const Tmux& t, const std::string& session) {
+    return t.tmux("capture-pane -p -t " + session);
+}
+
+bool wait_for_pane(const Tmux& t, const std::string& session, const std::string& text) {
+    for (int i = 0; i < 200; ++i) {
+        if (pane(t, session).find(text) != std::string::npos)
+            return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return false;
+}
+
+// `termpool ARGS` with saves in `dir`, both streams, and its exit status.
+std::pair<int, std::string> termpool(const ScratchDir& dir, const std::string& args) {
+    const std::string command = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
+                                " '" + termpool_binary() + "' " + args + " </dev/null 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    std::string out;
+    char buffer[4096];
+    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe))
+        out.append(buffer, n);
+    const int raw = pclose(pipe);
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+}
+
+} // namespace
+
+TEST_CASE("two games at once keep two saves; --resume lists them and picks one", "[tui][e2e]") {
+    if (!have_tmux()) {
+        WARN("tmux is missing: the saves test is skipped");
+        return;
+    }
+    const ScratchDir dir("termpool-saves");
+    const std::string env = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
+                            " TERM=xterm-256color LANG=C.UTF-8 HOME=" + dir.path + " ";
+    const std::string first = dir.path + "/termpool/game.save";
+    const std::string second = dir.path + "/termpool/game-2.save";
+    Tmux t;
+    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + termpool_binary() +
+           " --player1 Ann --player2 Bob; sleep 60\"");
+    REQUIRE(t.wait_for_text("place the cue ball"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    t.tmux("new-session -d -s other -x 100 -y 32 \"" + env + termpool_binary() +
+           " --player1 Cy --player2 Dee; sleep 60\"");
+    // The second game is told where it is saved, then plays there.
+    REQUIRE(wait_for_pane(t, "other", "this one is saved in"));
+    CHECK(pane(t, "other").find("~/termpool/game-2.save") != std::string::npos);
+    t.tmux("send-keys -t other Enter");
+    REQUIRE(wait_for_pane(t, "other", "[ shoot ]"));
+    CHECK(file_text(first).find("player1 Ann") != std::string::npos);
+    CHECK(file_text(second).find("player1 Cy") != std::string::npos);
+
+    // While both run, neither save is offered to a third.
+    const auto busy = termpool(dir, "--resume");
+    CHECK(busy.first == 1);
+    CHECK(busy.second.find("in use by another termpool game") != std::string::npos);
+
+    // Quitting says where the game is and how to go on with it.
+    t.keys("q");
+    REQUIRE(t.wait_for_text("Quit"));
+    t.keys("y");
+    CHECK(t.wait_for_text("Game saved in ~/termpool/game.save; continue it with: termpool "
+                          "--resume 1"));
+    t.tmux("send-keys -t other q");
+    REQUIRE(wait_for_pane(t, "other", "Quit"));
+    t.tmux("send-keys -t other y");
+    CHECK(wait_for_pane(t, "other", "continue it with: termpool --resume 2"));
+
+    // Both are listed, with their players; --resume 2 continues Cy's.
+    const auto listed = termpool(dir, "--resume");
+    CHECK(listed.first == 0);
+    CHECK(listed.second.find("1  Ann v Bob, 8ball, 9ft, 0 shots, saved ") != std::string::npos);
+    CHECK(listed.second.find("2  Cy v Dee, 8ball, 9ft, 0 shots, saved ") != std::string::npos);
+    t.tmux("kill-session -t e2e");
+    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + termpool_binary() +
+           " --resume 2; sleep 60\"");
+    CHECK(t.wait_for_text("Game resumed: Cy to play"));
+}
+
+TEST_CASE("replay without a file shows the save; --resume FILE; a config warning in the game",
+          "[tui][e2e]") {
+    if (!have_tmux()) {
+        WARN("tmux is missing: the replay test is skipped");
+        return;
+    }
+    const ScratchDir dir("termpool-replay-save");
+    std::system(("mkdir -p " + dir.path + "/termpool").c_str());
+    std::ofstream(dir.path + "/termpool/game.save")
+        << "termpool-record 1\ngame 8ball\ntable 9ft\nseed 5\nbreaker 1\nplayer1 Ann\n"
+           "player2 Bob\nshot 12 0 0 0\nshot 2 90 0 0\nend\n";
+    std::ofstream(dir.path + "/termpool/config") << "flavour = mint\n";
+    const std::string env = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
+                            " TERM=xterm-256color LANG=C.UTF-8 ";
+    Tmux t;
+    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + termpool_binary() +
+           " replay; sleep 60\"");
+    CHECK(t.wait_for_text("Replay, shot 1 of 2"));
+    t.keys("q");
+    t.tmux("kill-session -t e2e");
+
+    // --resume FILE continues a save kept anywhere, and saves back to it.
+    std::system(("cp " + dir.path + "/termpool/game.save " + dir.path + "/kept.save").c_str());
+    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + termpool_binary() + " --resume " +
+           dir.path + "/kept.save; sleep 60\"");
+    CHECK(t.wait_for_text("Game resumed"));
+    t.keys("q");
+    REQUIRE(t.wait_for_text("Quit"));
+    t.keys("y");
+    // The line is longer than the pane: join what tmux wrapped.
+    const std::string told = "continue it with: termpool --resume " + dir.path + "/kept.save";
+    bool said = false;
+    for (int i = 0; i < 100 && !said; ++i) {
+        said = t.tmux("capture-pane -p -J -t e2e").find(told) != std::string::npos;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    CHECK(said);
+    t.tmux("kill-session -t e2e");
+
+    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + termpool_binary() +
+           " --player1 Cy --player2 Dee; sleep 60\"");
+    CHECK(t.wait_for_text("unknown key 'flavour'"));
+}
