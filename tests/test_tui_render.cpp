@@ -1,6 +1,7 @@
 // The renderer: golden frames of the 8-ball rack and a crowded table in every display mode,
-// ball labels that read as the balls' numbers, the panel, the cue and aim line in every
-// direction, sub-cell precision, and safety at any size.
+// ball labels that read as the balls' numbers, the panel, the help's pages, overlays clear of
+// the balls, the cue and aim line in every direction, sub-cell precision, and safety at any
+// size.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cctype>
@@ -14,6 +15,7 @@
 
 #include "tui/ball_style.hpp"
 #include "tui/grid_dump.hpp"
+#include "tui/help_text.hpp"
 #include "tui/pocket_cells.hpp"
 #include "tui/text_width.hpp"
 #include "tui/view.hpp"
@@ -607,24 +609,18 @@ TEST_CASE("the panel marks the shooter and shows groups, pocketed balls and the 
     }
 }
 
-TEST_CASE("overlays and help are centred boxes on top of everything", "[tui]") {
+TEST_CASE("overlays and help are boxes on top of everything", "[tui]") {
     View v = rack_view(table);
     v.overlay = "Alice wins!\nPress n for a new game.";
     Grid g = draw(v, 100, 32);
-    std::string all;
-    for (const Cell& c : g.cells)
-        all += c.glyph;
-    CHECK(all.find("Alice wins!") != std::string::npos);
-    CHECK(all.find("╭") != std::string::npos);
+    CHECK(screen_text(g).find("Alice wins!") != std::string::npos);
+    CHECK(screen_text(g).find("╭") != std::string::npos);
     v.overlay.clear();
     v.help = true;
-    g = draw(v, 120, 40);
-    all.clear();
-    for (int y = 0; y < g.height; ++y) {
-        for (int x = 0; x < g.width; ++x)
-            all += g.at(x, y).glyph;
-        all += '\n';
-    }
+    std::string all;
+    const int pages = help_page_count(120, 40);
+    for (v.help_page = 0; v.help_page < pages; ++v.help_page)
+        all += screen_text(draw(v, 120, 40));
     for (const char* key :
          {"Left Right", "H L",   "Up Down", "Space", "[ ]",   "w a s d", "W A S D",
           "c ",         "p ",    "g ",      "1-6",   "n ",    "x ",      "? ",
@@ -903,4 +899,104 @@ TEST_CASE("a match shows the race and the racks each player has won", "[tui]") {
     const std::string single = screen_text(draw(v, 100, 32));
     CHECK(single.find("race") == std::string::npos);
     CHECK(single.find("▶ Player 1  solids") != std::string::npos);
+}
+
+TEST_CASE("the help comes in pages that fit the screen", "[tui]") {
+    View v = rack_view(table);
+    v.help = true;
+    CHECK(help_page_count(80, 24) == 2);
+    CHECK(help_page_count(200, 60) == 1);
+    CHECK(help_page_count(1, 1) >= 1);
+    for (const auto& [w, h] : all_sizes) {
+        CAPTURE(w, h);
+        const int pages = help_page_count(w, h);
+        REQUIRE(pages >= 1);
+        std::string shown;
+        for (int page = 0; page < pages; ++page) {
+            v.help_page = page;
+            const std::string all = screen_text(draw(v, w, h));
+            shown += all;
+            CHECK(all.find(pages > 1
+                               ? "page " + std::to_string(page + 1) + "/" + std::to_string(pages)
+                               : "Esc closes") != std::string::npos);
+            CHECK(all.find("Esc closes") != std::string::npos);
+            if (page + 1 < pages)
+                CHECK(all.find(w >= 60 ? "Space/PgDn more, Esc closes" : "more, Esc closes") !=
+                      std::string::npos);
+        }
+        // Every line of the help is on some page, whole or wrapped.
+        for (const std::vector<std::string>& page : help_pages(w, h))
+            for (const std::string& line : page)
+                CHECK(shown.find(line) != std::string::npos);
+        std::size_t lines = 0;
+        for (const std::string& line : box_lines(help_text(), help_width(w)))
+            lines += !line.empty();
+        std::size_t paged = 0;
+        for (const std::vector<std::string>& page : help_pages(w, h))
+            for (const std::string& line : page)
+                paged += !line.empty();
+        CHECK(paged == lines);
+        // A page past the end shows the last one.
+        v.help_page = pages + 3;
+        const Grid past = draw(v, w, h);
+        v.help_page = pages - 1;
+        CHECK(past.cells == draw(v, w, h).cells);
+    }
+    // What was missing: ball in hand, calling by a click, how to close the box.
+    for (const char* topic : {"Ball in hand", "move the cue ball", "place it there",
+                              "click a pocket", "Esc q ? Enter", "next page"})
+        CHECK(help_text().find(topic) != std::string::npos);
+    // In ASCII the dash is plain.
+    v.help_page = 0;
+    CHECK(screen_text(draw(v, 80, 24, {0, false})).find("page 1/2 - Space/PgDn more, Esc closes") !=
+          std::string::npos);
+}
+
+TEST_CASE("an overlay box covers no ball", "[tui]") {
+    // The push-out choice is about the ball in the middle of the table.
+    View v = nine_ball_view();
+    v.aiming = false;
+    Ball centre;
+    centre.id = 5;
+    centre.position = {table.length / 2, table.width / 2};
+    for (Ball& b : v.balls)
+        if (b.id == 5)
+            b = centre;
+    v.overlay = "Bob, choose:\n1  play on\n2  Alice shoots again";
+    for (const auto& [w, h] : all_sizes)
+        for (const Capabilities& caps : tiers) {
+            CAPTURE(w, h, caps.colours, caps.utf8);
+            const Layout l = make_layout(table, w, h);
+            const Grid bare = render(
+                [&] {
+                    View b = v;
+                    b.overlay.clear();
+                    return b;
+                }(),
+                l, caps, w, h);
+            const Grid g = render(v, l, caps, w, h);
+            CHECK(screen_text(g).find("Bob, choose:") != std::string::npos);
+            // Every ball's cells are as they were without the box.
+            REQUIRE(felt_tokens(bare, l, caps.utf8) == expected_tokens(v, l, caps.utf8));
+            const int fx = static_cast<int>(std::lround(l.table_left));
+            const int fy = static_cast<int>(std::lround(l.table_top));
+            int balls = 0;
+            for (int y = fy; y < fy + l.felt_rows; ++y)
+                for (int x = fx; x < fx + l.felt_cols; ++x) {
+                    const std::string& glyph = bare.at(x, y).glyph;
+                    if (is_label_glyph(glyph, caps.utf8)) {
+                        ++balls;
+                        CHECK(g.at(x, y) == bare.at(x, y));
+                    }
+                }
+            CHECK(balls >= 10);
+        }
+    // Centred when the middle is clear.
+    View empty = v;
+    empty.balls.clear();
+    const Grid g = draw(empty, 100, 32);
+    const std::string all = screen_text(g);
+    const std::size_t at = all.find("Bob, choose:");
+    const int y = static_cast<int>(std::count(all.begin(), all.begin() + at, '\n'));
+    CHECK(y == (32 - 5) / 2 + 1);
 }

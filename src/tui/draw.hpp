@@ -54,10 +54,13 @@ void draw_status(const Frame& f);
 /// fouls), other pocketed balls, the message, the called pocket in words, the spin diagram,
 /// the legend and the help hint.
 void draw_panel(const Frame& f);
-/// A centred box with `text` ('\n' between lines).
-void draw_box(Painter& paint, const std::string& text);
-/// The help overlay: every key and mouse action.
-void draw_help(Painter& paint);
+/// A box with `text` ('\n' between lines), placed where it covers none of the `keep` cells
+/// (the balls): centred if it can, else over the panel, else wherever it covers the fewest,
+/// nearest the centre.
+void draw_box(const Frame& f, const std::string& text,
+              const std::vector<std::pair<int, int>>& keep);
+/// The help overlay, page `page` of help_page_count (clamped), with how to turn and close it.
+void draw_help(Painter& paint, int page);
 
 /// "+0.2", "-0.25", "0.0": a tip offset with one or two decimals.
 std::string format_offset(double value);

@@ -157,10 +157,11 @@ struct View {
     bool placing = false;            ///< ball in hand: the cue ball follows the pointer
     bool placement_legal = true;     ///< whether the current spot is allowed
     bool help = false;               ///< show the help overlay
+    int help_page = 0;               ///< its page, 0-based (see help_page_count)
     int race_to = 0;                 ///< racks needed to win the match; 0: a single game
     int racks_won[2] = {0, 0};       ///< racks each player has won in the match
     int fouls[2] = {0, 0};           ///< consecutive fouls of each player (9-ball)
-    std::string overlay;             ///< a centred box of text (questions, game over), if any
+    std::string overlay; ///< a box of text (questions, game over), if any, clear of the balls
 };
 
 /// Draws `view` into a grid of `width` x `height` with the given capabilities. When the layout
