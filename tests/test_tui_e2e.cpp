@@ -78,6 +78,48 @@ TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]
     std::system(("rm -rf " + dir).c_str());
 }
 
+TEST_CASE("the help at 80x24: pages turn with Space, k and PgDn; Esc and q close it",
+          "[tui][e2e]") {
+    if (std::system("command -v tmux >/dev/null 2>&1") != 0) {
+        WARN("tmux is missing: the end-to-end test of the help is skipped");
+        return;
+    }
+    const std::string binary = termpool_binary();
+    char dir_template[] = "/tmp/termpool-help-XXXXXX";
+    const std::string dir = mkdtemp(dir_template);
+    const std::string status_file = dir + "/status";
+    Tmux t;
+    t.tmux("new-session -d -s e2e -x 80 -y 24 \"env XDG_STATE_HOME=" + dir +
+           " TERM=xterm-256color LANG=C.UTF-8 " + binary +
+           " --player1 Ann --player2 Bob; echo \\$? > " + status_file + "; sleep 60\"");
+    REQUIRE(t.wait_for_text("place the cue ball"));
+    CHECK(t.screen().find("? help  q quit") != std::string::npos);
+    t.keys("?");
+    REQUIRE(t.wait_for_text("page 1/2"));
+    t.keys("Space");
+    CHECK(t.wait_for_text("page 2/2"));
+    t.keys("k");
+    CHECK(t.wait_for_text("page 1/2"));
+    t.keys("NPage");
+    CHECK(t.wait_for_text("page 2/2"));
+    t.keys("Escape");
+    CHECK(
+        t.wait_for([](const std::string& s) { return s.find("Esc closes") == std::string::npos; }));
+    // q closes the help rather than asking to quit; opened again it starts on page 1.
+    t.keys("?");
+    REQUIRE(t.wait_for_text("page 1/2"));
+    t.keys("q");
+    CHECK(
+        t.wait_for([](const std::string& s) { return s.find("Esc closes") == std::string::npos; }));
+    CHECK(t.screen().find("Quit the game?") == std::string::npos);
+    t.keys("q");
+    REQUIRE(t.wait_for_text("Quit the game?"));
+    t.keys("y");
+    CHECK(exit_status(status_file) == "0");
+    std::remove(status_file.c_str());
+    std::system(("rm -rf " + dir).c_str());
+}
+
 TEST_CASE("SIGHUP during a shot leaves a save that resumes", "[tui][e2e]") {
     if (std::system("command -v tmux >/dev/null 2>&1") != 0) {
         WARN("tmux is missing: the end-to-end test of saves is skipped");

@@ -1,7 +1,11 @@
-// The renderer: golden frames of the 8-ball rack in every display mode, the cue and aim line
-// in every direction, sub-cell precision, and safety at any size.
+// The renderer: golden frames of the 8-ball rack and a crowded table in every display mode,
+// ball labels that read as the balls' numbers, the panel, the help's pages, overlays clear of
+// the balls, the cue and aim line in every direction, sub-cell precision, and safety at any
+// size.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cctype>
+#include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -11,6 +15,7 @@
 
 #include "tui/ball_style.hpp"
 #include "tui/grid_dump.hpp"
+#include "tui/help_text.hpp"
 #include "tui/pocket_cells.hpp"
 #include "tui/text_width.hpp"
 #include "tui/view.hpp"
@@ -18,6 +23,7 @@
 
 using namespace termpool;
 using namespace termpool::tui;
+using termpool::test::crowded_view;
 using termpool::test::rack_view;
 
 namespace {
@@ -74,6 +80,56 @@ View cue_only(double deg, Vec2 at = {1.27, 0.635}) {
     return v;
 }
 
+// The grid's glyphs, a line per row.
+std::string screen_text(const Grid& g) {
+    std::string all;
+    for (int y = 0; y < g.height; ++y) {
+        for (int x = 0; x < g.width; ++x)
+            all += g.at(x, y).glyph;
+        all += '\n';
+    }
+    return all;
+}
+
+// The glyphs of row y from column x0 up to x1.
+std::string row_text(const Grid& g, int y, int x0 = 0, int x1 = INT_MAX) {
+    std::string s;
+    for (int x = std::max(0, x0); x < std::min(x1, g.width); ++x)
+        s += g.at(x, y).glyph;
+    return s;
+}
+
+// The cell where `text` starts on the screen (the first from the top left), or {-1, -1}.
+std::pair<int, int> find_cell(const Grid& g, const std::string& text) {
+    for (int y = 0; y < g.height; ++y)
+        for (int x = 0; x < g.width; ++x) {
+            std::string s;
+            for (int k = x; k < g.width && s.size() < text.size(); ++k)
+                s += g.at(k, y).glyph;
+            if (s == text)
+                return {x, y};
+        }
+    return {-1, -1};
+}
+
+// Runs of white space as one space.
+std::string words(const std::string& text) {
+    std::string out;
+    for (const char c : text)
+        if (!std::isspace(static_cast<unsigned char>(c)))
+            out += c;
+        else if (!out.empty() && out.back() != ' ')
+            out += ' ';
+    return out;
+}
+
+// True for a cell of a ball's label: a digit, a letter A-F or the cue ball.
+bool is_label_glyph(const std::string& glyph, bool utf8) {
+    return glyph == ball_label(0, utf8, false) ||
+           (glyph.size() == 1 && (std::isdigit(static_cast<unsigned char>(glyph[0])) ||
+                                  (glyph[0] >= 'A' && glyph[0] <= 'F')));
+}
+
 bool is_cue_glyph(const std::string& g) {
     return g == "-" || g == "/" || g == "|" || g == "\\" || g == "\u2500" || g == "\u2571" ||
            g == "\u2502" || g == "\u2572";
@@ -81,28 +137,31 @@ bool is_cue_glyph(const std::string& g) {
 
 } // namespace
 
-TEST_CASE("golden frames of the 8-ball rack", "[tui][golden]") {
+TEST_CASE("golden frames of the 8-ball rack and a crowded table", "[tui][golden]") {
     const bool update = std::getenv("TERMPOOL_UPDATE_GOLDEN") != nullptr &&
                         std::string(std::getenv("TERMPOOL_UPDATE_GOLDEN")) == "1";
-    const View view = rack_view(table);
-    for (const auto& [w, h] : {std::pair{80, 24}, {100, 32}, {200, 60}})
-        for (const Mode& mode : modes) {
-            const std::string path = "tests/golden/rack_" + std::to_string(w) + "x" +
-                                     std::to_string(h) + "_" + mode.name + ".txt";
-            CAPTURE(path);
-            const std::string got = dump_grid(draw(view, w, h, mode.caps));
-            if (update) {
-                std::ofstream(path, std::ios::binary) << got;
-                WARN("rewrote " << path);
-                continue;
+    const std::pair<const char*, View> views[] = {{"rack", rack_view(table)},
+                                                  {"crowded", crowded_view(table)}};
+    for (const auto& [name, view] : views)
+        for (const auto& [w, h] : {std::pair{80, 24}, {100, 32}, {200, 60}})
+            for (const Mode& mode : modes) {
+                const std::string path = std::string("tests/golden/") + name + "_" +
+                                         std::to_string(w) + "x" + std::to_string(h) + "_" +
+                                         mode.name + ".txt";
+                CAPTURE(path);
+                const std::string got = dump_grid(draw(view, w, h, mode.caps));
+                if (update) {
+                    std::ofstream(path, std::ios::binary) << got;
+                    WARN("rewrote " << path);
+                    continue;
+                }
+                const std::string want = read_file(path);
+                INFO("run with TERMPOOL_UPDATE_GOLDEN=1 to rewrite the goldens after a deliberate "
+                     "change, then look at them");
+                INFO(first_difference(want, got));
+                const bool same = want == got; // not CHECK(want == got): that prints whole frames
+                CHECK(same);
             }
-            const std::string want = read_file(path);
-            INFO("run with TERMPOOL_UPDATE_GOLDEN=1 to rewrite the goldens after a deliberate "
-                 "change, then look at them");
-            INFO(first_difference(want, got));
-            const bool same = want == got; // not CHECK(want == got): that prints whole frames
-            CHECK(same);
-        }
 }
 
 TEST_CASE("the golden comparison sees a single changed cell", "[tui][golden]") {
@@ -126,12 +185,18 @@ TEST_CASE("the rack frame shows every ball, the cue ball in the kitchen and the 
         CAPTURE(mode.name);
         const Layout l = make_layout(table, 200, 60);
         const Grid g = render(view, l, mode.caps, 200, 60);
+        REQUIRE(wide_labels(l.cells_per_metre, R));
         for (const Ball& b : view.balls) {
             double col, row;
             to_cell(l, table.width, b.position, col, row);
-            const Cell& c = g.at(static_cast<int>(col), static_cast<int>(row));
-            CHECK(c.glyph ==
-                  (b.id == 0 ? (mode.caps.utf8 ? "\u25CF" : "o") : std::to_string(b.id % 10)));
+            // At this size each ball has its own cells: its number, centred on its centre.
+            const std::string want =
+                b.id == 0 ? (mode.caps.utf8 ? "\u25CF" : "o") : std::to_string(b.id);
+            const int x = static_cast<int>(std::floor(col - (b.id >= 10 ? 0.5 : 0)));
+            std::string got;
+            for (int k = 0; k < (b.id >= 10 ? 2 : 1); ++k)
+                got += g.at(x + k, static_cast<int>(row)).glyph;
+            CHECK(got == want);
             if (b.id == 0)
                 CHECK(b.position.x <= table.head_string_x());
         }
@@ -322,23 +387,27 @@ TEST_CASE("lines never cover a ball", "[tui]") {
                 const Layout l = make_layout(table, w, h);
                 const Grid g = render(v, l, mode.caps, w, h);
                 const int fx = static_cast<int>(l.table_left), fy = static_cast<int>(l.table_top);
-                std::vector<std::string> seen;
+                const bool wide = wide_labels(l.cells_per_metre, R);
+                std::size_t label_cells = 0;
+                for (const Ball& b : v.balls)
+                    label_cells += b.id == 0 ? 1 : ball_label(b.id, true, wide).size();
+                std::size_t seen = 0;
                 for (int y = fy; y < fy + l.felt_rows; ++y)
                     for (int x = fx; x < fx + l.felt_cols; ++x) {
                         const std::string& glyph = g.at(x, y).glyph;
-                        if (glyph == ball_glyph(0, mode.caps.utf8) ||
-                            (glyph.size() == 1 && glyph[0] >= '0' && glyph[0] <= '9'))
-                            seen.push_back(glyph);
+                        seen += is_label_glyph(glyph, mode.caps.utf8);
                     }
-                CHECK(seen.size() == v.balls.size());
+                CHECK(seen == label_cells);
                 if (w != 200)
                     continue;
                 // Big enough that each ball has its own cell: the one holding its centre.
                 for (const Ball& b : v.balls) {
                     double col, row;
                     to_cell(l, table.width, b.position, col, row);
-                    CHECK(g.at(static_cast<int>(col), static_cast<int>(row)).glyph ==
-                          ball_glyph(b.id, mode.caps.utf8));
+                    const std::string label = ball_label(b.id, mode.caps.utf8, wide);
+                    const std::string& glyph =
+                        g.at(static_cast<int>(col), static_cast<int>(row)).glyph;
+                    CHECK(label.find(glyph) != std::string::npos);
                 }
             }
 }
@@ -508,7 +577,9 @@ TEST_CASE("the panel marks the shooter and shows groups, pocketed balls and the 
     v.names[1] = "Bob";
     v.groups[0] = Group::solids;
     v.groups[1] = Group::stripes;
-    v.pocketed_by[1] = {9, 12};
+    for (Ball& b : v.balls)
+        if (b.id == 9 || b.id == 12)
+            b.state = MotionState::pocketed;
     v.message = "Bob pocketed the 9 and the 12 and shoots again.";
     for (const auto& [w, h] : {std::pair{120, 24}, {80, 24}, {100, 32}}) {
         CAPTURE(w, h);
@@ -538,27 +609,394 @@ TEST_CASE("the panel marks the shooter and shows groups, pocketed balls and the 
     }
 }
 
-TEST_CASE("overlays and help are centred boxes on top of everything", "[tui]") {
+TEST_CASE("overlays and help are boxes on top of everything", "[tui]") {
     View v = rack_view(table);
     v.overlay = "Alice wins!\nPress n for a new game.";
     Grid g = draw(v, 100, 32);
-    std::string all;
-    for (const Cell& c : g.cells)
-        all += c.glyph;
-    CHECK(all.find("Alice wins!") != std::string::npos);
-    CHECK(all.find("╭") != std::string::npos);
+    CHECK(screen_text(g).find("Alice wins!") != std::string::npos);
+    CHECK(screen_text(g).find("╭") != std::string::npos);
     v.overlay.clear();
     v.help = true;
-    g = draw(v, 120, 40);
-    all.clear();
-    for (int y = 0; y < g.height; ++y) {
-        for (int x = 0; x < g.width; ++x)
-            all += g.at(x, y).glyph;
-        all += '\n';
-    }
+    std::string all;
+    const int pages = help_page_count(120, 40);
+    for (v.help_page = 0; v.help_page < pages; ++v.help_page)
+        all += screen_text(draw(v, 120, 40));
     for (const char* key :
          {"Left Right", "H L",   "Up Down", "Space", "[ ]",   "w a s d", "W A S D",
           "c ",         "p ",    "g ",      "1-6",   "n ",    "x ",      "? ",
           "q ",         "Mouse", "move",    "drag",  "shoot", "release"})
         CHECK(all.find(key) != std::string::npos);
+}
+
+namespace {
+
+const std::pair<int, int> all_sizes[] = {{80, 24},  {100, 32}, {200, 60}, {120, 24},
+                                         {200, 40}, {40, 14},  {60, 40},  {300, 90}};
+const Capabilities tiers[] = {{256, true},  {8, true},  {0, true},
+                              {256, false}, {8, false}, {0, false}};
+
+// The labels on the felt, row by row: each run of digits is one token (what a reader sees as
+// one number), each letter and the cue ball one token of its own.
+std::vector<std::string> felt_tokens(const Grid& g, const Layout& l, bool utf8) {
+    std::vector<std::string> tokens;
+    const int fx = static_cast<int>(std::lround(l.table_left));
+    const int fy = static_cast<int>(std::lround(l.table_top));
+    for (int y = fy; y < fy + l.felt_rows; ++y) {
+        std::string run;
+        for (int x = fx; x <= fx + l.felt_cols; ++x) {
+            const std::string glyph = x < fx + l.felt_cols ? g.at(x, y).glyph : " ";
+            const bool digit =
+                glyph.size() == 1 && std::isdigit(static_cast<unsigned char>(glyph[0]));
+            if (digit) {
+                run += glyph;
+                continue;
+            }
+            if (!run.empty())
+                tokens.push_back(run), run.clear();
+            if ((glyph.size() == 1 && glyph[0] >= 'A' && glyph[0] <= 'F') ||
+                glyph == ball_label(0, utf8, false))
+                tokens.push_back(glyph);
+        }
+    }
+    std::sort(tokens.begin(), tokens.end());
+    return tokens;
+}
+
+// The labels the balls on the table should have: their numbers, but the letters A-F for
+// 10-15 where a ball is under three columns wide.
+std::vector<std::string> expected_tokens(const View& v, const Layout& l, bool utf8) {
+    std::vector<std::string> tokens;
+    const bool wide = 2 * R * l.cells_per_metre >= 3;
+    for (const Ball& b : v.balls)
+        if (b.state != MotionState::pocketed)
+            tokens.push_back(b.id == 0 ? (utf8 ? "\u25CF" : "o")
+                             : b.id < 10 || wide
+                                 ? std::to_string(b.id)
+                                 : std::string(1, static_cast<char>('A' + b.id - 10)));
+    std::sort(tokens.begin(), tokens.end());
+    return tokens;
+}
+
+View nine_ball_view() {
+    View v = rack_view(table);
+    v.balls = make_rack(table, PhysicsParams{}, RackType::nine_ball);
+    v.game = GameType::nine_ball;
+    return v;
+}
+
+// The rack after the 1 went down: nothing may still read "1".
+View rack_without_one() {
+    View v = rack_view(table);
+    for (Ball& b : v.balls)
+        if (b.id == 1)
+            b.state = MotionState::pocketed;
+    return v;
+}
+
+} // namespace
+
+TEST_CASE("every ball reads as its own number or letter, in every tier and at every size",
+          "[tui]") {
+    const std::pair<const char*, View> views[] = {{"rack", rack_view(table)},
+                                                  {"crowded", crowded_view(table)},
+                                                  {"nine", nine_ball_view()},
+                                                  {"without the 1", rack_without_one()}};
+    for (const auto& [name, v] : views)
+        for (const auto& [w, h] : all_sizes)
+            for (const Capabilities& caps : tiers) {
+                CAPTURE(name, w, h, caps.colours, caps.utf8);
+                const Layout l = make_layout(table, w, h);
+                const Grid g = render(v, l, caps, w, h);
+                // Every ball once, by its own label, and no two numbers run together.
+                CHECK(felt_tokens(g, l, caps.utf8) == expected_tokens(v, l, caps.utf8));
+            }
+    // Two-cell numbers where a ball is three columns across, single letters below that.
+    CHECK(wide_labels(make_layout(table, 200, 60).cells_per_metre, R));
+    CHECK_FALSE(wide_labels(make_layout(table, 100, 32).cells_per_metre, R));
+    CHECK(ball_label(12, true, false) == "C");
+    CHECK(ball_label(12, false, true) == "12");
+    CHECK(ball_label(9, true, false) == "9");
+}
+
+TEST_CASE("the 8-colour tier draws the 256-colour frame: the terminal maps the roles", "[tui]") {
+    for (const View& v : {rack_view(table), crowded_view(table)})
+        for (const bool utf8 : {true, false})
+            CHECK(draw(v, 80, 24, {8, utf8}).cells == draw(v, 80, 24, {256, utf8}).cells);
+}
+
+TEST_CASE("the legend shows the balls on the table as drawn, on one row where there is room",
+          "[tui]") {
+    const View v = crowded_view(table); // the 1, 5, 11 and 14 are down
+    SECTION("letters with their numbers at 80x24 and 100x32") {
+        for (const auto& [w, h] : {std::pair{80, 24}, {100, 32}}) {
+            CAPTURE(w, h);
+            const Grid g = draw(v, w, h);
+            const std::string last = row_text(g, h - 1);
+            CHECK(last.rfind("on table 2 3 4 6 7 8 9 A=10 C=12 D=13 F=15", 0) == 0);
+            CHECK(last.find("B=11") == std::string::npos);
+            CHECK(last.find("? help  q quit") != std::string::npos);
+            // Each ball styled as on the table.
+            const auto [ax, ay] = find_cell(g, "A=10");
+            REQUIRE(ay == h - 1);
+            CHECK(g.at(ax, ay).style == ball_style(10, true));
+        }
+    }
+    SECTION("numbers at 200x60, on one row") {
+        const Grid g = draw(v, 200, 60);
+        CHECK(row_text(g, 59).rfind("on table 2 3 4 6 7 8 9 10 12 13 15", 0) == 0);
+        CHECK(row_text(g, 59).find("? help  q quit") != std::string::npos);
+    }
+    SECTION("the full rack at every size") {
+        for (const auto& [w, h] : all_sizes)
+            for (const bool utf8 : {true, false}) {
+                CAPTURE(w, h, utf8);
+                const Layout l = make_layout(table, w, h);
+                const Grid g = render(rack_view(table), l, {0, utf8}, w, h);
+                std::string panel;
+                for (int y = l.panel_y; y < l.panel_y + l.panel_height; ++y)
+                    panel += row_text(g, y, l.panel_x, l.panel_x + l.panel_width) + "\n";
+                CAPTURE(panel);
+                const bool wide = wide_labels(l.cells_per_metre, R);
+                std::size_t from = 0;
+                for (int id = 1; id <= 15; ++id) {
+                    const std::size_t at = panel.find(ball_label(id, utf8, wide), from);
+                    CHECK(at != std::string::npos);
+                    from = at == std::string::npos ? from : at;
+                }
+                if (l.panel_below) // one row: the last
+                    CHECK(panel.substr(panel.rfind('\n', panel.size() - 2) + 1)
+                              .find(ball_label(15, utf8, wide)) != std::string::npos);
+            }
+    }
+}
+
+TEST_CASE("the help hint shows at every size", "[tui]") {
+    View placing = rack_view(table);
+    placing.aiming = false;
+    placing.placing = true;
+    View talkative = crowded_view(table);
+    talkative.message = "Bob fouled: no ball hit a cushion after the contact. Alice has ball in "
+                        "hand anywhere on the table.";
+    for (const View& v : {rack_view(table), crowded_view(table), placing, talkative, View{}})
+        for (const auto& [w, h] : all_sizes) {
+            CAPTURE(w, h);
+            const Grid g = draw(v, w, h);
+            CHECK(screen_text(g).find("? help") != std::string::npos);
+            // The terminal never draws the bottom-right cell: nothing may need it.
+            CHECK(g.at(w - 1, h - 1).glyph == " ");
+        }
+}
+
+TEST_CASE("8-ball: pocketed balls are listed under the player whose group they are", "[tui]") {
+    View v = rack_view(table);
+    v.aiming = false;
+    v.message.clear();
+    const auto drop = [&](std::initializer_list<int> ids) {
+        for (Ball& b : v.balls)
+            if (std::find(ids.begin(), ids.end(), b.id) != ids.end())
+                b.state = MotionState::pocketed;
+    };
+    drop({3, 11});
+    // Who potted them does not matter: the list follows the groups.
+    v.pocketed_by[0] = {11};
+    v.pocketed_by[1] = {3};
+    for (const auto& [w, h] : {std::pair{80, 24}, {100, 32}, {200, 60}, {120, 24}}) {
+        CAPTURE(w, h);
+        v.groups[0] = v.groups[1] = Group::open;
+        std::string all = screen_text(draw(v, w, h, {0, false}));
+        CAPTURE(all);
+        CHECK(all.find("open table") != std::string::npos);
+        CHECK(all.find("pocketed 3 11") != std::string::npos);
+        v.groups[0] = Group::stripes;
+        v.groups[1] = Group::solids;
+        all = screen_text(draw(v, w, h, {0, false}));
+        CHECK(all.find("stripes 11") != std::string::npos);
+        CHECK(all.find("solids 3") != std::string::npos);
+        CHECK(all.find("pocketed") == std::string::npos);
+        // Alice's line holds her group.
+        const std::size_t alice = all.find("Alice"), stripes = all.find("stripes 11");
+        const std::size_t bob = all.find("Bob");
+        CHECK(alice < stripes);
+        CHECK(stripes < bob);
+    }
+    // The 8 belongs to nobody: its own line.
+    v.groups[0] = Group::stripes;
+    v.groups[1] = Group::solids;
+    drop({8});
+    CHECK(screen_text(draw(v, 100, 32)).find("pocketed 8") != std::string::npos);
+}
+
+TEST_CASE("9-ball: one list of what has dropped, and the consecutive fouls", "[tui]") {
+    View v = nine_ball_view();
+    v.aiming = false;
+    v.message.clear();
+    for (Ball& b : v.balls)
+        if (b.id == 1 || b.id == 4)
+            b.state = MotionState::pocketed;
+    v.fouls[0] = 1;
+    v.fouls[1] = 2;
+    for (const auto& [w, h] : {std::pair{80, 24}, {100, 32}, {200, 60}, {120, 24}, {40, 14}})
+        for (const int colours : {256, 0}) {
+            CAPTURE(w, h, colours);
+            const Grid g = draw(v, w, h, {colours, true});
+            const std::string all = screen_text(g);
+            CAPTURE(all);
+            CHECK(all.find("pocketed 1 4") != std::string::npos);
+            CHECK(all.find("1 foul") != std::string::npos);
+            REQUIRE(all.find("2 fouls: a third loses") != std::string::npos);
+            CHECK(all.find("open table") == std::string::npos);
+            // The warning stands out: highlighted, reversed without colour.
+            const auto [x, y] = find_cell(g, "2 fouls");
+            const Style s = g.at(x, y).style;
+            CHECK(s.bold);
+            CHECK((colours ? s.fg == Colour::highlight : s.reverse));
+        }
+    v.fouls[0] = v.fouls[1] = 0;
+    CHECK(screen_text(draw(v, 100, 32)).find("foul") == std::string::npos);
+}
+
+TEST_CASE("the called pocket is said in words", "[tui]") {
+    View v = rack_view(table);
+    v.called_pocket = 6;
+    v.called_ball = 8;
+    for (const auto& [w, h] : {std::pair{80, 24}, {100, 32}, {200, 60}, {200, 40}}) {
+        CAPTURE(w, h);
+        const Layout l = make_layout(table, w, h);
+        const Grid g = render(v, l, {256, true}, w, h);
+        // The panel's text, which at 200x40 (the side panel) wraps it.
+        std::string panel;
+        for (int y = l.panel_y; y < l.panel_y + l.panel_height; ++y)
+            panel += row_text(g, y, l.panel_x) + "\n";
+        CAPTURE(panel);
+        CHECK(words(panel).find("calls the 8 in the top-left corner") != std::string::npos);
+    }
+    CHECK(pocket_name(1) == std::string("bottom-left corner"));
+    CHECK(pocket_name(2) == std::string("bottom side pocket"));
+    CHECK(pocket_name(4) == std::string("top-right corner"));
+    CHECK(pocket_name(7) == std::string(""));
+    v.called_ball = 0;
+    v.called_pocket = 2;
+    CHECK(screen_text(draw(v, 100, 32)).find("calls the bottom side pocket") != std::string::npos);
+    v.called_pocket = 0;
+    CHECK(screen_text(draw(v, 100, 32)).find("calls") == std::string::npos);
+}
+
+TEST_CASE("a match shows the race and the racks each player has won", "[tui]") {
+    View v = crowded_view(table); // race to 5: Alice 2, Bob 1
+    v.names[0] = "Player 1";
+    v.names[1] = "Ann";
+    for (const auto& [w, h] : {std::pair{80, 24}, {100, 32}, {200, 60}, {120, 24}, {40, 14}}) {
+        CAPTURE(w, h);
+        const std::string all = screen_text(draw(v, w, h));
+        CAPTURE(all);
+        if (w > 40) // at 40x14 the rows go to the players, the message and the legend
+            CHECK(all.find("race to 5") != std::string::npos);
+        // Names padded to one column, so the scores line up and never join a name.
+        CHECK(all.find("Player 1 2") != std::string::npos);
+        CHECK(all.find("Ann      1") != std::string::npos);
+    }
+    v.race_to = 0;
+    const std::string single = screen_text(draw(v, 100, 32));
+    CHECK(single.find("race") == std::string::npos);
+    CHECK(single.find("▶ Player 1  solids") != std::string::npos);
+}
+
+TEST_CASE("the help comes in pages that fit the screen", "[tui]") {
+    View v = rack_view(table);
+    v.help = true;
+    CHECK(help_page_count(80, 24) == 2);
+    CHECK(help_page_count(200, 60) == 1);
+    CHECK(help_page_count(1, 1) >= 1);
+    for (const auto& [w, h] : all_sizes) {
+        CAPTURE(w, h);
+        const int pages = help_page_count(w, h);
+        REQUIRE(pages >= 1);
+        std::string shown;
+        for (int page = 0; page < pages; ++page) {
+            v.help_page = page;
+            const std::string all = screen_text(draw(v, w, h));
+            shown += all;
+            CHECK(all.find(pages > 1
+                               ? "page " + std::to_string(page + 1) + "/" + std::to_string(pages)
+                               : "Esc closes") != std::string::npos);
+            CHECK(all.find("Esc closes") != std::string::npos);
+            if (page + 1 < pages)
+                CHECK(all.find(w >= 60 ? "Space/PgDn more, Esc closes" : "more, Esc closes") !=
+                      std::string::npos);
+        }
+        // Every line of the help is on some page, whole or wrapped.
+        for (const std::vector<std::string>& page : help_pages(w, h))
+            for (const std::string& line : page)
+                CHECK(shown.find(line) != std::string::npos);
+        std::size_t lines = 0;
+        for (const std::string& line : box_lines(help_text(), help_width(w)))
+            lines += !line.empty();
+        std::size_t paged = 0;
+        for (const std::vector<std::string>& page : help_pages(w, h))
+            for (const std::string& line : page)
+                paged += !line.empty();
+        CHECK(paged == lines);
+        // A page past the end shows the last one.
+        v.help_page = pages + 3;
+        const Grid past = draw(v, w, h);
+        v.help_page = pages - 1;
+        CHECK(past.cells == draw(v, w, h).cells);
+    }
+    // What was missing: ball in hand, calling by a click, how to close the box.
+    for (const char* topic : {"Ball in hand", "move the cue ball", "place it there",
+                              "click a pocket", "Esc q ? Enter", "next page"})
+        CHECK(help_text().find(topic) != std::string::npos);
+    // In ASCII the dash is plain.
+    v.help_page = 0;
+    CHECK(screen_text(draw(v, 80, 24, {0, false})).find("page 1/2 - Space/PgDn more, Esc closes") !=
+          std::string::npos);
+}
+
+TEST_CASE("an overlay box covers no ball", "[tui]") {
+    // The push-out choice is about the ball in the middle of the table.
+    View v = nine_ball_view();
+    v.aiming = false;
+    Ball centre;
+    centre.id = 5;
+    centre.position = {table.length / 2, table.width / 2};
+    for (Ball& b : v.balls)
+        if (b.id == 5)
+            b = centre;
+    v.overlay = "Bob, choose:\n1  play on\n2  Alice shoots again";
+    for (const auto& [w, h] : all_sizes)
+        for (const Capabilities& caps : tiers) {
+            CAPTURE(w, h, caps.colours, caps.utf8);
+            const Layout l = make_layout(table, w, h);
+            const Grid bare = render(
+                [&] {
+                    View b = v;
+                    b.overlay.clear();
+                    return b;
+                }(),
+                l, caps, w, h);
+            const Grid g = render(v, l, caps, w, h);
+            CHECK(screen_text(g).find("Bob, choose:") != std::string::npos);
+            // Every ball's cells are as they were without the box.
+            REQUIRE(felt_tokens(bare, l, caps.utf8) == expected_tokens(v, l, caps.utf8));
+            const int fx = static_cast<int>(std::lround(l.table_left));
+            const int fy = static_cast<int>(std::lround(l.table_top));
+            int balls = 0;
+            for (int y = fy; y < fy + l.felt_rows; ++y)
+                for (int x = fx; x < fx + l.felt_cols; ++x) {
+                    const std::string& glyph = bare.at(x, y).glyph;
+                    if (is_label_glyph(glyph, caps.utf8)) {
+                        ++balls;
+                        CHECK(g.at(x, y) == bare.at(x, y));
+                    }
+                }
+            CHECK(balls >= 10);
+        }
+    // Centred when the middle is clear.
+    View empty = v;
+    empty.balls.clear();
+    const Grid g = draw(empty, 100, 32);
+    const std::string all = screen_text(g);
+    const std::size_t at = all.find("Bob, choose:");
+    const int y = static_cast<int>(std::count(all.begin(), all.begin() + at, '\n'));
+    CHECK(y == (32 - 5) / 2 + 1);
 }

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "tui/aim.hpp"
+#include "tui/help_text.hpp"
 #include "tui/messages.hpp"
 #include "tui/player_name.hpp"
 #include "tui/pocket_cells.hpp"
@@ -476,6 +477,7 @@ void App::compose(View& v) const {
     v.pocketed_by[1] = pocketed_by_[1];
     v.message = message_;
     v.help = help_;
+    v.help_page = help_page_;
     if (mode_ == Mode::placing) {
         v.placing = true;
         v.placement_legal = game_.legal_placement(place_);
@@ -669,8 +671,19 @@ void App::handle(const Input& in) {
         return;
     }
     if (help_) {
-        if (in.kind != Input::Kind::mouse || in.clicked)
+        // Pages forward and back; Esc, q, ?, Enter or a click close it.
+        const int last = help_page_count(term_.width(), term_.height()) - 1;
+        const int key = in.kind == Input::Kind::key ? in.key : 0;
+        const std::string& t = in.text;
+        if (t == " " || t == "j" || key == KEY_NPAGE || key == KEY_DOWN)
+            help_page_ = std::min(help_page_ + 1, last);
+        else if (t == "k" || key == KEY_PPAGE || key == KEY_UP)
+            help_page_ = std::max(std::min(help_page_, last) - 1, 0);
+        else if (t == "q" || t == "?" || key == key_escape || key == key_enter ||
+                 key == KEY_ENTER || (in.kind == Input::Kind::mouse && in.clicked)) {
             help_ = false;
+            help_page_ = 0;
+        }
         return;
     }
     if (replaying_) {

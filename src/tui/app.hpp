@@ -107,6 +107,7 @@ private:
 
     // Overlays.
     bool help_ = false;
+    int help_page_ = 0;
     bool confirm_quit_ = false;
 
     // Aiming.

@@ -2,6 +2,8 @@
 
 #include "tui/ball_style.hpp"
 
+#include <cmath>
+
 namespace termpool::tui {
 
 Colour ball_colour(int id) {
@@ -16,11 +18,19 @@ bool is_stripe(int id) {
     return id >= 9 && id <= 15;
 }
 
-std::string ball_glyph(int id, bool utf8) {
+bool wide_labels(double cells_per_metre, double ball_radius) {
+    const double across = 2 * ball_radius * cells_per_metre;
+    return std::isfinite(across) && across >= 3;
+}
+
+std::string ball_label(int id, bool utf8, bool wide) {
     if (id == 0)
         return utf8 ? "\u25CF" : "o";
-    const int digit = (id % 10 + 10) % 10;
-    return std::string(1, static_cast<char>('0' + digit));
+    if (id >= 10 && id <= 15)
+        return wide ? std::to_string(id) : std::string(1, static_cast<char>('A' + id - 10));
+    if (id >= 1 && id <= 9)
+        return std::string(1, static_cast<char>('0' + id));
+    return "?";
 }
 
 Style ball_style(int id, bool colour) {

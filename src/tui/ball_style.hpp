@@ -14,9 +14,14 @@ Colour ball_colour(int id);
 /// True for the stripes, 9..15.
 bool is_stripe(int id);
 
-/// The one-cell glyph of a ball on the table: the last digit of its number ("0".."5" for
-/// 10..15), "o" or "●" for the cue ball.
-std::string ball_glyph(int id, bool utf8);
+/// True when the table is drawn large enough for two-cell labels: a ball is at least three
+/// columns across, so that "10" and a blank column fit beside a touching ball.
+bool wide_labels(double cells_per_metre, double ball_radius);
+
+/// The label of a ball on the table and in the legend: "1".."9"; for 10..15 "10".."15" when
+/// `wide`, else the single letters "A".."F" (a letter never reads as part of a neighbour's
+/// number); "o" or "●" for the cue ball.
+std::string ball_label(int id, bool utf8, bool wide);
 
 /// The style of object ball `id`, on the table and in the legend. Colour: solids dark bold
 /// digits on their colour, the 8 a white digit on black, stripes the colour on white.

@@ -3,6 +3,8 @@
 // in order: table, aim, balls, labels, status rows, panel, overlays.
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tui/painter.hpp"
 #include "tui/view.hpp"
@@ -42,16 +44,23 @@ void draw_table(const Frame& f);
 void draw_pocket_labels(const Frame& f);
 /// The aim line and aiming aid, the cue and the pointer's marker.
 void draw_aim(const Frame& f);
-/// The balls on the table.
-void draw_balls(const Frame& f);
+/// True when balls 10..15 get two-cell labels at this scale (see wide_labels).
+bool labels_wide(const Frame& f);
+/// The balls on the table; returns the cells their labels took.
+std::vector<std::pair<int, int>> draw_balls(const Frame& f);
 /// The power bar, speed, power mode, spin line and shoot button.
 void draw_status(const Frame& f);
-/// Players, groups, pocketed balls, the legend, the spin diagram and the message.
+/// The game and the race, players with racks won, groups and their pocketed balls (9-ball:
+/// fouls), other pocketed balls, the message, the called pocket in words, the spin diagram,
+/// the legend and the help hint.
 void draw_panel(const Frame& f);
-/// A centred box with `text` ('\n' between lines).
-void draw_box(Painter& paint, const std::string& text);
-/// The help overlay: every key and mouse action.
-void draw_help(Painter& paint);
+/// A box with `text` ('\n' between lines), placed where it covers none of the `keep` cells
+/// (the balls): centred if it can, else over the panel, else wherever it covers the fewest,
+/// nearest the centre.
+void draw_box(const Frame& f, const std::string& text,
+              const std::vector<std::pair<int, int>>& keep);
+/// The help overlay, page `page` of help_page_count (clamped), with how to turn and close it.
+void draw_help(Painter& paint, int page);
 
 /// "+0.2", "-0.25", "0.0": a tip offset with one or two decimals.
 std::string format_offset(double value);

@@ -1,87 +1,234 @@
-// The panel: the game, both players (the one to shoot marked) with their groups and pocketed
-// balls, the message, the spin diagram and a legend of the balls on the table. Beside the
-// table it is a column; below it (narrow terminals) the players, the message and the spin
-// diagram sit side by side.
+// The panel: the game and the match's race, both players (the one to shoot marked) with the
+// racks they have won and, in 8-ball, their group with its balls pocketed so far (9-ball: their
+// consecutive fouls), the balls pocketed outside any group, the message, the called pocket in
+// words, the spin diagram, a legend of the balls on the table and the help hint. Beside the
+// table it is a column; below it (narrow terminals) players, message and spin diagram sit side
+// by side above a row holding the legend and the hint.
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <iterator>
 #include <string>
 #include <vector>
 
 #include "tui/aim.hpp"
 #include "tui/ball_style.hpp"
 #include "tui/draw.hpp"
+#include "tui/pocket_cells.hpp"
 #include "tui/text_width.hpp"
 
 namespace termpool::tui {
 namespace {
 
-// "solids 1 3 4", "open table", "pocketed 1 2" (9-ball has no groups).
-std::string player_detail(const View& v, int player) {
+const Style dim{Colour::dim};
+const Style bold{Colour::normal, Colour::normal, true};
+const Style mark{Colour::highlight, Colour::normal, true};
+
+// A line of differently styled pieces.
+struct Piece {
+    std::string text;
+    Style style;
+};
+using Line = std::vector<Piece>;
+
+int width_of(const Line& line) {
+    int w = 0;
+    for (const Piece& piece : line)
+        w += display_width(piece.text);
+    return w;
+}
+
+int draw_line(Painter& p, int x, int y, const Line& line, int width) {
+    int used = 0;
+    for (const Piece& piece : line)
+        if (used < width)
+            used += p.text(x + used, y, piece.text, piece.style, width - used);
+    return used;
+}
+
+// `text` wrapped to `width`, each line in `style`.
+std::vector<Line> wrapped(const std::string& text, int width, Style style) {
+    std::vector<Line> lines;
+    if (!text.empty())
+        for (std::string& line : wrap_to_width(text, width))
+            lines.push_back({{std::move(line), style}});
+    return lines;
+}
+
+bool in_group(int id, Group g) {
+    return (g == Group::solids && id >= 1 && id <= 7) ||
+           (g == Group::stripes && id >= 9 && id <= 15);
+}
+
+// The object balls that have dropped, in order, that `keep` accepts.
+template <class Keep> std::string pocketed(const View& v, Keep keep) {
+    std::vector<int> ids;
+    for (const Ball& b : v.balls)
+        if (b.id > 0 && b.state == MotionState::pocketed && keep(b.id))
+            ids.push_back(b.id);
+    std::sort(ids.begin(), ids.end());
     std::string s;
-    const bool nine = v.game == GameType::nine_ball;
-    if (!nine) {
-        const Group g = v.groups[player - 1];
-        s = g == Group::solids ? "solids" : g == Group::stripes ? "stripes" : "open table";
-    }
-    const std::vector<int>& balls = v.pocketed_by[player - 1];
-    if (nine && !balls.empty())
-        s = "pocketed";
-    for (const int id : balls)
+    for (const int id : ids)
         s += " " + std::to_string(id);
     return s;
 }
 
-// Marker and name on one line; returns the columns used.
-int draw_name(const Frame& f, int x, int y, int width, int player) {
+// "solids 1 3 4" (the player's group and what of it has dropped), "open table"; in 9-ball the
+// consecutive fouls, the second one as a warning.
+Piece player_detail(const Frame& f, int player) {
     const View& v = f.view;
-    const bool shooting = v.shooter == player;
-    const Style mark{Colour::highlight, Colour::normal, true};
-    int used = 0;
-    if (shooting)
-        used += f.paint.text(x, y, f.paint.utf8() ? "\u25B6 " : "> ", mark, width);
-    else
-        used += f.paint.text(x, y, "  ", {}, width);
-    const std::string name = truncate_to_width(v.names[player - 1], 20);
-    used += f.paint.text(x + used, y, name, shooting ? mark : Style{}, width - used);
-    return used;
+    if (v.game == GameType::nine_ball) {
+        const int fouls = std::max(0, v.fouls[player - 1]);
+        if (fouls == 0)
+            return {"", dim};
+        if (fouls == 2)
+            return {"2 fouls: a third loses",
+                    {Colour::highlight, Colour::normal, true, !f.paint.colour()}};
+        return {std::to_string(fouls) + (fouls == 1 ? " foul" : " fouls"), dim};
+    }
+    const Group g = v.groups[player - 1];
+    if (g == Group::open)
+        return {"open table", dim};
+    return {(g == Group::solids ? "solids" : "stripes") +
+                pocketed(v, [&](int id) { return in_group(id, g); }),
+            dim};
 }
 
-// The numbers of the balls on the table, each styled as on the table, after an "on table"
-// label when there is room for it. Drawn only when it fits whole in `max_rows`: a cut legend
-// would say balls are gone. Returns the rows used.
-int draw_legend(const Frame& f, int x, int y, int width, int max_rows) {
+// "pocketed 3 11": in 9-ball all that has dropped, in 8-ball what belongs to nobody's group
+// (all of it on an open table, the 8). Empty when there is none.
+std::string loose_balls(const View& v) {
+    const std::string ids = pocketed(v, [&](int id) {
+        return v.game == GameType::nine_ball ||
+               !(in_group(id, v.groups[0]) || in_group(id, v.groups[1]));
+    });
+    return ids.empty() ? "" : "pocketed" + ids;
+}
+
+// "8-ball, race to 5"; with `title` false just "race to 5" (empty without a race).
+Line header(const View& v, bool title) {
+    Line line;
+    const std::string race = v.race_to > 0 ? "race to " + std::to_string(v.race_to) : "";
+    if (title)
+        line.push_back({game_title(v.game), bold});
+    if (!race.empty())
+        line.push_back({title ? ", " + race : race, title ? bold : dim});
+    return line;
+}
+
+// "calls the 8 in the top-left corner" while a pocket is called.
+std::string call_text(const View& v) {
+    if (v.called_pocket < 1 || v.called_pocket > 6)
+        return "";
+    const std::string ball =
+        v.called_ball > 0 ? "the " + std::to_string(v.called_ball) + " in " : "";
+    return "calls " + ball + "the " + pocket_name(v.called_pocket);
+}
+
+// Marker, name and, in a race, the racks won, the names padded to one column so that the
+// scores line up: "▶ Ann  2".
+Line name_line(const Frame& f, int player, int width) {
+    const View& v = f.view;
+    const bool shooting = v.shooter == player;
+    const bool race = v.race_to > 0;
+    const int score_w =
+        race ? 1 + static_cast<int>(std::to_string(std::max(0, v.racks_won[player - 1])).size())
+             : 0;
+    int name_w = 0;
+    for (const std::string& n : v.names)
+        name_w = std::max(name_w, display_width(truncate_to_width(n, 20)));
+    name_w = std::max(1, std::min(name_w, width - 2 - score_w));
+    std::string name = truncate_to_width(v.names[player - 1], name_w);
+    Line line{{shooting ? (f.paint.utf8() ? "\u25B6 " : "> ") : "  ", mark}};
+    if (race) {
+        name += std::string(static_cast<std::size_t>(name_w - display_width(name)), ' ');
+        line.push_back({name, shooting ? mark : Style{}});
+        line.push_back({" " + std::to_string(std::max(0, v.racks_won[player - 1])), bold});
+    } else {
+        line.push_back({name, shooting ? mark : Style{}});
+    }
+    return line;
+}
+
+// The legend's forms, most telling first: with the "on table" label, with "=10" after each
+// letter, or with one "A-F=10-15" key at the end.
+struct LegendForm {
+    bool label, numbers, key;
+};
+constexpr LegendForm legend_forms[] = {{true, true, false},  {false, true, false},
+                                       {true, false, true},  {false, false, true},
+                                       {true, false, false}, {false, false, false}};
+
+// The balls on the table, each drawn as on the table, in `form`, wrapped to `width`: returns
+// the rows needed (INT_MAX when a piece is wider than a row), drawing at (x, y) if asked.
+int lay_out_legend(const Frame& f, const std::vector<int>& ids, LegendForm form, int x, int y,
+                   int width, bool draw) {
+    const bool wide = labels_wide(f);
+    std::vector<Line> tokens;
+    if (form.label)
+        tokens.push_back({{"on table", dim}});
+    bool letters = false;
+    for (const int id : ids) {
+        Line t{{ball_label(id, f.paint.utf8(), wide), ball_style(id, f.paint.colour())}};
+        if (!wide && id >= 10) {
+            letters = true;
+            if (form.numbers)
+                t.push_back({"=" + std::to_string(id), dim});
+        }
+        tokens.push_back(t);
+    }
+    if (form.key && letters)
+        tokens.push_back({{"A-F=10-15", dim}});
+    int row = 0, col = 0;
+    for (const Line& t : tokens) {
+        const int w = width_of(t);
+        if (w > width)
+            return INT_MAX;
+        if (col > 0 && col + 1 + w > width)
+            ++row, col = 0;
+        else if (col > 0)
+            ++col;
+        if (draw)
+            draw_line(f.paint, x + col, y + row, t, w);
+        col += w;
+    }
+    return row + 1;
+}
+
+std::vector<int> on_table(const View& v) {
     std::vector<int> ids;
-    for (const Ball& b : f.view.balls)
+    for (const Ball& b : v.balls)
         if (b.id > 0 && b.state != MotionState::pocketed)
             ids.push_back(b.id);
     std::sort(ids.begin(), ids.end());
-    if (ids.empty() || max_rows <= 0 || width <= 2)
+    return ids;
+}
+
+// The most telling legend form that fits `max_rows`; drawn only when one fits whole (a cut
+// legend would say balls are gone). Returns the rows used.
+int draw_legend(const Frame& f, int x, int y, int width, int max_rows) {
+    const std::vector<int> ids = on_table(f.view);
+    if (ids.empty() || max_rows <= 0 || width <= 0)
         return 0;
-    const std::string label = "on table";
-    // Lays the numbers out from column `start`; returns the rows needed, drawing if asked.
-    auto lay_out = [&](int start, bool draw) {
-        int row = 0, col = start;
-        for (const int id : ids) {
-            const std::string n = std::to_string(id);
-            const int w = static_cast<int>(n.size());
-            if (col > 0 && col + w > width)
-                ++row, col = 0;
-            if (draw)
-                f.paint.text(x + col, y + row, n, ball_style(id, f.paint.colour()));
-            col += w + 1;
-        }
-        return row + 1;
-    };
-    const int with_label = static_cast<int>(label.size()) + 1;
-    if (lay_out(with_label, false) <= max_rows) {
-        f.paint.text(x, y, label, {Colour::dim}, width);
-        return lay_out(with_label, true);
+    for (const LegendForm form : legend_forms) {
+        const int rows = lay_out_legend(f, ids, form, x, y, width, false);
+        if (rows <= max_rows)
+            return lay_out_legend(f, ids, form, x, y, width, true);
     }
-    if (lay_out(0, false) <= max_rows)
-        return lay_out(0, true);
     return 0;
 }
+
+// Rows of the smallest legend at `width` (0 when none fits or nothing is on the table).
+int legend_rows(const Frame& f, int width) {
+    const std::vector<int> ids = on_table(f.view);
+    if (ids.empty() || width <= 0)
+        return 0;
+    const LegendForm smallest = legend_forms[std::size(legend_forms) - 1];
+    const int rows = lay_out_legend(f, ids, smallest, 0, 0, width, false);
+    return rows == INT_MAX ? 0 : rows;
+}
+
+const char* const hints[] = {"? help  q quit", "? help"};
 
 // The cue ball's face with a '+' where the tip will strike; the outermost cells are the
 // +-0.5 R limit. Corners are left out so that the face reads as round.
@@ -113,42 +260,71 @@ void draw_side_panel(const Frame& f) {
     Painter& p = f.paint;
     const int x = l.panel_x + 1, width = l.panel_width - 1;
     int y = l.panel_y;
-    const int end = l.panel_y + l.panel_height;
-    auto room = [&](int rows) { return y + rows <= end; };
+    const int end = l.panel_y + l.panel_height, hint_row = end - 1;
+    // The hint has the last row and the legend, at its smallest, the rows above it.
+    const int limit = hint_row - legend_rows(f, width);
+    auto room = [&](int rows) { return y + rows <= limit; };
+    auto put_lines = [&](const std::vector<Line>& lines) {
+        for (const Line& line : lines)
+            if (room(1))
+                draw_line(p, x, y++, line, width);
+    };
 
-    if (room(1))
-        p.text(x, y++, game_title(v.game), {Colour::normal, Colour::normal, true}, width);
+    const Line full = header(v, true);
+    if (width_of(full) <= width)
+        put_lines({full});
+    else // "8-ball, bar rules" and the race on a line of its own
+        put_lines({{{game_title(v.game), bold}}, header(v, false)});
     ++y;
-    for (int player = 1; player <= 2 && room(2); ++player) {
-        draw_name(f, x, y++, width, player);
-        p.text(x + 2, y++, player_detail(v, player), {Colour::dim}, width - 2);
+    for (int player = 1; player <= 2; ++player) {
+        put_lines({name_line(f, player, width)});
+        // The indent apart, so that a reversed warning does not reverse it.
+        put_lines({{{"  ", {}}, player_detail(f, player)}});
     }
+    put_lines(wrapped(loose_balls(v), width, dim));
     ++y;
-    // The message matters most after the players; leave the hint line free below it.
+    // The message matters most after the players.
     if (!v.message.empty()) {
-        for (const std::string& line : wrap_to_width(v.message, width)) {
-            if (!room(2))
-                break;
-            p.text(x, y++, line, {}, width);
-        }
+        put_lines(wrapped(v.message, width, {}));
+        ++y;
+    }
+    const std::string call = call_text(v);
+    if (!call.empty()) {
+        put_lines(wrapped(call, width, mark));
         ++y;
     }
     if (v.aiming && !v.placing) {
-        const int h = room(6) && end - y >= 12 ? 5 : 3, w = h == 5 ? 9 : 5;
+        const int h = room(6) && limit - y >= 12 ? 5 : 3, w = h == 5 ? 9 : 5;
         if (room(h + 1)) {
             draw_spin_face(f, x + 1, y, w, h);
-            p.text(x + w + 3, y + h / 2 - 1, "spin", {Colour::dim}, width - w - 3);
+            p.text(x + w + 3, y + h / 2 - 1, "spin", dim, width - w - 3);
             p.text(x + w + 3, y + h / 2, "side " + format_offset(v.side), {}, width - w - 3);
             p.text(x + w + 3, y + h / 2 + 1, "follow " + format_offset(v.follow), {},
                    width - w - 3);
             y += h + 1;
         }
     }
-    // The legend keeps the last row free for the hint.
-    if (room(2))
-        y += draw_legend(f, x, y, width, end - 1 - y);
-    if (y <= end - 1)
-        p.text(x, end - 1, "? help  q quit", {Colour::dim}, width);
+    y = std::min(y, limit);
+    draw_legend(f, x, y, width, hint_row - y);
+    if (hint_row >= l.panel_y)
+        p.text(x, hint_row, hints[width >= 14 ? 0 : 1], dim, width);
+}
+
+// The bottom row of the panel below the table: the legend, and the hint at the right end.
+void draw_legend_row(const Frame& f, int x, int y, int width) {
+    const std::vector<int> ids = on_table(f.view);
+    for (const LegendForm form : legend_forms)
+        for (const char* hint : hints) {
+            const int hint_w = display_width(hint);
+            if (ids.empty() || lay_out_legend(f, ids, form, x, y, width - hint_w - 2, false) != 1)
+                continue;
+            lay_out_legend(f, ids, form, x, y, width - hint_w - 2, true);
+            f.paint.text(x + width - hint_w, y, hint, dim);
+            return;
+        }
+    // Nothing on the table, or no room for both: the hint alone.
+    const char* hint = display_width(hints[0]) <= width ? hints[0] : hints[1];
+    f.paint.text(x + std::max(0, width - display_width(hint)), y, hint, dim, width);
 }
 
 void draw_below_panel(const Frame& f) {
@@ -161,32 +337,82 @@ void draw_below_panel(const Frame& f) {
     const int right = l.panel_x + l.panel_width - (face ? face_w + 1 : 0);
     const int x = l.panel_x, pw = std::min(36, right - x);
     const int mid_x = x + pw + 1, mid_w = right - mid_x - 1;
-    const bool message_beside = mid_w >= 16;
-    const bool has_message = !v.message.empty();
+    const bool beside = mid_w >= 16;
+    // The last row holds the legend and the hint; the rows above it the rest.
+    const int rows = std::max(0, l.panel_height - 1);
+    // The terminal leaves the screen's bottom-right cell alone (it would scroll): stop short.
+    const int last_w = (l.panel_height > face_h || !face ? l.panel_width : right - x) - 1;
+    draw_legend_row(f, x, end - 1, last_w);
 
-    int y = l.panel_y;
-    if (y < end && (message_beside || !has_message || l.panel_height >= 4))
-        p.text(x, y++, game_title(v.game), {Colour::normal, Colour::normal, true}, pw);
-    for (int player = 1; player <= 2 && y < end; ++player) {
-        const int used = draw_name(f, x, y, pw, player);
-        p.text(x + used + 2, y++, player_detail(v, player), {Colour::dim}, pw - used - 2);
-    }
-    if (has_message) {
-        const bool beside = message_beside;
-        int my = beside ? l.panel_y : y;
-        const int mx = beside ? mid_x : x, mw = beside ? mid_w : right - x;
-        for (const std::string& line : wrap_to_width(v.message, mw)) {
-            if (my >= end)
-                break;
-            p.text(mx, my++, line, {}, mw);
+    // The left column, in screen order with what goes first when rows run short (the larger
+    // number first): title 4, players 0, balls of no group 3, message 1, call 2.
+    struct Row {
+        Line line;
+        int drop;
+    };
+    std::vector<Row> left;
+    left.push_back({header(v, true), 4});
+    for (int player = 1; player <= 2; ++player) {
+        Line line = name_line(f, player, pw);
+        const Piece detail = player_detail(f, player);
+        if (!detail.text.empty()) {
+            line.push_back({"  ", {}});
+            line.push_back(detail);
         }
-        if (!beside)
-            y = my;
+        left.push_back({line, 0});
     }
-    if (y < end)
-        y += draw_legend(f, x, y, pw, end - y);
-    if (y < end)
-        p.text(x, end - 1, "? help  q quit", {Colour::dim}, pw);
+    const std::string loose = loose_balls(v);
+    if (!loose.empty())
+        left.push_back({{{loose, dim}}, 3});
+    std::vector<Line> message = wrapped(v.message, beside ? mid_w : right - x, {});
+    std::vector<Line> call = wrapped(call_text(v), beside ? mid_w : right - x, mark);
+    if (!beside) {
+        for (Line& line : message)
+            left.push_back({line, 1});
+        for (Line& line : call)
+            left.push_back({line, 2});
+    }
+    while (static_cast<int>(left.size()) > rows && !left.empty()) {
+        // The balls of no group can share the title's row ("8-ball  pocketed 3 11"), or the
+        // race's alone.
+        if (left.size() > 3 && left.front().drop == 4 && left[3].drop == 3) {
+            bool merged = false;
+            for (const bool title : {true, false}) {
+                Line line = header(v, title);
+                if (!line.empty())
+                    line.push_back({"  ", {}});
+                line.push_back({loose, dim});
+                if (width_of(line) <= pw) {
+                    left.front() = {line, 3};
+                    left.erase(left.begin() + 3);
+                    merged = true;
+                    break;
+                }
+            }
+            if (merged)
+                continue;
+        }
+        auto worst = left.begin();
+        for (auto it = left.begin(); it != left.end(); ++it)
+            if (it->drop >= worst->drop)
+                worst = it;
+        left.erase(worst);
+    }
+    for (std::size_t i = 0; i < left.size(); ++i)
+        draw_line(p, x, l.panel_y + static_cast<int>(i), left[i].line,
+                  left[i].drop == 1 || left[i].drop == 2 ? right - x : pw);
+
+    if (beside) {
+        // The call is short and about the shot at hand: it keeps its rows, the message the rest.
+        const int call_rows =
+            std::min(static_cast<int>(call.size()), std::max(0, rows - (message.empty() ? 0 : 1)));
+        const int message_rows = std::min(static_cast<int>(message.size()), rows - call_rows);
+        int y = l.panel_y;
+        for (int i = 0; i < message_rows; ++i)
+            draw_line(p, mid_x, y++, message[static_cast<std::size_t>(i)], mid_w);
+        for (int i = 0; i < call_rows; ++i)
+            draw_line(p, mid_x, y++, call[static_cast<std::size_t>(i)], mid_w);
+    }
     if (face)
         draw_spin_face(f, right + 1, l.panel_y, face_w, face_h);
 }

@@ -11,7 +11,7 @@ namespace {
 constexpr int side_panel_cols = 26;  // names of up to 20 columns plus marker and indent
 constexpr int panel_gap = 1;         // blank column between the table and a side panel
 constexpr int status_rows = 2;       // power bar, spin line
-constexpr int below_panel_rows = 3;  // two players and a message line at least
+constexpr int below_panel_rows = 4;  // title, two players, the legend and help hint
 constexpr int shoot_button_cols = 9; // "[ shoot ]"
 
 // The playing surface for `cols` x `rows` cells available to it. Rows are worth two columns,

@@ -76,4 +76,13 @@ int pocket_at(const Table& table, const Layout& layout, int x, int y) {
     return 0;
 }
 
+const char* pocket_name(int number) {
+    // Pocket 1 is at the table's origin, which the screen shows bottom left; the numbers go
+    // counter-clockwise.
+    static const char* const names[6] = {"bottom-left corner",  "bottom side pocket",
+                                         "bottom-right corner", "top-right corner",
+                                         "top side pocket",     "top-left corner"};
+    return number >= 1 && number <= 6 ? names[number - 1] : "";
+}
+
 } // namespace termpool::tui

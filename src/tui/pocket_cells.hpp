@@ -23,4 +23,8 @@ PocketCells pocket_cells(const Table& table, const Layout& layout, int number);
 /// The pocket (1..6) whose rail cells include (x, y), or 0.
 int pocket_at(const Table& table, const Layout& layout, int x, int y);
 
+/// Pocket `number` (1..6) named as a player sees it on the screen, the head string on the
+/// left: "bottom-left corner", "bottom side pocket", ..., "top-left corner"; "" for others.
+const char* pocket_name(int number);
+
 } // namespace termpool::tui

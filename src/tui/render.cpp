@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tui/draw.hpp"
 #include "tui/text_width.hpp"
@@ -66,18 +68,19 @@ Grid render(const View& view, const Layout& layout, const Capabilities& caps, in
         return grid;
     }
     const Frame frame(view, layout, paint);
+    std::vector<std::pair<int, int>> ball_cells;
     if (view.table) {
         draw_table(frame);
         draw_aim(frame);
-        draw_balls(frame);
+        ball_cells = draw_balls(frame);
         draw_pocket_labels(frame);
         draw_status(frame);
     }
     draw_panel(frame);
     if (!view.overlay.empty())
-        draw_box(paint, view.overlay);
+        draw_box(frame, view.overlay, ball_cells);
     if (view.help)
-        draw_help(paint);
+        draw_help(paint, view.help_page);
     return grid;
 }
 
