@@ -95,19 +95,21 @@ TEST_CASE("the help at 80x24: pages turn with Space, k and PgDn; Esc and q close
     REQUIRE(t.wait_for_text("place the cue ball"));
     CHECK(t.screen().find("? help  q quit") != std::string::npos);
     t.keys("?");
-    REQUIRE(t.wait_for_text("page 1/2"));
+    REQUIRE(t.wait_for_text("page 1/3"));
     t.keys("Space");
-    CHECK(t.wait_for_text("page 2/2"));
+    CHECK(t.wait_for_text("page 2/3"));
     t.keys("k");
-    CHECK(t.wait_for_text("page 1/2"));
+    CHECK(t.wait_for_text("page 1/3"));
     t.keys("NPage");
-    CHECK(t.wait_for_text("page 2/2"));
+    CHECK(t.wait_for_text("page 2/3"));
+    t.keys("NPage");
+    CHECK(t.wait_for_text("page 3/3"));
     t.keys("Escape");
     CHECK(
         t.wait_for([](const std::string& s) { return s.find("Esc closes") == std::string::npos; }));
     // q closes the help rather than asking to quit; opened again it starts on page 1.
     t.keys("?");
-    REQUIRE(t.wait_for_text("page 1/2"));
+    REQUIRE(t.wait_for_text("page 1/3"));
     t.keys("q");
     CHECK(
         t.wait_for([](const std::string& s) { return s.find("Esc closes") == std::string::npos; }));

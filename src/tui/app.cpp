@@ -95,8 +95,6 @@ void App::new_game(int breaker) {
     rack_ = 1;
     rack_breaker_ = breaker;
     game_ = Game(options_.game, table_, params_, breaker, record_.seed);
-    pocketed_by_[0].clear();
-    pocketed_by_[1].clear();
     shown_balls_ = game_.balls();
     trajectory_.reset();
     message_ = names_[breaker - 1] + " breaks: place the cue ball in the kitchen";
@@ -116,8 +114,6 @@ void App::next_rack() {
 void App::start_rack(const RecordedAction& rack) {
     game_ = Game(record_.game, table_, params_, rack.breaker, rack.seed);
     rack_breaker_ = rack.breaker;
-    pocketed_by_[0].clear();
-    pocketed_by_[1].clear();
     shown_balls_ = game_.balls();
 }
 
@@ -157,17 +153,10 @@ Vec2 App::cue_position() const {
 void App::begin() {
     if (!practice_)
         message_ = names_[game_.shooter() - 1] + " breaks: place the cue ball in the kitchen";
-    if (!notice_.empty())
-        message_ = notice_ + "  " + message_;
-    notice_.clear();
+    // News from before the game (a config warning, where it is saved) leads the first line.
+    for (auto n = options_.notices.rbegin(); n != options_.notices.rend(); ++n)
+        message_ = *n + "  " + message_;
     start_turn();
-}
-
-void App::tell(const std::string& message) {
-    if (mode_ == Mode::names)
-        notice_ += (notice_.empty() ? "" : "  ") + message;
-    else
-        message_ = message + (message_.empty() ? "" : "  " + message_);
 }
 
 void App::start_turn() {
@@ -449,9 +438,6 @@ void App::after_shot() {
     tally_.on_shot(shooter_before_, break_before_, call_, v);
     if (v.winner != 0)
         match_.record_rack(v.winner);
-    for (const int id : v.pocketed)
-        if (id != 0)
-            pocketed_by_[shooter_before_ - 1].push_back(id);
     message_ = verdict_message(v, shooter_before_, names_);
     save();
     if (v.winner != 0 && match_.match_winner() != 0 && !replaying_)
@@ -473,8 +459,14 @@ void App::compose(View& v) const {
         v.shooter = shooter_before_;
     v.groups[0] = game_.group_of(1);
     v.groups[1] = game_.group_of(2);
-    v.pocketed_by[0] = pocketed_by_[0];
-    v.pocketed_by[1] = pocketed_by_[1];
+    v.practice = practice_.has_value();
+    v.race_to = match_.is_race() ? match_.race_to : 0;
+    v.racks_won[0] = match_.racks_won[0];
+    v.racks_won[1] = match_.racks_won[1];
+    if (game_.type() == GameType::nine_ball) {
+        v.fouls[0] = game_.consecutive_fouls(1);
+        v.fouls[1] = game_.consecutive_fouls(2);
+    }
     v.message = message_;
     v.help = help_;
     v.help_page = help_page_;
@@ -508,7 +500,11 @@ void App::compose(View& v) const {
         }
         v.show_marker = show_marker_;
         v.marker = marker_;
-        v.called_pocket = safety_ ? 0 : called_pocket_;
+        // The panel says what the shot will call: the aimed ball into the chosen pocket.
+        const bool calling = !safety_ && called_pocket_ != 0 && preview_ball_ > 0 &&
+                             calls_pocket(game_, preview_ball_);
+        v.called_pocket = calling ? called_pocket_ : 0;
+        v.called_ball = calling ? preview_ball_ : 0;
     }
     if (mode_ == Mode::moving)
         compose_moving(v);
@@ -744,13 +740,7 @@ void App::handle_key(int key, const std::string& text) {
         if (text.size() == 1 && text[0] >= '1' &&
             text[0] < '1' + static_cast<int>(choices.size())) {
             choose(choices[static_cast<std::size_t>(text[0] - '1')]);
-            if (game_.is_break()) {
-                pocketed_by_[0].clear();
-                pocketed_by_[1].clear();
-                message_ = names_[game_.shooter() - 1] + " breaks";
-            } else {
-                message_ = names_[game_.shooter() - 1] + " to shoot";
-            }
+            message_ = names_[game_.shooter() - 1] + (game_.is_break() ? " breaks" : " to shoot");
             start_turn();
         }
         return;
@@ -962,21 +952,11 @@ void App::rewind_to(std::size_t action) {
 }
 
 bool App::replay_from(const GameRecord& record) {
-    pocketed_by_[0].clear();
-    pocketed_by_[1].clear();
+    // The figures are not saved: they follow from the shots.
     tally_ = StatsTally{};
-    auto replayed = replay_match(
-        record,
-        [&](const ReplayedShot& shot) {
-            tally_.on_shot(shot.shooter, shot.was_break, shot.call, shot.verdict);
-            for (const int id : shot.verdict.pocketed)
-                if (id != 0)
-                    pocketed_by_[shot.shooter - 1].push_back(id);
-        },
-        [&](int, int) {
-            pocketed_by_[0].clear();
-            pocketed_by_[1].clear();
-        });
+    auto replayed = replay_match(record, [&](const ReplayedShot& shot) {
+        tally_.on_shot(shot.shooter, shot.was_break, shot.call, shot.verdict);
+    });
     auto* match = std::get_if<ReplayedMatch>(&replayed);
     if (!match)
         return false;
@@ -1069,6 +1049,8 @@ void App::resume(const GameRecord& record) {
     replay_from(record_);
     entry_player_ = 0;
     message_ = "Game resumed: " + names_[game_.shooter() - 1] + " to play";
+    for (const std::string& n : options_.notices)
+        message_ += "  " + n;
     start_turn();
 }
 

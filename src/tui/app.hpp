@@ -30,9 +30,6 @@ public:
     void resume(const GameRecord& record);
     /// Plays a saved game back instead of playing: space pauses, Left/Right step a shot.
     void start_replay(const GameRecord& record);
-    /// Puts news from before the game started (a config warning, where the game is saved) in
-    /// front of the message line; while the names are asked for, it waits for the first one.
-    void tell(const std::string& message);
 
 private:
     enum class Mode { names, placing, aiming, animating, choosing, game_over, replay, moving };
@@ -166,7 +163,6 @@ private:
     std::string message_;
     std::string notice_;             // told before the first message
     Clock::time_point game_over_at_; // when the last rack ended
-    std::vector<int> pocketed_by_[2];
     std::string overlay_;
 };
 

@@ -61,6 +61,11 @@ bool in_group(int id, Group g) {
            (g == Group::stripes && id >= 9 && id <= 15);
 }
 
+// Practice has one player at the table.
+int players(const View& v) {
+    return v.practice ? 1 : 2;
+}
+
 // The object balls that have dropped, in order, that `keep` accepts.
 template <class Keep> std::string pocketed(const View& v, Keep keep) {
     std::vector<int> ids;
@@ -78,6 +83,8 @@ template <class Keep> std::string pocketed(const View& v, Keep keep) {
 // consecutive fouls, the second one as a warning.
 Piece player_detail(const Frame& f, int player) {
     const View& v = f.view;
+    if (v.practice)
+        return {"", {}}; // no referee: no groups, no fouls
     if (v.game == GameType::nine_ball) {
         const int fouls = std::max(0, v.fouls[player - 1]);
         if (fouls == 0)
@@ -110,7 +117,7 @@ Line header(const View& v, bool title) {
     Line line;
     const std::string race = v.race_to > 0 ? "race to " + std::to_string(v.race_to) : "";
     if (title)
-        line.push_back({game_title(v.game), bold});
+        line.push_back({std::string(game_title(v.game)) + (v.practice ? " practice" : ""), bold});
     if (!race.empty())
         line.push_back({title ? ", " + race : race, title ? bold : dim});
     return line;
@@ -276,7 +283,7 @@ void draw_side_panel(const Frame& f) {
     else // "8-ball, bar rules" and the race on a line of its own
         put_lines({{{game_title(v.game), bold}}, header(v, false)});
     ++y;
-    for (int player = 1; player <= 2; ++player) {
+    for (int player = 1; player <= players(v); ++player) {
         put_lines({name_line(f, player, width)});
         // The indent apart, so that a reversed warning does not reverse it.
         put_lines({{{"  ", {}}, player_detail(f, player)}});
@@ -352,7 +359,7 @@ void draw_below_panel(const Frame& f) {
     };
     std::vector<Row> left;
     left.push_back({header(v, true), 4});
-    for (int player = 1; player <= 2; ++player) {
+    for (int player = 1; player <= players(v); ++player) {
         Line line = name_line(f, player, pw);
         const Piece detail = player_detail(f, player);
         if (!detail.text.empty()) {

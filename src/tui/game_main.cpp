@@ -263,11 +263,8 @@ int resume_game(const GameOptions& options, const std::vector<std::string>& noti
     const std::string path = chosen.lock.path();
     GameOptions resumed = options_from(chosen.game.record, options);
     resumed.save_path = path;
-    const int status = in_terminal(resumed, [&](App& app) {
-        app.resume(chosen.game.record);
-        for (const std::string& n : notices)
-            app.tell(n);
-    });
+    resumed.notices = notices;
+    const int status = in_terminal(resumed, [&](App& app) { app.resume(chosen.game.record); });
     tell_where_saved(path, std::nullopt, true);
     return status;
 }
@@ -287,14 +284,9 @@ int new_game(GameOptions options, std::vector<std::string> notices) {
         notices.push_back("The old save could not be read; it is kept as " + path + ".bad");
     }
     options.save_path = path;
+    options.notices = std::move(notices);
     const std::optional<std::string> before = read.problem ? std::nullopt : read.text;
-    const int status = in_terminal(options, [&](App& app) {
-        std::string told;
-        for (const std::string& n : notices)
-            told += (told.empty() ? "" : "  ") + n;
-        if (!told.empty())
-            app.tell(told);
-    });
+    const int status = in_terminal(options, [](App&) {});
     tell_where_saved(path, before, false);
     return status;
 }
@@ -340,8 +332,8 @@ int run_game(const std::vector<std::string>& args) {
 int run_practice(const std::vector<std::string>& args) {
     GameOptions defaults;
     std::string config_error;
+    std::vector<std::string> warnings;
     if (const auto config = read_whole_file(config_path(), config_error)) {
-        std::vector<std::string> warnings;
         if (const auto bad = apply_config(*config, defaults, warnings)) {
             std::fprintf(stderr, "%s:%s\n", config_path().c_str(), bad->c_str());
             return 2;
@@ -349,6 +341,9 @@ int run_practice(const std::vector<std::string>& args) {
     }
     std::string error;
     auto options = parse_game_options(args, error, defaults);
+    if (options)
+        for (const std::string& w : warnings)
+            options->notices.push_back("Warning: " + w);
     if (options && (options->resume || options->watch || options->computer))
         error = "practice is one player at the table: no --resume, --vs-computer or --watch";
     constexpr const char* usage =

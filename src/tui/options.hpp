@@ -32,6 +32,8 @@ struct GameOptions {
     std::optional<Level> computer;          ///< --vs-computer [LEVEL]: the computer is player 2
     std::optional<std::uint64_t> seed;      ///< --seed S: the first rack's seed (else the clock)
     bool practice = false;                  ///< `termpool practice`: one player, no referee
+    /// News for the first message line: config warnings, where this game is saved.
+    std::vector<std::string> notices;
 
     // The match: a single game unless a race is set.
     int race_to = 1;                             ///< --race N: racks to win (1: one game)

@@ -135,32 +135,31 @@ struct View {
     std::string names[2] = {"Player 1", "Player 2"}; ///< the players
     int shooter = 1;                                 ///< whose turn it is (marker in the panel)
     Group groups[2] = {Group::open, Group::open};    ///< each player's group
-    std::vector<int> pocketed_by[2]; ///< balls each player has pocketed (not drawn: the panel
-                                     ///< lists pocketed balls by group, from `balls`)
-    std::string message;             ///< the message line (verdicts, prompts)
-    bool aiming = false;             ///< draw the cue, aim line and power bar
-    double aim_deg = 0;              ///< cue direction, degrees counter-clockwise from +x
-    double power = 0;                ///< 0..1 of the power bar
-    double speed = 0;                ///< the cue-ball speed that power gives, m/s
-    bool time_power = false;         ///< power mode: false = distance, true = oscillating bar
-    double side = 0, follow = 0;     ///< tip offsets, fractions of R (-0.5..0.5)
-    bool show_aid = true;            ///< draw the aiming aid below
-    std::vector<Vec2> cue_path;      ///< predicted path of the cue ball up to its first contact
-    bool has_ghost = false;          ///< draw a ghost ball
-    Vec2 ghost;                      ///< where the cue ball touches the first object ball
-    std::vector<Vec2> object_path;   ///< predicted direction of the object ball after contact
-    std::vector<Vec2> deflect_path;  ///< predicted direction of the cue ball after contact
-    bool show_marker = false;        ///< draw the mouse aim marker
-    Vec2 marker;                     ///< aim marker position on the table
-    int called_pocket = 0;           ///< 1..6: highlight that pocket
-    int called_ball = 0;             ///< the ball called into called_pocket (0: none named)
-    bool placing = false;            ///< ball in hand: the cue ball follows the pointer
-    bool placement_legal = true;     ///< whether the current spot is allowed
-    bool help = false;               ///< show the help overlay
-    int help_page = 0;               ///< its page, 0-based (see help_page_count)
-    int race_to = 0;                 ///< racks needed to win the match; 0: a single game
-    int racks_won[2] = {0, 0};       ///< racks each player has won in the match
-    int fouls[2] = {0, 0};           ///< consecutive fouls of each player (9-ball)
+    std::string message;                             ///< the message line (verdicts, prompts)
+    bool aiming = false;                             ///< draw the cue, aim line and power bar
+    double aim_deg = 0;             ///< cue direction, degrees counter-clockwise from +x
+    double power = 0;               ///< 0..1 of the power bar
+    double speed = 0;               ///< the cue-ball speed that power gives, m/s
+    bool time_power = false;        ///< power mode: false = distance, true = oscillating bar
+    double side = 0, follow = 0;    ///< tip offsets, fractions of R (-0.5..0.5)
+    bool show_aid = true;           ///< draw the aiming aid below
+    std::vector<Vec2> cue_path;     ///< predicted path of the cue ball up to its first contact
+    bool has_ghost = false;         ///< draw a ghost ball
+    Vec2 ghost;                     ///< where the cue ball touches the first object ball
+    std::vector<Vec2> object_path;  ///< predicted direction of the object ball after contact
+    std::vector<Vec2> deflect_path; ///< predicted direction of the cue ball after contact
+    bool show_marker = false;       ///< draw the mouse aim marker
+    Vec2 marker;                    ///< aim marker position on the table
+    int called_pocket = 0;          ///< 1..6: highlight that pocket
+    int called_ball = 0;            ///< the ball called into called_pocket (0: none named)
+    bool placing = false;           ///< ball in hand: the cue ball follows the pointer
+    bool placement_legal = true;    ///< whether the current spot is allowed
+    bool help = false;              ///< show the help overlay
+    int help_page = 0;              ///< its page, 0-based (see help_page_count)
+    int race_to = 0;                ///< racks needed to win the match; 0: a single game
+    int racks_won[2] = {0, 0};      ///< racks each player has won in the match
+    int fouls[2] = {0, 0};          ///< consecutive fouls of each player (9-ball)
+    bool practice = false;          ///< practice: one player, no groups or fouls in the panel
     std::string overlay; ///< a box of text (questions, game over), if any, clear of the balls
 };
 
