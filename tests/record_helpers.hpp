@@ -7,7 +7,9 @@
 namespace termpool::test {
 
 // The player to act makes one move on `game`, and it goes into `record` as the game would save it.
-inline void play_one_action(Game& game, ComputerPlayer (&players)[2], GameRecord& record) {
+/// `on_shot`, when given, hears each shot as a replay of the record would.
+inline void play_one_action(Game& game, ComputerPlayer (&players)[2], GameRecord& record,
+                            const ShotListener& on_shot = {}) {
     const int actor = game.chooser() != 0 ? game.chooser() : game.shooter();
     ComputerPlayer& player = players[actor - 1];
     RecordedAction action;
@@ -23,7 +25,11 @@ inline void play_one_action(Game& game, ComputerPlayer (&players)[2], GameRecord
         const ComputerShot shot = player.shot(game);
         action.strike = shot.strike;
         action.call = shot.call;
-        game.play(shot.strike, shot.call);
+        ReplayedShot heard{game.shooter(), game.is_break(), shot.call, {}};
+        heard.call.push_out = shot.call.push_out && game.push_out_allowed();
+        heard.verdict = game.play(shot.strike, shot.call);
+        if (on_shot)
+            on_shot(heard);
     }
     record.actions.push_back(action);
 }

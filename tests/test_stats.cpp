@@ -8,8 +8,10 @@
 #include <sys/wait.h>
 #include <termpool/computer.hpp>
 #include <termpool/stats.hpp>
+
 #include <unistd.h>
 
+#include "record_helpers.hpp"
 #include "rules_helpers.hpp"
 #include "tui/stats_command.hpp"
 #include "tui/stats_file.hpp"
@@ -80,30 +82,10 @@ GameRecord computer_game(GameType type, std::uint64_t seed, StatsTally& live) {
     Game game(type, make_table(record.table), record_params(record), record.breaker, seed);
     ComputerPlayer players[2] = {ComputerPlayer(Level::medium, seed),
                                  ComputerPlayer(Level::hard, seed + 1)};
-    for (int turn = 0; turn < 300 && game.winner() == 0; ++turn) {
-        const int actor = game.chooser() != 0 ? game.chooser() : game.shooter();
-        ComputerPlayer& player = players[actor - 1];
-        RecordedAction action;
-        if (game.chooser() != 0) {
-            action.kind = RecordedAction::Kind::choose;
-            action.choice = player.choose(game);
-            game.choose(action.choice);
-        } else if (game.ball_in_hand() != BallInHand::none && !game.ready_to_shoot()) {
-            action.kind = RecordedAction::Kind::place;
-            action.place = player.place_cue_ball(game);
-            game.place_cue_ball(action.place);
-        } else {
-            const ComputerShot shot = player.shot(game);
-            action.strike = shot.strike;
-            action.call = shot.call;
-            action.call.push_out = action.call.push_out && game.push_out_allowed();
-            const int shooter = game.shooter();
-            const bool was_break = game.is_break();
-            const Verdict v = game.play(shot.strike, action.call);
-            live.on_shot(shooter, was_break, action.call, v);
-        }
-        record.actions.push_back(action);
-    }
+    for (int turn = 0; turn < 300 && game.winner() == 0; ++turn)
+        test::play_one_action(game, players, record, [&](const ReplayedShot& shot) {
+            live.on_shot(shot.shooter, shot.was_break, shot.call, shot.verdict);
+        });
     return record;
 }
 

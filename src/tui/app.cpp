@@ -545,6 +545,41 @@ Grid App::frame(int width, int height) {
     return render(view, layout_, term_.caps(), width, height);
 }
 
+bool App::nudge(Vec2& spot, int key, const std::string& text) const {
+    // One cell a key; a row is as tall as two columns are wide. The keys keep the ball on
+    // the cloth, where the player can see it.
+    const double step = 1.0 / layout_.cells_per_metre, R = params_.ball_radius;
+    if (key == KEY_LEFT || text == "h")
+        spot.x -= step;
+    else if (key == KEY_RIGHT || text == "l")
+        spot.x += step;
+    else if (key == KEY_UP || text == "k")
+        spot.y += 2 * step;
+    else if (key == KEY_DOWN || text == "j")
+        spot.y -= 2 * step;
+    else
+        return false;
+    spot.x = std::clamp(spot.x, R, table_.length - R);
+    spot.y = std::clamp(spot.y, R, table_.width - R);
+    return true;
+}
+
+namespace {
+
+bool is_backspace(int key) {
+    return key == KEY_BACKSPACE || key == 127 || key == 8;
+}
+
+// Removes the last UTF-8 character of `s`.
+void erase_last_character(std::string& s) {
+    while (!s.empty() && (s.back() & 0xC0) == 0x80)
+        s.pop_back();
+    if (!s.empty())
+        s.pop_back();
+}
+
+} // namespace
+
 void App::handle_text_entry(const Input& in) {
     if (in.kind == Input::Kind::text) {
         entry_ += in.text;
@@ -553,12 +588,8 @@ void App::handle_text_entry(const Input& in) {
     }
     if (in.kind != Input::Kind::key)
         return;
-    if (in.key == KEY_BACKSPACE || in.key == 127 || in.key == 8) {
-        // Remove one UTF-8 character.
-        while (!entry_.empty() && (entry_.back() & 0xC0) == 0x80)
-            entry_.pop_back();
-        if (!entry_.empty())
-            entry_.pop_back();
+    if (is_backspace(in.key)) {
+        erase_last_character(entry_);
     } else if (in.key == key_enter || in.key == KEY_ENTER) {
         // At the start, player 2 may be the computer: "computer" or "computer LEVEL".
         if (mode_ == Mode::names && entry_player_ == 2 && entry_.starts_with("computer")) {
@@ -621,9 +652,8 @@ void App::handle_race_entry(const Input& in) {
     }
     if (in.kind != Input::Kind::key)
         return;
-    if (in.key == KEY_BACKSPACE || in.key == 127 || in.key == 8) {
-        if (!entry_.empty())
-            entry_.pop_back();
+    if (is_backspace(in.key)) {
+        erase_last_character(entry_);
         return;
     }
     if (in.key != key_enter && in.key != KEY_ENTER && in.key != key_escape)
@@ -745,24 +775,10 @@ void App::handle_key(int key, const std::string& text) {
         }
         return;
     }
-    case Mode::placing: {
-        const double step = 1.0 / layout_.cells_per_metre;
-        if (key == KEY_LEFT || text == "h")
-            place_.x -= step;
-        else if (key == KEY_RIGHT || text == "l")
-            place_.x += step;
-        else if (key == KEY_UP || text == "k")
-            place_.y += 2 * step;
-        else if (key == KEY_DOWN || text == "j")
-            place_.y -= 2 * step;
-        else if (key == key_enter || key == KEY_ENTER || text == " ")
+    case Mode::placing:
+        if (!nudge(place_, key, text) && (key == key_enter || key == KEY_ENTER || text == " "))
             try_place(place_);
-        // The keys keep the cue ball on the cloth, where the player can see it.
-        const double R = params_.ball_radius;
-        place_.x = std::clamp(place_.x, R, table_.length - R);
-        place_.y = std::clamp(place_.y, R, table_.width - R);
         return;
-    }
     case Mode::aiming:
         if (practice_ && handle_practice_key(text))
             return;

@@ -45,6 +45,7 @@ private:
     void start_turn();
     void start_aiming();
     bool try_place(Vec2 spot);
+    bool nudge(Vec2& spot, int key, const std::string& text) const;
     void shoot();
     void play(const Strike& strike, const ShotCall& call);
     bool place(Vec2 spot);

@@ -128,19 +128,8 @@ void App::handle_moving_key(int key, const std::string& text) {
     }
     if (held_ball_ < 0)
         return;
-    const double step = 1.0 / layout_.cells_per_metre, R = params_.ball_radius;
-    if (key == key_left || text == "h")
-        held_at_.x -= step;
-    else if (key == key_right || text == "l")
-        held_at_.x += step;
-    else if (key == key_up || text == "k")
-        held_at_.y += 2 * step;
-    else if (key == key_down || text == "j")
-        held_at_.y -= 2 * step;
-    else if (key == key_enter || text == " ")
+    if (!nudge(held_at_, key, text) && (key == key_enter || text == " "))
         put_down(held_at_);
-    held_at_.x = std::clamp(held_at_.x, R, table_.length - R);
-    held_at_.y = std::clamp(held_at_.y, R, table_.width - R);
 }
 
 void App::handle_moving_mouse(const Input& in) {

@@ -164,8 +164,6 @@ Palette palette(Colour c) {
     return {-1, -1};
 }
 
-const int key_left = KEY_LEFT, key_right = KEY_RIGHT, key_up = KEY_UP, key_down = KEY_DOWN;
-
 void restore_terminal_modes() {
     if (motion_tracking_on)
         write_raw(mouse_motion_off);

@@ -28,8 +28,6 @@ struct Input {
 /// Keys with names curses does not have.
 inline constexpr int key_enter = '\n';
 inline constexpr int key_escape = 27;
-/// The arrow keys' codes in Input::key, for code that does not include curses.
-extern const int key_left, key_right, key_up, key_down;
 
 /// How a colour role is shown: an xterm-256 index and the 8-colour fallback (a curses colour
 /// number 0..7, COLOR_BLACK..COLOR_WHITE); -1 for the terminal's default in both.
