@@ -155,3 +155,33 @@ TEST_CASE("two computers in a race go on to the next rack by themselves", "[tui]
     REQUIRE(t.wait_for_text("Race to 3"));
     CHECK(t.wait_for_text("Rack 2: ", 10));
 }
+
+TEST_CASE("termpool replay plays a whole match back, rack by rack", "[tui][e2e][race]") {
+    if (!tmux_session::have_tmux())
+        return;
+    ScratchDir dir("termpool-test");
+    const GameRecord match = race_record(2, 3, 11);
+    auto replayed = replay_match(match);
+    REQUIRE(std::holds_alternative<ReplayedMatch>(replayed));
+    REQUIRE(std::get<ReplayedMatch>(replayed).rack >= 2);
+    const std::string file = dir.path + "/match.save";
+    std::ofstream(file) << format_record(match);
+    Tmux t;
+    t.start(game(dir.path, "replay " + file));
+    REQUIRE(t.wait_for_text("Replay, shot 1 of"));
+    CHECK(t.screen().find("race to 2") != std::string::npos);
+    // Skip through every shot; the replay goes on into the next racks and ends.
+    bool ended = false;
+    for (int i = 0; i < 300 && !ended; ++i) {
+        t.keys("x");
+        std::this_thread::sleep_for(std::chrono::milliseconds(60));
+        ended = t.screen().find("Replay ended") != std::string::npos;
+    }
+    CHECK(ended);
+    // At the end the panel has the final score.
+    const MatchState& score = std::get<ReplayedMatch>(replayed).score;
+    const std::string s = t.screen();
+    CAPTURE(s);
+    CHECK(s.find("Ann " + std::to_string(score.racks_won[0])) != std::string::npos);
+    CHECK(s.find("Bob " + std::to_string(score.racks_won[1])) != std::string::npos);
+}
