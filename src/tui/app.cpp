@@ -74,6 +74,8 @@ App::App(Terminal& terminal, const GameOptions& options)
     } else if (!options.names[1] && !computers_[1] && !practice_) {
         entry_player_ = 2;
     }
+    if (entry_player_ != 0)
+        message_.clear(); // "who breaks" comes once the names are known
     mode_ = entry_player_ != 0 ? Mode::names : Mode::placing;
     mode_after_entry_ = Mode::placing;
     if (mode_ != Mode::names)
@@ -516,7 +518,7 @@ void App::compose(View& v) const {
     }
     if (mode_ == Mode::game_over)
         v.overlay = game_over_text();
-    if (mode_ == Mode::names || entry_player_ != 0) {
+    if (entry_player_ != 0) {
         std::string text = "termpool \u2014 " + std::string(game_type_name(game_.type())) +
                            "\n\nName of player " + std::to_string(entry_player_) + ": " + entry_ +
                            "_\n(Enter keeps \"" + names_[entry_player_ - 1] + "\")";
