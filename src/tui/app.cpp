@@ -66,7 +66,6 @@ App::App(Terminal& terminal, const GameOptions& options)
             options.game == GameType::nine_ball ? RackType::nine_ball : RackType::eight_ball;
         practice_.emplace(table_, params_, rack, seed_++);
         sync_practice();
-        message_ = "Practice: no referee. m moves a ball, r takes a shot again, t racks again";
     }
     // Ask for the names the command line did not give (practice has one player).
     if (!options.names[0] && !computers_[0]) {
@@ -153,8 +152,9 @@ Vec2 App::cue_position() const {
 }
 
 void App::begin() {
-    if (!practice_)
-        message_ = names_[game_.shooter() - 1] + " breaks: place the cue ball in the kitchen";
+    message_ = practice_
+                   ? "Practice: no referee. m moves a ball, r takes a shot again, t racks again"
+                   : names_[game_.shooter() - 1] + " breaks: place the cue ball in the kitchen";
     // News from before the game (a config warning, where it is saved) leads the first line.
     for (auto n = options_.notices.rbegin(); n != options_.notices.rend(); ++n)
         message_ = *n + "  " + message_;
