@@ -5,7 +5,9 @@
 #include <fstream>
 #include <string>
 #include <sys/wait.h>
+#include <termpool/record.hpp>
 
+#include "record_helpers.hpp"
 #include "tmux_session.hpp"
 
 using namespace tmux_session;
@@ -27,7 +29,7 @@ bool wait_for_pane(const Tmux& t, const std::string& session, const std::string&
 }
 
 // `termpool ARGS` with saves in `dir`, both streams, and its exit status.
-std::pair<int, std::string> termpool(const ScratchDir& dir, const std::string& args) {
+std::pair<int, std::string> run_termpool(const ScratchDir& dir, const std::string& args) {
     const std::string command = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
                                 " '" + termpool_binary() + "' " + args + " </dev/null 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
@@ -68,7 +70,7 @@ TEST_CASE("two games at once keep two saves; --resume lists them and picks one",
     CHECK(file_text(second).find("player1 Cy") != std::string::npos);
 
     // While both run, neither save is offered to a third.
-    const auto busy = termpool(dir, "--resume");
+    const auto busy = run_termpool(dir, "--resume");
     CHECK(busy.first == 1);
     CHECK(busy.second.find("in use by another termpool game") != std::string::npos);
 
@@ -84,7 +86,7 @@ TEST_CASE("two games at once keep two saves; --resume lists them and picks one",
     CHECK(wait_for_pane(t, "other", "continue it with: termpool --resume 2"));
 
     // Both are listed, with their players; --resume 2 continues Cy's.
-    const auto listed = termpool(dir, "--resume");
+    const auto listed = run_termpool(dir, "--resume");
     CHECK(listed.first == 0);
     CHECK(listed.second.find("1  Ann v Bob, 8ball, 9ft, 0 shots, saved ") != std::string::npos);
     CHECK(listed.second.find("2  Cy v Dee, 8ball, 9ft, 0 shots, saved ") != std::string::npos);
@@ -136,4 +138,93 @@ TEST_CASE("replay without a file shows the save; --resume FILE; a config warning
     t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + termpool_binary() +
            " --player1 Cy --player2 Dee; sleep 60\"");
     CHECK(t.wait_for_text("unknown key 'flavour'"));
+}
+
+namespace {
+
+// A whole 8-ball game between two computers, as the game saves it, under the names Ann and Bob;
+// `actions` > 0 stops it after that many actions (unfinished).
+std::string saved_game(int actions = 0) {
+    termpool::GameRecord record;
+    record.seed = 3;
+    record.names[0] = "Ann";
+    record.names[1] = "Bob";
+    termpool::Game game(record.game, termpool::make_table(record.table),
+                        termpool::record_params(record), 1, record.seed);
+    termpool::ComputerPlayer players[2] = {termpool::ComputerPlayer(termpool::Level::pro, 1),
+                                           termpool::ComputerPlayer(termpool::Level::pro, 2)};
+    for (int turn = 0; turn < 300 && game.winner() == 0 && (actions == 0 || turn < actions); ++turn)
+        termpool::test::play_one_action(game, players, record);
+    return termpool::format_record(record);
+}
+
+} // namespace
+
+TEST_CASE("a new game takes a finished save's place, never an unfinished one's", "[tui][e2e]") {
+    if (!have_tmux()) {
+        WARN("tmux is missing: the saves test is skipped");
+        return;
+    }
+    const ScratchDir dir("termpool-slots");
+    const std::string env = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
+                            " TERM=xterm-256color LANG=C.UTF-8 HOME=" + dir.path + " ";
+    const std::string first = dir.path + "/termpool/game.save";
+    std::system(("mkdir -p " + dir.path + "/termpool").c_str());
+    const auto play_a_placement = [&](const std::string& expect) {
+        Tmux t;
+        t.start(env + termpool_binary() + " --player1 Cy --player2 Dee; sleep 60");
+        REQUIRE(t.wait_for_text("place the cue ball"));
+        CHECK(t.screen().find(expect) != std::string::npos);
+        t.keys("Enter");
+        REQUIRE(t.wait_for_text("[ shoot ]"));
+        t.keys("q");
+        t.keys("y");
+        REQUIRE(t.wait_for_text("Game saved in"));
+    };
+
+    // A finished game: the new one is saved over it, in game.save.
+    std::ofstream(first) << saved_game();
+    play_a_placement("Cy breaks");
+    CHECK(file_text(first).find("player1 Cy") != std::string::npos);
+
+    // An unfinished game: it stays for --resume, and the new game goes to game-2.save.
+    const std::string unfinished = saved_game(4);
+    std::ofstream(first) << unfinished;
+    play_a_placement("An unfinished game is kept for termpool --resume");
+    CHECK(file_text(first) == unfinished);
+    CHECK(file_text(dir.path + "/termpool/game-2.save").find("player1 Cy") != std::string::npos);
+
+    // A save that is not a game goes aside, never over an older one kept before.
+    std::ofstream(first) << "termpool-record 1\ngame snooker\n";
+    std::ofstream(first + ".bad") << "kept before\n";
+    std::remove((dir.path + "/termpool/game-2.save").c_str());
+    play_a_placement("it is kept as");
+    CHECK(file_text(first + ".bad") == "kept before\n");
+    CHECK(file_text(first + ".bad.1") == "termpool-record 1\ngame snooker\n");
+}
+
+TEST_CASE("--resume lists a race with its score", "[tui][e2e][race]") {
+    const ScratchDir dir("termpool-race-list");
+    std::system(("mkdir -p " + dir.path + "/termpool").c_str());
+    // Rack 1 of a race to 2 won (a single game's record with a race line is a race), and an
+    // unfinished game beside it.
+    termpool::GameRecord race;
+    race.seed = 3;
+    race.names[0] = "Ann";
+    race.names[1] = "Bob";
+    race.race_to = 2;
+    termpool::Game game(race.game, termpool::make_table(race.table), termpool::record_params(race),
+                        1, race.seed);
+    termpool::ComputerPlayer players[2] = {termpool::ComputerPlayer(termpool::Level::pro, 1),
+                                           termpool::ComputerPlayer(termpool::Level::pro, 2)};
+    for (int turn = 0; turn < 300 && game.winner() == 0; ++turn)
+        termpool::test::play_one_action(game, players, race);
+    REQUIRE(game.winner() != 0);
+    std::ofstream(dir.path + "/termpool/game.save") << termpool::format_record(race);
+    std::ofstream(dir.path + "/termpool/game-2.save") << saved_game(2);
+    const auto listed = run_termpool(dir, "--resume");
+    CHECK(listed.first == 0);
+    const std::string score = game.winner() == 1 ? "race to 2 at 1-0" : "race to 2 at 0-1";
+    CHECK(listed.second.find(score) != std::string::npos);
+    CHECK(listed.second.find("won by") == std::string::npos);
 }

@@ -76,7 +76,6 @@ App::App(Terminal& terminal, const GameOptions& options)
     if (entry_player_ != 0)
         message_.clear(); // "who breaks" comes once the names are known
     mode_ = entry_player_ != 0 ? Mode::names : Mode::placing;
-    mode_after_entry_ = Mode::placing;
     if (mode_ != Mode::names)
         begin();
 }
@@ -163,7 +162,6 @@ void App::begin() {
 
 void App::start_turn() {
     shown_balls_ = game_.balls();
-    overlay_.clear();
     safety_ = false;
     push_out_ = false;
     pocket_chosen_ = false;
@@ -1054,7 +1052,7 @@ void App::handle_replay_key(const Input& in) {
     }
 }
 
-void App::resume(const GameRecord& record) {
+void App::resume(const GameRecord& record, ResumedGame state) {
     record_ = record;
     for (int p = 0; p < 2; ++p) {
         names_[p] = record.names[p];
@@ -1063,13 +1061,28 @@ void App::resume(const GameRecord& record) {
         else
             computers_[p].reset();
     }
-    // The panel's pocketed balls and the score are not saved: they follow from the actions.
-    replay_from(record_);
+    game_ = std::move(state.match.game);
+    match_ = state.match.score;
+    rack_ = state.match.rack;
+    rack_breaker_ = state.match.rack_breaker;
+    tally_ = state.tally;
     entry_player_ = 0;
-    message_ = "Game resumed: " + names_[game_.shooter() - 1] + " to play";
+    // Where the game stands comes first here: the player needs it before any news.
+    message_ = "Game resumed: " + resumed_words();
     for (const std::string& n : options_.notices)
         message_ += "  " + n;
     start_turn();
+}
+
+std::string App::resumed_words() const {
+    if (const int winner = game_.winner()) {
+        if (match_.is_race() && match_.match_winner() == 0)
+            return names_[winner - 1] + " won rack " + std::to_string(rack_);
+        return names_[winner - 1] + " won";
+    }
+    if (const int chooser = game_.chooser())
+        return names_[chooser - 1] + " to choose";
+    return names_[game_.shooter() - 1] + " to play";
 }
 
 } // namespace termpool::tui

@@ -18,6 +18,12 @@
 
 namespace termpool::tui {
 
+/// A saved game or match as it stands, replayed once by whoever read the save.
+struct ResumedGame {
+    ReplayedMatch match; ///< the current rack, the score and who broke it
+    StatsTally tally;    ///< the players' figures so far
+};
+
 /// One session at the table.
 class App {
 public:
@@ -25,9 +31,8 @@ public:
     App(Terminal& terminal, const GameOptions& options);
     /// Runs until the players quit or a signal arrives; returns the exit status.
     int run();
-    /// Continues a saved game (or match) from where `record` stands; `record` must replay
-    /// (game_main checks that before the terminal starts).
-    void resume(const GameRecord& record);
+    /// Continues a saved game (or match): `record`, and `state`, what it replayed to.
+    void resume(const GameRecord& record, ResumedGame state);
     /// Plays a saved game back instead of playing: space pauses, Left/Right step a shot.
     void start_replay(const GameRecord& record);
 
@@ -53,6 +58,7 @@ private:
     void save();
     void rewind_to(std::size_t action);
     bool replay_from(const GameRecord& record);
+    std::string resumed_words() const;
     void replay_step();
     void handle_replay_key(const Input& in);
     bool computer_to_act() const;
@@ -100,7 +106,6 @@ private:
     int entry_player_ = 0; // 1 or 2 while a name is being typed
     std::string entry_;
     std::string entry_error_;
-    Mode mode_after_entry_ = Mode::placing;
     bool asking_race_ = false; // the name prompt's last question: the race length
 
     // Overlays.
@@ -162,9 +167,7 @@ private:
     std::size_t next_action_ = 0; // replay: the next action of record_ to show
 
     std::string message_;
-    std::string notice_;             // told before the first message
     Clock::time_point game_over_at_; // when the last rack ended
-    std::string overlay_;
 };
 
 } // namespace termpool::tui

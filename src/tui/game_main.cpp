@@ -11,12 +11,14 @@
 
 #include "tui/app.hpp"
 #include "tui/config.hpp"
+#include "tui/keep_aside.hpp"
 #include "tui/options.hpp"
 #include "tui/save_file.hpp"
 #include "tui/save_slots.hpp"
 
 #include "tui/terminal.hpp"
 #include <termpool/record.hpp>
+#include <termpool/stats.hpp>
 
 namespace termpool::tui {
 namespace {
@@ -47,10 +49,10 @@ void print_game_usage(std::FILE* out) {
     std::fprintf(out, "usage: termpool [OPTIONS]   (commands: termpool --help)\n%s", options_usage);
 }
 
-// A saved game, read and replayed to where it stands.
+// A saved game or match, read and replayed (once) to where it stands.
 struct LoadedGame {
     GameRecord record;
-    Game game;
+    ResumedGame state;
 };
 
 std::variant<LoadedGame, RecordError> load_game(const std::string& text) {
@@ -58,10 +60,20 @@ std::variant<LoadedGame, RecordError> load_game(const std::string& text) {
     if (auto* problem = std::get_if<RecordError>(&parsed))
         return *problem;
     GameRecord& record = std::get<GameRecord>(parsed);
-    auto replayed = replay_record(record);
+    StatsTally tally;
+    auto replayed = replay_match(record, [&](const ReplayedShot& shot) {
+        tally.on_shot(shot.shooter, shot.was_break, shot.call, shot.verdict);
+    });
     if (auto* problem = std::get_if<RecordError>(&replayed))
         return *problem;
-    return LoadedGame{std::move(record), std::move(std::get<Game>(replayed))};
+    return LoadedGame{std::move(record),
+                      ResumedGame{std::move(std::get<ReplayedMatch>(replayed)), tally}};
+}
+
+// True when the save holds a game or match that is over: a new game may take its place.
+bool finished(const LoadedGame& saved) {
+    const ReplayedMatch& m = saved.state.match;
+    return m.score.is_race() ? m.score.match_winner() != 0 : m.game.winner() != 0;
 }
 
 // A save read from disk, or why not: missing (nothing), unreadable (error), or not a game
@@ -70,8 +82,16 @@ struct SaveRead {
     std::optional<std::string> text;
     std::string error;
     std::optional<RecordError> problem;
+    std::string kept_as;       // where a save that is not a game went
+    std::string kept_as_error; // why it could not be moved there
     std::optional<LoadedGame> loaded;
 };
+
+// Where a save that is not a game was kept, in words.
+std::string kept_words(const SaveRead& r) {
+    return r.kept_as.empty() ? "it could not be moved aside (" + r.kept_as_error + ")"
+                             : "it is kept as " + r.kept_as;
+}
 
 SaveRead read_save(const std::string& path) {
     SaveRead r;
@@ -81,18 +101,25 @@ SaveRead read_save(const std::string& path) {
     auto result = load_game(*r.text);
     if (auto* problem = std::get_if<RecordError>(&result)) {
         r.problem = *problem;
-        if (slot_of(path) != 0)
-            std::rename(path.c_str(), (path + ".bad").c_str());
+        // A slot's save that cannot be read is moved aside, never over an older one.
+        if (slot_of(path) != 0) {
+            std::string why;
+            if (const auto kept = keep_aside(path, why))
+                r.kept_as = *kept;
+            else
+                r.kept_as_error = why;
+        }
     } else {
         r.loaded.emplace(std::move(std::get<LoadedGame>(result)));
     }
     return r;
 }
 
-void report_bad_save(const std::string& path, const RecordError& problem) {
-    std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), problem.line, problem.message.c_str());
+void report_bad_save(const std::string& path, const SaveRead& read) {
+    std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), read.problem->line,
+                 read.problem->message.c_str());
     if (slot_of(path) != 0)
-        std::fprintf(stderr, "termpool: kept it as %s.bad\n", path.c_str());
+        std::fprintf(stderr, "termpool: %s\n", kept_words(read).c_str());
 }
 
 // The options a record was played with; how it is shown (ASCII, colour) stays as given.
@@ -157,10 +184,14 @@ std::string describe(int slot, const std::string& path, const LoadedGame& saved)
     const auto shots = std::count_if(r.actions.begin(), r.actions.end(), [](const auto& a) {
         return a.kind == RecordedAction::Kind::shot;
     });
-    const int winner = saved.game.winner();
-    const std::string progress = winner != 0
-                                     ? "won by " + r.names[winner - 1]
-                                     : std::to_string(shots) + (shots == 1 ? " shot" : " shots");
+    const ReplayedMatch& m = saved.state.match;
+    const int winner = m.score.is_race() ? m.score.match_winner() : m.game.winner();
+    std::string progress = winner != 0 ? "won by " + r.names[winner - 1]
+                                       : std::to_string(shots) + (shots == 1 ? " shot" : " shots");
+    if (m.score.is_race() && winner == 0)
+        progress += ", race to " + std::to_string(m.score.race_to) + " at " +
+                    std::to_string(m.score.racks_won[0]) + "-" +
+                    std::to_string(m.score.racks_won[1]);
     char when[32] = "";
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0) {
@@ -205,7 +236,7 @@ std::variant<Chosen, int> resume_named(const std::string& which) {
     }
     SaveRead read = read_save(path);
     if (read.problem) {
-        report_bad_save(path, *read.problem);
+        report_bad_save(path, read);
         return 2;
     }
     if (!read.loaded) {
@@ -230,7 +261,7 @@ std::variant<Chosen, int> resume_only() {
         }
         SaveRead read = read_save(path);
         if (read.problem) {
-            report_bad_save(path, *read.problem);
+            report_bad_save(path, read);
             bad = true;
         } else if (read.loaded) {
             free.push_back(Chosen{std::move(lock), std::move(*read.loaded)});
@@ -264,24 +295,34 @@ int resume_game(const GameOptions& options, const std::vector<std::string>& noti
     GameOptions resumed = options_from(chosen.game.record, options);
     resumed.save_path = path;
     resumed.notices = notices;
-    const int status = in_terminal(resumed, [&](App& app) { app.resume(chosen.game.record); });
+    const int status = in_terminal(
+        resumed, [&](App& app) { app.resume(chosen.game.record, std::move(chosen.game.state)); });
     tell_where_saved(path, std::nullopt, true);
     return status;
 }
 
 // A new game in the first save no other game holds; `notices` are shown in the game.
 int new_game(GameOptions options, std::vector<std::string> notices) {
-    const SaveLock lock = claim_free_slot();
+    // A slot is taken only when its save is missing, over, or not a game at all (moved aside
+    // then): a game left unfinished stays for --resume.
+    SaveRead read;
+    bool skipped = false;
+    const SaveLock lock = claim_free_slot([&](const std::string& slot) {
+        read = read_save(slot);
+        const bool free = read.problem || (!read.text && read.error.empty()) ||
+                          (read.loaded && finished(*read.loaded));
+        skipped |= !free;
+        return free;
+    });
     const std::string& path = lock.path();
     if (slot_of(path) > 1)
-        notices.push_back("Another termpool game is running: this one is saved in " +
-                          display_path(path));
-    // A save that cannot be read is never overwritten: it is kept beside as NAME.bad.
-    const SaveRead read = read_save(path);
+        notices.push_back(std::string(skipped ? "An unfinished game is kept for termpool --resume"
+                                              : "Another termpool game is running") +
+                          ": this one is saved in " + display_path(path));
     if (read.problem) {
         std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), read.problem->line,
                      read.problem->message.c_str());
-        notices.push_back("The old save could not be read; it is kept as " + path + ".bad");
+        notices.push_back("The old save could not be read; " + kept_words(read));
     }
     options.save_path = path;
     options.notices = std::move(notices);

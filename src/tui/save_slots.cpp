@@ -102,11 +102,11 @@ SaveLock& SaveLock::operator=(SaveLock&& other) noexcept {
     return *this;
 }
 
-SaveLock claim_free_slot() {
+SaveLock claim_free_slot(const std::function<bool(const std::string& path)>& may_take) {
     make_directories(save_dir());
     for (int slot = 1; slot < max_slots; ++slot) {
         SaveLock lock(slot_path(slot));
-        if (lock.state() == SaveLock::State::held)
+        if (lock.state() == SaveLock::State::held && may_take(lock.path()))
             return lock;
         if (lock.state() == SaveLock::State::unavailable)
             return lock; // no locks here at all: play unlocked, as before locks

@@ -3,6 +3,7 @@
 // second game started beside the first is saved in game-2.save instead of overwriting it.
 // The saves are numbered slots in the save directory: 1 is game.save, N is game-N.save.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -50,9 +51,10 @@ private:
     State state_ = State::unavailable;
 };
 
-/// The first slot no other game holds, locked: game.save unless another game runs in it. The
-/// save directory is created. Where no lock can be made (a read-only directory) the slot
-/// comes back unlocked (State::unavailable), and the game plays there as before locks.
-SaveLock claim_free_slot();
+/// The first slot no other game holds and `may_take` accepts (it is asked with the slot
+/// locked), locked: game.save unless another game runs in it or it is kept. The save directory
+/// is created. Where no lock can be made (a read-only directory) the slot comes back unlocked
+/// (State::unavailable), and the game plays there as before locks.
+SaveLock claim_free_slot(const std::function<bool(const std::string& path)>& may_take);
 
 } // namespace termpool::tui
