@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cstring>
 #include <termpool/practice.hpp>
+#include <termpool/rules.hpp>
 
 #include "tmux_session.hpp"
 
@@ -142,4 +143,26 @@ TEST_CASE("termpool practice in tmux: one name, shoot, take it again, move a bal
     t.keys("y");
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     CHECK(tmux_session::file_text(dir.path + "/termpool/game.save").empty());
+}
+
+TEST_CASE("practice with a seed racks what a game with that seed breaks", "[practice]") {
+    const Table table = make_table(TableSize::nine_foot);
+    const PhysicsParams params;
+    for (const std::uint64_t seed : {1u, 9u, 12345u}) {
+        const PracticeTable p(table, params, RackType::nine_ball, seed);
+        const Game g(GameType::nine_ball, table, params, 1, seed);
+        CHECK(same_bits(p.balls(), g.balls()));
+    }
+}
+
+TEST_CASE("practice refuses the options of a game between two", "[practice][cli]") {
+    for (const char* args :
+         {"--race 3", "--player2 Bob", "--breaks winner", "--vs-computer", "--resume"}) {
+        INFO(args);
+        const std::string out =
+            tmux_session::run("'" + tmux_session::termpool_binary() + "' practice " + args +
+                              " </dev/null 2>&1; echo \"status $?\"");
+        CHECK(out.find("practice is one player at the table") != std::string::npos);
+        CHECK(out.find("status 2") != std::string::npos);
+    }
 }

@@ -18,7 +18,8 @@ namespace termpool {
 /// The balls of a practice table and the position before the last shot.
 class PracticeTable {
 public:
-    /// A new rack of `rack`, seeded like a game's, with the cue ball on the head spot.
+    /// A new rack of `rack`, the one a game seeded with `seed` breaks first, with the cue ball
+    /// on the head spot.
     PracticeTable(const Table& table, const PhysicsParams& params, RackType rack,
                   std::uint64_t seed);
 
@@ -45,7 +46,7 @@ public:
     ShotResult shoot(const Strike& strike, Trajectory* trajectory = nullptr);
     /// Puts the balls back where they were before the last shot. False when there was none.
     bool retake();
-    /// A fresh rack (the last shot cannot be taken again after it).
+    /// A fresh rack, as the constructor's (the last shot cannot be taken again after it).
     void rerack(std::uint64_t seed);
 
 private:

@@ -24,6 +24,12 @@ inline constexpr double rack_gap = 0.00001;
 /// that the jitter made overlap are then pushed apart.
 inline constexpr double rack_jitter = 0.0001;
 
+/// The rack seed a game seeded with `game_seed` uses for its rack number `rerack` (0 for the
+/// first, then one more for each re-rack), so that re-racks differ but replay the same.
+inline std::uint64_t game_rack_seed(std::uint64_t game_seed, int rerack) {
+    return game_seed * 1000003ULL + static_cast<std::uint64_t>(rerack);
+}
+
 /// The object balls racked with the apex on the foot spot and the cue ball on the head spot.
 /// Without a seed the order is fixed; with one, the free positions are shuffled and every ball
 /// is moved by up to `rack_jitter`.

@@ -33,8 +33,7 @@ Game Game::from_position(GameType type, const Table& table, const PhysicsParams&
 void Game::rerack(int new_breaker) {
     const RackType rack = type_ == GameType::nine_ball ? RackType::nine_ball : RackType::eight_ball;
     // Each rack of a game gets its own seed, so re-racks differ but replay the same.
-    balls_ =
-        make_rack(table_, params_, rack, seed_ * 1000003ULL + static_cast<std::uint64_t>(racks_));
+    balls_ = make_rack(table_, params_, rack, game_rack_seed(seed_, racks_));
     ++racks_;
     breaker_ = shooter_ = new_breaker;
     is_break_ = true;

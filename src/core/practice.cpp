@@ -11,7 +11,7 @@ PracticeTable::PracticeTable(const Table& table, const PhysicsParams& params, Ra
 }
 
 void PracticeTable::rerack(std::uint64_t seed) {
-    balls_ = make_rack(table_, params_, rack_, seed);
+    balls_ = make_rack(table_, params_, rack_, game_rack_seed(seed, 0));
     before_shot_.reset();
     is_break_ = was_break_ = true;
 }

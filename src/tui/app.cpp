@@ -64,7 +64,7 @@ App::App(Terminal& terminal, const GameOptions& options)
     if (options.practice) {
         const RackType rack =
             options.game == GameType::nine_ball ? RackType::nine_ball : RackType::eight_ball;
-        practice_.emplace(table_, params_, rack, seed_++);
+        practice_.emplace(table_, params_, rack, record_.seed); // the rack a game would have
         sync_practice();
     }
     // Ask for the names the command line did not give (practice has one player).
@@ -460,7 +460,7 @@ void App::compose(View& v) const {
     v.groups[0] = game_.group_of(1);
     v.groups[1] = game_.group_of(2);
     v.practice = practice_.has_value();
-    v.race_to = match_.is_race() ? match_.race_to : 0;
+    v.race_to = match_.is_race() && !practice_ ? match_.race_to : 0;
     v.racks_won[0] = match_.racks_won[0];
     v.racks_won[1] = match_.racks_won[1];
     if (game_.type() == GameType::nine_ball) {

@@ -385,8 +385,12 @@ int run_practice(const std::vector<std::string>& args) {
     if (options)
         for (const std::string& w : warnings)
             options->notices.push_back("Warning: " + w);
-    if (options && (options->resume || options->watch || options->computer))
-        error = "practice is one player at the table: no --resume, --vs-computer or --watch";
+    const bool two_players = std::any_of(args.begin(), args.end(), [](const std::string& a) {
+        return a == "--player2" || a == "--race" || a == "--breaks";
+    });
+    if (options && (options->resume || options->watch || options->computer || two_players))
+        error = "practice is one player at the table: no --player2, --race, --breaks, --resume, "
+                "--vs-computer or --watch";
     constexpr const char* usage =
         "usage: termpool practice [--game 8ball|8ball-bar|9ball] [--table 7ft|8ft|9ft]\n"
         "                         [--player1 NAME] [--seed S] [--friction MODEL]\n"
@@ -402,6 +406,7 @@ int run_practice(const std::vector<std::string>& args) {
         return 2;
     }
     options->practice = true;
+    options->race_to = 1; // a config file's race is for games
     return in_terminal(*options, [](App&) {});
 }
 
