@@ -228,3 +228,23 @@ TEST_CASE("--resume lists a race with its score", "[tui][e2e][race]") {
     CHECK(listed.second.find(score) != std::string::npos);
     CHECK(listed.second.find("won by") == std::string::npos);
 }
+
+TEST_CASE("a save that fails stays on the message line until one works", "[tui][e2e]") {
+    if (!have_tmux()) {
+        WARN("tmux is missing: the saves test is skipped");
+        return;
+    }
+    // The state directory's termpool is a file: no save can be written there (even by root).
+    const ScratchDir dir("termpool-nosave");
+    std::ofstream(dir.path + "/termpool") << "not a directory\n";
+    Tmux t;
+    t.start("env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
+            " TERM=xterm-256color LANG=C.UTF-8 " + termpool_binary() +
+            " --player1 Ann --player2 Bob; sleep 60");
+    REQUIRE(t.wait_for_text("place the cue ball"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    // The placement was saved (or not) before the next message: the failure still shows.
+    CHECK(t.wait_for_text("Could not save"));
+    CHECK(t.screen().find("Ann: aim") != std::string::npos);
+}

@@ -178,10 +178,6 @@ void App::start_turn() {
         mode_ = Mode::choosing;
         return;
     }
-    // WPA 9-ball: a player on two fouls must be told before the shot that a third loses.
-    if (game_.type() == GameType::nine_ball && game_.consecutive_fouls(game_.shooter()) >= 2)
-        message_ += (message_.empty() ? "" : "; ") + names_[game_.shooter() - 1] +
-                    " is on two fouls: a third in a row loses the game";
     const Ball cue = [&] {
         for (const Ball& b : game_.balls())
             if (b.id == 0)
@@ -192,6 +188,7 @@ void App::start_turn() {
         game_.ball_in_hand() != BallInHand::none &&
         (cue.state == MotionState::pocketed || !game_.legal_placement(cue.position));
     if (game_.ball_in_hand() != BallInHand::none) {
+        warn_of_third_foul();
         mode_ = Mode::placing;
         place_ = must_place ? (game_.legal_placement(table_.head_spot())
                                    ? table_.head_spot()
@@ -202,9 +199,17 @@ void App::start_turn() {
     start_aiming();
 }
 
+void App::warn_of_third_foul() {
+    // WPA 9-ball: a player on two fouls must be told before the shot that a third loses.
+    if (game_.type() == GameType::nine_ball && game_.consecutive_fouls(game_.shooter()) >= 2)
+        message_ += (message_.empty() ? "" : "; ") + names_[game_.shooter() - 1] +
+                    " is on two fouls: a third in a row loses the game";
+}
+
 void App::start_aiming() {
     mode_ = Mode::aiming;
     aim_at_easiest();
+    warn_of_third_foul();
     const std::string& who = names_[game_.shooter() - 1];
     if (game_.push_out_allowed()) {
         const std::string hint = "u declares a push-out";
@@ -326,9 +331,10 @@ void App::save() {
         record_.computers[p] =
             computers_[p] ? std::optional<Level>(computers_[p]->level()) : std::nullopt;
     }
-    std::string error;
-    if (!write_atomically(options_.save_path, format_record(record_), error))
-        message_ = "Could not save: " + error;
+    // A failure stays on the message line until a save works again: other messages come
+    // and go, and the player must not miss that the game is not being kept.
+    save_problem_.clear();
+    write_atomically(options_.save_path, format_record(record_), save_problem_);
 }
 
 void App::play(const Strike& strike, const ShotCall& call) {
@@ -467,7 +473,8 @@ void App::compose(View& v) const {
         v.fouls[0] = game_.consecutive_fouls(1);
         v.fouls[1] = game_.consecutive_fouls(2);
     }
-    v.message = message_;
+    v.message =
+        save_problem_.empty() ? message_ : "Could not save: " + save_problem_ + "  " + message_;
     v.help = help_;
     v.help_page = help_page_;
     if (mode_ == Mode::placing) {
@@ -548,6 +555,8 @@ Grid App::frame(int width, int height) {
 bool App::nudge(Vec2& spot, int key, const std::string& text) const {
     // One cell a key; a row is as tall as two columns are wide. The keys keep the ball on
     // the cloth, where the player can see it.
+    if (!layout_.fits)
+        return false; // no cells to step by while "please enlarge" shows
     const double step = 1.0 / layout_.cells_per_metre, R = params_.ball_radius;
     if (key == KEY_LEFT || text == "h")
         spot.x -= step;

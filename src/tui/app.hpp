@@ -49,6 +49,7 @@ private:
     void begin();
     void start_turn();
     void start_aiming();
+    void warn_of_third_foul();
     bool try_place(Vec2 spot);
     bool nudge(Vec2& spot, int key, const std::string& text) const;
     void shoot();
@@ -167,6 +168,7 @@ private:
     std::size_t next_action_ = 0; // replay: the next action of record_ to show
 
     std::string message_;
+    std::string save_problem_;       // why the last save failed, shown until one works
     Clock::time_point game_over_at_; // when the last rack ended
 };
 

@@ -94,9 +94,10 @@ Input after_escape() {
     if (!next())
         return nothing;
     if (c == 'M') {
-        // X10 mouse report: three bytes of button, column and row follow.
+        // X10 mouse report: three bytes of button, column and row follow. Read as bytes: from
+        // column 96 on they are not UTF-8, and a wide read would leave the rest as keys.
         for (int i = 0; i < 3; ++i)
-            if (!next())
+            if (getch() == ERR)
                 break;
         return nothing;
     }
