@@ -36,8 +36,8 @@ public:
     /// Puts ball `id` (on the table or pocketed) down at rest at `spot`. False, and nothing
     /// changed, when `can_put` says no or there is no such ball.
     bool put(int id, Vec2 spot);
-    /// The free spot nearest `wanted` on the line from it towards the foot of the table, for
-    /// a cue ball that went into a pocket (the head spot, unless a ball covers it).
+    /// Where ball `id` goes instead of `wanted` when a ball covers it: the first free spot on
+    /// the long string from `wanted` towards the foot, then back (as a ball is re-spotted).
     Vec2 free_spot_near(int id, Vec2 wanted) const;
 
     /// The strike to play from here: simulated, then the balls take their final places. A

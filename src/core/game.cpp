@@ -2,6 +2,7 @@
 // that every game shares. The rules of each game are in eight_ball.cpp and nine_ball.cpp.
 #include <algorithm>
 #include <termpool/rack.hpp>
+#include <termpool/spots.hpp>
 
 #include "core/shot_facts.hpp"
 
@@ -92,10 +93,7 @@ bool Game::legal_placement(Vec2 p) const {
         return false;
     if (ball_in_hand_ == BallInHand::kitchen && p.x > table_.head_string_x())
         return false;
-    return std::none_of(balls_.begin(), balls_.end(), [&](const Ball& b) {
-        return b.id != 0 && b.state != MotionState::pocketed &&
-               length_squared(b.position - p) < 4 * R * R;
-    });
+    return ball_touching(balls_, p, R, 0) < 0;
 }
 
 std::vector<Vec2> Game::legal_placements(int per_axis) const {
@@ -120,10 +118,8 @@ bool Game::place_cue_ball(Vec2 p) {
     for (Ball& b : balls_) {
         if (b.id != 0)
             continue;
-        b = Ball{};
-        b.id = 0;
         b.mass = params_.cue_mass();
-        b.position = p;
+        set_at_rest(b, p);
         return true;
     }
     Ball cue;
@@ -135,32 +131,12 @@ bool Game::place_cue_ball(Vec2 p) {
 
 void Game::spot_ball(int id) {
     // The foot spot, or the nearest free point behind it on the long string, or else in front.
-    const double R = params_.ball_radius;
     const Vec2 foot = table_.foot_spot();
-    auto free_at = [&](Vec2 p) {
-        return std::none_of(balls_.begin(), balls_.end(), [&](const Ball& b) {
-            return b.id != id && b.state != MotionState::pocketed &&
-                   length_squared(b.position - p) < 4 * R * R;
-        });
-    };
-    constexpr double step = 0.0005;
-    Vec2 spot = foot;
-    bool found = false;
-    for (double x = foot.x; !found && x <= table_.length - R; x += step)
-        if (free_at({x, foot.y}))
-            spot = {x, foot.y}, found = true;
-    for (double x = foot.x - step; !found && x >= R; x -= step)
-        if (free_at({x, foot.y}))
-            spot = {x, foot.y}, found = true;
-    for (Ball& b : balls_) {
-        if (b.id != id)
-            continue;
-        const double mass = b.mass;
-        b = Ball{};
-        b.id = id;
-        b.mass = mass;
-        b.position = spot;
-    }
+    const Vec2 spot =
+        free_spot_on_string(table_, balls_, foot, params_.ball_radius, id).value_or(foot);
+    for (Ball& b : balls_)
+        if (b.id == id)
+            set_at_rest(b, spot);
 }
 
 bool Game::choose(Choice choice) {

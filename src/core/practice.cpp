@@ -1,6 +1,5 @@
 #include <termpool/practice.hpp>
-
-#include <algorithm>
+#include <termpool/spots.hpp>
 
 namespace termpool {
 
@@ -18,12 +17,7 @@ void PracticeTable::rerack(std::uint64_t seed) {
 
 bool PracticeTable::can_put(int id, Vec2 spot) const {
     const double R = params_.ball_radius;
-    if (!on_playing_surface(table_, spot, R))
-        return false;
-    return std::none_of(balls_.begin(), balls_.end(), [&](const Ball& b) {
-        return b.id != id && b.state != MotionState::pocketed &&
-               length_squared(b.position - spot) < 4 * R * R;
-    });
+    return on_playing_surface(table_, spot, R) && ball_touching(balls_, spot, R, id) < 0;
 }
 
 bool PracticeTable::put(int id, Vec2 spot) {
@@ -32,25 +26,14 @@ bool PracticeTable::put(int id, Vec2 spot) {
     for (Ball& b : balls_) {
         if (b.id != id)
             continue;
-        const double mass = b.mass;
-        b = Ball{};
-        b.id = id;
-        b.mass = mass;
-        b.position = spot;
+        set_at_rest(b, spot);
         return true;
     }
     return false;
 }
 
 Vec2 PracticeTable::free_spot_near(int id, Vec2 wanted) const {
-    // Along the long string towards the foot, as a spotted ball is placed; then back towards
-    // the head. A full table always leaves some spot on that line in practice.
-    const double step = params_.ball_radius / 4;
-    for (double d = 0; d < table_.length; d += step)
-        for (const double x : {wanted.x + d, wanted.x - d})
-            if (can_put(id, {x, wanted.y}))
-                return {x, wanted.y};
-    return wanted;
+    return free_spot_on_string(table_, balls_, wanted, params_.ball_radius, id).value_or(wanted);
 }
 
 ShotResult PracticeTable::shoot(const Strike& strike, Trajectory* trajectory) {

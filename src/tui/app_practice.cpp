@@ -162,19 +162,12 @@ void App::handle_moving_mouse(const Input& in) {
 void App::compose_moving(View& v) const {
     if (held_ball_ < 0)
         return;
-    bool found = false;
+    // Every ball is in the list, pocketed ones too: a pocketed one comes back to be placed.
     for (Ball& b : v.balls) {
         if (b.id != held_ball_)
             continue;
         b.position = held_at_;
         b.state = MotionState::stationary;
-        found = true;
-    }
-    if (!found) {
-        Ball b;
-        b.id = held_ball_;
-        b.position = held_at_;
-        v.balls.push_back(b);
     }
     // The cue ball shows a refused spot as in ball in hand.
     v.placing = held_ball_ == 0;

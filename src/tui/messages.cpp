@@ -1,6 +1,6 @@
 #include "tui/messages.hpp"
 
-#include <algorithm>
+#include <termpool/spots.hpp>
 
 namespace termpool::tui {
 
@@ -85,13 +85,8 @@ std::string placement_problem(const Game& game, Vec2 spot) {
         return "that is off the cloth";
     if (game.ball_in_hand() == BallInHand::kitchen && spot.x > game.table().head_string_x())
         return "in the kitchen only (left of the head string)";
-    const auto& balls = game.balls();
-    const auto touched = std::find_if(balls.begin(), balls.end(), [&](const Ball& b) {
-        return b.id != 0 && b.state != MotionState::pocketed &&
-               length_squared(b.position - spot) < 4 * R * R;
-    });
-    if (touched != balls.end())
-        return "it would touch the " + std::to_string(touched->id);
+    if (const int touched = ball_touching(game.balls(), spot, R, 0); touched >= 0)
+        return "it would touch the " + std::to_string(touched);
     return "not allowed there";
 }
 
