@@ -25,8 +25,7 @@ inline void play_one_action(Game& game, ComputerPlayer (&players)[2], GameRecord
         const ComputerShot shot = player.shot(game);
         action.strike = shot.strike;
         action.call = shot.call;
-        ReplayedShot heard{game.shooter(), game.is_break(), shot.call, {}};
-        heard.call.push_out = shot.call.push_out && game.push_out_allowed();
+        ReplayedShot heard{game.shooter(), game.is_break(), game.call_as_taken(shot.call), {}};
         heard.verdict = game.play(shot.strike, shot.call);
         if (on_shot)
             on_shot(heard);

@@ -106,8 +106,10 @@ TEST_CASE("practice: a pocketed cue ball comes back to the head spot", "[practic
 
 TEST_CASE("termpool practice in tmux: one name, shoot, take it again, move a ball",
           "[practice][tui][e2e]") {
-    if (!tmux_session::have_tmux())
+    if (!tmux_session::have_tmux()) {
+        WARN("tmux is missing: this end-to-end test is skipped");
         return;
+    }
     tmux_session::ScratchDir dir("termpool-test");
     tmux_session::Tmux t;
     t.start("env XDG_STATE_HOME=" + dir.path + " TERM=xterm-256color LANG=C.UTF-8 " +

@@ -19,8 +19,8 @@ TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]
         return;
     }
     const std::string binary = termpool_binary();
-    char dir_template[] = "/tmp/termpool-e2e-XXXXXX";
-    const std::string dir = mkdtemp(dir_template);
+    const ScratchDir scratch("termpool-e2e");
+    const std::string& dir = scratch.path;
     const std::string status_file = dir + "/status";
 
     Tmux t;
@@ -75,7 +75,6 @@ TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]
     CHECK(t.flag("mouse_any_flag") == "0");
     CHECK(t.flag("mouse_button_flag") == "0");
     std::remove(status_file.c_str());
-    std::system(("rm -rf " + dir).c_str());
 }
 
 TEST_CASE("the help at 80x24: pages turn with Space, k and PgDn; Esc and q close it",
@@ -85,8 +84,8 @@ TEST_CASE("the help at 80x24: pages turn with Space, k and PgDn; Esc and q close
         return;
     }
     const std::string binary = termpool_binary();
-    char dir_template[] = "/tmp/termpool-help-XXXXXX";
-    const std::string dir = mkdtemp(dir_template);
+    const ScratchDir scratch("termpool-help");
+    const std::string& dir = scratch.path;
     const std::string status_file = dir + "/status";
     Tmux t;
     t.tmux("new-session -d -s e2e -x 80 -y 24 \"env XDG_STATE_HOME=" + dir +
@@ -119,7 +118,6 @@ TEST_CASE("the help at 80x24: pages turn with Space, k and PgDn; Esc and q close
     t.keys("y");
     CHECK(exit_status(status_file) == "0");
     std::remove(status_file.c_str());
-    std::system(("rm -rf " + dir).c_str());
 }
 
 TEST_CASE("SIGHUP during a shot leaves a save that resumes", "[tui][e2e]") {
@@ -128,8 +126,8 @@ TEST_CASE("SIGHUP during a shot leaves a save that resumes", "[tui][e2e]") {
         return;
     }
     const std::string binary = termpool_binary();
-    char dir_template[] = "/tmp/termpool-save-XXXXXX";
-    const std::string dir = mkdtemp(dir_template);
+    const ScratchDir scratch("termpool-save");
+    const std::string& dir = scratch.path;
     const std::string status_file = dir + "/status";
     const std::string save = dir + "/termpool/game.save";
     const std::string env = "env XDG_STATE_HOME=" + dir + " TERM=xterm-256color LANG=C.UTF-8 ";
@@ -156,7 +154,6 @@ TEST_CASE("SIGHUP during a shot leaves a save that resumes", "[tui][e2e]") {
     t.tmux("kill-session -t e2e");
     t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + binary + " --resume; sleep 60\"");
     CHECK(t.wait_for_text("Game resumed"));
-    std::system(("rm -rf " + dir).c_str());
 }
 
 TEST_CASE("a saved game plays back with replay", "[tui][e2e]") {
@@ -165,8 +162,8 @@ TEST_CASE("a saved game plays back with replay", "[tui][e2e]") {
         return;
     }
     const std::string binary = termpool_binary();
-    char dir_template[] = "/tmp/termpool-replay-XXXXXX";
-    const std::string dir = mkdtemp(dir_template);
+    const ScratchDir scratch("termpool-replay");
+    const std::string& dir = scratch.path;
     {
         std::ofstream out(dir + "/game.save");
         out << "termpool-record 1\ngame 8ball\ntable 9ft\nseed 5\nbreaker 1\nplayer1 Ann\n"
@@ -183,5 +180,4 @@ TEST_CASE("a saved game plays back with replay", "[tui][e2e]") {
     t.keys("q");
     const std::string status = exit_status(status_file);
     CHECK(status == "0");
-    std::system(("rm -rf " + dir).c_str());
 }

@@ -10,8 +10,10 @@ using tmux_session::ScratchDir;
 using tmux_session::Tmux;
 
 TEST_CASE("game over shows the figures and keeps them for termpool stats", "[tui][e2e][stats]") {
-    if (!tmux_session::have_tmux())
+    if (!tmux_session::have_tmux()) {
+        WARN("tmux is missing: this end-to-end test is skipped");
         return;
+    }
     ScratchDir dir("termpool-test");
     Tmux t;
     // Bar rules, rack seed 9: the full-power break at the proposed aim drops the 8, which wins.

@@ -306,5 +306,6 @@ TEST_CASE("the proposed aim never meets another ball first", "[tui]") {
     // It is offered as a one-rail kick: the cue ball meets a rail first.
     const auto kick = rank_targets(table, hidden, R, {0.6, 0.6}, {1});
     REQUIRE(kick.size() == 1);
+    CHECK(kick[0].line == TargetLine::kick);
     CHECK(preview_shot(table, hidden, R, {0.6, 0.6}, kick[0].aim_deg).cushion >= 0);
 }

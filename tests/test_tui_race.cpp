@@ -60,8 +60,10 @@ std::string game(const std::string& dir, const std::string& args) {
 } // namespace
 
 TEST_CASE("the name prompt ends with the race length", "[tui][e2e][race]") {
-    if (!tmux_session::have_tmux())
+    if (!tmux_session::have_tmux()) {
+        WARN("tmux is missing: this end-to-end test is skipped");
         return;
+    }
     ScratchDir dir("termpool-test");
     Tmux t;
     t.start(game(dir.path, "--seed 4"));
@@ -90,8 +92,10 @@ TEST_CASE("the name prompt ends with the race length", "[tui][e2e][race]") {
 }
 
 TEST_CASE("a race: the score after a rack, the next rack, the match winner", "[tui][e2e][race]") {
-    if (!tmux_session::have_tmux())
+    if (!tmux_session::have_tmux()) {
+        WARN("tmux is missing: this end-to-end test is skipped");
         return;
+    }
     ScratchDir dir("termpool-test");
     const std::string save = dir.path + "/termpool/game.save";
     // Rack 1 won, the race to 2 goes on.
@@ -143,8 +147,10 @@ TEST_CASE("a race: the score after a rack, the next rack, the match winner", "[t
 }
 
 TEST_CASE("two computers in a race go on to the next rack by themselves", "[tui][e2e][race]") {
-    if (!tmux_session::have_tmux())
+    if (!tmux_session::have_tmux()) {
+        WARN("tmux is missing: this end-to-end test is skipped");
         return;
+    }
     ScratchDir dir("termpool-test");
     GameRecord record = race_record(3, 1, 11);
     record.computers[0] = Level::easy;
@@ -157,8 +163,10 @@ TEST_CASE("two computers in a race go on to the next rack by themselves", "[tui]
 }
 
 TEST_CASE("termpool replay plays a whole match back, rack by rack", "[tui][e2e][race]") {
-    if (!tmux_session::have_tmux())
+    if (!tmux_session::have_tmux()) {
+        WARN("tmux is missing: this end-to-end test is skipped");
         return;
+    }
     ScratchDir dir("termpool-test");
     const GameRecord match = race_record(2, 3, 11);
     auto replayed = replay_match(match);

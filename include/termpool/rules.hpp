@@ -172,6 +172,11 @@ public:
     WinReason win_reason() const { return reason_; }
     /// True when a push-out may be declared on the next shot (9-ball).
     bool push_out_allowed() const { return push_out_allowed_; }
+    /// `call` as the referee takes it for the next shot: a push-out only where one is allowed.
+    ShotCall call_as_taken(ShotCall call) const {
+        call.push_out = call.push_out && push_out_allowed_;
+        return call;
+    }
     /// Consecutive fouls of `player` (9-ball three-foul rule).
     int consecutive_fouls(int player) const { return fouls_in_a_row_[player - 1]; }
     /// Balls the shooter may legally hit first now (9-ball: the lowest; 8-ball: the group, the

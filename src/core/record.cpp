@@ -327,8 +327,8 @@ replay_match(const GameRecord& r, const ShotListener& on_shot, const RackListene
         case RecordedAction::Kind::shot: {
             if (!m.game.ready_to_shoot())
                 return RecordError{a.line, "no shot can be played now"};
-            ReplayedShot shot{m.game.shooter(), m.game.is_break(), a.call, {}};
-            shot.call.push_out = a.call.push_out && m.game.push_out_allowed();
+            ReplayedShot shot{
+                m.game.shooter(), m.game.is_break(), m.game.call_as_taken(a.call), {}};
             shot.verdict = m.game.play(a.strike, a.call);
             if (on_shot)
                 on_shot(shot);

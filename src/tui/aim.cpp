@@ -271,10 +271,12 @@ std::vector<TargetChoice> rank_targets(const Table& table, const std::vector<Bal
         const Vec2 to_ball = b.position - cue;
         const std::optional<double> direct = clear_aim_at(table, balls, R, cue, b);
         TargetChoice best{b.id, 0, direct.value_or(aim_from_pointer(cue, b.position)),
-                          (direct ? no_pocket : no_clear_line) + per_metre * length(to_ball)};
+                          (direct ? no_pocket : no_clear_line) + per_metre * length(to_ball),
+                          direct ? TargetLine::straight : TargetLine::none};
         if (!direct)
             if (const auto kick = kick_aim_at(table, balls, R, cue, b))
-                best = {b.id, 0, kick->first, kick_only + per_metre * kick->second};
+                best = {b.id, 0, kick->first, kick_only + per_metre * kick->second,
+                        TargetLine::kick};
         for (const Pocket& pocket : table.pockets) {
             const Vec2 to_pocket = pocket.position - b.position;
             const double pocket_distance = length(to_pocket);
@@ -307,7 +309,7 @@ std::vector<TargetChoice> rank_targets(const Table& table, const std::vector<Bal
             if (on_the_way.ball >= 0 && on_the_way.t < pocket_distance)
                 score += blocked_pocket;
             if (score < best.difficulty)
-                best = {b.id, pocket.number, aim, score};
+                best = {b.id, pocket.number, aim, score, TargetLine::straight};
         }
         out.push_back(best);
     }

@@ -62,12 +62,20 @@ struct AimPreview {
 AimPreview preview_shot(const Table& table, const std::vector<Ball>& balls, double R, Vec2 cue,
                         double aim_deg, double aid_length = 0.6);
 
+/// How the cue ball reaches a target.
+enum class TargetLine {
+    straight, ///< straight: the cue ball meets it before any other ball
+    kick,     ///< hidden: off one rail (mirror aim)
+    none,     ///< hidden from every line tried: aimed at its centre all the same
+};
+
 /// A target ball with its easiest pocket.
 struct TargetChoice {
     int ball = 0;          ///< the object ball
     int pocket = 0;        ///< its easiest pocket 1..6, 0 when none looks makeable
     double aim_deg = 0;    ///< the aim that sends the ball there (straight at it if none)
     double difficulty = 0; ///< smaller is easier: cut angle in degrees plus distance terms
+    TargetLine line = TargetLine::straight; ///< how the aim reaches it
 };
 
 /// The legal targets (ids in `legal`, which are on the table) ranked easiest first: for each,

@@ -290,7 +290,8 @@ void App::shoot() {
     const double power = current_power();
     const Strike strike{speed_from_power(power, game_.is_break()), aim_deg_, side_, follow_};
     ShotCall call;
-    call.push_out = push_out_ && game_.push_out_allowed();
+    call.push_out = push_out_;
+    call = game_.call_as_taken(call);
     if (safety_) {
         call.call.safety = true;
     } else if (preview_ball_ > 0 && calls_pocket(game_, preview_ball_) && called_pocket_ != 0) {

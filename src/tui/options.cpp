@@ -2,7 +2,6 @@
 
 #include "tui/player_name.hpp"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -145,10 +144,9 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
             const std::string* v = value();
             if (!v)
                 return std::nullopt;
-            char* end = nullptr;
-            errno = 0;
-            const unsigned long long seed = std::strtoull(v->c_str(), &end, 10);
-            if (v->empty() || *end != '\0' || errno != 0 || v->front() == '-') {
+            std::uint64_t seed = 0;
+            const auto [end, ec] = std::from_chars(v->data(), v->data() + v->size(), seed);
+            if (ec != std::errc{} || end != v->data() + v->size()) {
                 error = "--seed takes a whole number from 0 to 18446744073709551615";
                 return std::nullopt;
             }

@@ -22,10 +22,6 @@ std::string save_dir() {
     return xdg_dir("XDG_STATE_HOME", ".local/state") + "/termpool";
 }
 
-std::string save_path() {
-    return save_dir() + "/game.save";
-}
-
 bool write_atomically(const std::string& path, const std::string& text, std::string& error) {
     const std::size_t slash = path.rfind('/');
     if (slash != std::string::npos)

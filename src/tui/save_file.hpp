@@ -10,9 +10,6 @@ namespace termpool::tui {
 /// $XDG_STATE_HOME/termpool, or ~/.local/state/termpool: where games are saved.
 std::string save_dir();
 
-/// The first save, save_dir()/game.save (see save_slots.hpp for the others).
-std::string save_path();
-
 /// Creates `dir` and its parents (mode 0700) where they are missing.
 void make_directories(const std::string& dir);
 
