@@ -102,7 +102,7 @@ void App::new_game(int breaker) {
 
 void App::next_rack() {
     const int breaker = match_.next_breaker(rack_breaker_, game_.winner());
-    const RecordedAction rack = rack_action(record_, ++rack_, breaker);
+    const RecordedAction rack = rack_action(record_, rack_ + 1, breaker);
     record_.actions.push_back(rack);
     start_rack(rack);
     save();
@@ -112,6 +112,7 @@ void App::next_rack() {
 }
 
 void App::start_rack(const RecordedAction& rack) {
+    ++rack_;
     game_ = Game(record_.game, table_, params_, rack.breaker, rack.seed);
     rack_breaker_ = rack.breaker;
     shown_balls_ = game_.balls();
