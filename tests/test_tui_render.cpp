@@ -787,6 +787,30 @@ TEST_CASE("the help hint shows at every size", "[tui]") {
         }
 }
 
+TEST_CASE("a whole group of pocketed balls and long names fit the panel", "[tui]") {
+    View v = rack_view(table);
+    v.aiming = false;
+    v.message = "Bartholomew Jr pocketed the 15 and shoots again";
+    v.names[0] = "Maximiliana";
+    v.names[1] = "Bartholomew Jr";
+    v.groups[0] = Group::solids;
+    v.groups[1] = Group::stripes;
+    v.race_to = 2;
+    v.racks_won[1] = 1;
+    for (Ball& b : v.balls)
+        if (b.id >= 9)
+            b.state = MotionState::pocketed;
+    for (const auto& [w, h] : {std::pair{80, 24}, {100, 32}, {200, 60}}) {
+        CAPTURE(w, h);
+        const std::string all = screen_text(draw(v, w, h));
+        CAPTURE(all);
+        CHECK(all.find("stripes 9 10 11 12 13 14 15") != std::string::npos);
+        // The names line up, so the scores and groups stand in columns.
+        CHECK(all.find("Maximiliana    0  solids") != std::string::npos);
+        CHECK(all.find("Bartholomew Jr 1  stripes") != std::string::npos);
+    }
+}
+
 TEST_CASE("8-ball: pocketed balls are listed under the player whose group they are", "[tui]") {
     View v = rack_view(table);
     v.aiming = false;

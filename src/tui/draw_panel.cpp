@@ -147,13 +147,10 @@ Line name_line(const Frame& f, int player, int width) {
     name_w = std::max(1, std::min(name_w, width - 2 - score_w));
     std::string name = truncate_to_width(v.names[player - 1], name_w);
     Line line{{shooting ? (f.paint.utf8() ? "\u25B6 " : "> ") : "  ", mark}};
-    if (race) {
-        name += std::string(static_cast<std::size_t>(name_w - display_width(name)), ' ');
-        line.push_back({name, shooting ? mark : Style{}});
+    name += std::string(static_cast<std::size_t>(std::max(0, name_w - display_width(name))), ' ');
+    line.push_back({name, shooting ? mark : Style{}});
+    if (race)
         line.push_back({" " + std::to_string(std::max(0, v.racks_won[player - 1])), bold});
-    } else {
-        line.push_back({name, shooting ? mark : Style{}});
-    }
     return line;
 }
 
@@ -342,7 +339,16 @@ void draw_below_panel(const Frame& f) {
     const bool face = v.aiming && !v.placing && l.panel_width >= 40 && l.panel_height >= 3;
     const int face_w = 5, face_h = 3;
     const int right = l.panel_x + l.panel_width - (face ? face_w + 1 : 0);
-    const int x = l.panel_x, pw = std::min(36, right - x);
+    const int x = l.panel_x;
+    // The players' column is as wide as their lines (a whole group of pocketed balls, long
+    // names), from 36 columns up to what leaves the message 24 beside it.
+    int widest = 0;
+    for (int player = 1; player <= players(v); ++player) {
+        Line line = name_line(f, player, right - x);
+        line.push_back({"  " + player_detail(f, player).text, {}});
+        widest = std::max(widest, width_of(line));
+    }
+    const int pw = std::min(std::max(36, std::min(widest, right - x - 25)), right - x);
     const int mid_x = x + pw + 1, mid_w = right - mid_x - 1;
     const bool beside = mid_w >= 16;
     // The last row holds the legend and the hint; the rows above it the rest.
