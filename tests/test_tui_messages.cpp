@@ -47,3 +47,15 @@ TEST_CASE("the end of a game names the winner and why", "[tui][messages]") {
     v.reason = WinReason::three_fouls;
     CHECK(win_message(v, 2, names) == "Bob fouled three times in a row \u2014 Ann wins");
 }
+
+TEST_CASE("an illegal 8-ball break says why a choice is owed", "[tui][messages]") {
+    Verdict v;
+    v.next_shooter = 2;
+    v.chooser = 2;
+    v.choices = {Choice::play_on, Choice::re_rack, Choice::re_break};
+    v.legal_break = false;
+    CHECK(verdict_message(v, 1, names) ==
+          "Illegal break (fewer than four balls to a rail): Bob chooses");
+    v.legal_break = true; // a choice owed for another reason (a push-out) says only who
+    CHECK(verdict_message(v, 1, names) == "Bob chooses");
+}

@@ -157,7 +157,7 @@ void App::begin() {
                    : names_[game_.shooter() - 1] + " breaks: place the cue ball in the kitchen";
     // News from before the game (a config warning, where it is saved) leads the first line.
     for (auto n = options_.notices.rbegin(); n != options_.notices.rend(); ++n)
-        message_ = *n + "  " + message_;
+        message_ = *n + "; " + message_;
     start_turn();
 }
 
@@ -215,10 +215,17 @@ void App::start_aiming() {
     if (game_.push_out_allowed()) {
         const std::string hint = "u declares a push-out";
         message_ = message_.empty() ? who + ": aim and shoot, or " + hint : message_ + "; " + hint;
-    } else if (message_.empty()) {
-        message_ = who + ": aim (mouse or Left/Right), set power (Up/Down), Space shoots" +
-                   (practice_ ? "; m moves a ball" : "");
+    } else if (message_.empty() && !computers_[game_.shooter() - 1]) {
+        // Short enough for the smallest panel; the help has the rest.
+        message_ = who + ": aim (" + (term_.caps().mouse ? "mouse, " : "") +
+                   "Left/Right), Space shoots" + (practice_ ? "; m moves a ball" : "");
     }
+    // The proposed aim cannot reach the ball straight: say so before Space is pressed.
+    if (target_line_ != TargetLine::straight && !computers_[game_.shooter() - 1])
+        message_ += (message_.empty() ? "" : "; ") +
+                    std::string(target_line_ == TargetLine::kick
+                                    ? "no straight line to a legal ball: a kick off one rail"
+                                    : "no clear line to a legal ball");
 }
 
 bool App::try_place(Vec2 spot) {
@@ -244,9 +251,11 @@ std::vector<int> App::targets() const {
 void App::aim_at_easiest() {
     const std::vector<TargetChoice> order =
         rank_targets(table_, game_.balls(), params_.ball_radius, cue_position(), targets());
+    target_line_ = TargetLine::straight;
     if (!order.empty()) {
         target_index_ = std::clamp(target_index_, 0, static_cast<int>(order.size()) - 1);
         aim_deg_ = order[static_cast<std::size_t>(target_index_)].aim_deg;
+        target_line_ = order[static_cast<std::size_t>(target_index_)].line;
     }
     update_preview();
 }
@@ -476,7 +485,7 @@ void App::compose(View& v) const {
         v.fouls[1] = game_.consecutive_fouls(2);
     }
     v.message =
-        save_problem_.empty() ? message_ : "Could not save: " + save_problem_ + "  " + message_;
+        save_problem_.empty() ? message_ : "Could not save: " + save_problem_ + "; " + message_;
     v.help = help_;
     v.help_page = help_page_;
     if (mode_ == Mode::placing) {
@@ -518,7 +527,10 @@ void App::compose(View& v) const {
     if (mode_ == Mode::moving)
         compose_moving(v);
     if (mode_ == Mode::choosing) {
-        std::string text = names_[game_.chooser() - 1] + ", choose:";
+        // What brought the choice (an illegal break, a push-out) goes in the box: it may sit
+        // over the panel's message line.
+        std::string text =
+            (message_.empty() ? "" : message_ + "\n\n") + names_[game_.chooser() - 1] + ", choose:";
         for (std::size_t i = 0; i < game_.choices().size(); ++i)
             text += "\n" + std::to_string(i + 1) + "  " + choice_words(game_.choices()[i]);
         v.overlay = text;
@@ -1081,7 +1093,7 @@ void App::resume(const GameRecord& record, ResumedGame state) {
     // Where the game stands comes first here: the player needs it before any news.
     message_ = "Game resumed: " + resumed_words();
     for (const std::string& n : options_.notices)
-        message_ += "  " + n;
+        message_ += "; " + n;
     start_turn();
 }
 

@@ -12,6 +12,7 @@
 #include <termpool/simulator.hpp>
 #include <termpool/stats.hpp>
 
+#include "tui/aim.hpp"
 #include "tui/options.hpp"
 #include "tui/terminal.hpp"
 #include "tui/view.hpp"
@@ -130,6 +131,7 @@ private:
     bool safety_ = false;
     bool push_out_ = false; // 9-ball: this shot is a push-out
     int target_index_ = -1;
+    TargetLine target_line_ = TargetLine::straight; // how the proposed aim reaches its ball
     int preview_ball_ = -1;
     View preview_; // aiming aid paths
 

@@ -103,6 +103,9 @@ std::string verdict_message(const Verdict& v, int shooter, const std::string nam
                    (v.ball_in_hand == BallInHand::kitchen ? " (kitchen)" : "");
         return m + " \u2014 " + next + " to shoot";
     }
+    if (v.chooser != 0 && !v.legal_break)
+        return "Illegal break (fewer than four balls to a rail): " + names[v.chooser - 1] +
+               " chooses";
     if (v.chooser != 0)
         return names[v.chooser - 1] + " chooses";
     if (v.next_shooter != shooter)

@@ -201,6 +201,7 @@ Terminal::Terminal(bool ascii, bool no_colour) {
         write_raw(mouse_motion_on);
         motion_tracking_on = true;
     }
+    caps_.mouse = motion_tracking_on;
     alternate_screen_ = has_string_capability("smcup");
 
     const bool colour_wanted = !no_colour && !std::getenv("NO_COLOR");

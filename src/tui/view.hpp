@@ -77,6 +77,7 @@ struct Grid {
 struct Capabilities {
     int colours = 256; ///< 256, 8 or 0 (monochrome)
     bool utf8 = true;  ///< half blocks, Braille and box drawing; else plain ASCII
+    bool mouse = true; ///< mouse reports are decoded (terminfo has kmous)
 };
 
 /// Where things go on the screen for one terminal size, and the mapping between table
