@@ -1023,3 +1023,11 @@ TEST_CASE("an overlay box covers no ball", "[tui]") {
     const int y = static_cast<int>(std::count(all.begin(), all.begin() + at, '\n'));
     CHECK(y == (32 - 5) / 2 + 1);
 }
+
+TEST_CASE("in ASCII the game's dashes and quotes are plain", "[tui]") {
+    View v = rack_view(table);
+    v.message = "Foul: scratch \u2014 Bob has ball in hand \u201Ckitchen\u201D";
+    const std::string all = screen_text(draw(v, 100, 32, {0, false}));
+    CHECK(all.find("Foul: scratch - Bob has ball in hand \"kitchen\"") != std::string::npos);
+    CHECK(all.find('?') == all.find("? help"));
+}

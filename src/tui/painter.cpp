@@ -9,6 +9,30 @@
 
 namespace termpool::tui {
 
+namespace {
+
+// The ASCII stand-in for a dash, quote or ellipsis, or nothing.
+const char* ascii_punctuation(char32_t cp) {
+    switch (cp) {
+    case U'\u2013': // en dash
+    case U'\u2014': // em dash
+    case U'\u2212': // minus
+        return "-";
+    case U'\u2018':
+    case U'\u2019':
+        return "'";
+    case U'\u201C':
+    case U'\u201D':
+        return "\"";
+    case U'\u2026':
+        return ".";
+    default:
+        return nullptr;
+    }
+}
+
+} // namespace
+
 Painter::Painter(Grid& grid, const Capabilities& caps)
     : grid_(grid), colour_(caps.colours > 0), utf8_(caps.utf8) {}
 
@@ -61,16 +85,18 @@ int Painter::text(int x, int y, std::string_view s, Style style, int max_columns
         } else if (is_control(cp)) {
             continue;
         } else if (!utf8_ && cp >= 0x80) {
-            // An ASCII terminal cannot show it: one '?' per column it would take, and nothing
-            // for a combining mark.
+            // An ASCII terminal cannot show it: the punctuation the game's own words use in
+            // its ASCII form, anything else one '?' per column it would take, and nothing for
+            // a combining mark.
             w = codepoint_width(cp);
             if (w == 0)
                 continue;
             if (col + w > limit)
                 break;
+            const char* plain = ascii_punctuation(cp);
             for (int k = 0; k < w; ++k)
                 if (col + k >= 0)
-                    write(col + k, y, "?", style);
+                    write(col + k, y, plain ? plain : "?", style);
             last = col + w - 1;
             col += w;
             continue;
