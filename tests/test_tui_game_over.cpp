@@ -40,6 +40,13 @@ TEST_CASE("game over shows the figures and keeps them for termpool stats", "[tui
     CHECK(totals.find("player 1 1 ") != std::string::npos);
     CHECK(totals.find("player 0 1 0 ") != std::string::npos); // Bob never shot
 
+    // Quitting a game that is over offers to watch it again, not to continue it.
+    t.keys("q");
+    CHECK(t.wait_for_text("Game over, saved in"));
+    const std::string said = t.tmux("capture-pane -p -J -t e2e"); // the line is wrapped
+    CHECK(said.find("watch it again with: termpool replay") != std::string::npos);
+    CHECK(said.find("continue it with") == std::string::npos);
+
     // termpool stats lists both.
     const std::string listing = tmux_session::run("env XDG_STATE_HOME=" + dir.path + " " +
                                                   tmux_session::termpool_binary() + " stats");

@@ -178,6 +178,12 @@ TEST_CASE("termpool replay plays a whole match back, rack by rack", "[tui][e2e][
     t.start(game(dir.path, "replay " + file));
     REQUIRE(t.wait_for_text("Replay, shot 1 of"));
     CHECK(t.screen().find("race to 2") != std::string::npos);
+    // The help the panel offers opens in a replay too, and closes again.
+    t.keys("?");
+    CHECK(t.wait_for_text("Esc closes"));
+    t.keys("Escape");
+    CHECK(
+        t.wait_for([](const std::string& s) { return s.find("Esc closes") == std::string::npos; }));
     // Skip through every shot; the replay goes on into the next racks and ends.
     bool ended = false;
     for (int i = 0; i < 300 && !ended; ++i) {

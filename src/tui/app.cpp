@@ -713,7 +713,8 @@ void App::handle(const Input& in) {
         return;
     }
     if (confirm_quit_) {
-        if (in.kind == Input::Kind::text && (in.text == "y" || in.text == "Y"))
+        // y, or q again (q q quits, as in many terminal programs).
+        if (in.kind == Input::Kind::text && (in.text == "y" || in.text == "Y" || in.text == "q"))
             running_ = false;
         else if (in.kind != Input::Kind::mouse || in.clicked)
             confirm_quit_ = false;
@@ -1044,6 +1045,9 @@ void App::handle_replay_key(const Input& in) {
     }
     if (in.text == "q") {
         running_ = false;
+    } else if (in.text == "?") {
+        help_ = true;
+        help_page_ = 0;
     } else if (in.text == " ") {
         paused_ = !paused_;
     } else if (in.text == "x" && mode_ == Mode::animating) {

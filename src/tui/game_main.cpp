@@ -174,6 +174,13 @@ void tell_where_saved(const std::string& path, const std::optional<std::string>&
     const std::optional<std::string> after = read_whole_file(path, ignored);
     if (!after || (!resumed && after == before))
         return; // nothing was played (the names were never entered)
+    // A game that is over has nothing to continue: it can be watched again.
+    const auto loaded = load_game(*after);
+    if (const auto* game = std::get_if<LoadedGame>(&loaded); game && finished(*game)) {
+        std::printf("Game over, saved in %s; watch it again with: termpool replay %s\n",
+                    display_path(path).c_str(), display_path(path).c_str());
+        return;
+    }
     std::printf("Game saved in %s; continue it with: %s\n", display_path(path).c_str(),
                 resume_command(path).c_str());
 }
