@@ -95,21 +95,27 @@ TEST_CASE("hovering aims but keeps the power; keys take the pointer's mark away"
     REQUIRE(t.wait_for_text("place the cue ball"));
     t.keys("Enter");
     REQUIRE(t.wait_for_text("[ shoot ]"));
-    // Distance mode: ten steps down from 30% power gives 20%, 2.6 m/s on the break.
+    // The break starts at full power (12.0 m/s); five steps down give 90%, 10.8 m/s.
+    REQUIRE(t.wait_for_text("] 12.0 m/s"));
     t.repeat("Down", 5);
-    REQUIRE(t.wait_for_text("] 2.6 m/s"));
+    REQUIRE(t.wait_for_text("] 10.8 m/s"));
     // A hover over a far ball aims there, and the power stays.
     const std::string before = t.screen();
     t.keys(mouse_report(35, 86, 6));
     REQUIRE(t.wait_for([&](const std::string& s) { return s != before; }, 5));
-    CHECK(t.wait_for_text("] 2.6 m/s", 1));
+    CHECK(t.wait_for_text("] 10.8 m/s", 1));
     CHECK(cell_text(t.screen(), 86, 6) == "+");
     // The keys turn the aim: the mark of the pointer is gone.
     t.keys("Left");
     CHECK(t.wait_for([](const std::string& s) { return cell_text(s, 86, 6) != "+"; }, 5));
-    // Dragging sets the power from the pointer's distance (far: full power, 12.0 m/s).
-    t.keys(mouse_report(0, 90, 12));
-    CHECK(t.wait_for_text("] 12.0 m/s", 5));
+    // Dragging sets the power from the pointer's distance (near the cue ball: little).
+    t.keys(mouse_report(0, 30, 13));
+    CHECK(t.wait_for(
+        [](const std::string& s) {
+            return s.find("] 12.0 m/s") == std::string::npos &&
+                   s.find("] 10.8 m/s") == std::string::npos;
+        },
+        5));
 }
 
 TEST_CASE("9-ball: Space at the start of each turn never hits a wrong ball first", "[tui][e2e]") {
@@ -138,21 +144,28 @@ TEST_CASE("9-ball: Space at the start of each turn never hits a wrong ball first
     bool push_out_hint = false;
     for (int shot = 0; shot < shots; ++shot) {
         // Wait for a turn to start: aiming, or a ball in hand to place where proposed.
-        REQUIRE(t.wait_for(
+        CAPTURE(shot);
+        const bool started = t.wait_for(
             [](const std::string& s) {
                 return s.find("[ shoot ]") != std::string::npos ||
                        s.find("place the cue ball") != std::string::npos ||
+                       s.find("ball in hand") != std::string::npos ||
                        s.find("rematch") != std::string::npos;
             },
-            20));
+            20);
+        CAPTURE(t.screen());
+        REQUIRE(started);
         if (t.screen().find("rematch") != std::string::npos)
             break;
         if (t.screen().find("[ shoot ]") == std::string::npos) {
             t.keys("Enter");
             REQUIRE(t.wait_for_text("[ shoot ]"));
         }
-        if (shot == 1)
+        if (shot == 1) {
             push_out_hint = t.screen().find("u declares a push-out") != std::string::npos;
+            // The break was at full power; the shots after it at the player's own (30%).
+            CHECK(t.screen().find("] 2.3 m/s") != std::string::npos);
+        }
         t.keys("Space");
         t.keys("x");
         REQUIRE(t.wait_for([&](const std::string&) { return shots_saved() == shot + 1; }, 20));

@@ -209,6 +209,15 @@ void App::warn_of_third_foul() {
 
 void App::start_aiming() {
     mode_ = Mode::aiming;
+    // A break wants a hard hit (a soft one is rarely legal): the bar starts full for it, and
+    // the player's own setting comes back for the shots after.
+    if (game_.is_break() && power_before_break_ < 0) {
+        power_before_break_ = power_;
+        power_ = 1.0;
+    } else if (!game_.is_break() && power_before_break_ >= 0) {
+        power_ = power_before_break_;
+        power_before_break_ = -1;
+    }
     aim_at_easiest();
     warn_of_third_foul();
     const std::string& who = names_[game_.shooter() - 1];

@@ -118,6 +118,7 @@ private:
     // Aiming.
     double aim_deg_ = 0;
     double power_ = 0.3;
+    double power_before_break_ = -1; // the power to return to after a break, -1: none held
     bool time_power_ = false;
     Clock::time_point power_start_;
     double side_ = 0, follow_ = 0;
