@@ -857,8 +857,12 @@ void App::handle_key(int key, const std::string& text) {
     else if (text == "p") {
         time_power_ = !time_power_;
         power_start_ = Clock::now();
-    } else if (text == "g")
+        message_ = time_power_ ? "Timed power: the bar swings, Space stops it and shoots"
+                               : "Distance power: the keys, or the pointer's distance in a drag";
+    } else if (text == "g") {
         show_aid_ = !show_aid_;
+        message_ = show_aid_ ? "Aiming aid on" : "Aiming aid off (g brings it back)";
+    }
     else if (text == "u" && game_.push_out_allowed()) {
         push_out_ = !push_out_;
         message_ =

@@ -43,7 +43,9 @@ constexpr const char* options_usage =
     "  --ascii               plain ASCII, no colour\n"
     "  --resume [N | FILE]   continue a saved game: the only one, save N (1 is game.save,\n"
     "                        N is game-N.save) or FILE; with several, list them\n"
-    "  -h, --help            print this help and exit\n";
+    "  -h, --help            print this help and exit\n"
+    "Defaults come from $XDG_CONFIG_HOME/termpool/config (~/.config/termpool/config);\n"
+    "games are saved in $XDG_STATE_HOME/termpool/ (~/.local/state/termpool/).\n";
 
 void print_game_usage(std::FILE* out) {
     std::fprintf(out, "usage: termpool [OPTIONS]   (commands: termpool --help)\n%s", options_usage);
