@@ -374,7 +374,7 @@ void App::play(const Strike& strike, const ShotCall& call) {
     trajectory_ = std::move(trajectory);
     shot_start_ = Clock::now();
     mode_ = Mode::animating;
-    message_.clear();
+    message_ = names_[shooter_before_ - 1] + " shoots"; // the last verdict is over
 }
 
 void App::seat_computer(int player, Level level) {
