@@ -126,6 +126,7 @@ TEST_CASE("termpool practice in tmux: one name, shoot, take it again, move a bal
     t.keys("Space");
     t.keys("x");
     REQUIRE(t.wait_for_text("r takes the shot again"));
+    CHECK(t.screen().find("calls the") == std::string::npos); // no referee, no called pockets
     CHECK(table_rows(t.screen()) != rack);
     t.keys("r");
     REQUIRE(t.wait_for_text("The balls are back"));

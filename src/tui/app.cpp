@@ -247,6 +247,10 @@ bool App::try_place(Vec2 spot) {
     return true;
 }
 
+bool App::calls_pocket(int target) const {
+    return !practice_ && tui::calls_pocket(game_, target); // no referee, no calls
+}
+
 std::vector<int> App::targets() const {
     if (!practice_)
         return game_.legal_targets();
@@ -283,7 +287,7 @@ void App::update_preview() {
     if (!pocket_chosen_) {
         // Propose the obvious pocket: the one the object ball heads for most directly.
         called_pocket_ = 0;
-        if (p.object_ball > 0 && calls_pocket(game_, p.object_ball) && p.object_path.size() >= 2) {
+        if (p.object_ball > 0 && calls_pocket(p.object_ball) && p.object_path.size() >= 2) {
             const Vec2 from = p.object_path.front();
             const Vec2 dir = normalized(p.object_path.back() - from);
             double best = -2;
@@ -313,7 +317,7 @@ void App::shoot() {
     call = game_.call_as_taken(call);
     if (safety_) {
         call.call.safety = true;
-    } else if (preview_ball_ > 0 && calls_pocket(game_, preview_ball_) && called_pocket_ != 0) {
+    } else if (preview_ball_ > 0 && calls_pocket(preview_ball_) && called_pocket_ != 0) {
         call.call = {preview_ball_, called_pocket_, false};
     }
     power_ = power;
@@ -528,8 +532,8 @@ void App::compose(View& v) const {
         v.show_marker = show_marker_;
         v.marker = marker_;
         // The panel says what the shot will call: the aimed ball into the chosen pocket.
-        const bool calling = !safety_ && called_pocket_ != 0 && preview_ball_ > 0 &&
-                             calls_pocket(game_, preview_ball_);
+        const bool calling =
+            !safety_ && called_pocket_ != 0 && preview_ball_ > 0 && calls_pocket(preview_ball_);
         v.called_pocket = calling ? called_pocket_ : 0;
         v.called_ball = calling ? preview_ball_ : 0;
     }
@@ -862,8 +866,7 @@ void App::handle_key(int key, const std::string& text) {
     } else if (text == "g") {
         show_aid_ = !show_aid_;
         message_ = show_aid_ ? "Aiming aid on" : "Aiming aid off (g brings it back)";
-    }
-    else if (text == "u" && game_.push_out_allowed()) {
+    } else if (text == "u" && game_.push_out_allowed()) {
         push_out_ = !push_out_;
         message_ =
             push_out_ ? "Push-out: no foul but a scratch; then the other player chooses" : "";

@@ -81,6 +81,7 @@ private:
     double current_power() const;
     Vec2 cue_position() const;
     std::vector<int> targets() const;
+    bool calls_pocket(int target) const;
 
     // Practice (app_practice.cpp): no referee, any ball moved, the last shot taken again.
     void sync_practice();
