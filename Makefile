@@ -145,7 +145,8 @@ FUZZ_DIR      := build/fuzz
 FUZZ_FLAGS    := -std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -Iinclude -Isrc
 FUZZ_LIB_SRCS := $(wildcard src/core/*.cpp) src/cli/scenario.cpp src/cli/numbers.cpp \
                  src/tui/config.cpp src/tui/xdg_dir.cpp src/tui/player_name.cpp \
-                 src/tui/text_width.cpp src/tui/options.cpp
+                 src/tui/text_width.cpp src/tui/options.cpp src/tui/stats_file.cpp \
+                 src/tui/keep_aside.cpp src/tui/save_file.cpp
 FUZZ_LIB_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_LIB_SRCS))
 FUZZ_TARGETS  := $(patsubst tests/fuzz/%.cpp,$(FUZZ_DIR)/%,$(wildcard tests/fuzz/*.cpp))
 
