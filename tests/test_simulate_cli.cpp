@@ -13,34 +13,13 @@
 #include <sys/wait.h>
 #include <vector>
 
+#include "temp_dir.hpp"
+
 namespace {
 
-/// A directory under $TMPDIR (or /tmp) that is removed with everything in it.
-class TempDir {
-public:
-    TempDir() {
-        const char* base = std::getenv("TMPDIR");
-        std::string pattern = std::string(base && *base ? base : "/tmp") + "/termpool-cli-XXXXXX";
-        REQUIRE(mkdtemp(pattern.data()) != nullptr);
-        path_ = pattern;
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        std::filesystem::remove_all(path_, ignored);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-
-    /// Writes `text` to a file named `name` in the directory and returns its path.
-    std::string write(const std::string& name, const std::string& text) const {
-        const std::string file = path_ + "/" + name;
-        std::ofstream(file, std::ios::binary) << text;
-        return file;
-    }
-    const std::string& path() const { return path_; }
-
-private:
-    std::string path_;
+// Scratch directories of this file's own name.
+struct TempDir : termpool::test::TempDir {
+    TempDir() : termpool::test::TempDir("termpool-cli") {}
 };
 
 /// What one run of the binary did.

@@ -22,6 +22,8 @@ using namespace termpool;
 using namespace termpool::test;
 using termpool::tui::StatsStore;
 
+#include "temp_dir.hpp"
+
 namespace {
 
 // ---------------------------------------------------------------------------------------------
@@ -92,26 +94,9 @@ GameRecord computer_game(GameType type, std::uint64_t seed, StatsTally& live) {
 // ---------------------------------------------------------------------------------------------
 // Files
 
-/// A directory under $TMPDIR (or /tmp), removed with everything in it.
-class TempDir {
-public:
-    TempDir() {
-        const char* base = std::getenv("TMPDIR");
-        std::string pattern = std::string(base && *base ? base : "/tmp") + "/termpool-stats-XXXXXX";
-        REQUIRE(mkdtemp(pattern.data()) != nullptr);
-        path_ = pattern;
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        std::filesystem::remove_all(path_, ignored);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-
-    const std::string& path() const { return path_; }
-
-private:
-    std::string path_;
+// Scratch directories of this file's own name.
+struct StatsDir : termpool::test::TempDir {
+    StatsDir() : termpool::test::TempDir("termpool-stats") {}
 };
 
 std::string slurp(const std::string& path) {
@@ -474,7 +459,7 @@ TEST_CASE("a damaged totals file is refused at its line", "[stats][file]") {
 }
 
 TEST_CASE("saving a game's figures adds them to the totals", "[stats][file]") {
-    const TempDir dir;
+    const StatsDir dir;
     const std::string path = dir.path() + "/termpool/stats";
     const std::string names[2] = {"Ann Lee", "CPU (hard)"};
     const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
@@ -491,7 +476,7 @@ TEST_CASE("saving a game's figures adds them to the totals", "[stats][file]") {
 }
 
 TEST_CASE("a damaged totals file is reported with its line and kept as .bad", "[stats][file]") {
-    const TempDir dir;
+    const StatsDir dir;
     const std::string path = dir.path() + "/termpool/stats";
     const std::string damaged = "termpool-stats 1\nplayer 1 1 9 9 9 9 0 0 0 Ann\nplayer 1 1 9\n";
     spill(path, damaged);
@@ -514,7 +499,7 @@ TEST_CASE("a damaged totals file is reported with its line and kept as .bad", "[
 }
 
 TEST_CASE("a failed write leaves the old totals whole and no temporary file", "[stats][file]") {
-    const TempDir dir;
+    const StatsDir dir;
     const std::string path = dir.path() + "/termpool/stats";
     const std::string names[2] = {"Ann", "Bob"};
     const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
@@ -576,7 +561,7 @@ TEST_CASE("the stats table lines up names of any width", "[stats][tui]") {
 
 TEST_CASE("termpool stats prints the totals, says when there are none, refuses damage",
           "[stats][cli]") {
-    const TempDir dir;
+    const StatsDir dir;
     const std::string state = dir.path() + "/state";
     const std::string path = state + "/termpool/stats";
 
