@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ncursesw/curses.h>
 #include <numbers>
 
 #include "tui/aim.hpp"
@@ -533,13 +532,13 @@ bool App::nudge(Vec2& spot, int key, const std::string& text) const {
     if (!layout_.fits)
         return false; // no cells to step by while "please enlarge" shows
     const double step = 1.0 / layout_.cells_per_metre, R = params_.ball_radius;
-    if (key == KEY_LEFT || text == "h")
+    if (key == key_left || text == "h")
         spot.x -= step;
-    else if (key == KEY_RIGHT || text == "l")
+    else if (key == key_right || text == "l")
         spot.x += step;
-    else if (key == KEY_UP || text == "k")
+    else if (key == key_up || text == "k")
         spot.y += 2 * step;
-    else if (key == KEY_DOWN || text == "j")
+    else if (key == key_down || text == "j")
         spot.y -= 2 * step;
     else
         return false;
@@ -551,7 +550,7 @@ bool App::nudge(Vec2& spot, int key, const std::string& text) const {
 namespace {
 
 bool is_backspace(int key) {
-    return key == KEY_BACKSPACE || key == 127 || key == 8;
+    return key == key_backspace || key == 8;
 }
 
 // Removes the last UTF-8 character of `s`.
@@ -574,7 +573,7 @@ void App::handle_text_entry(const Input& in) {
         return;
     if (is_backspace(in.key)) {
         erase_last_character(entry_);
-    } else if (in.key == key_enter || in.key == KEY_ENTER) {
+    } else if (in.key == key_enter) {
         // At the start, player 2 may be the computer: "computer" or "computer LEVEL".
         if (mode_ == Mode::names && entry_player_ == 2 && entry_.starts_with("computer")) {
             const std::string rest = entry_.size() > 9 ? entry_.substr(9) : "";
@@ -640,7 +639,7 @@ void App::handle_race_entry(const Input& in) {
         erase_last_character(entry_);
         return;
     }
-    if (in.key != key_enter && in.key != KEY_ENTER && in.key != key_escape)
+    if (in.key != key_enter && in.key != key_escape)
         return;
     if (in.key != key_escape && !entry_.empty()) {
         const std::optional<int> race = parse_race_to(entry_);
@@ -686,12 +685,12 @@ void App::handle(const Input& in) {
         const int last = help_page_count(term_.width(), term_.height()) - 1;
         const int key = in.kind == Input::Kind::key ? in.key : 0;
         const std::string& t = in.text;
-        if (t == " " || t == "j" || key == KEY_NPAGE || key == KEY_DOWN)
+        if (t == " " || t == "j" || key == key_page_down || key == key_down)
             help_page_ = std::min(help_page_ + 1, last);
-        else if (t == "k" || key == KEY_PPAGE || key == KEY_UP)
+        else if (t == "k" || key == key_page_up || key == key_up)
             help_page_ = std::max(std::min(help_page_, last) - 1, 0);
         else if (t == "q" || t == "?" || key == key_escape || key == key_enter ||
-                 key == KEY_ENTER || (in.kind == Input::Kind::mouse && in.clicked)) {
+                 (in.kind == Input::Kind::mouse && in.clicked)) {
             help_ = false;
             help_page_ = 0;
         }
@@ -740,7 +739,7 @@ void App::handle_key(int key, const std::string& text) {
         return;
     case Mode::game_over:
         if (match_.is_race() && match_.match_winner() == 0) {
-            if (key == key_enter || key == KEY_ENTER || text == " " || text == "r")
+            if (key == key_enter || text == " " || text == "r")
                 next_rack();
             return;
         }
@@ -761,7 +760,7 @@ void App::handle_key(int key, const std::string& text) {
         return;
     }
     case Mode::placing:
-        if (!nudge(place_, key, text) && (key == key_enter || key == KEY_ENTER || text == " "))
+        if (!nudge(place_, key, text) && (key == key_enter || text == " "))
             try_place(place_);
         return;
     case Mode::aiming:
@@ -771,22 +770,22 @@ void App::handle_key(int key, const std::string& text) {
     }
 
     // Aiming. Keys move the aim away from the pointer, so its mark goes.
-    if (key == KEY_LEFT || key == KEY_RIGHT || key == KEY_SLEFT || key == KEY_SRIGHT ||
+    if (key == key_left || key == key_right || key == key_shift_left || key == key_shift_right ||
         text == "h" || text == "l" || text == "H" || text == "L" || text == "[" || text == "]")
         show_marker_ = false;
-    if (key == KEY_LEFT || text == "h")
+    if (key == key_left || text == "h")
         aim_deg_ = turn(aim_deg_, 1);
-    else if (key == KEY_RIGHT || text == "l")
+    else if (key == key_right || text == "l")
         aim_deg_ = turn(aim_deg_, -1);
-    else if (text == "H" || key == KEY_SLEFT)
+    else if (text == "H" || key == key_shift_left)
         aim_deg_ = turn(aim_deg_, 0.1);
-    else if (text == "L" || key == KEY_SRIGHT)
+    else if (text == "L" || key == key_shift_right)
         aim_deg_ = turn(aim_deg_, -0.1);
-    else if (key == KEY_UP || text == "k")
+    else if (key == key_up || text == "k")
         power_ = std::min(1.0, power_ + power_step);
-    else if (key == KEY_DOWN || text == "j")
+    else if (key == key_down || text == "j")
         power_ = std::max(0.0, power_ - power_step);
-    else if (key == key_enter || key == KEY_ENTER || text == " ") {
+    else if (key == key_enter || text == " ") {
         shoot();
         return;
     } else if (text == "[" || text == "]") {
@@ -1016,7 +1015,7 @@ void App::handle_replay_key(const Input& in) {
         paused_ = !paused_;
     } else if (in.text == "x" && mode_ == Mode::animating) {
         shot_start_ -= std::chrono::hours(1);
-    } else if (in.key == KEY_LEFT || in.key == KEY_RIGHT) {
+    } else if (in.key == key_left || in.key == key_right) {
         // Step a whole shot: back to the start of the previous one, or on past the next.
         std::size_t shot_starts = 0, target = 0;
         for (std::size_t i = 0; i < record_.actions.size(); ++i) {
@@ -1025,7 +1024,7 @@ void App::handle_replay_key(const Input& in) {
             if (i + 1 <= next_action_ - (mode_ == Mode::animating ? 1 : 0))
                 shot_starts = i + 1;
         }
-        if (in.key == KEY_LEFT) {
+        if (in.key == key_left) {
             target = 0;
             for (std::size_t i = 0; i + 1 < shot_starts; ++i)
                 if (record_.actions[i].kind == RecordedAction::Kind::shot)

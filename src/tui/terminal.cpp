@@ -110,13 +110,41 @@ Input after_escape() {
     }
     // ESC [ A..D are the arrows of terminals whose terminfo only knows ESC O A..D.
     if (plain && c >= 'A' && c <= 'D') {
-        constexpr int arrows[4] = {KEY_UP, KEY_DOWN, KEY_RIGHT, KEY_LEFT};
+        constexpr int arrows[4] = {key_up, key_down, key_right, key_left};
         Input arrow;
         arrow.kind = Input::Kind::key;
         arrow.key = arrows[c - 'A'];
         return arrow;
     }
     return nothing;
+}
+
+// The front end's code for a curses function key.
+int key_from_curses(int code) {
+    switch (code) {
+    case KEY_LEFT:
+        return key_left;
+    case KEY_RIGHT:
+        return key_right;
+    case KEY_UP:
+        return key_up;
+    case KEY_DOWN:
+        return key_down;
+    case KEY_SLEFT:
+        return key_shift_left;
+    case KEY_SRIGHT:
+        return key_shift_right;
+    case KEY_PPAGE:
+        return key_page_up;
+    case KEY_NPAGE:
+        return key_page_down;
+    case KEY_ENTER:
+        return key_enter;
+    case KEY_BACKSPACE:
+        return key_backspace;
+    default:
+        return key_other;
+    }
 }
 
 } // namespace
@@ -327,7 +355,7 @@ Input Terminal::read(int timeout_ms) {
             return in;
         }
         in.kind = Input::Kind::key;
-        in.key = static_cast<int>(ch);
+        in.key = key_from_curses(static_cast<int>(ch));
         return in;
     }
     if (ch == key_escape)

@@ -16,7 +16,7 @@ namespace termpool::tui {
 struct Input {
     enum class Kind { none, key, text, mouse, resize, signal };
     Kind kind = Kind::none; ///< what happened
-    int key = 0;            ///< Kind::key: a curses key code (KEY_LEFT, ...) or a control char
+    int key = 0;            ///< Kind::key: a control character or one of the key_ codes below
     std::string text;       ///< Kind::text: one printable character, UTF-8
     int x = 0, y = 0;       ///< Kind::mouse: the cell
     bool pressed = false;   ///< button 1 went down
@@ -25,9 +25,21 @@ struct Input {
     bool moved = false;     ///< the pointer moved (with or without a button)
 };
 
-/// Keys with names curses does not have.
+/// Keys as Input::key gives them: control characters as they are (Enter is '\n', Backspace
+/// 127 or 8), the others as these codes. terminal.cpp maps curses' codes to them, so the rest
+/// of the front end needs no curses.
 inline constexpr int key_enter = '\n';
 inline constexpr int key_escape = 27;
+inline constexpr int key_backspace = 127;
+inline constexpr int key_left = 0x1000;        ///< arrow left
+inline constexpr int key_right = 0x1001;       ///< arrow right
+inline constexpr int key_up = 0x1002;          ///< arrow up
+inline constexpr int key_down = 0x1003;        ///< arrow down
+inline constexpr int key_shift_left = 0x1004;  ///< Shift+left
+inline constexpr int key_shift_right = 0x1005; ///< Shift+right
+inline constexpr int key_page_up = 0x1006;     ///< Page Up
+inline constexpr int key_page_down = 0x1007;   ///< Page Down
+inline constexpr int key_other = 0x10FF;       ///< any other function key
 
 /// How a colour role is shown: an xterm-256 index and the 8-colour fallback (a curses colour
 /// number 0..7, COLOR_BLACK..COLOR_WHITE); -1 for the terminal's default in both.
