@@ -13,7 +13,10 @@
 #include <sys/wait.h>
 #include <vector>
 
+#include "lines_of.hpp"
 #include "temp_dir.hpp"
+
+using termpool::test::lines_of;
 
 namespace {
 
@@ -52,14 +55,6 @@ Run run(const TempDir& dir, const std::string& args) {
     r.out = slurp(out);
     r.err = slurp(err);
     return r;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);)
-        lines.push_back(line);
-    return lines;
 }
 
 const char* const simple_shot = "# a cut shot with some follow\n"

@@ -22,6 +22,7 @@ using namespace termpool;
 using namespace termpool::test;
 using termpool::tui::StatsStore;
 
+#include "lines_of.hpp"
 #include "temp_dir.hpp"
 
 namespace {
@@ -118,14 +119,6 @@ std::vector<std::string> files_in(const std::string& dir) {
         names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> lines;
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);)
-        lines.push_back(line);
-    return lines;
 }
 
 std::string parse_error(const std::string& text) {
