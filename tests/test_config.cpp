@@ -22,8 +22,8 @@ TEST_CASE("the config file sets the game's defaults", "[config]") {
     CHECK(warnings.empty());
     CHECK(o.names[0] == "Ann Lee");
     CHECK(o.names[1] == "Bob");
-    CHECK(o.game == GameType::nine_ball);
-    CHECK(o.table == TableSize::seven_foot);
+    CHECK(o.setup.game == GameType::nine_ball);
+    CHECK(o.setup.table == TableSize::seven_foot);
     CHECK(o.timed_power);
     CHECK_FALSE(o.aim_aid);
     CHECK(o.default_level == Level::pro);
@@ -31,7 +31,7 @@ TEST_CASE("the config file sets the game's defaults", "[config]") {
     std::string why;
     const auto parsed = parse_game_options({"--game", "8ball", "--vs-computer"}, why, o);
     REQUIRE(parsed);
-    CHECK(parsed->game == GameType::eight_ball);
+    CHECK(parsed->setup.game == GameType::eight_ball);
     CHECK(parsed->computer == Level::pro);
 }
 

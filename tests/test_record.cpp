@@ -14,7 +14,7 @@ namespace {
 
 GameRecord two_players(GameType type, std::uint64_t seed) {
     GameRecord record;
-    record.game = type;
+    record.setup.game = type;
     record.seed = seed;
     record.names[0] = "Ann Lee";
     record.names[1] = "Bjørn";
@@ -25,7 +25,7 @@ GameRecord two_players(GameType type, std::uint64_t seed) {
 // Two computers play a game, and every action goes into a record as the game would save it.
 std::pair<GameRecord, Game> played_game(GameType type, std::uint64_t seed) {
     GameRecord record = two_players(type, seed);
-    Game game(type, make_table(record.table), record_params(record), record.breaker, record.seed);
+    Game game(type, make_table(record.setup), record.setup.physics, record.breaker, record.seed);
     ComputerPlayer players[2] = {ComputerPlayer(Level::easy, seed),
                                  ComputerPlayer(Level::medium, seed + 1)};
     for (int turn = 0; turn < 300 && game.winner() == 0; ++turn)
@@ -45,7 +45,7 @@ PlayedMatch played_match(GameType type, std::uint64_t seed, int race_to, BreakRu
     GameRecord record = two_players(type, seed);
     record.race_to = race_to;
     record.break_rule = rule;
-    Game game(type, make_table(record.table), record_params(record), record.breaker, record.seed);
+    Game game(type, make_table(record.setup), record.setup.physics, record.breaker, record.seed);
     MatchState score{race_to, rule, {0, 0}};
     std::vector<int> breakers = {record.breaker};
     ComputerPlayer players[2] = {ComputerPlayer(Level::pro, seed),
@@ -61,7 +61,7 @@ PlayedMatch played_match(GameType type, std::uint64_t seed, int race_to, BreakRu
         const RecordedAction rack =
             rack_action(record, static_cast<int>(breakers.size()) + 1, breaker);
         record.actions.push_back(rack);
-        game = Game(type, make_table(record.table), record_params(record), rack.breaker, rack.seed);
+        game = Game(type, make_table(record.setup), record.setup.physics, rack.breaker, rack.seed);
         breakers.push_back(breaker);
     }
     return {record, game, score, breakers};
@@ -151,7 +151,7 @@ TEST_CASE("a version-1 save is read and written back byte for byte", "[record]")
     const auto parsed = parse_record(v1);
     REQUIRE(std::holds_alternative<GameRecord>(parsed));
     const GameRecord& record = std::get<GameRecord>(parsed);
-    CHECK(record.game == GameType::nine_ball);
+    CHECK(record.setup.game == GameType::nine_ball);
     CHECK(record.breaker == 2);
     CHECK(format_record(record) == v1);
     const auto replayed = replay_record(record);

@@ -52,7 +52,7 @@ TEST_CASE("an empty scenario is a 9ft table with default physics and no balls", 
     CHECK(s.table.size == termpool::TableSize::nine_foot);
     CHECK(s.balls.empty());
     CHECK_FALSE(s.strike);
-    CHECK(s.params.ball_radius == termpool::PhysicsParams{}.ball_radius);
+    CHECK(s.setup.physics.ball_radius == termpool::PhysicsParams{}.ball_radius);
 }
 
 TEST_CASE("comments, blank lines, tabs and CRLF are ignored", "[scenario]") {
@@ -76,31 +76,31 @@ TEST_CASE("table sizes", "[scenario]") {
 TEST_CASE("collision, cushion and friction models", "[scenario]") {
     using namespace termpool;
     const Scenario s = parsed("collision ideal\ncushion ideal\nfriction decay 0.5\n");
-    CHECK(s.params.collision == CollisionModel::ideal);
-    CHECK(s.params.cushion == CushionModel::ideal);
-    CHECK(s.params.friction.kind == FrictionKind::decay);
-    CHECK(s.params.friction.decay_rate == 0.5);
+    CHECK(s.setup.physics.collision == CollisionModel::ideal);
+    CHECK(s.setup.physics.cushion == CushionModel::ideal);
+    CHECK(s.setup.physics.friction.kind == FrictionKind::decay);
+    CHECK(s.setup.physics.friction.decay_rate == 0.5);
 
     const Scenario physical = parsed("collision physical\ncushion physical\nfriction physical");
-    CHECK(physical.params.collision == CollisionModel::physical);
-    CHECK(physical.params.cushion == CushionModel::physical);
-    CHECK(physical.params.friction.kind == FrictionKind::physical);
+    CHECK(physical.setup.physics.collision == CollisionModel::physical);
+    CHECK(physical.setup.physics.cushion == CushionModel::physical);
+    CHECK(physical.setup.physics.friction.kind == FrictionKind::physical);
 
     const Scenario constant = parsed("friction constant 0.3");
-    CHECK(constant.params.friction.kind == FrictionKind::constant);
-    CHECK(constant.params.friction.deceleration == 0.3);
+    CHECK(constant.setup.physics.friction.kind == FrictionKind::constant);
+    CHECK(constant.setup.physics.friction.deceleration == 0.3);
 
     const Scenario combined = parsed("friction combined 0.4 0.2");
-    CHECK(combined.params.friction.kind == FrictionKind::combined);
-    CHECK(combined.params.friction.decay_rate == 0.4);
-    CHECK(combined.params.friction.deceleration == 0.2);
+    CHECK(combined.setup.physics.friction.kind == FrictionKind::combined);
+    CHECK(combined.setup.physics.friction.decay_rate == 0.4);
+    CHECK(combined.setup.physics.friction.deceleration == 0.2);
 }
 
 TEST_CASE("every param sets its field", "[scenario]") {
     const Scenario s = parsed("param u_s 0.21\nparam u_r 0.011\nparam u_sp 0.013\n"
                               "param e_b 0.9\nparam u_b 0.06\nparam e_c 0.8\nparam f_c 0.25\n"
                               "param g 9.8\nparam R 0.03\nparam m 0.16\n");
-    const termpool::PhysicsParams& p = s.params;
+    const termpool::PhysicsParams& p = s.setup.physics;
     CHECK(p.sliding_friction == 0.21);
     CHECK(p.rolling_friction == 0.011);
     CHECK(p.spin_friction == 0.013);
@@ -112,7 +112,7 @@ TEST_CASE("every param sets its field", "[scenario]") {
     CHECK(p.ball_radius == 0.03);
     CHECK(p.ball_mass == 0.16);
     // Edges of the allowed ranges are fine.
-    CHECK(parsed("param u_s 0\nparam e_b 1\nparam e_c 0").params.ball_restitution == 1);
+    CHECK(parsed("param u_s 0\nparam e_b 1\nparam e_c 0").setup.physics.ball_restitution == 1);
 }
 
 TEST_CASE("balls come out in id order with their masses", "[scenario]") {
@@ -137,7 +137,7 @@ TEST_CASE("params apply before the balls are built, whatever the order", "[scena
 
     // 0.05 apart overlaps for R = 0.028575 but not for R = 0.02.
     const Scenario s = parsed("ball 1 1 0.5\nball 2 1.05 0.5\nparam R 0.02\nparam m 0.1\n");
-    CHECK(s.params.ball_radius == 0.02);
+    CHECK(s.setup.physics.ball_radius == 0.02);
     CHECK(s.balls[0].mass == 0.1); // the default mass is the final one
     CHECK(s.balls[1].mass == 0.1);
 
@@ -383,15 +383,15 @@ TEST_CASE("each game directive parses", "[scenario]") {
     using namespace termpool;
     const Scenario plain = parsed("game 8ball\n" + table_with_shot);
     REQUIRE(plain.game);
-    CHECK(plain.game->type == GameType::eight_ball);
+    CHECK(plain.setup.game == GameType::eight_ball);
     CHECK(plain.game->shooter == 1);
     CHECK(plain.game->player1_group == Group::open);
     CHECK_FALSE(plain.game->is_break);
     CHECK(plain.game->call.ball == 0);
     CHECK_FALSE(plain.game->call.safety);
 
-    CHECK(parsed("game 8ball-bar\n" + table_with_shot).game->type == GameType::eight_ball_bar);
-    CHECK(parsed("game 9ball\n" + table_with_shot).game->type == GameType::nine_ball);
+    CHECK(parsed("game 8ball-bar\n" + table_with_shot).setup.game == GameType::eight_ball_bar);
+    CHECK(parsed("game 9ball\n" + table_with_shot).setup.game == GameType::nine_ball);
 
     CHECK(parsed("shooter 1\n" + table_with_shot).game->shooter == 1);
     CHECK(parsed("shooter 2\n" + table_with_shot).game->shooter == 2);
@@ -420,13 +420,13 @@ TEST_CASE("any game directive makes a context, 8-ball unless `game` says otherwi
         INFO(directive);
         const Scenario s = parsed(std::string(directive) + "\n" + table_with_shot);
         REQUIRE(s.game);
-        CHECK(s.game->type == GameType::eight_ball);
+        CHECK(s.setup.game == GameType::eight_ball);
     }
     // All of them together, in any order, with the balls and the rack.
     const Scenario all = parsed("call 3 4\nshooter 2\nrack 8ball\ngroups 1=stripes\n"
                                 "game 8ball-bar\nstrike 3 10\n");
     REQUIRE(all.game);
-    CHECK(all.game->type == GameType::eight_ball_bar);
+    CHECK(all.setup.game == GameType::eight_ball_bar);
     CHECK(all.game->shooter == 2);
     CHECK(all.game->player1_group == Group::stripes);
     CHECK(all.game->call.ball == 3);

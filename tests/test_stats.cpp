@@ -78,11 +78,11 @@ ShotCall push_out() {
 /// as the game goes, as the front end would.
 GameRecord computer_game(GameType type, std::uint64_t seed, StatsTally& live) {
     GameRecord record;
-    record.game = type;
+    record.setup.game = type;
     record.seed = seed;
     record.names[0] = "CPU 1 (medium)";
     record.names[1] = "CPU 2 (hard)";
-    Game game(type, make_table(record.table), record_params(record), record.breaker, seed);
+    Game game(type, make_table(record.setup), record.setup.physics, record.breaker, seed);
     ComputerPlayer players[2] = {ComputerPlayer(Level::medium, seed),
                                  ComputerPlayer(Level::hard, seed + 1)};
     for (int turn = 0; turn < 300 && game.winner() == 0; ++turn)

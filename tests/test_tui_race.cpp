@@ -21,13 +21,13 @@ namespace {
 // record names two people, as a hot-seat match would save it.
 GameRecord race_record(int race_to, int racks, std::uint64_t seed) {
     GameRecord record;
-    record.game = GameType::nine_ball;
+    record.setup.game = GameType::nine_ball;
     record.seed = seed;
     record.names[0] = "Ann";
     record.names[1] = "Bob";
     record.race_to = race_to;
     MatchState score{race_to, BreakRule::alternate, {0, 0}};
-    Game game(record.game, make_table(record.table), record_params(record), 1, seed);
+    Game game(record.setup.game, make_table(record.setup), record.setup.physics, 1, seed);
     ComputerPlayer players[2] = {ComputerPlayer(Level::pro, seed),
                                  ComputerPlayer(Level::pro, seed + 1)};
     int breaker = 1;
@@ -41,7 +41,7 @@ GameRecord race_record(int race_to, int racks, std::uint64_t seed) {
         breaker = score.next_breaker(breaker, game.winner());
         const RecordedAction rack = rack_action(record, score.racks_played() + 1, breaker);
         record.actions.push_back(rack);
-        game = Game(record.game, make_table(record.table), record_params(record), rack.breaker,
+        game = Game(record.setup.game, make_table(record.setup), record.setup.physics, rack.breaker,
                     rack.seed);
     }
     return record;

@@ -149,8 +149,8 @@ std::string saved_game(int actions = 0) {
     record.seed = 3;
     record.names[0] = "Ann";
     record.names[1] = "Bob";
-    termpool::Game game(record.game, termpool::make_table(record.table),
-                        termpool::record_params(record), 1, record.seed);
+    termpool::Game game(record.setup.game, termpool::make_table(record.setup), record.setup.physics,
+                        1, record.seed);
     termpool::ComputerPlayer players[2] = {termpool::ComputerPlayer(termpool::Level::pro, 1),
                                            termpool::ComputerPlayer(termpool::Level::pro, 2)};
     for (int turn = 0; turn < 300 && game.winner() == 0 && (actions == 0 || turn < actions); ++turn)
@@ -213,8 +213,8 @@ TEST_CASE("--resume lists a race with its score", "[tui][e2e][race]") {
     race.names[0] = "Ann";
     race.names[1] = "Bob";
     race.race_to = 2;
-    termpool::Game game(race.game, termpool::make_table(race.table), termpool::record_params(race),
-                        1, race.seed);
+    termpool::Game game(race.setup.game, termpool::make_table(race.setup), race.setup.physics, 1,
+                        race.seed);
     termpool::ComputerPlayer players[2] = {termpool::ComputerPlayer(termpool::Level::pro, 1),
                                            termpool::ComputerPlayer(termpool::Level::pro, 2)};
     for (int turn = 0; turn < 300 && game.winner() == 0; ++turn)

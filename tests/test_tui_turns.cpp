@@ -179,8 +179,8 @@ TEST_CASE("9-ball: Space at the start of each turn never hits a wrong ball first
     auto parsed = termpool::parse_record(file_text(save));
     REQUIRE(std::holds_alternative<termpool::GameRecord>(parsed));
     const termpool::GameRecord& record = std::get<termpool::GameRecord>(parsed);
-    termpool::Game game(record.game, termpool::make_table(record.table),
-                        termpool::record_params(record), record.breaker, record.seed);
+    termpool::Game game(record.setup.game, termpool::make_table(record.setup), record.setup.physics,
+                        record.breaker, record.seed);
     int judged = 0, straight = 0;
     for (const termpool::RecordedAction& a : record.actions) {
         if (a.kind == termpool::RecordedAction::Kind::place) {

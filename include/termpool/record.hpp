@@ -12,6 +12,7 @@
 #include <termpool/computer.hpp>
 #include <termpool/race.hpp>
 #include <termpool/rules.hpp>
+#include <termpool/setup.hpp>
 #include <variant>
 #include <vector>
 
@@ -36,14 +37,13 @@ struct RecordedAction {
 
 /// A whole game, or a whole match: its racks after the first each start with a rack action.
 struct GameRecord {
-    GameType game = GameType::eight_ball;            ///< the rules
-    TableSize table = TableSize::nine_foot;          ///< the table
+    /// The rules, the table and the physics; a record keeps the cloth model and the cue ball's
+    /// mass, the other constants are the defaults.
+    GameSetup setup;
     std::uint64_t seed = 1;                          ///< the first rack's seed
     int breaker = 1;                                 ///< who broke the first rack
     std::string names[2] = {"Player 1", "Player 2"}; ///< the players
     std::optional<Level> computers[2];               ///< a computer in a seat, and its level
-    FrictionModel friction;                          ///< the cloth model
-    double cue_ball_mass = 0;                        ///< 0: like the other balls
     int race_to = 1;                                 ///< racks to win the match; 0 or 1: one game
     BreakRule break_rule = BreakRule::alternate;     ///< who breaks each next rack
     std::vector<RecordedAction> actions;             ///< in order
@@ -61,9 +61,6 @@ std::string format_record(const GameRecord& record);
 /// Reads the text form; an error names the line and the problem (truncated, foreign, from a
 /// newer version, bad values).
 std::variant<GameRecord, RecordError> parse_record(std::string_view text);
-
-/// The physics a record is played with.
-PhysicsParams record_params(const GameRecord& record);
 
 /// One shot of a replay, for listeners that need more than who shot and the verdict.
 struct ReplayedShot {

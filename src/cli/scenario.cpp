@@ -34,8 +34,7 @@ struct BallLine {
 
 /// Everything the directives said, not yet checked against each other.
 struct Draft {
-    PhysicsParams params;
-    TableSize size = TableSize::nine_foot;
+    GameSetup setup; ///< the game, the table's size and the physics
     std::optional<int> rack_line;
     RackType rack = RackType::eight_ball;
     std::optional<std::uint64_t> rack_seed;
@@ -99,7 +98,7 @@ Problem parse_table(const Line& line, Draft& draft) {
     const std::optional<TableSize> size = parse_table_size(line.arg(0));
     if (!size)
         return "unknown table size " + quoted(line.arg(0)) + " (expected 9ft, 8ft or 7ft)";
-    draft.size = *size;
+    draft.setup.table = *size;
     return {};
 }
 
@@ -122,20 +121,11 @@ Problem parse_model(const Line& line, Draft& draft, Model& out, const char* usag
 }
 
 Problem parse_collision(const Line& line, Draft& draft) {
-    return parse_model(line, draft, draft.params.collision, "collision physical|ideal");
+    return parse_model(line, draft, draft.setup.physics.collision, "collision physical|ideal");
 }
 
 Problem parse_cushion(const Line& line, Draft& draft) {
-    return parse_model(line, draft, draft.params.cushion, "cushion physical|ideal");
-}
-
-/// Reads a constant of a seed friction model, which must be positive.
-Problem positive(std::string_view text, std::string_view what, double& out) {
-    if (Problem p = number(text, what, out))
-        return p;
-    if (out <= 0)
-        return std::string(what) + " must be > 0 (got " + std::string(text) + ")";
-    return {};
+    return parse_model(line, draft, draft.setup.physics.cushion, "cushion physical|ideal");
 }
 
 Problem parse_friction(const Line& line, Draft& draft) {
@@ -144,34 +134,30 @@ Problem parse_friction(const Line& line, Draft& draft) {
         return p;
     if (Problem p = once(draft, "friction", line))
         return p;
-    FrictionModel& model = draft.params.friction;
-    const std::string_view kind = line.arg(0);
-    if (kind == "physical") {
-        model.kind = FrictionKind::physical;
-        return arity(line, 1, 1, usage);
+    const auto model = termpool::parse_friction(std::span(line.fields).subspan(1));
+    if (const auto* friction = std::get_if<FrictionModel>(&model)) {
+        draft.setup.physics.friction = *friction;
+        return {};
     }
-    if (kind == "decay") {
-        model.kind = FrictionKind::decay;
-        if (Problem p = arity(line, 2, 2, usage))
-            return p;
-        return positive(line.arg(1), "decay rate K", model.decay_rate);
-    }
-    if (kind == "constant") {
-        model.kind = FrictionKind::constant;
-        if (Problem p = arity(line, 2, 2, usage))
-            return p;
-        return positive(line.arg(1), "deceleration A", model.deceleration);
-    }
-    if (kind == "combined") {
-        model.kind = FrictionKind::combined;
-        if (Problem p = arity(line, 3, 3, usage))
-            return p;
-        if (Problem p = positive(line.arg(1), "decay rate K", model.decay_rate))
-            return p;
-        return positive(line.arg(2), "deceleration A", model.deceleration);
-    }
-    return "unknown friction model " + quoted(kind) +
-           " (expected physical, decay, constant or combined)";
+    const FrictionProblem& problem = std::get<FrictionProblem>(model);
+    using Kind = FrictionProblem::Kind;
+    if (problem.kind == Kind::unknown_model)
+        return "unknown friction model " + quoted(line.arg(0)) +
+               " (expected physical, decay, constant or combined)";
+    if (problem.kind == Kind::missing_constant)
+        return "missing field (usage: " + std::string(usage) + ")";
+    const std::string_view text = line.arg(problem.word);
+    if (problem.kind == Kind::extra_word)
+        return "extra field " + quoted(text) + " (usage: " + std::string(usage) + ")";
+    const FrictionKind kind = *parse_friction_kind(line.arg(0));
+    const std::string what = friction_constant_symbol(kind, problem.word - 1)[0] == 'K'
+                                 ? "decay rate K"
+                                 : "deceleration A";
+    if (problem.kind == Kind::not_a_number)
+        return what + " " + quoted(text) + " is not a number";
+    if (problem.kind == Kind::not_finite)
+        return what + " " + quoted(text) + " is not finite";
+    return what + " must be > 0 (got " + std::string(text) + ")";
 }
 
 /// What values of a parameter make physical sense.
@@ -225,7 +211,7 @@ Problem parse_param(const Line& line, Draft& draft) {
             return std::string(name) + " must be > 0" + got;
         break;
     }
-    draft.params.*spec->field = value;
+    draft.setup.physics.*spec->field = value;
     return {};
 }
 
@@ -327,7 +313,7 @@ Problem parse_game(const Line& line, Draft& draft) {
     const std::optional<GameType> type = parse_game_type(std::string(line.arg(0)));
     if (!type)
         return "unknown game " + quoted(line.arg(0)) + " (expected 8ball, 8ball-bar or 9ball)";
-    draft.game.type = *type;
+    draft.setup.game = *type;
     return {};
 }
 
@@ -456,14 +442,14 @@ std::variant<std::vector<Placed>, ScenarioError> gather_balls(const Draft& draft
         Placed p{b.line, b.ball, false};
         // The default mass is known only now that every `param m` has been read.
         if (!b.has_mass)
-            p.ball.mass = scenario.params.ball_mass;
+            p.ball.mass = scenario.setup.physics.ball_mass;
         placed.push_back(p);
     }
     if (!draft.rack_line)
         return placed;
     const int rack_line = *draft.rack_line;
     for (const Ball& ball :
-         make_rack(scenario.table, scenario.params, draft.rack, draft.rack_seed)) {
+         make_rack(scenario.table, scenario.setup.physics, draft.rack, draft.rack_seed)) {
         const auto line = std::find_if(draft.balls.begin(), draft.balls.end(),
                                        [&](const BallLine& b) { return b.ball.id == ball.id; });
         if (line == draft.balls.end()) {
@@ -488,7 +474,7 @@ std::optional<ScenarioError> check_positions(std::vector<Placed>& placed,
                                              const Scenario& scenario) {
     std::stable_sort(placed.begin(), placed.end(),
                      [](const Placed& a, const Placed& b) { return a.line < b.line; });
-    const double R = scenario.params.ball_radius;
+    const double R = scenario.setup.physics.ball_radius;
     // Rack balls are packed with a gap that their jitter may close, so touching is allowed.
     constexpr double tolerance = 1e-9;
     for (std::size_t i = 0; i < placed.size(); ++i) {
@@ -540,12 +526,13 @@ std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Pl
     const std::optional<int> groups_line = line_of(draft, "groups");
     const std::optional<int> call_line = line_of(draft, "call");
     const std::optional<int> break_line = line_of(draft, "break");
-    const Said game_said{"game " + std::string(game_type_name(game.type)), game_line.value_or(0)};
+    const Said game_said{"game " + std::string(game_type_name(draft.setup.game)),
+                         game_line.value_or(0)};
 
     if (groups_line && break_line)
         return conflict({"groups " + groups_text(game.player1_group), *groups_line},
                         {"break", *break_line}, "the table is open at the break");
-    if (game.type == GameType::nine_ball) {
+    if (draft.setup.game == GameType::nine_ball) {
         // game_line is set: 9-ball is never the default.
         if (groups_line && game.player1_group != Group::open)
             return conflict({"groups " + groups_text(game.player1_group), *groups_line}, game_said,
@@ -554,7 +541,7 @@ std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Pl
             return conflict({"call", *call_line}, game_said, "9-ball shots are not called");
     }
     if (const std::optional<int> push_line = line_of(draft, "push-out")) {
-        if (game.type != GameType::nine_ball)
+        if (draft.setup.game != GameType::nine_ball)
             return game_line ? conflict({"push-out", *push_line}, game_said,
                                         "the push-out is a 9-ball rule")
                              : ScenarioError{*push_line, "push-out needs 'game 9ball'"};
@@ -594,8 +581,8 @@ bool has_game_context(const Draft& draft) {
 /// Puts the checked directives together: the table and balls follow the final parameters.
 ScenarioResult build(const Draft& draft) {
     Scenario scenario;
-    scenario.params = draft.params;
-    scenario.table = make_table(draft.size, scenario.params.ball_radius);
+    scenario.setup = draft.setup;
+    scenario.table = make_table(scenario.setup);
     auto gathered = gather_balls(draft, scenario);
     if (auto* error = std::get_if<ScenarioError>(&gathered))
         return *error;

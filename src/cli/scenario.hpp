@@ -9,6 +9,7 @@
 #include <termpool/ball.hpp>
 #include <termpool/params.hpp>
 #include <termpool/rules.hpp>
+#include <termpool/setup.hpp>
 #include <termpool/simulator.hpp>
 #include <termpool/table.hpp>
 #include <variant>
@@ -20,18 +21,19 @@ namespace termpool::cli {
 /// `groups`, `break`, `call` and `push-out`. Every field has passed the checks against the rest of
 /// the scenario (a called ball is on the table, 9-ball has neither groups nor calls, ...).
 struct GameContext {
-    GameType type = GameType::eight_ball; ///< `game`; 8-ball when only other directives are given
-    int shooter = 1;                      ///< the player at the table, 1 or 2
-    Group player1_group = Group::open;    ///< player 1's group (player 2 has the other)
-    bool is_break = false;                ///< the shot is the break
-    Call call;                            ///< the 8-ball call; ball 0 when nothing was called
-    bool push_out = false;                ///< `push-out`: 9-ball, the shot right after the break
+    int shooter = 1;                   ///< the player at the table, 1 or 2
+    Group player1_group = Group::open; ///< player 1's group (player 2 has the other)
+    bool is_break = false;             ///< the shot is the break
+    Call call;                         ///< the 8-ball call; ball 0 when nothing was called
+    bool push_out = false;             ///< `push-out`: 9-ball, the shot right after the break
 };
 
 /// A scenario that passed every check and can be handed to the simulator as it is.
 struct Scenario {
-    Table table = make_table(TableSize::nine_foot); ///< built for `params.ball_radius`
-    PhysicsParams params;                           ///< defaults with every directive applied
+    /// `game` (8-ball when not given), `table`, and the physics: the defaults with every
+    /// directive applied.
+    GameSetup setup;
+    Table table = make_table(TableSize::nine_foot); ///< `setup`'s table, built for its ball radius
     std::vector<Ball> balls;                        ///< at rest, in ascending id order
     std::optional<Strike> strike;                   ///< the shot; none means "just print"
     /// Present when any game directive was given; then `strike` is present too.

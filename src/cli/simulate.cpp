@@ -77,15 +77,15 @@ int simulate_command(const std::vector<std::string>& args) {
     bool cut_short = false;
     if (scenario.strike) {
         const ShotResult shot =
-            simulate_shot(scenario.table, scenario.params, scenario.balls, *scenario.strike);
+            simulate_shot(scenario.table, scenario.setup.physics, scenario.balls, *scenario.strike);
         output = format_shot(shot.events, shot.balls, shot.rest_time);
         cut_short = shot.event_limit_hit;
         // A shot stopped before the balls came to rest has no outcome to judge yet.
         if (scenario.game && !cut_short) {
             const GameContext& context = *scenario.game;
-            Game game = Game::from_position(context.type, scenario.table, scenario.params,
-                                            scenario.balls, context.shooter, context.player1_group,
-                                            context.is_break, context.push_out);
+            Game game = Game::from_position(
+                scenario.setup.game, scenario.table, scenario.setup.physics, scenario.balls,
+                context.shooter, context.player1_group, context.is_break, context.push_out);
             output += format_verdict(game.apply(ShotCall{context.call, context.push_out}, shot));
         }
     } else {

@@ -63,8 +63,8 @@ bool needs_version_2(const GameRecord& r) {
 std::string format_record(const GameRecord& r) {
     std::string out =
         "termpool-record " + std::to_string(needs_version_2(r) ? record_version : 1) + "\n";
-    out += std::string("game ") + game_type_name(r.game) + "\n";
-    out += std::string("table ") + table_size_name(r.table) + "\n";
+    out += std::string("game ") + game_type_name(r.setup.game) + "\n";
+    out += std::string("table ") + table_size_name(r.setup.table) + "\n";
     out += "seed " + std::to_string(r.seed) + "\n";
     out += "breaker " + std::to_string(r.breaker) + "\n";
     for (int p = 0; p < 2; ++p) {
@@ -72,22 +72,10 @@ std::string format_record(const GameRecord& r) {
         if (r.computers[p])
             out += "computer" + std::to_string(p + 1) + " " + level_name(*r.computers[p]) + "\n";
     }
-    switch (r.friction.kind) {
-    case FrictionKind::physical:
-        break;
-    case FrictionKind::decay:
-        out += "friction decay " + number(r.friction.decay_rate) + "\n";
-        break;
-    case FrictionKind::constant:
-        out += "friction constant " + number(r.friction.deceleration) + "\n";
-        break;
-    case FrictionKind::combined:
-        out += "friction combined " + number(r.friction.decay_rate) + " " +
-               number(r.friction.deceleration) + "\n";
-        break;
-    }
-    if (r.cue_ball_mass > 0)
-        out += "cue-ball-mass " + number(r.cue_ball_mass) + "\n";
+    if (r.setup.physics.friction.kind != FrictionKind::physical)
+        out += "friction " + format_friction(r.setup.physics.friction) + "\n";
+    if (r.setup.physics.cue_ball_mass > 0)
+        out += "cue-ball-mass " + number(r.setup.physics.cue_ball_mass) + "\n";
     if (r.race_to > 1) {
         out += "race " + std::to_string(r.race_to) + "\n";
         out += std::string("breaks ") + break_rule_name(r.break_rule) + "\n";
@@ -168,12 +156,12 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
             const auto g = parse_game_type(std::string(f[1]));
             if (!g)
                 return fail("unknown game '" + std::string(f[1]) + "'");
-            r.game = *g;
+            r.setup.game = *g;
         } else if (key == "table" && want(2)) {
             const std::optional<TableSize> size = parse_table_size(f[1]);
             if (!size)
                 return fail("unknown table '" + std::string(f[1]) + "'");
-            r.table = *size;
+            r.setup.table = *size;
         } else if (key == "seed" && want(2)) {
             const auto s = to_u64(f[1]);
             if (!s)
@@ -190,27 +178,20 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
             if (!level)
                 return fail("unknown level '" + std::string(f[1]) + "'");
             r.computers[key.back() - '1'] = *level;
-        } else if (key == "friction" && f.size() >= 3) {
-            const auto k = to_double(f[2]);
-            if (!k || *k <= 0)
-                return fail("friction constants must be positive numbers");
-            if (f[1] == "decay" && want(3)) {
-                r.friction = {FrictionKind::decay, *k, 0, 0.005};
-            } else if (f[1] == "constant" && want(3)) {
-                r.friction = {FrictionKind::constant, 0, *k, 0.005};
-            } else if (f[1] == "combined" && want(4)) {
-                const auto a = to_double(f[3]);
-                if (!a || *a <= 0)
-                    return fail("friction constants must be positive numbers");
-                r.friction = {FrictionKind::combined, *k, *a, 0.005};
-            } else {
-                return fail("bad friction line");
-            }
+        } else if (key == "friction" && f.size() >= 2) {
+            const auto model = parse_friction(std::span(f).subspan(1));
+            if (const auto* problem = std::get_if<FrictionProblem>(&model))
+                return fail(problem->kind == FrictionProblem::Kind::not_positive ||
+                                    problem->kind == FrictionProblem::Kind::not_finite ||
+                                    problem->kind == FrictionProblem::Kind::not_a_number
+                                ? "friction constants must be positive numbers"
+                                : "bad friction line");
+            r.setup.physics.friction = std::get<FrictionModel>(model);
         } else if (key == "cue-ball-mass" && want(2)) {
             const auto m = to_double(f[1]);
             if (!m || *m <= 0)
                 return fail("cue-ball-mass must be a positive number");
-            r.cue_ball_mass = *m;
+            r.setup.physics.cue_ball_mass = *m;
         } else if (key == "race" && want(2)) {
             const auto n = to_u64(f[1]);
             if (!n || *n < 1 || *n > static_cast<std::uint64_t>(max_race_to))
@@ -296,18 +277,9 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
     return r;
 }
 
-PhysicsParams record_params(const GameRecord& r) {
-    PhysicsParams p;
-    p.friction = r.friction;
-    p.cue_ball_mass = r.cue_ball_mass;
-    return p;
-}
-
 std::variant<ReplayedMatch, RecordError>
 replay_match(const GameRecord& r, const ShotListener& on_shot, const RackListener& on_rack) {
-    const PhysicsParams params = record_params(r);
-    const Table table = make_table(r.table, params.ball_radius);
-    ReplayedMatch m{Game(r.game, table, params, r.breaker, r.seed),
+    ReplayedMatch m{make_game(r.setup, r.breaker, r.seed),
                     MatchState{r.race_to, r.break_rule, {0, 0}}, 1, r.breaker};
     // A rack is counted once, when the action that won it has been played.
     bool counted = false;
@@ -344,7 +316,7 @@ replay_match(const GameRecord& r, const ShotListener& on_shot, const RackListene
                 return RecordError{a.line, "player " + std::to_string(breaker) +
                                                " breaks this rack (the " +
                                                break_rule_name(r.break_rule) + " rule)"};
-            m.game = Game(r.game, table, params, a.breaker, a.seed);
+            m.game = make_game(r.setup, a.breaker, a.seed);
             ++m.rack;
             m.rack_breaker = a.breaker;
             counted = false;

@@ -15,13 +15,6 @@
 namespace termpool::tui {
 namespace {
 
-PhysicsParams game_params(const GameOptions& options) {
-    PhysicsParams p;
-    p.friction = options.friction;
-    p.cue_ball_mass = options.cue_ball_mass;
-    return p;
-}
-
 constexpr int frame_ms = 16; // about 60 frames per second while something moves
 constexpr double spin_step = 0.1, fine_spin_step = 0.02;
 constexpr double power_step = 0.02;
@@ -43,8 +36,8 @@ bool calls_pocket(const Game& game, int target) {
 } // namespace
 
 App::App(Terminal& terminal, const GameOptions& options)
-    : term_(terminal), options_(options), table_(make_table(options.table)),
-      params_(game_params(options)), game_(options.game, table_, params_, 1, 1),
+    : term_(terminal), options_(options), table_(make_table(options.setup)),
+      params_(options.setup.physics), game_(make_game(options.setup, 1, 1)),
       seed_(options.seed.value_or(
           static_cast<std::uint64_t>(Clock::now().time_since_epoch().count()))) {
     // Names first: the first message already says who breaks.
@@ -60,7 +53,7 @@ App::App(Terminal& terminal, const GameOptions& options)
         seat_computer(2, *options.computer);
     if (options.practice) {
         const RackType rack =
-            options.game == GameType::nine_ball ? RackType::nine_ball : RackType::eight_ball;
+            options.setup.game == GameType::nine_ball ? RackType::nine_ball : RackType::eight_ball;
         practice_.emplace(table_, params_, rack, record_.seed); // the rack a game would have
         sync_practice();
     }
@@ -79,19 +72,16 @@ App::App(Terminal& terminal, const GameOptions& options)
 
 void App::new_game(int breaker) {
     record_ = GameRecord{};
-    record_.game = options_.game;
-    record_.table = options_.table;
+    record_.setup = options_.setup;
     record_.seed = seed_++;
     record_.breaker = breaker;
-    record_.friction = options_.friction;
-    record_.cue_ball_mass = options_.cue_ball_mass;
     record_.race_to = options_.race_to;
     record_.break_rule = options_.break_rule;
     match_ = MatchState{options_.race_to, options_.break_rule, {0, 0}};
     tally_ = StatsTally{};
     rack_ = 1;
     rack_breaker_ = breaker;
-    game_ = Game(options_.game, table_, params_, breaker, record_.seed);
+    game_ = make_game(options_.setup, breaker, record_.seed);
     shown_balls_ = game_.balls();
     trajectory_.reset();
     message_ = names_[breaker - 1] + " breaks: place the cue ball in the kitchen";

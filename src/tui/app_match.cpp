@@ -22,7 +22,7 @@ void App::next_rack() {
 
 void App::start_rack(const RecordedAction& rack) {
     ++rack_;
-    game_ = Game(record_.game, table_, params_, rack.breaker, rack.seed);
+    game_ = make_game(record_.setup, rack.breaker, rack.seed);
     rack_breaker_ = rack.breaker;
     shown_balls_ = game_.balls();
 }

@@ -31,8 +31,8 @@ std::string potted_words(const ShotResult& result) {
 
 void App::sync_practice() {
     // The rest of the App reads the table through a Game: one with no referee state.
-    game_ = Game::from_position(options_.game, table_, params_, practice_->balls(), 1, Group::open,
-                                practice_->is_break());
+    game_ = Game::from_position(options_.setup.game, table_, params_, practice_->balls(), 1,
+                                Group::open, practice_->is_break());
 }
 
 void App::practice_shot_done() {

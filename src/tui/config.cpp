@@ -45,12 +45,12 @@ std::optional<std::string> apply_config(std::string_view text, GameOptions& o,
             const auto g = parse_game_type(value);
             if (!g)
                 return fail("unknown game '" + value + "' (8ball, 8ball-bar or 9ball)");
-            o.game = *g;
+            o.setup.game = *g;
         } else if (key == "table") {
             const std::optional<TableSize> size = parse_table_size(value);
             if (!size)
                 return fail("unknown table '" + value + "' (7ft, 8ft or 9ft)");
-            o.table = *size;
+            o.setup.table = *size;
         } else if (key == "race") {
             const auto n = parse_race_to(value);
             if (!n)

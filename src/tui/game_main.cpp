@@ -126,10 +126,7 @@ void report_bad_save(const std::string& path, const SaveRead& read) {
 
 // The options a record was played with; how it is shown (ASCII, colour) stays as given.
 GameOptions options_from(const GameRecord& record, GameOptions options) {
-    options.game = record.game;
-    options.table = record.table;
-    options.friction = record.friction;
-    options.cue_ball_mass = record.cue_ball_mass;
+    options.setup = record.setup;
     options.race_to = record.race_to;
     options.break_rule = record.break_rule;
     options.names[0] = record.names[0];
@@ -210,8 +207,9 @@ std::string describe(int slot, const std::string& path, const LoadedGame& saved)
     }
     char line[512];
     std::snprintf(line, sizeof line, "  %d  %s v %s, %s, %s, %s, saved %s  (%s)", slot,
-                  r.names[0].c_str(), r.names[1].c_str(), game_type_name(r.game),
-                  table_size_name(r.table), progress.c_str(), when, display_path(path).c_str());
+                  r.names[0].c_str(), r.names[1].c_str(), game_type_name(r.setup.game),
+                  table_size_name(r.setup.table), progress.c_str(), when,
+                  display_path(path).c_str());
     return line;
 }
 

@@ -41,49 +41,24 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
             const std::string* kind = value();
             if (!kind)
                 return std::nullopt;
-            auto number = [&](const char* what) -> std::optional<double> {
-                if (i + 1 >= args.size()) {
-                    error = std::string("--friction ") + *kind + " needs " + what;
-                    return std::nullopt;
-                }
-                char* end = nullptr;
-                const double v = std::strtod(args[i + 1].c_str(), &end);
-                if (*end != '\0' || !(v > 0) || !std::isfinite(v)) {
-                    error = std::string(what) + " must be a positive number";
-                    return std::nullopt;
-                }
-                ++i;
-                return v;
-            };
-            FrictionModel f;
-            if (*kind == "decay") {
-                f.kind = FrictionKind::decay;
-                const auto k = number("K");
-                if (!k)
-                    return std::nullopt;
-                f.decay_rate = *k;
-            } else if (*kind == "constant") {
-                f.kind = FrictionKind::constant;
-                const auto acc = number("A");
-                if (!acc)
-                    return std::nullopt;
-                f.deceleration = *acc;
-            } else if (*kind == "combined") {
-                f.kind = FrictionKind::combined;
-                const auto k = number("K");
-                if (!k)
-                    return std::nullopt;
-                const auto acc = number("A");
-                if (!acc)
-                    return std::nullopt;
-                f.decay_rate = *k;
-                f.deceleration = *acc;
-            } else if (*kind != "physical") {
+            const std::optional<FrictionKind> named = parse_friction_kind(*kind);
+            if (!named) {
                 error = "unknown friction model '" + *kind +
                         "' (physical, decay K, constant A or combined K A)";
                 return std::nullopt;
             }
-            o.friction = f;
+            std::vector<std::string_view> words{*kind};
+            for (std::size_t c = 0; c < friction_constant_count(*named) && i + 1 < args.size(); ++c)
+                words.push_back(args[++i]);
+            const auto model = parse_friction(words);
+            if (const auto* problem = std::get_if<FrictionProblem>(&model)) {
+                const char* symbol = friction_constant_symbol(*named, problem->word - 1);
+                error = problem->kind == FrictionProblem::Kind::missing_constant
+                            ? "--friction " + *kind + " needs " + symbol
+                            : std::string(symbol) + " must be a positive number";
+                return std::nullopt;
+            }
+            o.setup.physics.friction = std::get<FrictionModel>(model);
         } else if (a == "--cue-ball-mass") {
             const std::string* v = value();
             if (!v)
@@ -94,7 +69,7 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
                 error = "--cue-ball-mass takes kilograms between 0.05 and 1";
                 return std::nullopt;
             }
-            o.cue_ball_mass = kg;
+            o.setup.physics.cue_ball_mass = kg;
         } else if (a == "--vs-computer" || a == "--watch") {
             // The level is optional: take the next word only when it names one.
             std::optional<Level>& seat = a == "--watch" ? o.watch : o.computer;
@@ -128,7 +103,7 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
                 error = "unknown game '" + *v + "' (8ball, 8ball-bar or 9ball)";
                 return std::nullopt;
             }
-            o.game = *g;
+            o.setup.game = *g;
         } else if (a == "--table") {
             const std::string* v = value();
             if (!v)
@@ -138,7 +113,7 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
                 error = "unknown table '" + *v + "' (7ft, 8ft or 9ft)";
                 return std::nullopt;
             }
-            o.table = *size;
+            o.setup.table = *size;
         } else if (a == "--seed") {
             // The first rack's seed, so that a game can be set up again exactly.
             const std::string* v = value();

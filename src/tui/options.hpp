@@ -8,6 +8,7 @@
 #include <termpool/computer.hpp>
 #include <termpool/race.hpp>
 #include <termpool/rules.hpp>
+#include <termpool/setup.hpp>
 #include <termpool/table.hpp>
 #include <vector>
 
@@ -15,23 +16,21 @@ namespace termpool::tui {
 
 /// What the command line presets.
 struct GameOptions {
-    std::optional<std::string> names[2];    ///< --player1, --player2 (cleaned)
-    GameType game = GameType::eight_ball;   ///< --game
-    TableSize table = TableSize::nine_foot; ///< --table
-    bool timed_power = false;               ///< config power-mode: start in timed power mode
-    bool aim_aid = true;                    ///< config aim-aid: show the aiming aid
-    Level default_level = Level::medium;    ///< config level: for --vs-computer without one
-    bool resume = false;                    ///< --resume [N|FILE]: continue a saved game
-    std::string resume_from;                ///< --resume N or FILE; empty: the only one
-    std::string save_path;                  ///< where App saves (run_game picks the slot)
-    bool help = false;                      ///< -h, --help: print the usage and exit
-    bool ascii = false;                     ///< --ascii: plain ASCII and no colour
-    FrictionModel friction;                 ///< --friction MODEL [K] [A]
-    double cue_ball_mass = 0;               ///< --cue-ball-mass KG (0: like the others)
-    std::optional<Level> watch;             ///< --watch [LEVEL]: the computer is player 1 too
-    std::optional<Level> computer;          ///< --vs-computer [LEVEL]: the computer is player 2
-    std::optional<std::uint64_t> seed;      ///< --seed S: the first rack's seed (else the clock)
-    bool practice = false;                  ///< `termpool practice`: one player, no referee
+    std::optional<std::string> names[2]; ///< --player1, --player2 (cleaned)
+    /// --game, --table, --friction MODEL [K] [A], --cue-ball-mass KG (0: like the others)
+    GameSetup setup;
+    bool timed_power = false;            ///< config power-mode: start in timed power mode
+    bool aim_aid = true;                 ///< config aim-aid: show the aiming aid
+    Level default_level = Level::medium; ///< config level: for --vs-computer without one
+    bool resume = false;                 ///< --resume [N|FILE]: continue a saved game
+    std::string resume_from;             ///< --resume N or FILE; empty: the only one
+    std::string save_path;               ///< where App saves (run_game picks the slot)
+    bool help = false;                   ///< -h, --help: print the usage and exit
+    bool ascii = false;                  ///< --ascii: plain ASCII and no colour
+    std::optional<Level> watch;          ///< --watch [LEVEL]: the computer is player 1 too
+    std::optional<Level> computer;       ///< --vs-computer [LEVEL]: the computer is player 2
+    std::optional<std::uint64_t> seed;   ///< --seed S: the first rack's seed (else the clock)
+    bool practice = false;               ///< `termpool practice`: one player, no referee
     /// News for the first message line: config warnings, where this game is saved.
     std::vector<std::string> notices;
 

@@ -1,0 +1,124 @@
+// The game's setup and the one text form of the cloth model.
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <termpool/setup.hpp>
+
+namespace termpool {
+namespace {
+
+struct ModelName {
+    std::string_view name;
+    FrictionKind kind;
+    std::size_t constants;
+};
+
+constexpr ModelName model_names[] = {
+    {"physical", FrictionKind::physical, 0},
+    {"decay", FrictionKind::decay, 1},
+    {"constant", FrictionKind::constant, 1},
+    {"combined", FrictionKind::combined, 2},
+};
+
+const ModelName* find_model(std::string_view name) {
+    for (const ModelName& m : model_names)
+        if (m.name == name)
+            return &m;
+    return nullptr;
+}
+
+// Locale-free, like every text form of the project; a leading '+' is allowed, and a value too
+// large for a double reads as infinity (refused as not finite).
+std::variant<double, FrictionProblem::Kind> read_constant(std::string_view text) {
+    if (text.starts_with('+'))
+        text.remove_prefix(1);
+    double value = 0;
+    const char* last = text.data() + text.size();
+    const auto [end, ec] = std::from_chars(text.data(), last, value);
+    if (text.empty() || end != last || (ec != std::errc{} && ec != std::errc::result_out_of_range))
+        return FrictionProblem::Kind::not_a_number;
+    if (ec == std::errc::result_out_of_range) {
+        // from_chars leaves the value alone: a negative exponent means too small to tell from
+        // zero, anything else too large.
+        const std::size_t e = text.find_first_of("eE");
+        const bool tiny = e != std::string_view::npos && e + 1 < text.size() && text[e + 1] == '-';
+        return tiny ? FrictionProblem::Kind::not_positive : FrictionProblem::Kind::not_finite;
+    }
+    if (!std::isfinite(value))
+        return FrictionProblem::Kind::not_finite;
+    if (!(value > 0))
+        return FrictionProblem::Kind::not_positive;
+    return value;
+}
+
+std::string shortest(double v) {
+    char buffer[64];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+    return ec == std::errc{} ? std::string(buffer, end) : "nan";
+}
+
+} // namespace
+
+Table make_table(const GameSetup& setup) {
+    return make_table(setup.table, setup.physics.ball_radius);
+}
+
+Game make_game(const GameSetup& setup, int breaker, std::uint64_t seed) {
+    return Game(setup.game, make_table(setup), setup.physics, breaker, seed);
+}
+
+std::optional<FrictionKind> parse_friction_kind(std::string_view name) {
+    const ModelName* m = find_model(name);
+    return m ? std::optional<FrictionKind>(m->kind) : std::nullopt;
+}
+
+std::size_t friction_constant_count(FrictionKind kind) {
+    for (const ModelName& m : model_names)
+        if (m.kind == kind)
+            return m.constants;
+    return 0;
+}
+
+const char* friction_constant_symbol(FrictionKind kind, std::size_t index) {
+    return kind == FrictionKind::constant || index > 0 ? "A" : "K";
+}
+
+std::variant<FrictionModel, FrictionProblem>
+parse_friction(std::span<const std::string_view> words) {
+    const ModelName* m = words.empty() ? nullptr : find_model(words[0]);
+    if (!m)
+        return FrictionProblem{FrictionProblem::Kind::unknown_model, 0};
+    if (words.size() < m->constants + 1)
+        return FrictionProblem{FrictionProblem::Kind::missing_constant, words.size()};
+    if (words.size() > m->constants + 1)
+        return FrictionProblem{FrictionProblem::Kind::extra_word, m->constants + 1};
+    FrictionModel model;
+    model.kind = m->kind;
+    for (std::size_t i = 0; i < m->constants; ++i) {
+        const auto value = read_constant(words[i + 1]);
+        if (const auto* kind = std::get_if<FrictionProblem::Kind>(&value))
+            return FrictionProblem{*kind, i + 1};
+        const double v = std::get<double>(value);
+        if (friction_constant_symbol(m->kind, i)[0] == 'K')
+            model.decay_rate = v;
+        else
+            model.deceleration = v;
+    }
+    return model;
+}
+
+std::string format_friction(const FrictionModel& model) {
+    switch (model.kind) {
+    case FrictionKind::physical:
+        break;
+    case FrictionKind::decay:
+        return "decay " + shortest(model.decay_rate);
+    case FrictionKind::constant:
+        return "constant " + shortest(model.deceleration);
+    case FrictionKind::combined:
+        return "combined " + shortest(model.decay_rate) + " " + shortest(model.deceleration);
+    }
+    return "physical";
+}
+
+} // namespace termpool

@@ -1,0 +1,86 @@
+// The game's setup and the one text form of the cloth model.
+#include <catch2/catch.hpp>
+#include <string>
+#include <string_view>
+#include <termpool/setup.hpp>
+#include <vector>
+
+#include "tui/options.hpp"
+
+using namespace termpool;
+
+namespace {
+
+std::variant<FrictionModel, FrictionProblem> parsed(std::vector<std::string_view> words) {
+    return parse_friction(words);
+}
+
+FrictionProblem problem_of(std::vector<std::string_view> words) {
+    const auto result = parsed(std::move(words));
+    REQUIRE(std::holds_alternative<FrictionProblem>(result));
+    return std::get<FrictionProblem>(result);
+}
+
+} // namespace
+
+TEST_CASE("every cloth model reads back from the words it is written as", "[setup]") {
+    FrictionModel decay{FrictionKind::decay, 0.556, 0};
+    FrictionModel constant{FrictionKind::constant, 0, 0.545};
+    FrictionModel combined{FrictionKind::combined, 0.1 + 0.2, 1e-3};
+    for (const FrictionModel& model : {FrictionModel{}, decay, constant, combined}) {
+        const std::string text = format_friction(model);
+        std::vector<std::string_view> words;
+        for (std::size_t at = 0; at < text.size();) {
+            const std::size_t end = std::min(text.find(' ', at), text.size());
+            words.push_back(std::string_view(text).substr(at, end - at));
+            at = end + 1;
+        }
+        const auto back = parse_friction(words);
+        REQUIRE(std::holds_alternative<FrictionModel>(back));
+        const FrictionModel& read = std::get<FrictionModel>(back);
+        CHECK(read.kind == model.kind);
+        CHECK(read.decay_rate == model.decay_rate); // bit for bit: 0.1 + 0.2 is not 0.3
+        CHECK(read.deceleration == model.deceleration);
+    }
+    CHECK(format_friction(combined) == "combined 0.30000000000000004 0.001");
+    CHECK(format_friction(FrictionModel{}) == "physical");
+}
+
+TEST_CASE("bad cloth-model words say what is wrong and where", "[setup]") {
+    using Kind = FrictionProblem::Kind;
+    CHECK(problem_of({}).kind == Kind::unknown_model);
+    CHECK(problem_of({"sticky"}).kind == Kind::unknown_model);
+    CHECK(problem_of({"decay"}).kind == Kind::missing_constant);
+    CHECK(problem_of({"combined", "0.5"}).word == 2);
+    CHECK(problem_of({"physical", "1"}).kind == Kind::extra_word);
+    CHECK(problem_of({"decay", "0.5", "1"}).word == 2);
+    CHECK(problem_of({"decay", "fast"}).kind == Kind::not_a_number);
+    CHECK(problem_of({"decay", "0,5"}).kind == Kind::not_a_number); // no locale's decimal comma
+    CHECK(problem_of({"constant", "inf"}).kind == Kind::not_finite);
+    CHECK(problem_of({"constant", "1e999"}).kind == Kind::not_finite);
+    CHECK(problem_of({"constant", "0"}).kind == Kind::not_positive);
+    CHECK(problem_of({"combined", "0.5", "-1"}).kind == Kind::not_positive);
+    CHECK(problem_of({"combined", "0.5", "-1"}).word == 2);
+    CHECK(std::holds_alternative<FrictionModel>(parsed({"decay", "+0.5"})));
+}
+
+TEST_CASE("the game's options carry the setup, with their own wording for bad models", "[setup]") {
+    std::string error;
+    const auto o = tui::parse_game_options({"--game", "9ball", "--table", "7ft", "--friction",
+                                            "combined", "0.5", "0.25", "--seed", "3"},
+                                           error);
+    REQUIRE(o);
+    CHECK(o->setup.game == GameType::nine_ball);
+    CHECK(o->setup.table == TableSize::seven_foot);
+    CHECK(o->setup.physics.friction.kind == FrictionKind::combined);
+    CHECK(o->setup.physics.friction.deceleration == 0.25);
+    CHECK(o->seed == 3u);
+    CHECK(make_table(o->setup).size == TableSize::seven_foot);
+
+    CHECK_FALSE(tui::parse_game_options({"--friction", "combined", "0.5"}, error));
+    CHECK(error == "--friction combined needs A");
+    CHECK_FALSE(tui::parse_game_options({"--friction", "decay", "x"}, error));
+    CHECK(error == "K must be a positive number");
+    CHECK_FALSE(tui::parse_game_options({"--friction", "slow"}, error));
+    CHECK(error == "unknown friction model 'slow' (physical, decay K, constant A or combined K A)");
+}
