@@ -2,6 +2,7 @@
 // Records made as the game makes them: computers play, each action goes into the record.
 
 #include <termpool/computer.hpp>
+#include <termpool/match.hpp>
 #include <termpool/record.hpp>
 
 namespace termpool::test {
@@ -25,8 +26,8 @@ inline void play_one_action(Game& game, ComputerPlayer (&players)[2], GameRecord
         const ComputerShot shot = player.shot(game);
         action.strike = shot.strike;
         action.call = shot.call;
-        ReplayedShot heard{game.shooter(), game.is_break(), game.call_as_taken(shot.call), {}};
-        heard.verdict = game.play(shot.strike, shot.call);
+        PlayedShot heard{game.shooter(), 1, game.is_break(), game.call_as_taken(shot.call), {}, {}};
+        heard.verdict = game.play(shot.strike, shot.call, &heard.result);
         if (on_shot)
             on_shot(heard);
     }

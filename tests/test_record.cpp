@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <termpool/computer.hpp>
+#include <termpool/match.hpp>
 #include <termpool/record.hpp>
 
 #include "record_helpers.hpp"
@@ -71,7 +72,7 @@ std::string error_of(const std::string& text) {
     const auto parsed = parse_record(text);
     if (const RecordError* e = std::get_if<RecordError>(&parsed))
         return std::to_string(e->line) + ": " + e->message;
-    const auto replayed = replay_record(std::get<GameRecord>(parsed));
+    const auto replayed = Match::replay(std::get<GameRecord>(parsed));
     if (const RecordError* e = std::get_if<RecordError>(&replayed))
         return std::to_string(e->line) + ": " + e->message;
     return "";
@@ -91,9 +92,9 @@ TEST_CASE("a recorded game replays to the same table, bit for bit", "[record]") 
         CHECK(back.names[1] == "Bjørn");
         CHECK(back.computers[1] == Level::medium);
         CHECK(format_record(back) == text);
-        const auto replayed = replay_record(back);
-        REQUIRE(std::holds_alternative<Game>(replayed));
-        const Game& again = std::get<Game>(replayed);
+        const auto replayed = Match::replay(back);
+        REQUIRE(std::holds_alternative<Match>(replayed));
+        const Game& again = std::get<Match>(replayed).game();
         CHECK(again.balls() == game.balls());
         CHECK(again.winner() == game.winner());
         CHECK(again.shooter() == game.shooter());
@@ -154,9 +155,9 @@ TEST_CASE("a version-1 save is read and written back byte for byte", "[record]")
     CHECK(record.setup.game == GameType::nine_ball);
     CHECK(record.breaker == 2);
     CHECK(format_record(record) == v1);
-    const auto replayed = replay_record(record);
-    REQUIRE(std::holds_alternative<Game>(replayed));
-    CHECK(std::get<Game>(replayed).breaker() == 2);
+    const auto replayed = Match::replay(record);
+    REQUIRE(std::holds_alternative<Match>(replayed));
+    CHECK(std::get<Match>(replayed).game().breaker() == 2);
 }
 
 TEST_CASE("a recorded race replays rack by rack to the same balls and score", "[record][race]") {
@@ -185,30 +186,29 @@ TEST_CASE("a recorded race replays rack by rack to the same balls and score", "[
         CHECK(back.break_rule == m.rule);
         CHECK(format_record(back) == text);
 
-        // The listeners hear each rack start, and every shot after the start of its rack.
-        std::vector<int> breakers;
+        // The listener hears every shot, each in its rack, and each rack has shots.
         std::vector<int> shots_per_rack;
-        const auto replayed = replay_match(
-            back, [&](const ReplayedShot&) { ++shots_per_rack.back(); },
-            [&](int rack, int breaker) {
-                CHECK(rack == static_cast<int>(breakers.size()) + 1);
-                breakers.push_back(breaker);
-                shots_per_rack.push_back(0);
-            });
-        REQUIRE(std::holds_alternative<ReplayedMatch>(replayed));
-        const ReplayedMatch& again = std::get<ReplayedMatch>(replayed);
-        CHECK(breakers == played.breakers);
+        const auto replayed = Match::replay(back, back.actions.size(), [&](const PlayedShot& shot) {
+            CHECK(shot.rack >= static_cast<int>(shots_per_rack.size()));
+            shots_per_rack.resize(static_cast<std::size_t>(shot.rack));
+            ++shots_per_rack.back();
+        });
+        REQUIRE(std::holds_alternative<Match>(replayed));
+        const Match& again = std::get<Match>(replayed);
+        CHECK(shots_per_rack.size() == played.breakers.size());
         CHECK(std::count(shots_per_rack.begin(), shots_per_rack.end(), 0) == 0);
-        CHECK(again.rack == static_cast<int>(played.breakers.size()));
-        CHECK(again.rack_breaker == played.breakers.back());
-        CHECK(again.score == played.score);
-        CHECK(again.score.match_winner() == played.score.match_winner());
-        CHECK(again.game.balls() == played.game.balls());
-        CHECK(again.game.winner() == played.game.winner());
-        // replay_record gives the same last rack.
-        const auto last = replay_record(back);
-        REQUIRE(std::holds_alternative<Game>(last));
-        CHECK(std::get<Game>(last).balls() == played.game.balls());
+        CHECK(again.rack() == static_cast<int>(played.breakers.size()));
+        CHECK(again.rack_breaker() == played.breakers.back());
+        CHECK(again.score() == played.score);
+        CHECK(again.score().match_winner() == played.score.match_winner());
+        CHECK(again.game().balls() == played.game.balls());
+        CHECK(again.game().winner() == played.game.winner());
+        // Each rack's breaker, replayed up to the action before it and after it.
+        std::vector<int> breakers{std::get<Match>(Match::replay(back, 0)).rack_breaker()};
+        for (std::size_t i = 0; i < back.actions.size(); ++i)
+            if (back.actions[i].kind == RecordedAction::Kind::rack)
+                breakers.push_back(std::get<Match>(Match::replay(back, i + 1)).rack_breaker());
+        CHECK(breakers == played.breakers);
     }
 }
 
@@ -218,9 +218,9 @@ TEST_CASE("a single game is still written as version 1, without race lines", "[r
     CHECK(text.starts_with("termpool-record 1\n"));
     CHECK(text.find("race") == std::string::npos);
     CHECK(text.find("breaks") == std::string::npos);
-    const auto replayed = replay_match(record);
-    REQUIRE(std::holds_alternative<ReplayedMatch>(replayed));
-    const MatchState& score = std::get<ReplayedMatch>(replayed).score;
+    const auto replayed = Match::replay(record);
+    REQUIRE(std::holds_alternative<Match>(replayed));
+    const MatchState& score = std::get<Match>(replayed).score();
     CHECK(score.race_to == 1);
     CHECK(score.match_winner() == game.winner());
 }

@@ -86,7 +86,7 @@ GameRecord computer_game(GameType type, std::uint64_t seed, StatsTally& live) {
     ComputerPlayer players[2] = {ComputerPlayer(Level::medium, seed),
                                  ComputerPlayer(Level::hard, seed + 1)};
     for (int turn = 0; turn < 300 && game.winner() == 0; ++turn)
-        test::play_one_action(game, players, record, [&](const ReplayedShot& shot) {
+        test::play_one_action(game, players, record, [&](const PlayedShot& shot) {
             live.on_shot(shot.shooter, shot.was_break, shot.call, shot.verdict);
         });
     return record;

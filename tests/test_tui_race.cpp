@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <string>
+#include <termpool/match.hpp>
 #include <termpool/record.hpp>
 #include <variant>
 
@@ -101,9 +102,9 @@ TEST_CASE("a race: the score after a rack, the next rack, the match winner", "[t
     // Rack 1 won, the race to 2 goes on.
     const GameRecord one_rack = race_record(2, 1, 11);
     write_save(dir.path, one_rack);
-    auto replayed = replay_match(one_rack);
-    REQUIRE(std::holds_alternative<ReplayedMatch>(replayed));
-    const int first_winner = std::get<ReplayedMatch>(replayed).game.winner();
+    auto replayed = Match::replay(one_rack);
+    REQUIRE(std::holds_alternative<Match>(replayed));
+    const int first_winner = std::get<Match>(replayed).game().winner();
     REQUIRE(first_winner != 0);
     {
         Tmux t;
@@ -124,18 +125,18 @@ TEST_CASE("a race: the score after a rack, the next rack, the match winner", "[t
     // The saved match replays to rack 2 with the score of rack 1.
     auto parsed = parse_record(file_text(save));
     REQUIRE(std::holds_alternative<GameRecord>(parsed));
-    auto again = replay_match(std::get<GameRecord>(parsed));
-    REQUIRE(std::holds_alternative<ReplayedMatch>(again));
-    CHECK(std::get<ReplayedMatch>(again).rack == 2);
-    CHECK(std::get<ReplayedMatch>(again).rack_breaker == 2);
-    CHECK(std::get<ReplayedMatch>(again).score.racks_played() == 1);
+    auto again = Match::replay(std::get<GameRecord>(parsed));
+    REQUIRE(std::holds_alternative<Match>(again));
+    CHECK(std::get<Match>(again).rack() == 2);
+    CHECK(std::get<Match>(again).rack_breaker() == 2);
+    CHECK(std::get<Match>(again).score().racks_played() == 1);
 
     // A match decided: the winner is announced and a rematch offered.
     ScratchDir done("termpool-test");
     const GameRecord whole = race_record(2, 3, 11);
-    auto decided = replay_match(whole);
-    REQUIRE(std::holds_alternative<ReplayedMatch>(decided));
-    const MatchState& final_score = std::get<ReplayedMatch>(decided).score;
+    auto decided = Match::replay(whole);
+    REQUIRE(std::holds_alternative<Match>(decided));
+    const MatchState& final_score = std::get<Match>(decided).score();
     REQUIRE(final_score.match_winner() != 0);
     write_save(done.path, whole);
     Tmux t;
@@ -169,9 +170,9 @@ TEST_CASE("termpool replay plays a whole match back, rack by rack", "[tui][e2e][
     }
     ScratchDir dir("termpool-test");
     const GameRecord match = race_record(2, 3, 11);
-    auto replayed = replay_match(match);
-    REQUIRE(std::holds_alternative<ReplayedMatch>(replayed));
-    REQUIRE(std::get<ReplayedMatch>(replayed).rack >= 2);
+    auto replayed = Match::replay(match);
+    REQUIRE(std::holds_alternative<Match>(replayed));
+    REQUIRE(std::get<Match>(replayed).rack() >= 2);
     const std::string file = dir.path + "/match.save";
     std::ofstream(file) << format_record(match);
     Tmux t;
@@ -193,7 +194,7 @@ TEST_CASE("termpool replay plays a whole match back, rack by rack", "[tui][e2e][
     }
     CHECK(ended);
     // At the end the panel has the final score.
-    const MatchState& score = std::get<ReplayedMatch>(replayed).score;
+    const MatchState& score = std::get<Match>(replayed).score();
     const std::string s = t.screen();
     CAPTURE(s);
     CHECK(s.find("Ann " + std::to_string(score.racks_won[0])) != std::string::npos);

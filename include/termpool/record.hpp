@@ -5,7 +5,6 @@
 /// the game exactly. The text form is what the game saves (see the man page, FILES).
 
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -61,41 +60,6 @@ std::string format_record(const GameRecord& record);
 /// Reads the text form; an error names the line and the problem (truncated, foreign, from a
 /// newer version, bad values).
 std::variant<GameRecord, RecordError> parse_record(std::string_view text);
-
-/// One shot of a replay, for listeners that need more than who shot and the verdict.
-struct ReplayedShot {
-    int shooter = 1;        ///< who played it
-    bool was_break = false; ///< it was a break
-    ShotCall call;          ///< the call as the game took it (push_out only when allowed)
-    Verdict verdict;        ///< what it meant
-};
-
-/// Hears each shot of a replay: who shot, how, and what it meant.
-using ShotListener = std::function<void(const ReplayedShot& shot)>;
-/// Hears the start of each rack of a replay, the first included, before its first action: its
-/// number (from 1) and who breaks it.
-using RackListener = std::function<void(int rack, int breaker)>;
-
-/// A match replayed to where its record stands.
-struct ReplayedMatch {
-    Game game;            ///< the current rack
-    MatchState score;     ///< the race and racks won; the current rack counts once it is won
-    int rack = 1;         ///< the current rack's number, from 1
-    int rack_breaker = 1; ///< who was given the current rack's break (re-racks aside)
-};
-
-/// Plays the record's actions on a new game, and each rack action's rack after the one before.
-/// An action the game refuses (a record edited into an impossible state) is an error at its
-/// line; so is a rack action before the rack is won, after the match is, or with a breaker
-/// other than the break rule's.
-std::variant<ReplayedMatch, RecordError> replay_match(const GameRecord& record,
-                                                      const ShotListener& on_shot = {},
-                                                      const RackListener& on_rack = {});
-
-/// `replay_match`, for the current rack's game only.
-std::variant<Game, RecordError> replay_record(const GameRecord& record,
-                                              const ShotListener& on_shot = {},
-                                              const RackListener& on_rack = {});
 
 /// The seed for rack `rack` (from 1) of a match: the record's seed for the first, a mix of it
 /// and the number for the others. Rack actions store the seed, so this may change freely.

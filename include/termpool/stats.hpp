@@ -77,7 +77,7 @@ private:
 };
 
 /// Replays `record` and tallies its shots: the figures of a saved or finished game. An action
-/// the game refuses is an error at its line, as for replay_record.
+/// the game refuses is an error at its line, as for Match::replay.
 std::variant<StatsTally, RecordError> tally_record(const GameRecord& record);
 
 /// Both players' figures for a recorded game (player 1 first), or the replay's error.

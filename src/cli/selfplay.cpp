@@ -7,8 +7,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
-#include <termpool/computer.hpp>
-#include <termpool/rules.hpp>
+#include <termpool/match.hpp>
 #include <thread>
 #include <vector>
 
@@ -34,7 +33,7 @@ struct Options {
     std::uint64_t jobs = 1;
 };
 
-struct PlayerStats {
+struct SeatFigures {
     std::uint64_t decisions = 0;
     double seconds = 0;
     std::uint64_t simulations = 0;
@@ -42,13 +41,13 @@ struct PlayerStats {
     std::uint64_t pots = 0;
 };
 
-struct GameRecord {
+struct GameSummary {
     int winner = 0;
     WinReason reason = WinReason::none;
     int shots = 0;
     int fouls = 0;
     bool break_and_run = false;
-    PlayerStats players[2];
+    SeatFigures players[2];
     std::string violation; // empty when every invariant held
 };
 
@@ -123,62 +122,75 @@ std::string check_invariants(const Game& game) {
     return {};
 }
 
-GameRecord play_one(const Options& o, std::uint64_t index) {
-    GameRecord record;
-    const std::uint64_t seed = o.seed * 1000003ULL + index;
-    const int breaker = 1 + static_cast<int>(index % 2);
-    const Table table = make_table(TableSize::nine_foot);
-    Game game(o.game, table, PhysicsParams{}, breaker, seed);
-    ComputerPlayer players[2] = {ComputerPlayer(o.levels[0], seed * 2 + 1),
-                                 ComputerPlayer(o.levels[1], seed * 2 + 2)};
+GameSummary play_one(const Options& o, std::uint64_t index) {
+    GameSummary summary;
+    GameRecord header;
+    header.setup.game = o.game;
+    header.seed = o.seed * 1000003ULL + index;
+    header.breaker = 1 + static_cast<int>(index % 2);
+    header.computers[0] = o.levels[0];
+    header.computers[1] = o.levels[1];
+    // Seat p's computer plays from seed 2 * seed + p.
+    Match match(header, header.seed * 2);
     bool opponent_shot = false;
     using Clock = std::chrono::steady_clock;
-    while (game.winner() == 0) {
-        if (record.shots >= max_shots_per_game) {
-            record.violation =
+    while (match.pending().kind != Pending::over) {
+        if (summary.shots >= max_shots_per_game) {
+            summary.violation =
                 "the game did not end within " + std::to_string(max_shots_per_game) + " shots";
-            return record;
+            return summary;
         }
-        const int actor = game.chooser() != 0 ? game.chooser() : game.shooter();
-        ComputerPlayer& player = players[actor - 1];
-        PlayerStats& stats = record.players[actor - 1];
+        const int actor = match.to_act();
+        SeatFigures& stats = summary.players[actor - 1];
         const auto start = Clock::now();
-        const std::uint64_t simulated = player.simulations();
-        if (game.chooser() != 0) {
-            game.choose(player.choose(game));
+        const std::uint64_t simulated = match.computer_simulations(actor);
+        std::optional<ComputerMove> move = match.computer_move();
+        if (move && move->kind == Pending::choose) {
+            match.choose(actor, move->choice);
             continue;
         }
-        if (game.ball_in_hand() != BallInHand::none) {
-            if (!game.place_cue_ball(player.place_cue_ball(game))) {
-                record.violation = "illegal ball-in-hand placement";
-                return record;
+        if (move && move->kind == Pending::place) {
+            if (match.place(actor, move->spot) != MatchError::none) {
+                summary.violation = "illegal ball-in-hand placement";
+                return summary;
             }
+            move = match.computer_move();
         }
-        const bool was_break = game.is_break();
-        const ComputerShot shot = player.shot(game);
+        if (!move || move->kind != Pending::shoot) {
+            summary.violation = "the computer had no shot to play";
+            return summary;
+        }
+        const ComputerShot& shot = move->shot;
         stats.seconds += std::chrono::duration<double>(Clock::now() - start).count();
-        stats.simulations += player.simulations() - simulated;
+        stats.simulations += match.computer_simulations(actor) - simulated;
         ++stats.decisions;
-        const Verdict v = game.play(shot.strike, shot.call);
-        ++record.shots;
-        if (actor != breaker)
+        const auto played = match.shoot(actor, shot.strike, shot.call);
+        if (const MatchError* refused = std::get_if<MatchError>(&played)) {
+            summary.violation =
+                std::string("the match refused the shot: ") + match_error_text(*refused);
+            return summary;
+        }
+        const PlayedShot& p = std::get<PlayedShot>(played);
+        ++summary.shots;
+        if (actor != header.breaker)
             opponent_shot = true;
-        if (v.foul != Foul::none)
-            ++record.fouls;
-        if (!was_break && shot.call.call.ball != 0) {
+        if (p.verdict.foul != Foul::none)
+            ++summary.fouls;
+        if (!p.was_break && shot.call.call.ball != 0) {
             ++stats.pot_attempts;
-            if (std::ranges::count(v.pocketed, shot.call.call.ball) && v.foul == Foul::none)
+            if (std::ranges::count(p.verdict.pocketed, shot.call.call.ball) &&
+                p.verdict.foul == Foul::none)
                 ++stats.pots;
         }
-        if (std::string problem = check_invariants(game); !problem.empty()) {
-            record.violation = problem + " after shot " + std::to_string(record.shots);
-            return record;
+        if (std::string problem = check_invariants(match.game()); !problem.empty()) {
+            summary.violation = problem + " after shot " + std::to_string(summary.shots);
+            return summary;
         }
     }
-    record.winner = game.winner();
-    record.reason = game.win_reason();
-    record.break_and_run = record.winner == breaker && !opponent_shot;
-    return record;
+    summary.winner = match.game().winner();
+    summary.reason = match.game().win_reason();
+    summary.break_and_run = summary.winner == header.breaker && !opponent_shot;
+    return summary;
 }
 
 // 95% Wilson interval of a proportion, in percent.
@@ -204,7 +216,7 @@ int selfplay_command(const std::vector<std::string>& args) {
         return 2;
     }
     const Options& o = *options;
-    std::vector<GameRecord> records(o.games);
+    std::vector<GameSummary> records(o.games);
     std::atomic<std::uint64_t> next{0};
     const auto start = std::chrono::steady_clock::now();
     auto worker = [&] {
@@ -222,9 +234,9 @@ int selfplay_command(const std::vector<std::string>& args) {
 
     int wins[2] = {0, 0};
     std::uint64_t fouls = 0, shots = 0, runs = 0;
-    PlayerStats per[2];
+    SeatFigures per[2];
     for (std::uint64_t i = 0; i < o.games; ++i) {
-        const GameRecord& r = records[i];
+        const GameSummary& r = records[i];
         if (!r.violation.empty()) {
             std::fprintf(
                 stderr, "termpool selfplay: invariant broken in game %llu (seed %llu): %s\n",
@@ -252,7 +264,7 @@ int selfplay_command(const std::vector<std::string>& args) {
                 static_cast<unsigned long long>(o.games), static_cast<unsigned long long>(o.seed));
     for (int p = 0; p < 2; ++p) {
         const auto [lo, hi] = wilson(wins[p], n);
-        const PlayerStats& s = per[p];
+        const SeatFigures& s = per[p];
         std::printf("p%d %-6s wins %4d (%.1f%%, 95%% CI %.1f-%.1f%%)  pots %.1f%% of %llu  "
                     "decision %.3f s  %.0f shots/s\n",
                     p + 1, level_name(o.levels[p]), wins[p], 100 * wins[p] / n, lo, hi,

@@ -277,68 +277,6 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
     return r;
 }
 
-std::variant<ReplayedMatch, RecordError>
-replay_match(const GameRecord& r, const ShotListener& on_shot, const RackListener& on_rack) {
-    ReplayedMatch m{make_game(r.setup, r.breaker, r.seed),
-                    MatchState{r.race_to, r.break_rule, {0, 0}}, 1, r.breaker};
-    // A rack is counted once, when the action that won it has been played.
-    bool counted = false;
-    if (on_rack)
-        on_rack(m.rack, m.rack_breaker);
-    for (const RecordedAction& a : r.actions) {
-        switch (a.kind) {
-        case RecordedAction::Kind::place:
-            if (!m.game.place_cue_ball(a.place))
-                return RecordError{a.line, "the cue ball cannot be placed there now"};
-            break;
-        case RecordedAction::Kind::choose:
-            if (!m.game.choose(a.choice))
-                return RecordError{a.line, std::string("'") + choice_name(a.choice) +
-                                               "' is not a choice owed now"};
-            break;
-        case RecordedAction::Kind::shot: {
-            if (!m.game.ready_to_shoot())
-                return RecordError{a.line, "no shot can be played now"};
-            ReplayedShot shot{
-                m.game.shooter(), m.game.is_break(), m.game.call_as_taken(a.call), {}};
-            shot.verdict = m.game.play(a.strike, a.call);
-            if (on_shot)
-                on_shot(shot);
-            break;
-        }
-        case RecordedAction::Kind::rack: {
-            if (m.score.match_winner() != 0)
-                return RecordError{a.line, "the match is over: no rack follows"};
-            if (m.game.winner() == 0)
-                return RecordError{a.line, "a rack starts only when the one before is won"};
-            const int breaker = m.score.next_breaker(m.rack_breaker, m.game.winner());
-            if (a.breaker != breaker)
-                return RecordError{a.line, "player " + std::to_string(breaker) +
-                                               " breaks this rack (the " +
-                                               break_rule_name(r.break_rule) + " rule)"};
-            m.game = make_game(r.setup, a.breaker, a.seed);
-            ++m.rack;
-            m.rack_breaker = a.breaker;
-            counted = false;
-            if (on_rack)
-                on_rack(m.rack, m.rack_breaker);
-            break;
-        }
-        }
-        if (!counted && m.game.winner() != 0)
-            counted = m.score.record_rack(m.game.winner());
-    }
-    return m;
-}
-
-std::variant<Game, RecordError> replay_record(const GameRecord& record, const ShotListener& on_shot,
-                                              const RackListener& on_rack) {
-    auto replayed = replay_match(record, on_shot, on_rack);
-    if (const RecordError* e = std::get_if<RecordError>(&replayed))
-        return *e;
-    return std::move(std::get<ReplayedMatch>(replayed).game);
-}
-
 std::uint64_t rack_seed(std::uint64_t record_seed, int rack) {
     if (rack <= 1)
         return record_seed;

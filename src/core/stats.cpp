@@ -1,4 +1,5 @@
 // Player statistics: the tally of a game's shots (definitions in termpool/stats.hpp).
+#include <termpool/match.hpp>
 #include <termpool/stats.hpp>
 
 #include <algorithm>
@@ -86,13 +87,10 @@ void StatsTally::on_shot(int shooter, bool was_break, const ShotCall& call, cons
 }
 
 std::variant<StatsTally, RecordError> tally_record(const GameRecord& record) {
-    StatsTally tally;
-    const auto replayed = replay_match(record, [&](const ReplayedShot& shot) {
-        tally.on_shot(shot.shooter, shot.was_break, shot.call, shot.verdict);
-    });
+    const auto replayed = Match::replay(record);
     if (const RecordError* problem = std::get_if<RecordError>(&replayed))
         return *problem;
-    return tally;
+    return std::get<Match>(replayed).tally();
 }
 
 std::variant<std::array<PlayerStats, 2>, RecordError> stats_of_record(const GameRecord& record) {

@@ -1,79 +1,136 @@
-// Matches and what a game leaves behind: the racks of a race, the figures at the end of a game
-// and in the stats file, and a saved game taken up again.
+// Matches and what a game leaves behind: new games and rematches, the racks of a race, the
+// computer's turns shown at a player's pace, the figures at the end of a game and in the
+// stats file, and a saved game taken up again.
 
 #include <string>
 
 #include "tui/app.hpp"
+#include "tui/messages.hpp"
 #include "tui/stats_file.hpp"
 #include "tui/stats_summary.hpp"
 
 namespace termpool::tui {
 
+void App::new_game(int breaker) {
+    // The players keep their seats (and names) from the game before.
+    GameRecord header;
+    header.setup = options_.setup;
+    header.seed = seed_++;
+    header.breaker = breaker;
+    for (int p = 0; p < 2; ++p) {
+        header.names[p] = match_.record().names[p];
+        header.computers[p] = match_.record().computers[p];
+    }
+    header.race_to = options_.race_to;
+    header.break_rule = options_.break_rule;
+    match_ = Match(header, seed_);
+    shown_balls_ = game().balls();
+    trajectory_.reset();
+    message_ = name(breaker) + " breaks: place the cue ball in the kitchen";
+}
+
 void App::next_rack() {
-    const int breaker = match_.next_breaker(rack_breaker_, game_.winner());
-    const RecordedAction rack = rack_action(record_, rack_ + 1, breaker);
-    record_.actions.push_back(rack);
-    start_rack(rack);
+    const int breaker = match_.next_breaker();
+    if (match_.next_rack(breaker) != MatchError::none)
+        return;
+    shown_balls_ = game().balls();
     save();
-    message_ = "Rack " + std::to_string(rack_) + ": " + names_[breaker - 1] +
+    message_ = "Rack " + std::to_string(match_.rack()) + ": " + name(breaker) +
                " breaks: place the cue ball in the kitchen";
     start_turn();
 }
 
-void App::start_rack(const RecordedAction& rack) {
-    ++rack_;
-    game_ = make_game(record_.setup, rack.breaker, rack.seed);
-    rack_breaker_ = rack.breaker;
-    shown_balls_ = game_.balls();
-}
-
 void App::save_stats() {
     // Once per finished game or match; computers are kept under their names ("CPU (hard)").
-    const PlayerStats figures[2] = {tally_.of(1), tally_.of(2)};
-    const std::string notice = save_game_stats(stats_path(), names_, figures);
+    const PlayerStats figures[2] = {match_.tally().of(1), match_.tally().of(2)};
+    const std::string notice = save_game_stats(stats_path(), match_.record().names, figures);
     if (!notice.empty())
         message_ += " (" + notice + ")";
 }
 
 std::string App::game_over_text() const {
-    const auto score = [&] {
-        return names_[0] + " " + std::to_string(match_.racks_won[0]) + ", " + names_[1] + " " +
-               std::to_string(match_.racks_won[1]);
+    const MatchState& s = match_.score();
+    const auto score_words = [&] {
+        return name(1) + " " + std::to_string(s.racks_won[0]) + ", " + name(2) + " " +
+               std::to_string(s.racks_won[1]);
     };
-    const PlayerStats figures[2] = {tally_.of(1), tally_.of(2)};
-    const std::string summary = "\n\n" + stats_summary(names_, figures);
-    if (!match_.is_race())
+    const PlayerStats figures[2] = {match_.tally().of(1), match_.tally().of(2)};
+    const std::string summary = "\n\n" + stats_summary(match_.record().names, figures);
+    if (!s.is_race())
         return message_ + summary + "\n\nr  rematch (loser breaks)\nn  new game\nq  quit";
-    const std::string race = "Race to " + std::to_string(match_.race_to) + ": " + score();
-    if (const int winner = match_.match_winner())
-        return message_ + "\n\n" + names_[winner - 1] + " wins the match\n" + race + summary +
+    const std::string race = "Race to " + std::to_string(s.race_to) + ": " + score_words();
+    if (const int winner = s.match_winner())
+        return message_ + "\n\n" + name(winner) + " wins the match\n" + race + summary +
                "\n\nr  rematch (loser breaks)\nn  new match\nq  quit";
-    const int breaker = match_.next_breaker(rack_breaker_, game_.winner());
-    return message_ + "\n\n" + race + summary + "\n\nEnter  next rack (" + names_[breaker - 1] +
-           " breaks)\nq      quit (the match is saved)";
+    return message_ + "\n\n" + race + summary + "\n\nEnter  next rack (" +
+           name(match_.next_breaker()) + " breaks)\nq      quit (the match is saved)";
+}
+
+bool App::computer_to_act() const {
+    if (practice_ || replaying_ || mode_ == Mode::names || mode_ == Mode::animating ||
+        mode_ == Mode::game_over)
+        return false;
+    return match_.computer_to_act();
 }
 
 bool App::computers_watched_rack_over() const {
     // Two computers in a race go on by themselves, after a look at the score.
-    return mode_ == Mode::game_over && computers_[0] && computers_[1] && match_.is_race() &&
-           match_.match_winner() == 0 && Clock::now() - game_over_at_ > std::chrono::seconds(4);
+    return mode_ == Mode::game_over && match_.seat(1).computer && match_.seat(2).computer &&
+           match_.pending().kind == Pending::next_rack &&
+           Clock::now() - game_over_at_ > std::chrono::seconds(4);
 }
 
-void App::resume(const GameRecord& record, ResumedGame state) {
-    record_ = record;
-    for (int p = 0; p < 2; ++p) {
-        names_[p] = record.names[p];
-        if (record.computers[p])
-            computers_[p].emplace(*record.computers[p], seed_ + static_cast<std::uint64_t>(p + 1));
-        else
-            computers_[p].reset();
+void App::computer_turn() {
+    // The computer's turn is shown like a player's: it places the cue ball, turns the cue to
+    // its aim, fills the power bar, then shoots.
+    const Clock::time_point now = Clock::now();
+    if (!pacing_.showing()) {
+        const std::optional<ComputerMove> move = match_.computer_move();
+        if (!move)
+            return;
+        pacing_.start(*move, aim_.aim_deg, now);
+        if (move->kind == Pending::place)
+            place_ = move->spot;
+        return;
     }
-    game_ = std::move(state.match.game);
-    match_ = state.match.score;
-    rack_ = state.match.rack;
-    rack_breaker_ = state.match.rack_breaker;
-    tally_ = state.tally;
-    entry_player_ = 0;
+    const ComputerMove move = pacing_.move();
+    if (move.kind == Pending::choose) {
+        if (!pacing_.due(now))
+            return;
+        pacing_.stop();
+        const std::string who = name(match_.to_act());
+        choose(move.choice);
+        message_ = who + ": " + choice_words(move.choice);
+        start_turn();
+        return;
+    }
+    if (move.kind == Pending::place) {
+        if (!pacing_.due(now))
+            return;
+        pacing_.stop();
+        if (place(place_)) {
+            message_.clear();
+            start_aiming();
+        }
+        return;
+    }
+    const double t = pacing_.elapsed(now);
+    aim_.aim_deg = pacing_.aim_at(t);
+    aim_.side = move.shot.strike.side;
+    aim_.follow = move.shot.strike.follow;
+    aim_.power = pacing_.power_at(t, game().is_break());
+    update_preview();
+    if (!pacing_.due(now))
+        return;
+    pacing_.stop();
+    play(move.shot.strike, move.shot.call);
+}
+
+void App::resume(Match match) {
+    match_ = std::move(match);
+    // The computers take up their seats with new streams, as a new game's do.
+    match_.reseed_computers(seed_);
+    entry_.player = 0;
     // Where the game stands comes first here: the player needs it before any news.
     message_ = "Game resumed: " + resumed_words();
     for (const std::string& n : options_.notices)
@@ -82,14 +139,15 @@ void App::resume(const GameRecord& record, ResumedGame state) {
 }
 
 std::string App::resumed_words() const {
-    if (const int winner = game_.winner()) {
-        if (match_.is_race() && match_.match_winner() == 0)
-            return names_[winner - 1] + " won rack " + std::to_string(rack_);
-        return names_[winner - 1] + " won";
+    const Game& g = match_.game();
+    if (const int winner = g.winner()) {
+        if (match_.pending().kind == Pending::next_rack)
+            return name(winner) + " won rack " + std::to_string(match_.rack());
+        return name(winner) + " won";
     }
-    if (const int chooser = game_.chooser())
-        return names_[chooser - 1] + " to choose";
-    return names_[game_.shooter() - 1] + " to play";
+    if (const int chooser = g.chooser())
+        return name(chooser) + " to choose";
+    return name(g.shooter()) + " to play";
 }
 
 } // namespace termpool::tui

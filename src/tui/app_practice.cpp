@@ -31,8 +31,8 @@ std::string potted_words(const ShotResult& result) {
 
 void App::sync_practice() {
     // The rest of the App reads the table through a Game: one with no referee state.
-    game_ = Game::from_position(options_.setup.game, table_, params_, practice_->balls(), 1,
-                                Group::open, practice_->is_break());
+    practice_game_ = Game::from_position(options_.setup.game, table_, params_, practice_->balls(),
+                                         1, Group::open, practice_->is_break());
 }
 
 void App::practice_shot_done() {
@@ -54,10 +54,10 @@ bool App::handle_practice_key(const std::string& text) {
             sync_practice();
             // The same aim and spin (the power bar kept its setting), ready to adjust.
             mode_ = Mode::aiming;
-            aim_deg_ = last_strike_.angle_deg;
-            side_ = last_strike_.side;
-            follow_ = last_strike_.follow;
-            show_marker_ = false;
+            aim_.aim_deg = last_strike_.angle_deg;
+            aim_.side = last_strike_.side;
+            aim_.follow = last_strike_.follow;
+            aim_.show_marker = false;
             message_ = "The balls are back: take the shot again";
             update_preview();
         } else {

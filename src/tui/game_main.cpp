@@ -52,30 +52,17 @@ void print_game_usage(std::FILE* out) {
 }
 
 // A saved game or match, read and replayed (once) to where it stands.
-struct LoadedGame {
-    GameRecord record;
-    ResumedGame state;
-};
-
-std::variant<LoadedGame, RecordError> load_game(const std::string& text) {
+// A save read back: the match replayed to where its record stands.
+std::variant<Match, RecordError> load_game(const std::string& text) {
     auto parsed = parse_record(text);
     if (auto* problem = std::get_if<RecordError>(&parsed))
         return *problem;
-    GameRecord& record = std::get<GameRecord>(parsed);
-    StatsTally tally;
-    auto replayed = replay_match(record, [&](const ReplayedShot& shot) {
-        tally.on_shot(shot.shooter, shot.was_break, shot.call, shot.verdict);
-    });
-    if (auto* problem = std::get_if<RecordError>(&replayed))
-        return *problem;
-    return LoadedGame{std::move(record),
-                      ResumedGame{std::move(std::get<ReplayedMatch>(replayed)), tally}};
+    return Match::replay(std::get<GameRecord>(parsed));
 }
 
 // True when the save holds a game or match that is over: a new game may take its place.
-bool finished(const LoadedGame& saved) {
-    const ReplayedMatch& m = saved.state.match;
-    return m.score.is_race() ? m.score.match_winner() != 0 : m.game.winner() != 0;
+bool finished(const Match& saved) {
+    return saved.pending().kind == Pending::over;
 }
 
 // A save read from disk, or why not: missing (nothing), unreadable (error), or not a game
@@ -86,7 +73,7 @@ struct SaveRead {
     std::optional<RecordError> problem;
     std::string kept_as;       // where a save that is not a game went
     std::string kept_as_error; // why it could not be moved there
-    std::optional<LoadedGame> loaded;
+    std::optional<Match> loaded;
 };
 
 // Where a save that is not a game was kept, in words.
@@ -112,7 +99,7 @@ SaveRead read_save(const std::string& path) {
                 r.kept_as_error = why;
         }
     } else {
-        r.loaded.emplace(std::move(std::get<LoadedGame>(result)));
+        r.loaded.emplace(std::move(std::get<Match>(result)));
     }
     return r;
 }
@@ -175,7 +162,7 @@ void tell_where_saved(const std::string& path, const std::optional<std::string>&
         return; // nothing was played (the names were never entered)
     // A game that is over has nothing to continue: it can be watched again.
     const auto loaded = load_game(*after);
-    if (const auto* game = std::get_if<LoadedGame>(&loaded); game && finished(*game)) {
+    if (const auto* game = std::get_if<Match>(&loaded); game && finished(*game)) {
         std::printf("Game over, saved in %s; watch it again with: termpool replay %s\n",
                     display_path(path).c_str(), display_path(path).c_str());
         return;
@@ -185,19 +172,18 @@ void tell_where_saved(const std::string& path, const std::optional<std::string>&
 }
 
 // One line of the --resume list: the slot, the players, the game, how far, when.
-std::string describe(int slot, const std::string& path, const LoadedGame& saved) {
-    const GameRecord& r = saved.record;
+std::string describe(int slot, const std::string& path, const Match& saved) {
+    const GameRecord& r = saved.record();
     const auto shots = std::count_if(r.actions.begin(), r.actions.end(), [](const auto& a) {
         return a.kind == RecordedAction::Kind::shot;
     });
-    const ReplayedMatch& m = saved.state.match;
-    const int winner = m.score.is_race() ? m.score.match_winner() : m.game.winner();
+    const MatchState& score = saved.score();
+    const int winner = score.is_race() ? score.match_winner() : saved.game().winner();
     std::string progress = winner != 0 ? "won by " + r.names[winner - 1]
                                        : std::to_string(shots) + (shots == 1 ? " shot" : " shots");
-    if (m.score.is_race() && winner == 0)
-        progress += ", race to " + std::to_string(m.score.race_to) + " at " +
-                    std::to_string(m.score.racks_won[0]) + "-" +
-                    std::to_string(m.score.racks_won[1]);
+    if (score.is_race() && winner == 0)
+        progress += ", race to " + std::to_string(score.race_to) + " at " +
+                    std::to_string(score.racks_won[0]) + "-" + std::to_string(score.racks_won[1]);
     char when[32] = "";
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0) {
@@ -216,7 +202,7 @@ std::string describe(int slot, const std::string& path, const LoadedGame& saved)
 // A save chosen to go on with, locked for as long as the game runs.
 struct Chosen {
     SaveLock lock;
-    LoadedGame game;
+    Match game;
 };
 
 // `--resume N` or `--resume FILE`: that save, or the exit status after saying why not.
@@ -299,11 +285,10 @@ int resume_game(const GameOptions& options, const std::vector<std::string>& noti
         return *status;
     Chosen& chosen = std::get<Chosen>(choice);
     const std::string path = chosen.lock.path();
-    GameOptions resumed = options_from(chosen.game.record, options);
+    GameOptions resumed = options_from(chosen.game.record(), options);
     resumed.save_path = path;
     resumed.notices = notices;
-    const int status = in_terminal(
-        resumed, [&](App& app) { app.resume(chosen.game.record, std::move(chosen.game.state)); });
+    const int status = in_terminal(resumed, [&](App& app) { app.resume(std::move(chosen.game)); });
     tell_where_saved(path, std::nullopt, true);
     return status;
 }
@@ -461,7 +446,7 @@ int run_replay(const std::vector<std::string>& args) {
         std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), problem->line, problem->message.c_str());
         return 2;
     }
-    const GameRecord& record = std::get<LoadedGame>(result).record;
+    const GameRecord& record = std::get<Match>(result).record();
     return in_terminal(options_from(record, GameOptions{}),
                        [&](App& app) { app.start_replay(record); });
 }

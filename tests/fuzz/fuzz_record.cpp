@@ -2,6 +2,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
+#include <termpool/match.hpp>
 #include <termpool/record.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -10,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (const auto* record = std::get_if<termpool::GameRecord>(&parsed)) {
         // Long games only repeat what short ones test; keep each run quick.
         if (record->actions.size() <= 8)
-            termpool::replay_record(*record);
+            termpool::Match::replay(*record);
     }
     return 0;
 }

@@ -1,0 +1,99 @@
+#include "tui/aim_state.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace termpool::tui {
+namespace {
+
+constexpr double spin_step = 0.1, fine_spin_step = 0.02;
+
+} // namespace
+
+void AimState::new_turn() {
+    safety = false;
+    push_out = false;
+    pocket_chosen = false;
+    target_index = -1;
+    side = follow = 0;
+    show_marker = false; // the pointer's mark belongs to the last aim
+    dragging = false;
+}
+
+void AimState::set_break(bool is_break) {
+    if (is_break && power_before_break < 0) {
+        power_before_break = power;
+        power = 1.0;
+    } else if (!is_break && power_before_break >= 0) {
+        power = power_before_break;
+        power_before_break = -1;
+    }
+}
+
+double AimState::current_power(Clock::time_point now) const {
+    if (!time_power)
+        return power;
+    return power_from_time(std::chrono::duration<double>(now - power_start).count());
+}
+
+bool AimState::spin_key(const std::string& text) {
+    if (text == "w" || text == "W")
+        follow = std::min(0.5, follow + (text == "w" ? spin_step : fine_spin_step));
+    else if (text == "s" || text == "S")
+        follow = std::max(-0.5, follow - (text == "s" ? spin_step : fine_spin_step));
+    else if (text == "d" || text == "D")
+        side = std::min(0.5, side + (text == "d" ? spin_step : fine_spin_step));
+    else if (text == "a" || text == "A")
+        side = std::max(-0.5, side - (text == "a" ? spin_step : fine_spin_step));
+    else if (text == "c")
+        side = follow = 0;
+    else
+        return false;
+    return true;
+}
+
+void AimState::aim_at_target(const std::vector<TargetChoice>& order) {
+    target_line = TargetLine::straight;
+    if (order.empty())
+        return;
+    target_index = std::clamp(target_index, 0, static_cast<int>(order.size()) - 1);
+    aim_deg = order[static_cast<std::size_t>(target_index)].aim_deg;
+    target_line = order[static_cast<std::size_t>(target_index)].line;
+}
+
+void AimState::update_preview(const Table& table, const std::vector<Ball>& balls, double R,
+                              Vec2 cue, const std::function<bool(int ball)>& calls_pocket) {
+    preview = preview_shot(table, balls, R, cue, aim_deg);
+    if (preview.object_ball != preview_ball)
+        pocket_chosen = false;
+    preview_ball = preview.object_ball;
+    if (pocket_chosen)
+        return;
+    // Propose the obvious pocket: the one the object ball heads for most directly.
+    called_pocket = 0;
+    if (preview.object_ball > 0 && calls_pocket(preview.object_ball) &&
+        preview.object_path.size() >= 2) {
+        const Vec2 from = preview.object_path.front();
+        const Vec2 dir = normalized(preview.object_path.back() - from);
+        double best = -2;
+        for (const Pocket& pocket : table.pockets) {
+            const double c = dot(normalized(pocket.position - from), dir);
+            if (c > best) {
+                best = c;
+                called_pocket = pocket.number;
+            }
+        }
+    }
+}
+
+ShotCall AimState::call(const std::function<bool(int ball)>& calls_pocket) const {
+    ShotCall c;
+    c.push_out = push_out;
+    if (safety)
+        c.call.safety = true;
+    else if (preview_ball > 0 && calls_pocket(preview_ball) && called_pocket != 0)
+        c.call = {preview_ball, called_pocket, false};
+    return c;
+}
+
+} // namespace termpool::tui

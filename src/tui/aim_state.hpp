@@ -1,0 +1,60 @@
+#pragma once
+// The cue as the player at the table sets it: direction, power, spin, the call and the aiming
+// aid's paths. Plain data with the few rules that belong to it; the App feeds it input.
+
+#include <chrono>
+#include <functional>
+#include <string>
+#include <termpool/rules.hpp>
+#include <termpool/simulator.hpp>
+#include <vector>
+
+#include "tui/aim.hpp"
+
+namespace termpool::tui {
+
+/// The aim, the power bar, the spin and the call of the shot being set up.
+struct AimState {
+    using Clock = std::chrono::steady_clock;
+
+    double aim_deg = 0;             ///< the cue's direction, degrees counter-clockwise from +x
+    double power = 0.3;             ///< the power bar, 0 to 1
+    double power_before_break = -1; ///< the power to return to after a break, -1: none held
+    bool time_power = false;        ///< the bar swings and Space stops it
+    Clock::time_point power_start;  ///< when the swinging bar started
+    double side = 0, follow = 0;    ///< tip offsets, fractions of R
+    bool show_aid = true;           ///< draw the aiming aid
+    bool show_marker = false;       ///< draw the pointer's mark
+    Vec2 marker;                    ///< where the pointer aimed
+    bool dragging = false;          ///< a button is held: its distance sets the power
+    bool drag_moved = false;        ///< the pointer moved while held: release shoots
+    int called_pocket = 0;          ///< the pocket the shot calls, 0: none
+    bool pocket_chosen = false;     ///< the player picked the pocket: keep it while aiming
+    bool safety = false;            ///< a safety is called
+    bool push_out = false;          ///< 9-ball: the shot is a push-out
+    int target_index = -1;          ///< which of the ranked targets the aim proposes
+    TargetLine target_line = TargetLine::straight; ///< how the proposed aim reaches its ball
+    int preview_ball = -1;                         ///< the ball the aid shows the cue ball hitting
+    AimPreview preview;                            ///< the aid's paths
+
+    /// A new turn: no call, no spin, no pointer mark, the easiest target first.
+    void new_turn();
+    /// A break wants a hard hit: the bar starts full for it, and the player's own setting
+    /// comes back for the shots after.
+    void set_break(bool is_break);
+    /// The power now (the swinging bar's position in timed mode).
+    double current_power(Clock::time_point now) const;
+    /// Applies a spin key (w/s/d/a and W/S/D/A finely, c centres); false for another text.
+    bool spin_key(const std::string& text);
+    /// Turns the cue to the proposed target `target_index` of `order` (kept in range).
+    void aim_at_target(const std::vector<TargetChoice>& order);
+    /// Recomputes the aid for the cue at `cue`, and proposes the pocket the object ball heads
+    /// for most directly when `calls_pocket` says the shot at it names one.
+    void update_preview(const Table& table, const std::vector<Ball>& balls, double R, Vec2 cue,
+                        const std::function<bool(int ball)>& calls_pocket);
+    /// The call of the shot as set: a safety, or the aimed ball into the chosen pocket when the
+    /// shot names one.
+    ShotCall call(const std::function<bool(int ball)>& calls_pocket) const;
+};
+
+} // namespace termpool::tui

@@ -1,0 +1,109 @@
+// The prompts: the players' names at the start (player 2 may be the computer), `n` to rename,
+// and the race's length.
+
+#include <string>
+
+#include "tui/app.hpp"
+#include "tui/player_name.hpp"
+
+namespace termpool::tui {
+
+void App::seat_computer(int player, Level level) {
+    match_.seat_computer(player, level);
+    // Two computers (watching) are told apart by their seat.
+    const std::string seat = options_.watch ? " " + std::to_string(player) : "";
+    match_.rename(player, "CPU" + seat + " (" + level_name(level) + ")");
+}
+
+void App::handle_text_entry(const Input& in) {
+    if (in.kind == Input::Kind::text) {
+        entry_.type(in.text);
+        return;
+    }
+    if (in.kind != Input::Kind::key)
+        return;
+    if (is_backspace(in.key)) {
+        entry_.erase_last();
+    } else if (in.key == key_enter) {
+        take_name();
+    } else if (in.key == key_escape && mode_ != Mode::names) {
+        entry_.player = 0;
+        entry_.clear();
+    }
+}
+
+void App::take_name() {
+    // At the start, player 2 may be the computer: "computer" or "computer LEVEL".
+    if (mode_ == Mode::names && entry_.player == 2 && entry_.text.starts_with("computer")) {
+        const std::string rest = entry_.text.size() > 9 ? entry_.text.substr(9) : "";
+        const auto level = rest.empty() ? std::optional<Level>(Level::medium) : parse_level(rest);
+        if (!level) {
+            entry_.error = "levels: easy, medium, hard, pro";
+            return;
+        }
+        seat_computer(2, *level);
+        entry_.clear();
+        entry_.player = 0;
+        ask_race();
+        return;
+    }
+    std::string error;
+    const auto name = clean_player_name(entry_.text, error);
+    if (!error.empty()) {
+        entry_.error = error;
+        return;
+    }
+    if (name && match_.rename(entry_.player, *name) != MatchError::none) {
+        entry_.error = match_error_text(MatchError::bad_name);
+        return;
+    }
+    entry_.clear();
+    const bool starting = mode_ == Mode::names;
+    if (starting && entry_.player == 1 && !options_.names[1] && !match_.seat(2).computer &&
+        !practice_) {
+        entry_.player = 2;
+        return;
+    }
+    entry_.player = 0;
+    if (starting)
+        ask_race();
+}
+
+void App::ask_race() {
+    // The last question of the name prompt: how long a match (practice has none).
+    if (practice_) {
+        begin();
+        return;
+    }
+    entry_.asking_race = true;
+    entry_.clear();
+}
+
+void App::handle_race_entry(const Input& in) {
+    if (in.kind == Input::Kind::text && in.text.size() == 1 && in.text[0] >= '0' &&
+        in.text[0] <= '9' && entry_.text.size() < 2) {
+        entry_.type(in.text);
+        return;
+    }
+    if (in.kind != Input::Kind::key)
+        return;
+    if (is_backspace(in.key)) {
+        entry_.erase_last();
+        return;
+    }
+    if (in.key != key_enter && in.key != key_escape)
+        return;
+    if (in.key != key_escape && !entry_.text.empty()) {
+        const std::optional<int> race = parse_race_to(entry_.text);
+        if (!race || match_.set_race(*race) != MatchError::none) {
+            entry_.error = "a race is 1 to " + std::to_string(max_race_to) + " racks";
+            return;
+        }
+        options_.race_to = *race;
+    }
+    entry_.asking_race = false;
+    entry_.clear();
+    begin();
+}
+
+} // namespace termpool::tui
