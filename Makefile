@@ -86,7 +86,7 @@ endif
 
 .DEFAULT_GOAL := all
 .PHONY: all run test check bench deps ensure-deps install uninstall clean format format-check help \
-        fuzz fuzz-deps fuzz-run
+        fuzz fuzz-deps fuzz-run layers
 .DELETE_ON_ERROR:
 
 all: $(BIN)
@@ -137,6 +137,10 @@ check:
 
 bench: $(BIN)
 	./$(BIN) bench $(BENCH_ARGS)
+
+# Which folder includes which, read from the sources (tests/test_layers.cpp checks the rules).
+layers:
+	@sh tools/layers
 
 ensure-deps:
 	@$(MAKE) --no-print-directory -f $(THIS_MAKEFILE) deps
@@ -229,6 +233,7 @@ help:
 	@echo "  test          build binary and tests, run tests (TEST_ARGS='[tag]' to filter)"
 	@echo "  check         like test, in build/san with ASan+UBSan"
 	@echo "  bench         build, then run 'build/termpool bench' (BENCH_ARGS=...)"
+	@echo "  layers        print the include graph: which folder includes which, how often"
 	@echo "  deps          install $(DEB_PACKAGES) with apt-get if missing"
 	@echo "  install       install binary and man page under \$$(DESTDIR)\$$(PREFIX) ($(PREFIX))"
 	@echo "  uninstall     remove them again"
