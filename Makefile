@@ -37,6 +37,9 @@ SAN_LDFLAGS   :=
 endif
 
 WARNFLAGS    := -Wall -Wextra -Wpedantic -Werror $(SAN_WARNFLAGS)
+# The core sees only the public headers: it includes its private ones relative to itself
+# ("motion.hpp"), and nothing of src/cli or src/tui can be found from it.
+CORE_CPPFLAGS := -Iinclude $(CPPFLAGS)
 ALL_CPPFLAGS := -Iinclude -Isrc $(CPPFLAGS)
 ALL_CXXFLAGS := -std=c++20 $(OPTFLAGS) $(WARNFLAGS) $(CXXFLAGS)
 DEPFLAGS     := -MMD -MP
@@ -46,15 +49,20 @@ LDLIBS       += -lncursesw
 # ---------------------------------------------------------------------------
 # Sources and objects (out of tree, mirroring src/ under $(BUILD)/)
 
-LIB_SRCS  := $(wildcard src/core/*.cpp) $(wildcard src/cli/*.cpp) $(wildcard src/tui/*.cpp)
+# The core is a static library; the commands (src/cli) and the front end (src/tui) are
+# linked with it into the binary and the test binary.
+CORE_SRCS := $(wildcard src/core/*.cpp)
+APP_SRCS  := $(wildcard src/cli/*.cpp) $(wildcard src/tui/*.cpp)
 MAIN_SRC  := src/main.cpp
 TEST_SRCS := $(wildcard tests/*.cpp)
 
-LIB_OBJS  := $(patsubst src/%.cpp,$(BUILD)/%.o,$(LIB_SRCS))
+CORE_OBJS := $(patsubst src/%.cpp,$(BUILD)/%.o,$(CORE_SRCS))
+APP_OBJS  := $(patsubst src/%.cpp,$(BUILD)/%.o,$(APP_SRCS))
 MAIN_OBJ  := $(BUILD)/main.o
 TEST_OBJS := $(patsubst tests/%.cpp,$(BUILD)/tests/%.o,$(TEST_SRCS))
-ALL_OBJS  := $(LIB_OBJS) $(MAIN_OBJ) $(TEST_OBJS)
+ALL_OBJS  := $(CORE_OBJS) $(APP_OBJS) $(MAIN_OBJ) $(TEST_OBJS)
 
+CORE_LIB := $(BUILD)/libtermpool.a
 BIN      := $(BUILD)/termpool
 TEST_BIN := $(BUILD)/termpool_tests
 
@@ -78,20 +86,31 @@ endif
 
 .DEFAULT_GOAL := all
 .PHONY: all run test check bench deps ensure-deps install uninstall clean format format-check help \
-        fuzz fuzz-deps fuzz-run
+        fuzz fuzz-deps fuzz-run layers
 .DELETE_ON_ERROR:
 
 all: $(BIN)
 
-$(BIN): $(LIB_OBJS) $(MAIN_OBJ) | $(OBJ_DIRS)
+# The library comes after the objects that use it, as the linker needs.
+$(BIN): $(APP_OBJS) $(MAIN_OBJ) $(CORE_LIB) | $(OBJ_DIRS)
 	$(CXX) $(ALL_CXXFLAGS) $(ALL_LDFLAGS) $^ -o $@ $(LDLIBS)
 
-$(TEST_BIN): $(LIB_OBJS) $(TEST_OBJS) | $(OBJ_DIRS)
+$(TEST_BIN): $(APP_OBJS) $(TEST_OBJS) $(CORE_LIB) | $(OBJ_DIRS)
 	$(CXX) $(ALL_CXXFLAGS) $(ALL_LDFLAGS) $^ -o $@ $(LDLIBS)
 
-# The tests rule has the shorter stem, so make prefers it for $(BUILD)/tests/*.o.
+# Written afresh, so that the object of a removed source does not stay in the archive.
+$(CORE_LIB): $(CORE_OBJS) | $(OBJ_DIRS)
+	rm -f $@
+	$(AR) rcs $@ $^
+
+# The tests and core rules have shorter stems than the general one, so make prefers them for
+# $(BUILD)/tests/*.o and $(BUILD)/core/*.o. Tests may include the core's private headers
+# (core/polynomial.hpp), so they get -Isrc like the front ends.
 $(BUILD)/tests/%.o: tests/%.cpp | $(OBJ_DIRS) $(DEPS_GATE)
 	$(CXX) $(ALL_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
+
+$(BUILD)/core/%.o: src/core/%.cpp | $(OBJ_DIRS) $(DEPS_GATE)
+	$(CXX) $(CORE_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
 
 $(BUILD)/%.o: src/%.cpp | $(OBJ_DIRS) $(DEPS_GATE)
 	$(CXX) $(ALL_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
@@ -119,6 +138,10 @@ check:
 bench: $(BIN)
 	./$(BIN) bench $(BENCH_ARGS)
 
+# Which folder includes which, read from the sources (tests/test_layers.cpp checks the rules).
+layers:
+	@sh tools/layers
+
 ensure-deps:
 	@$(MAKE) --no-print-directory -f $(THIS_MAKEFILE) deps
 
@@ -142,12 +165,15 @@ deps:
 FUZZ_CXX      ?= clang++
 FUZZ_SECONDS  ?= 600
 FUZZ_DIR      := build/fuzz
-FUZZ_FLAGS    := -std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -Iinclude -Isrc
-FUZZ_LIB_SRCS := $(wildcard src/core/*.cpp) src/cli/scenario.cpp src/cli/numbers.cpp \
+FUZZ_CORE_FLAGS := -std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -Iinclude
+FUZZ_FLAGS    := $(FUZZ_CORE_FLAGS) -Isrc
+FUZZ_APP_SRCS := src/cli/scenario.cpp src/cli/numbers.cpp \
                  src/tui/config.cpp src/tui/xdg_dir.cpp src/tui/player_name.cpp \
                  src/tui/text_width.cpp src/tui/options.cpp src/tui/stats_file.cpp \
                  src/tui/keep_aside.cpp src/tui/save_file.cpp
-FUZZ_LIB_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_LIB_SRCS))
+FUZZ_CORE_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(CORE_SRCS))
+FUZZ_APP_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_APP_SRCS))
+FUZZ_CORE_LIB := $(FUZZ_DIR)/libtermpool.a
 FUZZ_TARGETS  := $(patsubst tests/fuzz/%.cpp,$(FUZZ_DIR)/%,$(wildcard tests/fuzz/*.cpp))
 
 fuzz: fuzz-deps $(FUZZ_TARGETS)
@@ -159,11 +185,20 @@ fuzz-deps:
 	  $${SUDO}apt-get install -y clang libclang-rt-dev; \
 	fi
 
+# The same layers as the normal build: the core with -Iinclude only, as a library.
+$(FUZZ_DIR)/core/%.o: src/core/%.cpp
+	@mkdir -p $(dir $@)
+	$(FUZZ_CXX) $(FUZZ_CORE_FLAGS) -MMD -MP -c $< -o $@
+
 $(FUZZ_DIR)/%.o: src/%.cpp
 	@mkdir -p $(dir $@)
 	$(FUZZ_CXX) $(FUZZ_FLAGS) -MMD -MP -c $< -o $@
 
-$(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.cpp $(FUZZ_LIB_OBJS)
+$(FUZZ_CORE_LIB): $(FUZZ_CORE_OBJS)
+	rm -f $@
+	$(AR) rcs $@ $^
+
+$(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.cpp $(FUZZ_APP_OBJS) $(FUZZ_CORE_LIB)
 	$(FUZZ_CXX) $(FUZZ_FLAGS) -fsanitize=fuzzer $^ -o $@
 
 fuzz-run: fuzz
@@ -172,7 +207,7 @@ fuzz-run: fuzz
 	  $$t -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 $$t.corpus || exit 1; \
 	done
 
--include $(FUZZ_LIB_OBJS:.o=.d)
+-include $(FUZZ_CORE_OBJS:.o=.d) $(FUZZ_APP_OBJS:.o=.d)
 
 install: $(BIN)
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man6
@@ -198,6 +233,7 @@ help:
 	@echo "  test          build binary and tests, run tests (TEST_ARGS='[tag]' to filter)"
 	@echo "  check         like test, in build/san with ASan+UBSan"
 	@echo "  bench         build, then run 'build/termpool bench' (BENCH_ARGS=...)"
+	@echo "  layers        print the include graph: which folder includes which, how often"
 	@echo "  deps          install $(DEB_PACKAGES) with apt-get if missing"
 	@echo "  install       install binary and man page under \$$(DESTDIR)\$$(PREFIX) ($(PREFIX))"
 	@echo "  uninstall     remove them again"

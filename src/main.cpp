@@ -1,6 +1,7 @@
 // termpool entry point: dispatches to the subcommands.
 
 #include "cli/commands.hpp"
+#include "tui/bench_render.hpp"
 #include "tui/game_main.hpp"
 #include "tui/stats_command.hpp"
 
@@ -64,7 +65,8 @@ int main(int argc, char** argv) {
             return termpool::cli::simulate_command(rest);
         }
         if (command == "bench") {
-            return termpool::cli::bench_command(rest);
+            // The commands do not include the front end: --render's figures come from here.
+            return termpool::cli::bench_command(rest, termpool::tui::bench_render);
         }
         if (command == "practice") {
             return termpool::tui::run_practice(rest);

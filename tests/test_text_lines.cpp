@@ -1,13 +1,11 @@
-#include "core/text_lines.hpp"
-
 #include <catch2/catch.hpp>
-
 #include <string>
+#include <termpool/text_lines.hpp>
 #include <vector>
 
-using termpool::core::split_fields;
-using termpool::core::strip_comment;
-using termpool::core::text_lines;
+using termpool::split_fields;
+using termpool::strip_comment;
+using termpool::text_lines;
 
 TEST_CASE("text_lines: numbered lines, CRLF, and a last line without a newline", "[text]") {
     const auto lines = text_lines("first\r\n\nthird line\nlast");

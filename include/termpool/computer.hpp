@@ -5,25 +5,11 @@
 /// of its level.
 
 #include <cstdint>
-#include <optional>
-#include <string>
+#include <termpool/level.hpp>
 #include <termpool/random.hpp>
 #include <termpool/rules.hpp>
 
 namespace termpool {
-
-/// How well the computer plays: execution noise and how much it searches.
-enum class Level {
-    easy,   ///< noise x4, no spin, fewest candidates
-    medium, ///< noise x2
-    hard,   ///< noise x1 (the computer-pool tournament reference)
-    pro,    ///< noise x0.5, the most candidates
-};
-
-/// "easy", "medium", "hard" or "pro".
-const char* level_name(Level level);
-/// Parses a level name; nothing for an unknown one.
-std::optional<Level> parse_level(const std::string& name);
 
 /// A shot the computer decided on.
 struct ComputerShot {

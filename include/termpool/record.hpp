@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <termpool/computer.hpp>
+#include <termpool/level.hpp>
 #include <termpool/race.hpp>
 #include <termpool/rules.hpp>
 #include <termpool/setup.hpp>

@@ -16,8 +16,6 @@
 
 #include "cli/commands.hpp"
 #include "cli/numbers.hpp"
-#include "tui/render_bench.hpp"
-#include "tui/render_figures.hpp"
 
 namespace termpool::cli {
 namespace {
@@ -173,24 +171,9 @@ std::string cpu_name() {
     return "unknown processor";
 }
 
-/// The terminal front end's figures: composing a frame, and what curses sends per frame.
-int bench_render() {
-    std::printf("termpool bench --render: one core of: %s\n\n", cpu_name().c_str());
-    std::printf("%-28s %12s\n", "frame composition", "us/frame");
-    for (const auto& [w, h] : {std::pair{80, 24}, {100, 32}, {200, 60}})
-        std::printf("  %3dx%-3d %31.1f\n", w, h, tui::time_render_us(w, h, 400));
-    const tui::FrameBytes bytes = tui::measure_break_bytes(100, 32);
-    std::printf("\nbytes to the terminal during an 8-ball break at 100x32, 60 frames/s "
-                "(xterm-256color):\n");
-    std::printf("  first full frame %10.0f bytes\n", bytes.first_frame_bytes);
-    std::printf("  animation frames %10d\n", bytes.frames);
-    std::printf("  mean per frame   %10.1f bytes\n", bytes.mean_bytes);
-    return 0;
-}
-
 } // namespace
 
-int bench_command(const std::vector<std::string>& args) {
+int bench_command(const std::vector<std::string>& args, RenderBench render) {
     bool help = false;
     const std::optional<Options> parsed = parse_options(args, help);
     if (!parsed) {
@@ -199,7 +182,7 @@ int bench_command(const std::vector<std::string>& args) {
     }
     const Options options = *parsed;
     if (options.render)
-        return bench_render();
+        return render(cpu_name());
     const Table table = make_table(TableSize::nine_foot);
     const PhysicsParams params;
     Random rng(options.seed);

@@ -10,10 +10,15 @@ namespace termpool::cli {
 /// @return the process exit status: 0 ok, 1 runtime error, 2 bad usage or bad input.
 int simulate_command(const std::vector<std::string>& args);
 
+/// What `termpool bench --render` runs: the terminal front end's figures, under a heading that
+/// names `cpu`, the processor. The commands do not include the front end: main passes it in.
+using RenderBench = int (*)(const std::string& cpu);
+
 /// `termpool bench [--breaks N] [--shots N] [--seed S]`: benchmarks the simulator.
 /// @param args the command-line arguments after `bench`.
+/// @param render what `bench --render` runs, once the options are read.
 /// @return the process exit status: 0 ok, 1 runtime error, 2 bad usage or bad input.
-int bench_command(const std::vector<std::string>& args);
+int bench_command(const std::vector<std::string>& args, RenderBench render);
 
 /// `termpool selfplay --games N --p1 LEVEL --p2 LEVEL [--game G] [--seed S] [--jobs J]`:
 /// computer against computer.

@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <map>
 #include <termpool/rack.hpp>
+#include <termpool/text_lines.hpp>
 
 #include "cli/numbers.hpp"
-#include "core/text_lines.hpp"
 
 namespace termpool::cli {
 namespace {
@@ -49,8 +49,8 @@ struct Draft {
 
 std::vector<Line> split_lines(std::string_view text) {
     std::vector<Line> lines;
-    for (const core::TextLine& text_line : core::text_lines(text)) {
-        Line line{text_line.number, core::split_fields(core::strip_comment(text_line.text))};
+    for (const TextLine& text_line : text_lines(text)) {
+        Line line{text_line.number, split_fields(strip_comment(text_line.text))};
         if (!line.fields.empty())
             lines.push_back(std::move(line));
     }

@@ -1,9 +1,9 @@
-#include "core/collision.hpp"
+#include "collision.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/motion.hpp"
+#include "motion.hpp"
 
 namespace termpool::core {
 namespace {

@@ -116,27 +116,6 @@ double next_shot_quality(const Game& game) {
 
 } // namespace
 
-const char* level_name(Level level) {
-    switch (level) {
-    case Level::easy:
-        return "easy";
-    case Level::medium:
-        return "medium";
-    case Level::hard:
-        return "hard";
-    case Level::pro:
-        return "pro";
-    }
-    return "?";
-}
-
-std::optional<Level> parse_level(const std::string& name) {
-    for (const Level l : {Level::easy, Level::medium, Level::hard, Level::pro})
-        if (name == level_name(l))
-            return l;
-    return std::nullopt;
-}
-
 ComputerPlayer::ComputerPlayer(Level level, std::uint64_t seed) : level_(level), rng_(seed) {}
 
 ComputerShot ComputerPlayer::search(const Game& game) {

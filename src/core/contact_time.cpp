@@ -1,6 +1,6 @@
-#include "core/contact_time.hpp"
+#include "contact_time.hpp"
 
-#include "core/polynomial.hpp"
+#include "polynomial.hpp"
 
 namespace termpool::core {
 

@@ -9,7 +9,7 @@
 #include <termpool/params.hpp>
 #include <termpool/vec.hpp>
 
-#include "core/polynomial.hpp"
+#include "polynomial.hpp"
 
 namespace termpool::core {
 

@@ -1,7 +1,7 @@
 // 8-ball: WPA rules and the bar-rules variant.
 #include <algorithm>
 
-#include "core/shot_facts.hpp"
+#include "shot_facts.hpp"
 
 namespace termpool {
 namespace {

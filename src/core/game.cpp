@@ -4,7 +4,7 @@
 #include <termpool/rack.hpp>
 #include <termpool/spots.hpp>
 
-#include "core/shot_facts.hpp"
+#include "shot_facts.hpp"
 
 namespace termpool {
 

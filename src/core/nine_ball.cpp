@@ -1,7 +1,7 @@
 // 9-ball: WPA rules.
 #include <algorithm>
 
-#include "core/shot_facts.hpp"
+#include "shot_facts.hpp"
 
 namespace termpool {
 

@@ -1,4 +1,4 @@
-#include "core/polynomial.hpp"
+#include "polynomial.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -4,8 +4,7 @@
 #include <cmath>
 #include <termpool/random.hpp>
 #include <termpool/record.hpp>
-
-#include "core/text_lines.hpp"
+#include <termpool/text_lines.hpp>
 
 namespace termpool {
 namespace {
@@ -114,7 +113,7 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
     if (!text.empty() && text.back() != '\n') {
         const std::size_t start =
             text.rfind('\n') == std::string_view::npos ? 0 : text.rfind('\n') + 1;
-        const std::vector<std::string_view> last = core::split_fields(text.substr(start));
+        const std::vector<std::string_view> last = split_fields(text.substr(start));
         if (!(last.size() == 1 && last[0] == "end")) {
             const int line = 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n'));
             return RecordError{line, "truncated: the last line is incomplete"};
@@ -124,10 +123,10 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
     int line_number = 0;
     bool header = false, ended = false;
     std::uint64_t version = 0;
-    for (const core::TextLine& text_line : core::text_lines(text)) {
+    for (const TextLine& text_line : text_lines(text)) {
         const std::string_view line = text_line.text;
         line_number = text_line.number;
-        const std::vector<std::string_view> f = core::split_fields(line);
+        const std::vector<std::string_view> f = split_fields(line);
         if (f.empty())
             continue;
         auto fail = [&](std::string message) {

@@ -1,4 +1,4 @@
-#include "core/shot_facts.hpp"
+#include "shot_facts.hpp"
 
 #include <algorithm>
 

@@ -1,8 +1,7 @@
-#include "core/text_lines.hpp"
-
 #include <algorithm>
+#include <termpool/text_lines.hpp>
 
-namespace termpool::core {
+namespace termpool {
 namespace {
 
 constexpr std::string_view blanks = " \t\r\v\f";
@@ -41,4 +40,4 @@ std::vector<std::string_view> split_fields(std::string_view line) {
     }
 }
 
-} // namespace termpool::core
+} // namespace termpool

@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <termpool/simulator.hpp>
 
-#include "core/motion.hpp"
+#include "motion.hpp"
 
 namespace termpool {
 

@@ -4,9 +4,9 @@
 #include <limits>
 #include <termpool/simulator.hpp>
 
-#include "core/collision.hpp"
-#include "core/contact_time.hpp"
-#include "core/motion.hpp"
+#include "collision.hpp"
+#include "contact_time.hpp"
+#include "motion.hpp"
 
 namespace termpool {
 namespace {

@@ -1,6 +1,7 @@
 #include "tui/config.hpp"
 
-#include "core/text_lines.hpp"
+#include <termpool/text_lines.hpp>
+
 #include "tui/player_name.hpp"
 #include "tui/xdg_dir.hpp"
 
@@ -23,9 +24,9 @@ std::string config_path() {
 
 std::optional<std::string> apply_config(std::string_view text, GameOptions& o,
                                         std::vector<std::string>& warnings) {
-    for (const core::TextLine& text_line : core::text_lines(text)) {
+    for (const TextLine& text_line : text_lines(text)) {
         const int number = text_line.number;
-        const std::string_view line = trim(core::strip_comment(text_line.text));
+        const std::string_view line = trim(strip_comment(text_line.text));
         if (line.empty())
             continue;
         const std::size_t eq = line.find('=');

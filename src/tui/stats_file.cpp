@@ -5,9 +5,9 @@
 #include <charconv>
 #include <fcntl.h>
 #include <sys/file.h>
+#include <termpool/text_lines.hpp>
 #include <unistd.h>
 
-#include "core/text_lines.hpp"
 #include "tui/keep_aside.hpp"
 #include "tui/save_file.hpp"
 #include "tui/text_width.hpp"
@@ -132,7 +132,7 @@ std::variant<StatsStore, StatsError> parse_stats(std::string_view text) {
     std::vector<int> first_line; // the line of each entry, for a name listed twice
     bool have_header = false;
     int last_line = 0;
-    for (const core::TextLine& line : core::text_lines(text)) {
+    for (const TextLine& line : text_lines(text)) {
         last_line = line.number;
         const std::string_view content = trim(line.text);
         if (content.empty() || content.front() == '#')

@@ -1,11 +1,13 @@
 #pragma once
-// The line-oriented text formats (scenarios, game records, the config file) read their input
-// the same way: numbered lines, comments, whitespace-separated fields.
+/// \file
+/// The line-oriented text formats (scenarios, game records, the config file, the statistics
+/// file) read their input the same way: numbered lines, `#` comments, whitespace-separated
+/// fields.
 
 #include <string_view>
 #include <vector>
 
-namespace termpool::core {
+namespace termpool {
 
 /// One line of a text: its number (from 1) and its content, without the newline or a carriage
 /// return before it.
@@ -23,4 +25,4 @@ std::string_view strip_comment(std::string_view line);
 /// The fields of `line`, separated by runs of blanks (space, tab, CR, VT, FF).
 std::vector<std::string_view> split_fields(std::string_view line);
 
-} // namespace termpool::core
+} // namespace termpool
