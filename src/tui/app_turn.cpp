@@ -1,0 +1,172 @@
+// A turn at the table: the match says what it waits for and the App goes into that mode;
+// placing, shooting and choosing become the match's actions, each saved as it is taken, and a
+// shot is shown rolling before its verdict.
+
+#include <algorithm>
+
+#include "tui/app.hpp"
+#include "tui/messages.hpp"
+#include "tui/save_file.hpp"
+
+namespace termpool::tui {
+
+void App::begin() {
+    message_ = practice_
+                   ? "Practice: no referee. m moves a ball, r takes a shot again, t racks again"
+                   : name(game().shooter()) + " breaks: place the cue ball in the kitchen";
+    // News from before the game (a config warning, where it is saved) leads the first line.
+    for (auto n = options_.notices.rbegin(); n != options_.notices.rend(); ++n)
+        message_ = *n + "; " + message_;
+    start_turn();
+}
+
+void App::start_turn() {
+    shown_balls_ = game().balls();
+    aim_.new_turn();
+    pacing_.stop();
+    const PendingAction pending =
+        practice_ ? PendingAction{Pending::shoot, 1, BallInHand::none, {}} : match_.pending();
+    if (pending.kind == Pending::over || pending.kind == Pending::next_rack) {
+        mode_ = Mode::game_over;
+        game_over_at_ = Clock::now();
+        return;
+    }
+    if (pending.kind == Pending::choose) {
+        mode_ = Mode::choosing;
+        return;
+    }
+    if (pending.kind == Pending::place) {
+        const Game& g = game();
+        const Ball* cue = nullptr;
+        for (const Ball& b : g.balls())
+            if (b.id == 0)
+                cue = &b;
+        const bool must_move =
+            !cue || cue->state == MotionState::pocketed || !g.legal_placement(cue->position);
+        warn_of_third_foul();
+        mode_ = Mode::placing;
+        place_ = must_move ? (g.legal_placement(table_.head_spot()) ? table_.head_spot()
+                                                                    : g.legal_placements().front())
+                           : cue->position;
+        return;
+    }
+    start_aiming();
+}
+
+void App::warn_of_third_foul() {
+    // WPA 9-ball: a player on two fouls must be told before the shot that a third loses.
+    const Game& g = game();
+    if (g.type() == GameType::nine_ball && g.consecutive_fouls(g.shooter()) >= 2)
+        message_ += (message_.empty() ? "" : "; ") + name(g.shooter()) +
+                    " is on two fouls: a third in a row loses the game";
+}
+
+void App::start_aiming() {
+    mode_ = Mode::aiming;
+    aim_.set_break(game().is_break());
+    aim_at_easiest();
+    warn_of_third_foul();
+    const std::string& who = name(game().shooter());
+    const bool computer = computer_to_act();
+    if (game().push_out_allowed()) {
+        const std::string hint = "u declares a push-out";
+        message_ = message_.empty() ? who + ": aim and shoot, or " + hint : message_ + "; " + hint;
+    } else if (message_.empty() && !computer) {
+        // Short enough for the smallest panel; the help has the rest.
+        message_ = who + ": aim (" + (term_.caps().mouse ? "mouse, " : "") +
+                   "Left/Right), Space shoots" + (practice_ ? "; m moves a ball" : "");
+    }
+    // The proposed aim cannot reach the ball straight: say so before Space is pressed.
+    if (aim_.target_line != TargetLine::straight && !computer)
+        message_ += (message_.empty() ? "" : "; ") +
+                    std::string(aim_.target_line == TargetLine::kick
+                                    ? "no straight line to a legal ball: a kick off one rail"
+                                    : "no clear line to a legal ball");
+}
+
+bool App::try_place(Vec2 spot) {
+    if (!place(spot)) {
+        message_ = "The cue ball cannot go there: " + placement_problem(game(), spot);
+        return false;
+    }
+    message_.clear();
+    start_aiming();
+    return true;
+}
+
+void App::shoot() {
+    const double power = aim_.current_power(Clock::now());
+    const Strike strike{speed_from_power(power, game().is_break()), aim_.aim_deg, aim_.side,
+                        aim_.follow};
+    const ShotCall call =
+        game().call_as_taken(aim_.call([this](int ball) { return calls_pocket(ball); }));
+    aim_.power = power;
+    play(strike, call);
+}
+
+bool App::place(Vec2 spot) {
+    if (match_.place(match_.to_act(), spot) != MatchError::none)
+        return false;
+    save();
+    return true;
+}
+
+void App::choose(Choice choice) {
+    if (match_.choose(match_.to_act(), choice) == MatchError::none)
+        save();
+}
+
+void App::save() {
+    if (replaying_ || practice_)
+        return; // a replay shows a game, practice has none: neither writes over a saved game
+    // The record is the whole game: rewritten after every action, so a dropped connection
+    // loses at most the shot in flight. A failure stays on the message line until a save works
+    // again: other messages come and go, and the player must not miss that the game is not
+    // being kept.
+    save_problem_.clear();
+    write_atomically(options_.save_path, format_record(match_.record()), save_problem_);
+}
+
+void App::play(const Strike& strike, const ShotCall& call) {
+    last_strike_ = strike;
+    shooter_before_ = game().shooter();
+    Trajectory trajectory(params_, game().balls().size());
+    if (practice_) {
+        result_ = practice_->shoot(strike, &trajectory);
+    } else {
+        Game before = match_.game();
+        const MatchState score = match_.score();
+        auto played = match_.shoot(match_.to_act(), strike, call, &trajectory);
+        if (const MatchError* refused = std::get_if<MatchError>(&played)) {
+            message_ = std::string("The shot was refused: ") + match_error_text(*refused);
+            return;
+        }
+        PlayedShot& shot = std::get<PlayedShot>(played);
+        result_ = std::move(shot.result);
+        verdict_ = std::move(shot.verdict);
+        before_shot_ = std::move(before);
+        score_before_ = score;
+    }
+    trajectory_ = std::move(trajectory);
+    shot_start_ = Clock::now();
+    mode_ = Mode::animating;
+    message_ = name(shooter_before_) + " shoots"; // the last verdict is over
+}
+
+void App::after_shot() {
+    trajectory_.reset();
+    before_shot_.reset();
+    if (practice_) {
+        practice_shot_done();
+        return;
+    }
+    message_ = verdict_message(verdict_, shooter_before_, match_.record().names);
+    save();
+    if (verdict_.winner != 0 && match_.score().match_winner() != 0 && !replaying_)
+        save_stats();
+    start_turn();
+    if (replaying_)
+        mode_ = Mode::replay; // the replay shows the next action itself
+}
+
+} // namespace termpool::tui
