@@ -16,15 +16,9 @@ void App::seat_computer(int player, Level level) {
 }
 
 void App::handle_text_entry(const Input& in) {
-    if (in.kind == Input::Kind::text) {
-        entry_.type(in.text);
+    if (entry_.edit(in) || in.kind != Input::Kind::key)
         return;
-    }
-    if (in.kind != Input::Kind::key)
-        return;
-    if (is_backspace(in.key)) {
-        entry_.erase_last();
-    } else if (in.key == key_enter) {
+    if (in.key == key_enter) {
         take_name();
     } else if (in.key == key_escape && mode_ != Mode::names) {
         entry_.player = 0;
@@ -80,17 +74,12 @@ void App::ask_race() {
 }
 
 void App::handle_race_entry(const Input& in) {
-    if (in.kind == Input::Kind::text && in.text.size() == 1 && in.text[0] >= '0' &&
-        in.text[0] <= '9' && entry_.text.size() < 2) {
-        entry_.type(in.text);
+    // Up to two digits.
+    const auto digit = [&](const std::string& typed) {
+        return typed.size() == 1 && typed[0] >= '0' && typed[0] <= '9' && entry_.text.size() < 2;
+    };
+    if (entry_.edit(in, digit) || in.kind != Input::Kind::key)
         return;
-    }
-    if (in.kind != Input::Kind::key)
-        return;
-    if (is_backspace(in.key)) {
-        entry_.erase_last();
-        return;
-    }
     if (in.key != key_enter && in.key != key_escape)
         return;
     if (in.key != key_escape && !entry_.text.empty()) {

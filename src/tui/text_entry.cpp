@@ -1,8 +1,19 @@
 #include "tui/text_entry.hpp"
 
-#include "tui/terminal.hpp"
-
 namespace termpool::tui {
+
+bool TextEntry::edit(const Input& in, const std::function<bool(const std::string& typed)>& accept) {
+    if (in.kind == Input::Kind::text) {
+        if (!accept || accept(in.text))
+            type(in.text);
+        return true;
+    }
+    if (in.kind == Input::Kind::key && is_backspace(in.key)) {
+        erase_last();
+        return true;
+    }
+    return false;
+}
 
 void TextEntry::type(const std::string& typed) {
     text += typed;

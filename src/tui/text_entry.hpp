@@ -1,7 +1,10 @@
 #pragma once
 // The line the player types into at a prompt: a name, or the race's length.
 
+#include <functional>
 #include <string>
+
+#include "tui/terminal.hpp"
 
 namespace termpool::tui {
 
@@ -14,6 +17,9 @@ struct TextEntry {
 
     /// True while a prompt is open.
     bool active() const { return player != 0 || asking_race; }
+    /// Typing and Backspace from `in`: true when `in` was one of them (typed text that
+    /// `accept` refuses is dropped). Enter, Esc and the rest are the caller's.
+    bool edit(const Input& in, const std::function<bool(const std::string& typed)>& accept = {});
     /// Appends typed text; a new keystroke clears the error.
     void type(const std::string& typed);
     /// Removes the last character (UTF-8: all its bytes).
