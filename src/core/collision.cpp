@@ -121,7 +121,7 @@ void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& p) {
             b.angular_velocity += torque * (1.0 / moment_of_inertia(b.mass, R));
         }
     }
-    if (!is_seed_friction(p) && approach < p.elastic_below_speed) {
+    if (!is_classic_friction(p) && approach < p.elastic_below_speed) {
         settle_motion_state(a, p);
         settle_motion_state(b, p);
         if (pressed_together(a, b, n, p)) {
@@ -166,7 +166,7 @@ void resolve_cushion(Ball& ball, Vec2 towards, const PhysicsParams& p) {
         ball.angular_velocity += cross(arm, impulse) * (1.0 / moment_of_inertia(m, R));
     }
 
-    if (slow && !is_seed_friction(p)) {
+    if (slow && !is_classic_friction(p)) {
         // A slow contact with spin that drives the ball back into the cushion would repeat
         // without end; the cloth's friction takes out that part of the slip at once (this only
         // removes energy).

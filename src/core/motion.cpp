@@ -25,20 +25,21 @@ Vec3 rolling_spin(Vec2 velocity, double spin_z, double radius) {
     return {-velocity.y / radius, velocity.x / radius, spin_z};
 }
 
-// The seed's models: speed after dt and distance covered in dt, starting at speed v.
-struct SeedStep {
+// The classic models (the seed report's): speed after dt and distance covered in dt, starting at
+// speed v.
+struct ClassicStep {
     double speed;
     double distance;
 };
 
-SeedStep seed_step(double v, double dt, const FrictionModel& f) {
+ClassicStep classic_step(double v, double dt, const FrictionModel& f) {
     const double K = f.decay_rate, A = f.deceleration;
     auto exponential = [&](double t) {
         const double decay = std::exp(-K * t);
-        return SeedStep{v * decay, v * (1 - decay) / K};
+        return ClassicStep{v * decay, v * (1 - decay) / K};
     };
     auto linear = [](double v0, double a, double t) {
-        return SeedStep{v0 - a * t, v0 * t - 0.5 * a * t * t};
+        return ClassicStep{v0 - a * t, v0 * t - 0.5 * a * t * t};
     };
     switch (f.kind) {
     case FrictionKind::decay:
@@ -53,8 +54,8 @@ SeedStep seed_step(double v, double dt, const FrictionModel& f) {
         const double t_switch = std::log(v / switch_speed) / K;
         if (dt <= t_switch)
             return exponential(dt);
-        const SeedStep first = exponential(t_switch);
-        const SeedStep rest = linear(switch_speed, A, dt - t_switch);
+        const ClassicStep first = exponential(t_switch);
+        const ClassicStep rest = linear(switch_speed, A, dt - t_switch);
         return {rest.speed, first.distance + rest.distance};
     }
     case FrictionKind::physical:
@@ -63,7 +64,7 @@ SeedStep seed_step(double v, double dt, const FrictionModel& f) {
     return {v, v * dt};
 }
 
-double seed_stop_time(double v, const FrictionModel& f) {
+double classic_stop_time(double v, const FrictionModel& f) {
     const double K = f.decay_rate, A = f.deceleration, rest = f.rest_speed;
     if (v <= rest)
         return 0;
@@ -103,8 +104,8 @@ Vec2 physical_acceleration(const Ball& b, const PhysicsParams& p) {
 }
 
 double time_to_transition(const Ball& b, const PhysicsParams& p) {
-    if (is_seed_friction(p)) {
-        return b.state == MotionState::rolling ? seed_stop_time(length(b.velocity), p.friction)
+    if (is_classic_friction(p)) {
+        return b.state == MotionState::rolling ? classic_stop_time(length(b.velocity), p.friction)
                                                : infinity;
     }
     switch (b.state) {
@@ -124,12 +125,12 @@ Ball advance(const Ball& b, double dt, const PhysicsParams& p) {
     if (dt <= 0)
         return b;
     Ball out = b;
-    if (is_seed_friction(p)) {
+    if (is_classic_friction(p)) {
         if (b.state != MotionState::rolling)
             return out;
         const double v = length(b.velocity);
         const Vec2 direction = b.velocity / v;
-        const SeedStep step = seed_step(v, dt, p.friction);
+        const ClassicStep step = classic_step(v, dt, p.friction);
         out.position = b.position + direction * step.distance;
         out.velocity = direction * step.speed;
         return out;
@@ -171,7 +172,7 @@ Ball advance(const Ball& b, double dt, const PhysicsParams& p) {
 
 Ball apply_transition(const Ball& b, const PhysicsParams& p) {
     Ball out = b;
-    if (is_seed_friction(p)) {
+    if (is_classic_friction(p)) {
         out.velocity = {};
         out.angular_velocity = {};
         out.state = MotionState::stationary;
@@ -201,7 +202,7 @@ Ball apply_transition(const Ball& b, const PhysicsParams& p) {
 void settle_motion_state(Ball& b, const PhysicsParams& p) {
     if (b.state == MotionState::pocketed)
         return;
-    if (is_seed_friction(p)) {
+    if (is_classic_friction(p)) {
         b.angular_velocity = {};
         if (length(b.velocity) <= p.friction.rest_speed) {
             b.velocity = {};

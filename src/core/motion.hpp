@@ -9,8 +9,8 @@ namespace termpool::core {
 /// Velocity of the ball's contact point with the cloth (the slip), m/s.
 Vec2 slip_velocity(const Ball& ball, double radius);
 
-/// True when the friction model is one of the seed's (translation only, no spin).
-inline bool is_seed_friction(const PhysicsParams& params) {
+/// True when the friction model is a classic one, the seed report's (translation only, no spin).
+inline bool is_classic_friction(const PhysicsParams& params) {
     return params.friction.kind != FrictionKind::physical;
 }
 
@@ -18,7 +18,7 @@ inline bool is_seed_friction(const PhysicsParams& params) {
 Vec2 physical_acceleration(const Ball& ball, const PhysicsParams& params);
 
 /// Seconds until the ball's motion state changes by itself (slide to roll, roll to stop, spin to
-/// rest, or a seed model's stop), +infinity for a ball that never changes.
+/// rest, or a classic model's stop), +infinity for a ball that never changes.
 double time_to_transition(const Ball& ball, const PhysicsParams& params);
 
 /// The ball `dt` seconds later, 0 <= dt <= time_to_transition; the motion state is unchanged.

@@ -9,7 +9,7 @@ Ball strike_cue_ball(const Ball& cue, const Strike& strike, const PhysicsParams&
     Ball b = cue;
     const Vec2 direction = unit_from_angle(strike.angle_deg * std::numbers::pi / 180.0);
     b.velocity = direction * strike.speed;
-    if (core::is_seed_friction(params)) {
+    if (core::is_classic_friction(params)) {
         b.angular_velocity = {};
     } else {
         // Point impact: a tip offset of `o` R gives spin 5 v o / (2 R). Follow turns the ball

@@ -122,7 +122,7 @@ struct World::Impl {
     }
 
     std::size_t count() const { return slots.size(); }
-    bool seed_model() const { return core::is_seed_friction(params); }
+    bool classic_model() const { return core::is_classic_friction(params); }
 
     Ball state_now(std::size_t i) const {
         const Slot& s = slots[i];
@@ -142,7 +142,7 @@ struct World::Impl {
         s.start = now;
         const double duration = core::time_to_transition(ball, params);
         s.end = now + duration;
-        s.acceleration = seed_model() ? Vec2{} : core::physical_acceleration(ball, params);
+        s.acceleration = classic_model() ? Vec2{} : core::physical_acceleration(ball, params);
         reach[i] = ball.state == MotionState::pocketed
                        ? Box{{infinity, infinity}, {-infinity, -infinity}}
                        : slot_box(s, duration);
@@ -166,7 +166,7 @@ struct World::Impl {
         const Ball& b = s.ball;
         if (!moves(b))
             return {b.position, b.position};
-        if (seed_model()) // straight lines
+        if (classic_model()) // straight lines
             return box_of(b.position, core::advance(b, duration, params).position);
         return path_box({b.position, b.velocity, s.acceleration, duration}, duration);
     }
@@ -227,8 +227,8 @@ struct World::Impl {
     // Seconds from now to the first contact of balls i and k, or a lower bound on them;
     // `pa` is ball i's path from now.
     core::ContactEstimate pair_contact(std::size_t i, std::size_t k, const Path& pa) const {
-        if (seed_model())
-            return {seed_pair_contact(i, k, pair_horizon(i, k)), true};
+        if (classic_model())
+            return {classic_pair_contact(i, k, pair_horizon(i, k)), true};
         return core::path_path_contact_estimate(pa, path_now(k), 2 * params.ball_radius,
                                                 pair_horizon(i, k));
     }
@@ -253,7 +253,7 @@ struct World::Impl {
         }
     }
 
-    double seed_pair_contact(std::size_t i, std::size_t k, double horizon) const {
+    double classic_pair_contact(std::size_t i, std::size_t k, double horizon) const {
         const Ball a = state_now(i), b = state_now(k);
         const double diameter = 2 * params.ball_radius;
         auto gap = [&](double t) {
@@ -287,21 +287,22 @@ struct World::Impl {
                 best = {now + dt, kind, feature};
         };
 
-        if (seed_model()) {
+        if (classic_model()) {
             const Ball b = state_now(i);
             for (int c = 0; c < 18; ++c) {
                 const CushionSegment& seg = table.cushions[c];
                 if (seg.pocket != 0 && !near_pocket(reach[i], seg.pocket - 1))
                     continue;
-                consider(seed_segment_contact(b, seg, horizon),
+                consider(classic_segment_contact(b, seg, horizon),
                          c < 6 ? BoundaryKind::rail : BoundaryKind::jaw_line, c);
             }
             for (int p = 0; p < 6; ++p) {
                 if (!near_pocket(reach[i], p))
                     continue;
                 const Pocket& pocket = table.pockets[p];
-                consider(seed_line_contact(b, pocket.capture_point, pocket.capture_normal, horizon),
-                         BoundaryKind::capture, p);
+                consider(
+                    classic_line_contact(b, pocket.capture_point, pocket.capture_normal, horizon),
+                    BoundaryKind::capture, p);
             }
             return best;
         }
@@ -370,7 +371,7 @@ struct World::Impl {
         return u >= 0 && u <= length_squared(along);
     }
 
-    double seed_segment_contact(const Ball& b, const CushionSegment& seg, double horizon) const {
+    double classic_segment_contact(const Ball& b, const CushionSegment& seg, double horizon) const {
         const double R = params.ball_radius;
         auto gap = [&](double t) {
             const Ball moved = core::advance(b, t, params);
@@ -382,7 +383,7 @@ struct World::Impl {
         return core::advance_until_contact(gap, bound, horizon);
     }
 
-    double seed_line_contact(const Ball& b, Vec2 point, Vec2 normal, double horizon) const {
+    double classic_line_contact(const Ball& b, Vec2 point, Vec2 normal, double horizon) const {
         auto gap = [&](double t) {
             const Ball moved = core::advance(b, t, params);
             return std::pair{dot(moved.position - point, normal), dot(moved.velocity, normal)};
@@ -473,7 +474,7 @@ struct World::Impl {
         case BoundaryKind::rail:
         case BoundaryKind::jaw_line: {
             const CushionSegment& seg = table.cushions[be.feature];
-            const Vec2 towards = seed_model()
+            const Vec2 towards = classic_model()
                                      ? normalized(closest_on_segment(seg, b.position) - b.position)
                                      : -seg.normal;
             core::resolve_cushion(b, towards, params);
