@@ -4,7 +4,7 @@
 #include <numbers>
 #include <termpool/random.hpp>
 
-#include "core/motion.hpp"
+#include "core/cloth_model.hpp"
 #include "physics_helpers.hpp"
 
 using namespace termpool;
@@ -179,6 +179,7 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
                         rng.uniform(-0.5, 0.5)};
 
     World world(table, p, balls);
+    const core::ClothModel cloth = core::cloth_model(p.friction);
     if (sample_between)
         world.record(true);
     world.strike(strike);
@@ -204,8 +205,8 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
             // Neither ball changed its motion since the last event, so advancing their states
             // from then gives the motion just before the contact.
             const double dt = e->time - before_time;
-            const Ball a0 = core::advance(find_ball(before, e->ball), dt, p);
-            const Ball b0 = core::advance(find_ball(before, e->other), dt, p);
+            const Ball a0 = cloth.advance(find_ball(before, e->ball), dt, p);
+            const Ball b0 = cloth.advance(find_ball(before, e->other), dt, p);
             const Vec2 p0 = momentum(a0, b0);
             const Vec2 p1 = momentum(find_ball(after, e->ball), find_ball(after, e->other));
             // The classic models stop a ball left slower than their rest speed.

@@ -30,7 +30,7 @@ Box path_box(const Path& path, double duration) {
     return box;
 }
 
-Box physical_reach(const MotionPiece& piece, double duration) {
+Box physical_reach(const MotionPiece& piece, double duration, const PhysicsParams&) {
     const Ball& b = piece.ball;
     return path_box({b.position, b.velocity, piece.acceleration, duration}, duration);
 }

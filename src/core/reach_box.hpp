@@ -37,8 +37,8 @@ inline bool boxes_within(const Box& a, const Box& b, double margin) {
 Box path_box(const Path& path, double duration);
 
 /// Box of a moving ball's centre over the first `duration` seconds of its piece, on the
-/// physical model's parabola.
-Box physical_reach(const MotionPiece& piece, double duration);
+/// physical model's parabola (the parameters are those of every model's reach).
+Box physical_reach(const MotionPiece& piece, double duration, const PhysicsParams& params);
 
 /// The same on a classic model's straight line, moved by `advance`.
 Box classic_reach(const MotionPiece& piece, double duration, const PhysicsParams& params,

@@ -1,18 +1,17 @@
+// The stepping: the world jumps from event to event, resolves each and searches again what it
+// changed. Where the next contacts are is kept by the pair cache and the table-contact search;
+// how balls move and where they meet is the cloth model's, chosen once per world.
+
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <termpool/simulator.hpp>
 
+#include "core/cloth_model.hpp"
 #include "core/collision.hpp"
-#include "core/motion.hpp"
 #include "core/motion_piece.hpp"
 #include "core/pair_cache.hpp"
-#include "core/pair_contacts.hpp"
 #include "core/reach_box.hpp"
 #include "core/table_contacts.hpp"
-
-// The stepping: the world jumps from event to event, resolves each and searches again what it
-// changed. Where the next contacts are is kept by the pair cache and the table-contact search.
 
 namespace termpool {
 
@@ -24,6 +23,7 @@ using core::TableEventKind;
 struct World::Impl {
     Table table;
     PhysicsParams params;
+    core::ClothModel cloth; // chosen once, from params.friction
     std::vector<MotionPiece> pieces;
     std::vector<TableEvent> table_events; // each ball's next event on its own
     core::PairCache pairs;
@@ -34,8 +34,8 @@ struct World::Impl {
     Trajectory trajectory;
 
     Impl(const Table& t, const PhysicsParams& p, std::vector<Ball> balls)
-        : table(t), params(p), pieces(balls.size()), table_events(balls.size()),
-          pairs(balls.size()), trajectory(p, balls.size()) {
+        : table(t), params(p), cloth(core::cloth_model(p.friction)), pieces(balls.size()),
+          table_events(balls.size()), pairs(balls.size()), trajectory(p, balls.size()) {
         for (std::size_t i = 0; i < balls.size(); ++i) {
             set_piece(i, balls[i]);
             refresh_table_event(i);
@@ -47,19 +47,18 @@ struct World::Impl {
     }
 
     std::size_t count() const { return pieces.size(); }
-    bool classic_model() const { return core::is_classic_friction(params); }
 
     Ball state_now(std::size_t i) const {
-        return core::state_at(pieces[i], now, core::advance, params);
+        return core::state_at(pieces[i], now, cloth.advance, params);
     }
 
     void set_piece(std::size_t i, const Ball& ball) {
         MotionPiece& s = pieces[i];
         s.ball = ball;
         s.start = now;
-        const double duration = core::time_to_transition(ball, params);
+        const double duration = cloth.time_to_transition(ball, params);
         s.end = now + duration;
-        s.acceleration = classic_model() ? Vec2{} : core::physical_acceleration(ball, params);
+        s.acceleration = cloth.acceleration(ball, params);
         pairs.set_reach(i, ball.state == MotionState::pocketed ? core::empty_box()
                                                                : reach_of(s, duration));
         pairs.set_moving(i, is_moving(ball));
@@ -82,9 +81,7 @@ struct World::Impl {
         const Ball& b = s.ball;
         if (!is_moving(b))
             return {b.position, b.position};
-        if (classic_model())
-            return core::classic_reach(s, duration, params, core::advance);
-        return core::physical_reach(s, duration);
+        return cloth.reach(s, duration, params);
     }
 
     TableEvent next_table_event(std::size_t i) const {
@@ -94,9 +91,7 @@ struct World::Impl {
                 return {s.end, TableEventKind::transition, 0};
             return {};
         }
-        if (classic_model())
-            return core::classic_table_event(s, pairs.reach(i), now, table, params, core::advance);
-        return core::physical_table_event(s, pairs.reach(i), now, table, params);
+        return cloth.table_event(s, pairs.reach(i), now, table, params);
     }
 
     // Recomputes the pair contacts of ball i, whose table event is already up to date. `done` is
@@ -108,10 +103,7 @@ struct World::Impl {
 
     // Seconds from now to the first contact of balls i and k, or a lower bound on them.
     core::ContactEstimate pair_contact(std::size_t i, std::size_t k) const {
-        if (classic_model())
-            return core::classic_pair_contact(pieces[i], pieces[k], now, pair_horizon(i, k), params,
-                                              core::advance);
-        return core::physical_pair_contact(pieces[i], pieces[k], now, pair_horizon(i, k), params);
+        return cloth.pair_contact(pieces[i], pieces[k], now, pair_horizon(i, k), params);
     }
 
     // How far ahead a pair's contact is searched: both balls are searched afresh at their next
@@ -164,14 +156,14 @@ struct World::Impl {
 
     // Replaces the lower bound kept for pair (i, j) by its contact time.
     void refine_pair(std::size_t i, std::size_t j) {
-        pairs.set_exact(i, j,
-                        now + core::physical_pair_contact_time(pieces[i], pieces[j], now,
-                                                               pair_horizon(i, j), params));
+        pairs.set_exact(
+            i, j,
+            now + cloth.pair_contact_time(pieces[i], pieces[j], now, pair_horizon(i, j), params));
     }
 
     Event resolve_pair(std::size_t i, std::size_t j) {
         Ball a = state_now(i), b = state_now(j);
-        core::resolve_ball_ball(a, b, params);
+        core::resolve_ball_ball(a, b, params, cloth);
         set_piece(i, a);
         set_piece(j, b);
         refresh_table_event(i);
@@ -187,7 +179,7 @@ struct World::Impl {
         Event event{now, EventKind::stopped, b.id, 0};
         switch (te.kind) {
         case TableEventKind::transition:
-            b = core::apply_transition(b, params);
+            b = cloth.apply_transition(b, params);
             event.kind = b.state == MotionState::rolling    ? EventKind::rolling
                          : b.state == MotionState::spinning ? EventKind::spinning
                          : b.state == MotionState::sliding  ? EventKind::sliding
@@ -196,15 +188,14 @@ struct World::Impl {
         case TableEventKind::rail:
         case TableEventKind::jaw_line: {
             const CushionSegment& seg = table.cushions[te.feature];
-            const Vec2 towards = classic_model() ? core::classic_towards_cushion(b, seg)
-                                                 : core::physical_towards_cushion(b, seg);
-            core::resolve_cushion(b, towards, params);
+            core::resolve_cushion(b, cloth.towards_cushion(b, seg), params, cloth);
             event.kind = te.kind == TableEventKind::rail ? EventKind::cushion : EventKind::jaw;
             event.other = te.kind == TableEventKind::rail ? te.feature : seg.pocket;
             break;
         }
         case TableEventKind::jaw_point:
-            core::resolve_cushion(b, normalized(table.jaw_points[te.feature] - b.position), params);
+            core::resolve_cushion(b, normalized(table.jaw_points[te.feature] - b.position), params,
+                                  cloth);
             event.kind = EventKind::jaw;
             event.other = table.jaw_point_pocket[te.feature];
             break;
