@@ -16,22 +16,4 @@ void PairCache::set_exact(std::size_t i, std::size_t j, double time) {
     }
 }
 
-std::optional<PairCache::Pair> PairCache::earliest_before(double time) const {
-    const std::size_t n = size();
-    std::optional<Pair> first;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (row_min_[i] < time) {
-            // Every pair of an earlier ball was already seen in that ball's row.
-            const double* row = time_.data() + i * n;
-            for (std::size_t j = i + 1; j < n; ++j) {
-                if (row[j] < time) {
-                    time = row[j];
-                    first = Pair{row[j], i, j};
-                }
-            }
-        }
-    }
-    return first;
-}
-
 } // namespace termpool::core

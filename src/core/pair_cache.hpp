@@ -117,4 +117,24 @@ void PairCache::refresh(std::size_t i, std::size_t done, double now, double diam
     row_min_[i] = earliest;
 }
 
+// Inline, as it was in the stepping before the pair cache had a file of its own: it runs at every
+// event, and as a call the 4000 breaks of `termpool bench --breaks 4000` took 5% longer.
+inline std::optional<PairCache::Pair> PairCache::earliest_before(double time) const {
+    const std::size_t n = size();
+    std::optional<Pair> first;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (row_min_[i] < time) {
+            // Every pair of an earlier ball was already seen in that ball's row.
+            const double* row = time_.data() + i * n;
+            for (std::size_t j = i + 1; j < n; ++j) {
+                if (row[j] < time) {
+                    time = row[j];
+                    first = Pair{row[j], i, j};
+                }
+            }
+        }
+    }
+    return first;
+}
+
 } // namespace termpool::core
