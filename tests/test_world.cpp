@@ -217,7 +217,7 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
                     stopped_mass += b.mass;
             }
             // A slow contact where the cloth presses the balls together is a push, resolved
-            // with the cloth's help (see resolve_ball_ball): momentum is not the pair's alone.
+            // with the cloth's help (see resolve_physical_push): momentum is not the pair's alone.
             const Vec2 n = normalized(b0.position - a0.position);
             const bool push =
                 !classic_model && dot(a0.velocity - b0.velocity, n) < p.elastic_below_speed;

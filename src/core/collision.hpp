@@ -12,7 +12,7 @@ namespace termpool::core {
 /// It keeps a pair that rounding left touching from being found in contact again at once.
 inline constexpr double min_separation_speed = 1e-6;
 
-/// Speed at which two balls that pushed each other part, m/s (see resolve_ball_ball).
+/// Speed at which two balls that pushed each other part, m/s (see resolve_physical_push).
 inline constexpr double push_parting_speed = 0.001;
 
 /// Resolves a contact between two touching balls on `cloth`; `a` and `b` get their new
