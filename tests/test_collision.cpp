@@ -5,7 +5,7 @@
 #include <termpool/random.hpp>
 
 #include "core/collision.hpp"
-#include "core/motion.hpp"
+#include "core/physical_cloth.hpp"
 #include "physics_helpers.hpp"
 
 using namespace termpool;
@@ -59,7 +59,7 @@ TEST_CASE("ball-ball contacts conserve momentum and follow the 1D formulas",
             Ball a = ball_at(0, 1.0, 0.6, m0), b = ball_at(1, 1.0 + 2 * R, 0.6, m1);
             a.velocity = {1.5, 0};
             a.state = MotionState::sliding;
-            core::resolve_ball_ball(a, b, p);
+            core::resolve_ball_ball(a, b, p, core::cloth_model(p.friction));
             const double e = model == CollisionModel::ideal ? 1.0 : p.ball_restitution;
             const double v = 1.5;
             CHECK(a.velocity.x == Approx((m0 - e * m1) * v / (m0 + m1)).epsilon(1e-12));
@@ -130,7 +130,7 @@ TEST_CASE("ideal cushion: angle in equals angle out", "[physics][cushion]") {
         Ball b = ball_at(0, 1.0, R);
         b.velocity = unit_from_angle(incoming / degrees) * 1.5;
         b.state = MotionState::sliding;
-        core::resolve_cushion(b, {0, -1}, p);
+        core::resolve_cushion(b, {0, -1}, p, core::cloth_model(p.friction));
         CHECK(angle_deg(b.velocity) == Approx(-incoming).margin(1e-9));
         CHECK(length(b.velocity) == Approx(1.5).epsilon(1e-12));
     }
@@ -156,7 +156,7 @@ TEST_CASE("physical cushion never adds energy", "[physics][cushion][property]") 
                               rng.uniform(-spin, spin)};
         b.state = MotionState::sliding;
         const double before = kinetic_energy(b, R);
-        core::resolve_cushion(b, {1, 0}, p);
+        core::resolve_cushion(b, {1, 0}, p, core::cloth_model(p.friction));
         CHECK(kinetic_energy(b, R) <= before + 1e-12);
         CHECK(b.velocity.x < 0);
         rebounds += b.velocity.x < 0;
@@ -171,7 +171,7 @@ TEST_CASE("physical cushion: a rolling ball comes off slower and at a steeper an
     b.velocity = unit_from_angle(-45 / degrees) * 1.0;
     b.angular_velocity = {-b.velocity.y / R, b.velocity.x / R, 0}; // rolling
     b.state = MotionState::rolling;
-    core::resolve_cushion(b, {0, -1}, p);
+    core::resolve_cushion(b, {0, -1}, p, core::cloth_model(p.friction));
     CHECK(b.velocity.y > 0);
     CHECK(b.velocity.y < 0.707 * p.cushion_restitution + 0.05);
     CHECK(length(b.velocity) < 1.0);
@@ -194,7 +194,7 @@ TEST_CASE("a slow push leaves both balls rolling at the speed their cloth moment
     };
     const double before = cloth_momentum(a) + cloth_momentum(b);
     const double energy = kinetic_energy(a, R) + kinetic_energy(b, R);
-    core::resolve_ball_ball(a, b, p);
+    core::resolve_ball_ball(a, b, p, core::cloth_model(p.friction));
     // Rolling (but for the tiny parting kick) at one speed, the one their cloth momentum gives.
     CHECK(cloth_momentum(a) + cloth_momentum(b) == Approx(before).epsilon(1e-9));
     CHECK(a.velocity.x == Approx(before / (1.4 * (a.mass + b.mass))).epsilon(1e-5));

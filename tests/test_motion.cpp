@@ -1,4 +1,5 @@
-// Closed forms of the ball-cloth models: sliding, rolling, spinning, and the seed's models.
+// Closed forms of the ball-cloth models: sliding, rolling, spinning, and the classic models (the
+// seed report's).
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -76,7 +77,7 @@ TEST_CASE("a stop shot with english leaves the cue ball spinning in place", "[ph
     CHECK(length(find_ball(world.balls(), 0).position - cue.position) < 1e-3);
 }
 
-TEST_CASE("the seed's friction models follow their closed forms", "[physics][motion][seed]") {
+TEST_CASE("the classic friction models follow their closed forms", "[physics][motion][classic]") {
     PhysicsParams p;
     const double v0 = 0.8;
     SECTION("decay: v shrinks by e^(-K t)") {
@@ -107,7 +108,7 @@ TEST_CASE("the seed's friction models follow their closed forms", "[physics][mot
         const double t = std::log(v0 / 0.3) + (0.3 - 0.005) / 0.3;
         CHECK(relative_error(e.time, t) < 1e-9);
     }
-    SECTION("the seed's models carry no spin") {
+    SECTION("the classic models carry no spin") {
         p.friction = {FrictionKind::decay, 1.0, 0, 0.005};
         World world(table, p, {ball_at(0, 0.3, 0.6)});
         world.strike({v0, 0, 0.5, 0.5});

@@ -472,7 +472,7 @@ TEST_CASE("experiment friction prints its table, charts and CSV", "[cli][experim
     TempDir dir;
     const Run table = run(dir, "experiment friction");
     REQUIRE(table.status == 0);
-    // The physical model's median time to rest lands in the seed's 6-9 s of a real break.
+    // The physical model's median time to rest lands in the seed report's 6-9 s of a real break.
     const std::size_t at = table.out.find("\nphysical ");
     REQUIRE(at != std::string::npos);
     const double rest = std::stod(table.out.substr(at + 10));

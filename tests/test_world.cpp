@@ -4,7 +4,7 @@
 #include <numbers>
 #include <termpool/random.hpp>
 
-#include "core/motion.hpp"
+#include "core/cloth_model.hpp"
 #include "physics_helpers.hpp"
 
 using namespace termpool;
@@ -157,10 +157,10 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
         p.collision = CollisionModel::ideal;
     if (rng.below(4) == 0)
         p.cushion = CushionModel::ideal;
-    const bool seed_model = p.friction.kind != FrictionKind::physical;
+    const bool classic_model = p.friction.kind != FrictionKind::physical;
 
     std::vector<Ball> balls;
-    const int count = 1 + static_cast<int>(rng.below(seed_model ? 6 : 16));
+    const int count = 1 + static_cast<int>(rng.below(classic_model ? 6 : 16));
     for (int id = 0; id < count; ++id) {
         for (int attempt = 0; attempt < 100; ++attempt) {
             const Ball b = ball_at(id, rng.uniform(R, table.length - R),
@@ -179,6 +179,7 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
                         rng.uniform(-0.5, 0.5)};
 
     World world(table, p, balls);
+    const core::ClothModel cloth = core::cloth_model(p.friction);
     if (sample_between)
         world.record(true);
     world.strike(strike);
@@ -204,22 +205,22 @@ void check_random_shot(std::uint64_t seed, bool sample_between) {
             // Neither ball changed its motion since the last event, so advancing their states
             // from then gives the motion just before the contact.
             const double dt = e->time - before_time;
-            const Ball a0 = core::advance(find_ball(before, e->ball), dt, p);
-            const Ball b0 = core::advance(find_ball(before, e->other), dt, p);
+            const Ball a0 = cloth.advance(find_ball(before, e->ball), dt, p);
+            const Ball b0 = cloth.advance(find_ball(before, e->other), dt, p);
             const Vec2 p0 = momentum(a0, b0);
             const Vec2 p1 = momentum(find_ball(after, e->ball), find_ball(after, e->other));
-            // The seed's models stop a ball left slower than their rest speed.
+            // The classic models stop a ball left slower than their rest speed.
             double stopped_mass = 0;
             for (const int id : {e->ball, e->other}) {
                 const Ball b = find_ball(after, id);
-                if (seed_model && b.state == MotionState::stationary)
+                if (classic_model && b.state == MotionState::stationary)
                     stopped_mass += b.mass;
             }
             // A slow contact where the cloth presses the balls together is a push, resolved
-            // with the cloth's help (see resolve_ball_ball): momentum is not the pair's alone.
+            // with the cloth's help (see resolve_physical_push): momentum is not the pair's alone.
             const Vec2 n = normalized(b0.position - a0.position);
             const bool push =
-                !seed_model && dot(a0.velocity - b0.velocity, n) < p.elastic_below_speed;
+                !classic_model && dot(a0.velocity - b0.velocity, n) < p.elastic_below_speed;
             if (!push) {
                 REQUIRE(length(p1 - p0) <=
                         1e-12 * (1 + length(p0)) + stopped_mass * p.friction.rest_speed);

@@ -7,29 +7,30 @@ namespace termpool {
 /// How two balls exchange momentum at contact.
 enum class CollisionModel {
     physical, ///< restitution e_b plus ball-ball friction u_b (cut- and spin-induced throw)
-    ideal,    ///< the seed's elastic, frictionless impulse along the line of centres
+    ideal,    ///< the seed report's elastic, frictionless impulse along the line of centres
 };
 
 /// How a ball leaves a cushion or a pocket jaw.
 enum class CushionModel {
     physical, ///< impulse at the cushion nose with restitution e_c and friction f_c, spin-aware
-    ideal,    ///< the seed's mirror reflection: normal velocity flips, the rest is kept
+    ideal,    ///< the seed report's mirror reflection: normal velocity flips, the rest is kept
 };
 
-/// How a ball slows down on the cloth.
+/// How a ball slows down on the cloth. Decay, constant and combined are the classic models (the
+/// seed report's): they move balls on straight lines, without spin.
 enum class FrictionKind {
     physical, ///< sliding, rolling and spinning with u_s, u_r, u_sp (default)
-    decay,    ///< seed model: speed shrinks by e^(-K t); no spin
-    constant, ///< seed model: constant deceleration A; no spin
-    combined, ///< seed model: whichever of decay and constant slows more; no spin
+    decay,    ///< classic model: speed shrinks by e^(-K t); no spin
+    constant, ///< classic model: constant deceleration A; no spin
+    combined, ///< classic model: whichever of decay and constant slows more; no spin
 };
 
-/// The cloth model and, for the seed's models, their constants.
+/// The cloth model and, for the classic models, their constants.
 struct FrictionModel {
     FrictionKind kind = FrictionKind::physical; ///< which model
     double decay_rate = 0;                      ///< K in 1/s (decay, combined)
     double deceleration = 0;                    ///< A in m/s^2 (constant, combined)
-    double rest_speed = 0.005;                  ///< seed models: below this speed a ball stops
+    double rest_speed = 0.005;                  ///< classic models: below this speed a ball stops
 };
 
 /// Everything the simulator needs besides the table and the balls.

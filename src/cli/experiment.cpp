@@ -28,7 +28,7 @@ constexpr const char* usage = "usage: termpool experiment friction [--table 7ft|
 constexpr double break_speed = 12.0; // m/s, full power
 constexpr int racks = 51;            // seeded breaks per model (odd: a true median)
 
-// The seed's models are not given numbers in the report; these are calibrated to what it
+// The classic models are not given numbers in the seed report; these are calibrated to what it
 // measured: a ball struck at full power (12 m/s) stops after 14 s with decay and 22 s with
 // constant friction; combined takes both. The rest speed is 5 mm/s.
 constexpr double seed_decay_rate = 0.556;   // K, 1/s: ln(12 / 0.005) / 14 s

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "motion.hpp"
+#include "physical_cloth.hpp"
 
 namespace termpool::core {
 namespace {
@@ -89,7 +89,7 @@ bool pressed_together(const Ball& a, const Ball& b, Vec2 n, const PhysicsParams&
 
 } // namespace
 
-void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& p) {
+void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& p, const ClothModel& cloth) {
     const double R = p.ball_radius;
     const Vec2 n = normalized(b.position - a.position);
     const double approach = dot(a.velocity - b.velocity, n);
@@ -121,28 +121,19 @@ void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& p) {
             b.angular_velocity += torque * (1.0 / moment_of_inertia(b.mass, R));
         }
     }
-    if (!is_seed_friction(p) && approach < p.elastic_below_speed) {
-        settle_motion_state(a, p);
-        settle_motion_state(b, p);
-        if (pressed_together(a, b, n, p)) {
-            resolve_push(a, b, n, p);
-            settle_motion_state(a, p);
-            settle_motion_state(b, p);
-            if (pressed_together(a, b, n, p))
-                part_pushed_balls(a, b, n);
-        }
-    }
+    if (approach < p.elastic_below_speed)
+        cloth.slow_pair_contact(a, b, n, p);
     const double separation = dot(b.velocity - a.velocity, n);
     if (separation < min_separation_speed) {
         const double extra = (min_separation_speed - separation) / (inv_a + inv_b);
         a.velocity -= n * (extra * inv_a);
         b.velocity += n * (extra * inv_b);
     }
-    settle_motion_state(a, p);
-    settle_motion_state(b, p);
+    cloth.settle_motion_state(a, p);
+    cloth.settle_motion_state(b, p);
 }
 
-void resolve_cushion(Ball& ball, Vec2 towards, const PhysicsParams& p) {
+void resolve_cushion(Ball& ball, Vec2 towards, const PhysicsParams& p, const ClothModel& cloth) {
     const double R = p.ball_radius;
     const double m = ball.mass;
     const double approach = dot(ball.velocity, towards);
@@ -166,27 +157,43 @@ void resolve_cushion(Ball& ball, Vec2 towards, const PhysicsParams& p) {
         ball.angular_velocity += cross(arm, impulse) * (1.0 / moment_of_inertia(m, R));
     }
 
-    if (slow && !is_seed_friction(p)) {
-        // A slow contact with spin that drives the ball back into the cushion would repeat
-        // without end; the cloth's friction takes out that part of the slip at once (this only
-        // removes energy).
-        const Vec2 slip = slip_velocity(ball, R);
-        const double pressing = dot(slip, towards);
-        if (pressing < 0) {
-            const Vec2 impulse = towards * (-2.0 * m / 7.0 * pressing);
-            ball.velocity += impulse * (1.0 / m);
-            const Vec3 torque = cross(Vec3{0, 0, -R}, lift(impulse));
-            ball.angular_velocity += torque * (1.0 / moment_of_inertia(m, R));
-        }
-        const double still_approaching = dot(ball.velocity, towards);
-        if (still_approaching > 0)
-            ball.velocity -= towards * (2 * still_approaching);
-    }
+    if (slow)
+        cloth.slow_cushion_contact(ball, towards, p);
 
     const double separation = -dot(ball.velocity, towards);
     if (separation < min_separation_speed)
         ball.velocity -= towards * (min_separation_speed - separation);
-    settle_motion_state(ball, p);
+    cloth.settle_motion_state(ball, p);
+}
+
+void resolve_physical_push(Ball& a, Ball& b, Vec2 n, const PhysicsParams& p) {
+    physical_settle_motion_state(a, p);
+    physical_settle_motion_state(b, p);
+    if (pressed_together(a, b, n, p)) {
+        resolve_push(a, b, n, p);
+        physical_settle_motion_state(a, p);
+        physical_settle_motion_state(b, p);
+        if (pressed_together(a, b, n, p))
+            part_pushed_balls(a, b, n);
+    }
+}
+
+// A slow contact with spin that drives the ball back into the cushion would repeat without end;
+// the cloth's friction takes out that part of the slip at once (this only removes energy).
+void resolve_physical_slow_cushion(Ball& ball, Vec2 towards, const PhysicsParams& p) {
+    const double R = p.ball_radius;
+    const double m = ball.mass;
+    const Vec2 slip = slip_velocity(ball, R);
+    const double pressing = dot(slip, towards);
+    if (pressing < 0) {
+        const Vec2 impulse = towards * (-2.0 * m / 7.0 * pressing);
+        ball.velocity += impulse * (1.0 / m);
+        const Vec3 torque = cross(Vec3{0, 0, -R}, lift(impulse));
+        ball.angular_velocity += torque * (1.0 / moment_of_inertia(m, R));
+    }
+    const double still_approaching = dot(ball.velocity, towards);
+    if (still_approaching > 0)
+        ball.velocity -= towards * (2 * still_approaching);
 }
 
 } // namespace termpool::core

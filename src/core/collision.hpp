@@ -4,21 +4,31 @@
 #include <termpool/ball.hpp>
 #include <termpool/params.hpp>
 
+#include "cloth_model.hpp"
+
 namespace termpool::core {
 
 /// Relative normal speed two balls (or a ball and a cushion) leave a contact with at least, m/s.
 /// It keeps a pair that rounding left touching from being found in contact again at once.
 inline constexpr double min_separation_speed = 1e-6;
 
-/// Speed at which two balls that pushed each other part, m/s (see resolve_ball_ball).
+/// Speed at which two balls that pushed each other part, m/s (see resolve_physical_push).
 inline constexpr double push_parting_speed = 0.001;
 
-/// Resolves a contact between two touching balls; `a` and `b` get their new velocities and spins
-/// (the motion states are settled afterwards by the caller).
-void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& params);
+/// Resolves a contact between two touching balls on `cloth`; `a` and `b` get their new
+/// velocities, spins and motion states.
+void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& params, const ClothModel& cloth);
 
-/// Resolves a contact of a ball with a cushion or jaw. `towards_cushion` is the unit vector in the
-/// table plane from the ball's centre to the contact.
-void resolve_cushion(Ball& ball, Vec2 towards_cushion, const PhysicsParams& params);
+/// Resolves a contact of a ball with a cushion or jaw on `cloth`. `towards_cushion` is the unit
+/// vector in the table plane from the ball's centre to the contact.
+void resolve_cushion(Ball& ball, Vec2 towards_cushion, const PhysicsParams& params,
+                     const ClothModel& cloth);
+
+/// The physical cloth's part in a slow ball-ball contact (ClothModel::slow_pair_contact): two
+/// balls it presses together are resolved as a push.
+void resolve_physical_push(Ball& a, Ball& b, Vec2 n, const PhysicsParams& params);
+
+/// The physical cloth's part in a slow cushion contact (ClothModel::slow_cushion_contact).
+void resolve_physical_slow_cushion(Ball& ball, Vec2 towards_cushion, const PhysicsParams& params);
 
 } // namespace termpool::core

@@ -38,11 +38,11 @@ double path_line_contact_time(const Path& a, Vec2 point, Vec2 normal, double off
 /// First time the centre comes within `radius` of `point` while moving towards it.
 double path_point_contact_time(const Path& a, Vec2 point, double radius, double horizon);
 
-/// The seed's friction models move balls on straight lines at non-polynomial speeds: contacts
-/// are found by conservative advancement, stepping by the gap over an upper bound of the closing
-/// speed (speeds never grow in these models), so that no contact is ever stepped over.
-/// `gap(t)` returns the gap at time t and its rate of change; `closing_bound(t)` bounds how fast
-/// the gap can shrink from t on.
+/// The classic friction models (the seed report's) move balls on straight lines at non-polynomial
+/// speeds: contacts are found by conservative advancement, stepping by the gap over an upper bound
+/// of the closing speed (speeds never grow in these models), so that no contact is ever stepped
+/// over. `gap(t)` returns the gap at time t and its rate of change; `closing_bound(t)` bounds how
+/// fast the gap can shrink from t on.
 template <class Gap, class Bound>
 double advance_until_contact(Gap gap, Bound closing_bound, double horizon) {
     constexpr double tolerance = 1e-11; // m; contacts are taken this close, never overlapping

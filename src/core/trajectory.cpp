@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <termpool/simulator.hpp>
 
-#include "motion.hpp"
+#include "cloth_model.hpp"
 
 namespace termpool {
 
@@ -19,6 +19,7 @@ void Trajectory::add(std::size_t index, double start, const Ball& ball) {
 }
 
 std::vector<Ball> Trajectory::sample(double time) const {
+    const core::ClothModel cloth = core::cloth_model(params_.friction);
     std::vector<Ball> out;
     out.reserve(pieces_.size());
     for (const std::vector<Piece>& list : pieces_) {
@@ -28,9 +29,9 @@ std::vector<Ball> Trajectory::sample(double time) const {
         auto it = std::upper_bound(list.begin(), list.end(), time,
                                    [](double t, const Piece& p) { return t < p.start; });
         const Piece& piece = it == list.begin() ? list.front() : *std::prev(it);
-        const double limit = core::time_to_transition(piece.ball, params_);
+        const double limit = cloth.time_to_transition(piece.ball, params_);
         const double dt = std::clamp(time - piece.start, 0.0, limit);
-        out.push_back(core::advance(piece.ball, dt, params_));
+        out.push_back(cloth.advance(piece.ball, dt, params_));
     }
     return out;
 }

@@ -1,8 +1,14 @@
-#include "motion.hpp"
+#include "physical_cloth.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <termpool/simulator.hpp>
+
+#include "cloth_model.hpp"
+#include "collision.hpp"
+#include "pair_contacts.hpp"
+#include "table_contacts.hpp"
 
 namespace termpool::core {
 namespace {
@@ -25,88 +31,7 @@ Vec3 rolling_spin(Vec2 velocity, double spin_z, double radius) {
     return {-velocity.y / radius, velocity.x / radius, spin_z};
 }
 
-// The seed's models: speed after dt and distance covered in dt, starting at speed v.
-struct SeedStep {
-    double speed;
-    double distance;
-};
-
-SeedStep seed_step(double v, double dt, const FrictionModel& f) {
-    const double K = f.decay_rate, A = f.deceleration;
-    auto exponential = [&](double t) {
-        const double decay = std::exp(-K * t);
-        return SeedStep{v * decay, v * (1 - decay) / K};
-    };
-    auto linear = [](double v0, double a, double t) {
-        return SeedStep{v0 - a * t, v0 * t - 0.5 * a * t * t};
-    };
-    switch (f.kind) {
-    case FrictionKind::decay:
-        return exponential(dt);
-    case FrictionKind::constant:
-        return linear(v, A, dt);
-    case FrictionKind::combined: {
-        // Exponential decay slows more than A while K v > A.
-        const double switch_speed = A / K;
-        if (v <= switch_speed)
-            return linear(v, A, dt);
-        const double t_switch = std::log(v / switch_speed) / K;
-        if (dt <= t_switch)
-            return exponential(dt);
-        const SeedStep first = exponential(t_switch);
-        const SeedStep rest = linear(switch_speed, A, dt - t_switch);
-        return {rest.speed, first.distance + rest.distance};
-    }
-    case FrictionKind::physical:
-        break;
-    }
-    return {v, v * dt};
-}
-
-double seed_stop_time(double v, const FrictionModel& f) {
-    const double K = f.decay_rate, A = f.deceleration, rest = f.rest_speed;
-    if (v <= rest)
-        return 0;
-    switch (f.kind) {
-    case FrictionKind::decay:
-        return std::log(v / rest) / K;
-    case FrictionKind::constant:
-        return (v - rest) / A;
-    case FrictionKind::combined: {
-        const double switch_speed = A / K;
-        if (v <= switch_speed || switch_speed <= rest)
-            return v <= switch_speed ? (v - rest) / A : std::log(v / rest) / K;
-        return std::log(v / switch_speed) / K + (switch_speed - rest) / A;
-    }
-    case FrictionKind::physical:
-        break;
-    }
-    return infinity;
-}
-
-} // namespace
-
-Vec2 slip_velocity(const Ball& b, double radius) {
-    return {b.velocity.x - radius * b.angular_velocity.y,
-            b.velocity.y + radius * b.angular_velocity.x};
-}
-
-Vec2 physical_acceleration(const Ball& b, const PhysicsParams& p) {
-    switch (b.state) {
-    case MotionState::sliding:
-        return normalized(slip_velocity(b, p.ball_radius)) * (-p.sliding_friction * p.gravity);
-    case MotionState::rolling:
-        return normalized(b.velocity) * (-p.rolling_friction * p.gravity);
-    default:
-        return {};
-    }
-}
-
 double time_to_transition(const Ball& b, const PhysicsParams& p) {
-    if (is_seed_friction(p)) {
-        return b.state == MotionState::rolling ? seed_stop_time(length(b.velocity), p.friction)
-                                               : infinity;
-    }
     switch (b.state) {
     case MotionState::sliding:
         return 2.0 * length(slip_velocity(b, p.ball_radius)) /
@@ -124,16 +49,6 @@ Ball advance(const Ball& b, double dt, const PhysicsParams& p) {
     if (dt <= 0)
         return b;
     Ball out = b;
-    if (is_seed_friction(p)) {
-        if (b.state != MotionState::rolling)
-            return out;
-        const double v = length(b.velocity);
-        const Vec2 direction = b.velocity / v;
-        const SeedStep step = seed_step(v, dt, p.friction);
-        out.position = b.position + direction * step.distance;
-        out.velocity = direction * step.speed;
-        return out;
-    }
     const double spin_rate = spin_decay_rate(p);
     switch (b.state) {
     case MotionState::sliding: {
@@ -171,18 +86,12 @@ Ball advance(const Ball& b, double dt, const PhysicsParams& p) {
 
 Ball apply_transition(const Ball& b, const PhysicsParams& p) {
     Ball out = b;
-    if (is_seed_friction(p)) {
-        out.velocity = {};
-        out.angular_velocity = {};
-        out.state = MotionState::stationary;
-        return out;
-    }
     switch (b.state) {
     case MotionState::sliding:
         // The slip has just vanished: make it exactly zero.
         out.angular_velocity = rolling_spin(b.velocity, b.angular_velocity.z, p.ball_radius);
         out.state = MotionState::rolling;
-        settle_motion_state(out, p);
+        physical_settle_motion_state(out, p);
         return out;
     case MotionState::rolling:
         out.velocity = {};
@@ -198,19 +107,35 @@ Ball apply_transition(const Ball& b, const PhysicsParams& p) {
     }
 }
 
-void settle_motion_state(Ball& b, const PhysicsParams& p) {
+// Point impact: a tip offset of `o` R gives spin 5 v o / (2 R). Follow turns the ball forward
+// about the horizontal axis across the shot, right english clockwise from above.
+Vec3 tip_spin(const Strike& strike, Vec2 direction, const PhysicsParams& p) {
+    const double spin_per_offset = 5.0 * strike.speed / (2.0 * p.ball_radius);
+    const Vec2 follow_axis = perpendicular(direction);
+    return lift(follow_axis * (strike.follow * spin_per_offset), -strike.side * spin_per_offset);
+}
+
+} // namespace
+
+Vec2 slip_velocity(const Ball& b, double radius) {
+    return {b.velocity.x - radius * b.angular_velocity.y,
+            b.velocity.y + radius * b.angular_velocity.x};
+}
+
+Vec2 physical_acceleration(const Ball& b, const PhysicsParams& p) {
+    switch (b.state) {
+    case MotionState::sliding:
+        return normalized(slip_velocity(b, p.ball_radius)) * (-p.sliding_friction * p.gravity);
+    case MotionState::rolling:
+        return normalized(b.velocity) * (-p.rolling_friction * p.gravity);
+    default:
+        return {};
+    }
+}
+
+void physical_settle_motion_state(Ball& b, const PhysicsParams& p) {
     if (b.state == MotionState::pocketed)
         return;
-    if (is_seed_friction(p)) {
-        b.angular_velocity = {};
-        if (length(b.velocity) <= p.friction.rest_speed) {
-            b.velocity = {};
-            b.state = MotionState::stationary;
-        } else {
-            b.state = MotionState::rolling;
-        }
-        return;
-    }
     const double speed = length(b.velocity);
     const double slip = length(slip_velocity(b, p.ball_radius));
     if (slip <= negligible_speed) {
@@ -225,6 +150,24 @@ void settle_motion_state(Ball& b, const PhysicsParams& p) {
         return;
     }
     b.state = MotionState::sliding;
+}
+
+ClothModel physical_cloth() {
+    return {
+        .time_to_transition = time_to_transition,
+        .advance = advance,
+        .apply_transition = apply_transition,
+        .settle_motion_state = physical_settle_motion_state,
+        .acceleration = physical_acceleration,
+        .tip_spin = tip_spin,
+        .slow_pair_contact = resolve_physical_push,
+        .slow_cushion_contact = resolve_physical_slow_cushion,
+        .towards_cushion = physical_towards_cushion,
+        .reach = physical_reach,
+        .pair_contact = physical_pair_contact,
+        .pair_contact_time = physical_pair_contact_time,
+        .table_event = physical_table_event,
+    };
 }
 
 } // namespace termpool::core

@@ -1,0 +1,27 @@
+#pragma once
+// When two moving balls first touch, under each cloth model. Times are seconds from `now`,
+// +infinity when the balls do not touch within `horizon`.
+
+#include <termpool/params.hpp>
+
+#include "motion_piece.hpp"
+#include "polynomial.hpp"
+
+namespace termpool::core {
+
+/// The physical model's contact of two pieces' balls (their parabolas' quartic), or a lower bound
+/// on it when that is much cheaper: see path_path_contact_estimate.
+ContactEstimate physical_pair_contact(const MotionPiece& a, const MotionPiece& b, double now,
+                                      double horizon, const PhysicsParams& params);
+
+/// The physical model's contact itself, for a pair that holds only a bound.
+double physical_pair_contact_time(const MotionPiece& a, const MotionPiece& b, double now,
+                                  double horizon, const PhysicsParams& params);
+
+/// A classic model's contact, by conservative advancement along straight lines with `advance`;
+/// always exact.
+ContactEstimate classic_pair_contact(const MotionPiece& a, const MotionPiece& b, double now,
+                                     double horizon, const PhysicsParams& params,
+                                     AdvanceFn advance);
+
+} // namespace termpool::core

@@ -1,0 +1,46 @@
+#pragma once
+// What a ball does next on its own: its next transition on the cloth, or its first contact with
+// the table (a rail, a pocket's jaw line or jaw point, a pocket's capture line), under each cloth
+// model. Contacts between balls are kept apart (pair_contacts.hpp).
+
+#include <limits>
+#include <termpool/params.hpp>
+#include <termpool/table.hpp>
+
+#include "motion_piece.hpp"
+#include "reach_box.hpp"
+
+namespace termpool::core {
+
+/// What a ball's next event on its own is.
+enum class TableEventKind { none, transition, rail, jaw_line, jaw_point, capture };
+
+/// A ball's next event on its own.
+struct TableEvent {
+    double time = std::numeric_limits<double>::infinity(); ///< absolute, s
+    TableEventKind kind = TableEventKind::none;            ///< what happens then
+    /// Rail or jaw segment index into Table::cushions, jaw point index, or pocket index.
+    int feature = 0;
+};
+
+/// The physical model's next event of a moving ball: its transition at the piece's end, or an
+/// earlier table contact (polynomial roots along the parabola, searched only where `reach`, the
+/// box of the piece up to then, comes near).
+TableEvent physical_table_event(const MotionPiece& piece, const Box& reach, double now,
+                                const Table& table, const PhysicsParams& params);
+
+/// A classic model's next event of a moving ball, the contacts found by conservative advancement
+/// along its straight line with `advance`. Each cushion segment is met as a whole, ends included,
+/// so there are no jaw-point events.
+TableEvent classic_table_event(const MotionPiece& piece, const Box& reach, double now,
+                               const Table& table, const PhysicsParams& params, AdvanceFn advance);
+
+/// The unit vector from the centre of a ball touching the rail or jaw line `seg` to the contact,
+/// as the physical search finds it: across the line.
+Vec2 physical_towards_cushion(const Ball& ball, const CushionSegment& seg);
+
+/// The same as the classic search finds it: towards the segment's closest point, which may be an
+/// end.
+Vec2 classic_towards_cushion(const Ball& ball, const CushionSegment& seg);
+
+} // namespace termpool::core
