@@ -31,8 +31,8 @@ constexpr int racks = 51;            // seeded breaks per model (odd: a true med
 // The classic models are not given numbers in the seed report; these are calibrated to what it
 // measured: a ball struck at full power (12 m/s) stops after 14 s with decay and 22 s with
 // constant friction; combined takes both. The rest speed is 5 mm/s.
-constexpr double seed_decay_rate = 0.556;   // K, 1/s: ln(12 / 0.005) / 14 s
-constexpr double seed_deceleration = 0.545; // A, m/s^2: 12 m/s / 22 s
+constexpr double classic_decay_rate = 0.556;   // K, 1/s: ln(12 / 0.005) / 14 s
+constexpr double classic_deceleration = 0.545; // A, m/s^2: 12 m/s / 22 s
 
 struct Model {
     const char* name;
@@ -41,9 +41,9 @@ struct Model {
 
 const Model models[] = {
     {"physical", {FrictionKind::physical, 0, 0, 0.005}},
-    {"decay", {FrictionKind::decay, seed_decay_rate, 0, 0.005}},
-    {"constant", {FrictionKind::constant, 0, seed_deceleration, 0.005}},
-    {"combined", {FrictionKind::combined, seed_decay_rate, seed_deceleration, 0.005}},
+    {"decay", {FrictionKind::decay, classic_decay_rate, 0, 0.005}},
+    {"constant", {FrictionKind::constant, 0, classic_deceleration, 0.005}},
+    {"combined", {FrictionKind::combined, classic_decay_rate, classic_deceleration, 0.005}},
 };
 
 bool utf8_terminal() {
@@ -133,7 +133,8 @@ int friction_study(TableSize size, bool csv) {
     std::printf("\nSeed models: decay K = %s /s, constant A = %s m/s^2, combined both; rest below "
                 "5 mm/s.\nThe seed measured about 14 s (decay), 20-25 s (constant) and 6-9 s for a "
                 "real break.\n",
-                format_number(seed_decay_rate).c_str(), format_number(seed_deceleration).c_str());
+                format_number(classic_decay_rate).c_str(),
+                format_number(classic_deceleration).c_str());
     for (const Series& s : charts) {
         std::printf("\n%s: total speed of all balls over time (rack 1)\n", s.name.c_str());
         std::fputs(draw_chart({s}, 60, 6, utf8, "s", "m/s").c_str(), stdout);
