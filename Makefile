@@ -38,7 +38,7 @@ endif
 
 WARNFLAGS    := -Wall -Wextra -Wpedantic -Werror $(SAN_WARNFLAGS)
 # The core sees only the public headers: it includes its private ones relative to itself
-# ("motion.hpp"), and nothing of src/cli or src/tui can be found from it.
+# ("cloth_model.hpp"), and nothing of src/cli or src/tui can be found from it.
 CORE_CPPFLAGS := -Iinclude $(CPPFLAGS)
 ALL_CPPFLAGS := -Iinclude -Isrc $(CPPFLAGS)
 ALL_CXXFLAGS := -std=c++20 $(OPTFLAGS) $(WARNFLAGS) $(CXXFLAGS)

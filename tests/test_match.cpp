@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <termpool/computer.hpp>
 #include <termpool/match.hpp>
 
 using namespace termpool;
@@ -20,6 +21,13 @@ GameRecord header_for(GameType game, std::uint64_t seed, int race_to = 1) {
     header.computers[1] = Level::medium;
     header.race_to = race_to;
     return header;
+}
+
+// A match the header must give.
+Match started(const GameRecord& header, std::uint64_t computer_seed = 0) {
+    auto match = Match::start(header, computer_seed);
+    REQUIRE(std::holds_alternative<Match>(match));
+    return std::move(std::get<Match>(match));
 }
 
 // The seated computer makes its move through the match's own actions.
@@ -63,7 +71,7 @@ TEST_CASE("whole games play through the Match alone and replay to every action",
     for (const GameType game :
          {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball}) {
         INFO(game_type_name(game));
-        Match match(header_for(game, 21), 5);
+        Match match = started(header_for(game, 21), 5);
         std::vector<Seen> states{seen(match)};
         int guard = 0;
         while (match.pending().kind != Pending::over && ++guard < 400) {
@@ -98,7 +106,7 @@ TEST_CASE("whole games play through the Match alone and replay to every action",
 
 TEST_CASE("a race racks each next rack through the Match, for whoever the break rule says",
           "[match][race]") {
-    Match match(header_for(GameType::nine_ball, 8, 2), 3);
+    Match match = started(header_for(GameType::nine_ball, 8, 2), 3);
     int guard = 0, racks_seen = 1;
     while (match.pending().kind != Pending::over && ++guard < 1500) {
         if (match.pending().kind == Pending::next_rack) {
@@ -131,10 +139,12 @@ TEST_CASE("the Match says what it waits for and refuses every other action uncha
     header.computers[0].reset();
     header.computers[1].reset();
     header.breaker = 2;
-    Match match(header);
+    Match match = started(header);
+    const Seen before = seen(match);
     const auto unchanged = [&](MatchError got, MatchError want) {
         CHECK(got == want);
         CHECK(match.record().actions.empty());
+        CHECK(seen(match) == before);
     };
 
     // The break: player 2 has the cue ball in hand in the kitchen.
@@ -160,10 +170,14 @@ TEST_CASE("the Match says what it waits for and refuses every other action uncha
         REQUIRE(std::holds_alternative<MatchError>(shot));
         unchanged(std::get<MatchError>(shot), MatchError::bad_strike);
     }
-    ShotCall silly;
-    silly.call = {16, 1, false};
-    unchanged(std::get<MatchError>(match.shoot(2, Strike{10, 0, 0, 0}, silly)),
-              MatchError::bad_call);
+    // Only calls the record can say: a ball 1-15 into a pocket 1-6, or none.
+    for (const Call bad : {Call{16, 1, false}, Call{5, 0, false}, Call{0, 3, false},
+                           Call{-1, 1, false}, Call{5, 7, false}}) {
+        ShotCall silly;
+        silly.call = bad;
+        unchanged(std::get<MatchError>(match.shoot(2, Strike{10, 0, 0, 0}, silly)),
+                  MatchError::bad_call);
+    }
     unchanged(std::get<MatchError>(match.shoot(1, Strike{10, 0, 0, 0}, {})),
               MatchError::wrong_player);
 
@@ -180,8 +194,12 @@ TEST_CASE("the Match says what it waits for and refuses every other action uncha
     CHECK(match.set_race(3) == MatchError::none);
     CHECK(match.score().race_to == 3);
 
-    // Placed: the break is the shot now; the race can no longer change.
+    // Placed: the break is the shot now; the race can no longer change. Putting the ball down
+    // again this turn replaces the spot in the record.
+    CHECK(match.place(2, kitchen + Vec2{-0.1, 0.05}) == MatchError::none);
     CHECK(match.place(2, kitchen) == MatchError::none);
+    REQUIRE(match.record().actions.size() == 1);
+    CHECK(match.record().actions[0].place == kitchen);
     CHECK(match.pending().kind == Pending::shoot);
     CHECK(match.set_race(5) == MatchError::started);
     const auto broke = match.shoot(2, Strike{12, 0, 0, 0}, {});
@@ -202,7 +220,7 @@ TEST_CASE("the Match says what it waits for and refuses every other action uncha
 TEST_CASE("a computer seated in a match decides for its seat only", "[match]") {
     GameRecord header = header_for(GameType::nine_ball, 9);
     header.computers[0].reset(); // a person breaks, the computer waits
-    Match match(header, 1);
+    Match match = started(header, 1);
     CHECK(match.seat(1).name == "Ann");
     CHECK_FALSE(match.seat(1).computer);
     CHECK(match.seat(2).computer == Level::medium);
@@ -218,7 +236,7 @@ TEST_CASE("a computer seated in a match decides for its seat only", "[match]") {
 }
 
 TEST_CASE("a record edited into an impossible state is refused at its line", "[match][record]") {
-    Match match(header_for(GameType::eight_ball, 2), 1);
+    Match match = started(header_for(GameType::eight_ball, 2), 1);
     REQUIRE(play_computer_move(match) == MatchError::none); // the placement
     REQUIRE(play_computer_move(match) == MatchError::none); // the break
     GameRecord record = match.record();
@@ -235,4 +253,83 @@ TEST_CASE("a record edited into an impossible state is refused at its line", "[m
     CHECK(std::get<RecordError>(replayed).line == 17);
     // A prefix that stops before the bad action is fine.
     CHECK(std::holds_alternative<Match>(Match::replay(record, record.actions.size() - 1)));
+}
+
+TEST_CASE("a match starts only from a header a record can keep", "[match]") {
+    const auto refused = [](GameRecord header) {
+        const auto m = Match::start(header);
+        return std::holds_alternative<MatchError>(m) ? std::get<MatchError>(m) : MatchError::none;
+    };
+    GameRecord good = header_for(GameType::eight_ball, 1);
+    CHECK(refused(good) == MatchError::none);
+    GameRecord h = good;
+    h.breaker = 3;
+    CHECK(refused(h) == MatchError::wrong_player);
+    h = good;
+    h.names[1] = "Bob\nplace 0 0";
+    CHECK(refused(h) == MatchError::bad_name);
+    h = good;
+    h.race_to = max_race_to + 1;
+    CHECK(refused(h) == MatchError::bad_race);
+    h = good;
+    h.setup.physics.gravity = 1.6; // the moon: a record could not say so
+    CHECK(refused(h) == MatchError::bad_setup);
+    h = good;
+    h.setup.physics.friction = FrictionModel{FrictionKind::decay, 0, 0};
+    CHECK(refused(h) == MatchError::bad_setup);
+    h = good;
+    h.setup.physics.friction = FrictionModel{FrictionKind::combined, 0.5, 0.25};
+    h.setup.physics.cue_ball_mass = 0.2;
+    CHECK(refused(h) == MatchError::none);
+}
+
+TEST_CASE("every shot a match takes survives its record's text", "[match][record]") {
+    Match match = started(header_for(GameType::eight_ball, 3), 2);
+    ShotCall safety;
+    safety.call = {5, 2, true}; // a safety names no ball: the record keeps only "safety"
+    REQUIRE(play_computer_move(match) == MatchError::none); // the placement
+    REQUIRE(std::holds_alternative<PlayedShot>(match.shoot(match.to_act(), {12, 0, 0, 0}, safety)));
+    CHECK(match.record().actions.back().call.call.ball == 0);
+    for (int i = 0; i < 6 && match.pending().kind != Pending::over; ++i)
+        REQUIRE(play_computer_move(match) == MatchError::none);
+    const auto parsed = parse_record(format_record(match.record()));
+    REQUIRE(std::holds_alternative<GameRecord>(parsed));
+    CHECK(format_record(std::get<GameRecord>(parsed)) == format_record(match.record()));
+    const auto again = Match::replay(std::get<GameRecord>(parsed));
+    REQUIRE(std::holds_alternative<Match>(again));
+    CHECK(seen(std::get<Match>(again)) == seen(match));
+}
+
+TEST_CASE("a rematch keeps the seats, and the computers play on with their own streams",
+          "[match]") {
+    GameRecord header = header_for(GameType::nine_ball, 12);
+    Match first = started(header, 40);
+    // Seat 1's computer is seeded 40 + 1: `same` makes the same decisions beside it.
+    ComputerPlayer same(Level::hard, 41);
+    const auto place_and_shoot = [&](Match& m) {
+        const auto place = m.computer_move();
+        REQUIRE(place->kind == Pending::place);
+        CHECK(place->spot == same.place_cue_ball(m.game()));
+        REQUIRE(m.place(1, place->spot) == MatchError::none);
+        const auto shot = m.computer_move();
+        REQUIRE(shot->kind == Pending::shoot);
+        return shot->shot.strike;
+    };
+    const Strike first_break = place_and_shoot(first);
+    CHECK(first_break.speed == same.shot(first.game()).strike.speed);
+    Match second = std::move(first).rematch(1, 99);
+    CHECK(second.record().seed == 99);
+    CHECK(second.record().actions.empty());
+    CHECK(second.name(1) == "Ann");
+    CHECK(second.seat(2).computer == Level::medium);
+    CHECK(second.rack() == 1);
+    // A fresh computer would break with its first noise; this one breaks with its next.
+    ComputerPlayer fresh(Level::hard, 41);
+    fresh.place_cue_ball(second.game());
+    const Strike second_break = place_and_shoot(second);
+    const Strike fresh_break = fresh.shot(second.game()).strike;
+    const Strike continuing = same.shot(second.game()).strike;
+    CHECK(second_break.speed == continuing.speed);
+    CHECK(second_break.angle_deg == continuing.angle_deg);
+    CHECK(second_break.angle_deg != fresh_break.angle_deg);
 }

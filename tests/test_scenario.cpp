@@ -333,6 +333,7 @@ TEST_CASE("line-local errors come before errors between lines", "[scenario]") {
 }
 
 TEST_CASE("numbers print with %.9g and read without the locale", "[scenario]") {
+    using namespace termpool;
     using namespace termpool::cli;
     CHECK(format_number(0.1) == "0.1");
     CHECK(format_number(1.0 / 3) == "0.333333333");

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 #include <string_view>
+#include <termpool/record.hpp>
 #include <termpool/setup.hpp>
 #include <vector>
 
@@ -79,8 +80,29 @@ TEST_CASE("the game's options carry the setup, with their own wording for bad mo
 
     CHECK_FALSE(tui::parse_game_options({"--friction", "combined", "0.5"}, error));
     CHECK(error == "--friction combined needs A");
+    CHECK_FALSE(tui::parse_game_options({"--friction", "combined", "x"}, error));
+    CHECK(error == "K must be a positive number"); // the K given is read before A is asked for
     CHECK_FALSE(tui::parse_game_options({"--friction", "decay", "x"}, error));
     CHECK(error == "K must be a positive number");
     CHECK_FALSE(tui::parse_game_options({"--friction", "slow"}, error));
     CHECK(error == "unknown friction model 'slow' (physical, decay K, constant A or combined K A)");
+}
+
+TEST_CASE("a save's friction and name lines keep the save's own wording", "[setup][record]") {
+    const auto problem = [](const std::string& line) -> std::string {
+        const auto parsed = parse_record("termpool-record 1\ngame 8ball\n" + line + "\nend\n");
+        const auto* e = std::get_if<RecordError>(&parsed);
+        return e ? std::to_string(e->line) + ": " + e->message : "";
+    };
+    CHECK(problem("friction combined 0.5 0.25").empty());
+    CHECK(problem("friction decay 0") == "3: friction constants must be positive numbers");
+    CHECK(problem("friction decay +0.5") == "3: friction constants must be positive numbers");
+    CHECK(problem("friction combined 0.5 +0.3") ==
+          "3: friction constants must be positive numbers");
+    CHECK(problem("friction bogus x") == "3: friction constants must be positive numbers");
+    CHECK(problem("friction decay 1 2") == "3: bad friction line");
+    CHECK(problem("friction physical 1") == "3: bad friction line");
+    CHECK(problem("friction decay") == "3: unknown or malformed line 'friction'");
+    CHECK(problem("player1 Ann Lee  ").empty()); // spaces at the end are dropped
+    CHECK(problem("player2 A\x1b[2JB").starts_with("3: a player's name must be text"));
 }

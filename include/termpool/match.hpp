@@ -64,17 +64,11 @@ enum class MatchError {
     bad_name,     ///< blank, too long, spaces at an end, or control characters
     bad_race,     ///< a race outside 1 to max_race_to racks
     started,      ///< the race can only be set before the first action
+    bad_setup,    ///< a breaker other than 1 or 2, or physics a record cannot keep
 };
 
 /// A few words for `error` ("it is the other player's turn", ...).
 const char* match_error_text(MatchError error);
-
-/// True for a name a seat may take: 1 to `max_player_name_bytes` bytes of UTF-8 without control
-/// characters (C0, DEL, C1) and without a space at either end (the record keeps it on one line).
-bool valid_player_name(std::string_view name);
-
-/// Longest name a seat may take, in bytes (a front end may allow fewer columns).
-inline constexpr std::size_t max_player_name_bytes = 80;
 
 /// A shot as the match played it.
 struct PlayedShot {
@@ -105,9 +99,18 @@ bool strike_in_range(const Strike& strike);
 class Match {
 public:
     /// A new match set up as `header` says (its setup, seed, breaker, seats, race and break
-    /// rule; its actions are not played, see `replay`). A computer seat's decisions come from
-    /// `computer_seed` + the seat's number.
-    explicit Match(const GameRecord& header, std::uint64_t computer_seed = 0);
+    /// rule; its actions are not played, see `replay`), or why not: a breaker other than 1 or
+    /// 2 (wrong_player), a bad name, a race outside 0 to max_race_to, or physics the record
+    /// cannot keep (bad_setup: a record keeps the cloth model and the cue ball's mass, the other
+    /// constants must be the defaults). A computer seat's decisions come from `computer_seed` +
+    /// the seat's number.
+    static std::variant<Match, MatchError> start(const GameRecord& header,
+                                                 std::uint64_t computer_seed = 0);
+
+    /// The next game between the same seats, with the same setup and race: `breaker` breaks a
+    /// rack racked from `seed`. The computers play on with their own streams, as a person would
+    /// remember the last game.
+    Match rematch(int breaker, std::uint64_t seed) &&;
 
     /// Plays the first `actions` actions of `record` (all of them by default) on a new match;
     /// `on_shot` hears each shot. An action the match refuses (a record edited into an impossible
@@ -183,6 +186,7 @@ public:
     std::uint64_t computer_simulations(int player) const;
 
 private:
+    Match(const GameRecord& header, std::uint64_t computer_seed);
     MatchError check_player(int player) const;
     void start_rack(int breaker, std::uint64_t seed);
     void count_rack();

@@ -48,6 +48,13 @@ struct GameRecord {
     std::vector<RecordedAction> actions;             ///< in order
 };
 
+/// True for a name a seat may take: 1 to `max_player_name_bytes` bytes of UTF-8 without control
+/// characters (C0, DEL, C1) and without a space at either end (the record keeps it on one line).
+bool valid_player_name(std::string_view name);
+
+/// Longest name a seat may take, in bytes (a front end may allow fewer columns).
+inline constexpr std::size_t max_player_name_bytes = 80;
+
 /// Why a record was refused.
 struct RecordError {
     int line = 0;        ///< 1-based line

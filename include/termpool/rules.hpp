@@ -235,7 +235,6 @@ private:
     bool is_break_ = true;
     Group player1_group_ = Group::open;
     BallInHand ball_in_hand_ = BallInHand::kitchen;
-    bool cue_placed_ = false;
     int chooser_ = 0;
     std::vector<Choice> choices_;
     int pusher_ = 0;

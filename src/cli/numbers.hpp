@@ -7,21 +7,11 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <termpool/text_numbers.hpp>
 
 namespace termpool::cli {
 
 /// `value` printed with `%.9g`; negative zero prints as "0" so that outputs compare as text.
 std::string format_number(double value);
-
-/// The whole of `text` read as a decimal or scientific number; a leading '+' is allowed.
-/// "inf", "nan" and values too large for a double come back as infinity or NaN for the caller
-/// to refuse with a message of its own. Nothing when `text` is not a number.
-std::optional<double> parse_double(std::string_view text);
-
-/// The whole of `text` read as a decimal integer; nothing when it is not one or out of range.
-std::optional<long long> parse_integer(std::string_view text);
-
-/// The whole of `text` read as an unsigned 64-bit decimal integer; nothing when it is not one.
-std::optional<std::uint64_t> parse_uint64(std::string_view text);
 
 } // namespace termpool::cli

@@ -131,7 +131,13 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
     header.computers[0] = o.levels[0];
     header.computers[1] = o.levels[1];
     // Seat p's computer plays from seed 2 * seed + p.
-    Match match(header, header.seed * 2);
+    auto started = Match::start(header, header.seed * 2);
+    if (const MatchError* refused = std::get_if<MatchError>(&started)) {
+        summary.violation =
+            std::string("the match refused its setup: ") + match_error_text(*refused);
+        return summary;
+    }
+    Match& match = std::get<Match>(started);
     bool opponent_shot = false;
     using Clock = std::chrono::steady_clock;
     while (match.pending().kind != Pending::over) {

@@ -1,5 +1,7 @@
 // The flow of a match: who acts, what they may do, each action checked and recorded.
+#include <algorithm>
 #include <cmath>
+#include <string>
 #include <termpool/match.hpp>
 
 namespace termpool {
@@ -23,50 +25,70 @@ const char* match_error_text(MatchError error) {
     case MatchError::not_offered:
         return "that choice is not on offer";
     case MatchError::bad_name:
-        return "a name is 1 to 80 bytes of text, without control characters or spaces at the ends";
+        return "a name is text without control characters or spaces at the ends, and not too long";
     case MatchError::bad_race:
         return "a race is 1 to 99 racks";
     case MatchError::started:
         return "the match has begun";
+    case MatchError::bad_setup:
+        return "the breaker is 1 or 2, and the physics the defaults but for the cloth and the cue "
+               "ball's mass";
     }
     return "?";
-}
-
-bool valid_player_name(std::string_view name) {
-    if (name.empty() || name.size() > max_player_name_bytes || name.front() == ' ' ||
-        name.back() == ' ')
-        return false;
-    for (std::size_t i = 0; i < name.size();) {
-        const auto byte = static_cast<unsigned char>(name[i]);
-        // The sequence length from the lead byte; overlong forms and surrogates are refused.
-        const std::size_t length = byte < 0x80                   ? 1
-                                   : byte >= 0xC2 && byte < 0xE0 ? 2
-                                   : byte >= 0xE0 && byte < 0xF0 ? 3
-                                   : byte >= 0xF0 && byte < 0xF5 ? 4
-                                                                 : 0;
-        if (length == 0 || i + length > name.size())
-            return false;
-        char32_t code = length == 1 ? byte : byte & (0x7F >> length);
-        for (std::size_t k = 1; k < length; ++k) {
-            const auto next = static_cast<unsigned char>(name[i + k]);
-            if ((next & 0xC0) != 0x80)
-                return false;
-            code = (code << 6) | (next & 0x3F);
-        }
-        const char32_t lowest[] = {0, 0, 0x80, 0x800, 0x10000};
-        if (code < lowest[length] || code > 0x10FFFF || (code >= 0xD800 && code < 0xE000))
-            return false;
-        if (code < 0x20 || (code >= 0x7F && code < 0xA0))
-            return false;
-        i += length;
-    }
-    return true;
 }
 
 bool strike_in_range(const Strike& s) {
     return std::isfinite(s.speed) && std::isfinite(s.angle_deg) && std::isfinite(s.side) &&
            std::isfinite(s.follow) && s.speed >= 0 && s.speed <= max_strike_speed &&
            std::abs(s.side) <= 0.5 && std::abs(s.follow) <= 0.5;
+}
+
+namespace {
+
+// A record keeps the cloth model and the cue ball's mass: any other constant would be lost.
+bool recordable(const PhysicsParams& p) {
+    const PhysicsParams d;
+    const FrictionModel& f = p.friction;
+    const bool classic_constants_ok =
+        f.kind == FrictionKind::physical ||
+        ((f.kind == FrictionKind::constant || (std::isfinite(f.decay_rate) && f.decay_rate > 0)) &&
+         (f.kind == FrictionKind::decay || (std::isfinite(f.deceleration) && f.deceleration > 0)));
+    return classic_constants_ok && f.rest_speed == d.friction.rest_speed &&
+           std::isfinite(p.cue_ball_mass) && p.cue_ball_mass >= 0 &&
+           p.ball_radius == d.ball_radius && p.ball_mass == d.ball_mass &&
+           p.sliding_friction == d.sliding_friction && p.rolling_friction == d.rolling_friction &&
+           p.spin_friction == d.spin_friction && p.ball_restitution == d.ball_restitution &&
+           p.ball_friction == d.ball_friction && p.cushion_restitution == d.cushion_restitution &&
+           p.cushion_friction == d.cushion_friction &&
+           p.cushion_height_ratio == d.cushion_height_ratio && p.gravity == d.gravity &&
+           p.elastic_below_speed == d.elastic_below_speed && p.collision == d.collision &&
+           p.cushion == d.cushion;
+}
+
+} // namespace
+
+std::variant<Match, MatchError> Match::start(const GameRecord& header,
+                                             std::uint64_t computer_seed) {
+    if (header.breaker != 1 && header.breaker != 2)
+        return MatchError::wrong_player;
+    if (header.race_to < 0 || header.race_to > max_race_to)
+        return MatchError::bad_race;
+    if (!valid_player_name(header.names[0]) || !valid_player_name(header.names[1]))
+        return MatchError::bad_name;
+    if (!recordable(header.setup.physics))
+        return MatchError::bad_setup;
+    return Match(header, computer_seed);
+}
+
+Match Match::rematch(int breaker, std::uint64_t seed) && {
+    GameRecord header = record_;
+    header.actions.clear();
+    header.breaker = breaker == 2 ? 2 : 1;
+    header.seed = seed;
+    Match next(header, computer_seed_);
+    for (int p = 0; p < 2; ++p)
+        next.computers_[p] = std::move(computers_[p]);
+    return next;
 }
 
 Match::Match(const GameRecord& header, std::uint64_t computer_seed)
@@ -83,7 +105,10 @@ Match::Match(const GameRecord& header, std::uint64_t computer_seed)
 std::variant<Match, RecordError> Match::replay(const GameRecord& record, std::size_t actions,
                                                const ShotListener& on_shot,
                                                std::uint64_t computer_seed) {
-    Match m(record, computer_seed);
+    auto started = start(record, computer_seed);
+    if (const MatchError* e = std::get_if<MatchError>(&started))
+        return RecordError{0, match_error_text(*e)};
+    Match& m = std::get<Match>(started);
     const std::size_t count = std::min(actions, record.actions.size());
     for (std::size_t i = 0; i < count; ++i) {
         const RecordedAction& a = record.actions[i];
@@ -153,7 +178,8 @@ PendingAction Match::pending() const {
 
 bool Match::computer_to_act() const {
     const PendingAction p = pending();
-    return p.player != 0 && p.kind != Pending::next_rack && computers_[p.player - 1].has_value();
+    return (p.player == 1 || p.player == 2) && p.kind != Pending::next_rack &&
+           computers_[p.player - 1].has_value();
 }
 
 int Match::next_breaker() const {
@@ -193,11 +219,17 @@ MatchError Match::place(int player, Vec2 spot) {
         return MatchError::not_now;
     if (!game_.place_cue_ball(spot))
         return MatchError::illegal_spot;
-    placed_ = true;
     RecordedAction action;
     action.kind = RecordedAction::Kind::place;
     action.place = spot;
-    record_.actions.push_back(action);
+    // Putting the cue ball down again this turn replaces the first spot: the record stays as
+    // long as the game, however often a player moves the ball.
+    if (placed_ && !record_.actions.empty() &&
+        record_.actions.back().kind == RecordedAction::Kind::place)
+        record_.actions.back() = action;
+    else
+        record_.actions.push_back(action);
+    placed_ = true;
     return MatchError::none;
 }
 
@@ -210,14 +242,20 @@ std::variant<PlayedShot, MatchError> Match::shoot(int player, const Strike& stri
         return MatchError::not_now;
     if (!strike_in_range(strike))
         return MatchError::bad_strike;
-    if (call.call.ball < 0 || call.call.ball > 15 || call.call.pocket < 0 || call.call.pocket > 6)
+    // What the record can say: no call, a safety, or a ball 1-15 into a pocket 1-6.
+    ShotCall taken = call;
+    if (taken.call.safety)
+        taken.call.ball = taken.call.pocket = 0;
+    const bool called = taken.call.ball >= 1 && taken.call.ball <= 15 && taken.call.pocket >= 1 &&
+                        taken.call.pocket <= 6;
+    if (!called && (taken.call.ball != 0 || taken.call.pocket != 0))
         return MatchError::bad_call;
-    PlayedShot shot{game_.shooter(), rack_, game_.is_break(), game_.call_as_taken(call), {}, {}};
+    PlayedShot shot{game_.shooter(), rack_, game_.is_break(), game_.call_as_taken(taken), {}, {}};
     shot.result = simulate_shot(game_.table(), game_.params(), game_.balls(), strike, trajectory);
-    shot.verdict = game_.apply(call, shot.result);
+    shot.verdict = game_.apply(taken, shot.result);
     RecordedAction action;
     action.strike = strike;
-    action.call = call;
+    action.call = taken;
     record_.actions.push_back(action);
     tally_.on_shot(shot.shooter, shot.was_break, shot.call, shot.verdict);
     placed_ = false;
@@ -284,7 +322,6 @@ MatchError Match::set_race(int race_to) {
 }
 
 MatchError Match::apply(const RecordedAction& action, Trajectory* trajectory, PlayedShot* shot) {
-    const std::size_t before = record_.actions.size();
     MatchError error = MatchError::none;
     switch (action.kind) {
     case RecordedAction::Kind::place:
@@ -312,8 +349,10 @@ MatchError Match::apply(const RecordedAction& action, Trajectory* trajectory, Pl
         }
         break;
     }
-    if (error == MatchError::none)
-        record_.actions[before] = action; // as given: its seed, its line in the file
+    if (error == MatchError::none && action.kind != RecordedAction::Kind::shot)
+        record_.actions.back() = action; // as given: its seed, its line in the file
+    else if (error == MatchError::none)
+        record_.actions.back().line = action.line;
     return error;
 }
 

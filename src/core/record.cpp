@@ -171,13 +171,22 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
                 return fail("breaker must be 1 or 2");
             r.breaker = f[1][0] - '0';
         } else if ((key == "player1" || key == "player2") && f.size() >= 2) {
-            r.names[key.back() - '1'] = rest_after(line, key);
+            std::string name = rest_after(line, key);
+            while (!name.empty() && (name.back() == ' ' || name.back() == '\t'))
+                name.pop_back();
+            if (!valid_player_name(name))
+                return fail("a player's name must be text without control characters, at most " +
+                            std::to_string(max_player_name_bytes) + " bytes");
+            r.names[key.back() - '1'] = name;
         } else if ((key == "computer1" || key == "computer2") && want(2)) {
             const auto level = parse_level(std::string(f[1]));
             if (!level)
                 return fail("unknown level '" + std::string(f[1]) + "'");
             r.computers[key.back() - '1'] = *level;
-        } else if (key == "friction" && f.size() >= 2) {
+        } else if (key == "friction" && f.size() >= 3) {
+            // A line names a model and at least one constant (physical is written as no line).
+            if (const auto k = to_double(f[2]); !k || *k <= 0)
+                return fail("friction constants must be positive numbers");
             const auto model = parse_friction(std::span(f).subspan(1));
             if (const auto* problem = std::get_if<FrictionProblem>(&model))
                 return fail(problem->kind == FrictionProblem::Kind::not_positive ||
@@ -185,6 +194,10 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
                                     problem->kind == FrictionProblem::Kind::not_a_number
                                 ? "friction constants must be positive numbers"
                                 : "bad friction line");
+            // A record writes its numbers without a '+': read them back that way only.
+            if (std::any_of(f.begin() + 2, f.end(),
+                            [](std::string_view w) { return !to_double(w); }))
+                return fail("friction constants must be positive numbers");
             r.setup.physics.friction = std::get<FrictionModel>(model);
         } else if (key == "cue-ball-mass" && want(2)) {
             const auto m = to_double(f[1]);
@@ -274,6 +287,37 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
     if (!ended)
         return RecordError{line_number, "truncated: no 'end' line"};
     return r;
+}
+
+bool valid_player_name(std::string_view name) {
+    if (name.empty() || name.size() > max_player_name_bytes || name.front() == ' ' ||
+        name.back() == ' ')
+        return false;
+    for (std::size_t i = 0; i < name.size();) {
+        const auto byte = static_cast<unsigned char>(name[i]);
+        // The sequence length from the lead byte; overlong forms and surrogates are refused.
+        const std::size_t length = byte < 0x80                   ? 1
+                                   : byte >= 0xC2 && byte < 0xE0 ? 2
+                                   : byte >= 0xE0 && byte < 0xF0 ? 3
+                                   : byte >= 0xF0 && byte < 0xF5 ? 4
+                                                                 : 0;
+        if (length == 0 || i + length > name.size())
+            return false;
+        char32_t code = length == 1 ? byte : byte & (0x7F >> length);
+        for (std::size_t k = 1; k < length; ++k) {
+            const auto next = static_cast<unsigned char>(name[i + k]);
+            if ((next & 0xC0) != 0x80)
+                return false;
+            code = (code << 6) | (next & 0x3F);
+        }
+        const char32_t lowest[] = {0, 0, 0x80, 0x800, 0x10000};
+        if (code < lowest[length] || code > 0x10FFFF || (code >= 0xD800 && code < 0xE000))
+            return false;
+        if (code < 0x20 || (code >= 0x7F && code < 0xA0))
+            return false;
+        i += length;
+    }
+    return true;
 }
 
 std::uint64_t rack_seed(std::uint64_t record_seed, int rack) {

@@ -1,8 +1,8 @@
 // The game's setup and the one text form of the cloth model.
 #include <charconv>
 #include <cmath>
-#include <limits>
 #include <termpool/setup.hpp>
+#include <termpool/text_numbers.hpp>
 
 namespace termpool {
 namespace {
@@ -27,28 +27,15 @@ const ModelName* find_model(std::string_view name) {
     return nullptr;
 }
 
-// Locale-free, like every text form of the project; a leading '+' is allowed, and a value too
-// large for a double reads as infinity (refused as not finite).
 std::variant<double, FrictionProblem::Kind> read_constant(std::string_view text) {
-    if (text.starts_with('+'))
-        text.remove_prefix(1);
-    double value = 0;
-    const char* last = text.data() + text.size();
-    const auto [end, ec] = std::from_chars(text.data(), last, value);
-    if (text.empty() || end != last || (ec != std::errc{} && ec != std::errc::result_out_of_range))
+    const std::optional<double> value = parse_double(text);
+    if (!value)
         return FrictionProblem::Kind::not_a_number;
-    if (ec == std::errc::result_out_of_range) {
-        // from_chars leaves the value alone: a negative exponent means too small to tell from
-        // zero, anything else too large.
-        const std::size_t e = text.find_first_of("eE");
-        const bool tiny = e != std::string_view::npos && e + 1 < text.size() && text[e + 1] == '-';
-        return tiny ? FrictionProblem::Kind::not_positive : FrictionProblem::Kind::not_finite;
-    }
-    if (!std::isfinite(value))
+    if (!std::isfinite(*value))
         return FrictionProblem::Kind::not_finite;
-    if (!(value > 0))
+    if (!(*value > 0))
         return FrictionProblem::Kind::not_positive;
-    return value;
+    return *value;
 }
 
 std::string shortest(double v) {

@@ -13,18 +13,36 @@ namespace {
 
 constexpr int frame_ms = 16; // about 60 frames per second while something moves
 
+// The first game: the command line's setup, race and names, player 1 to break from the rack
+// seeded `seed` (the computers' streams follow on from it).
+Match first_match(const GameOptions& options, std::uint64_t seed) {
+    GameRecord header;
+    header.setup = options.setup;
+    header.seed = seed;
+    for (int p = 0; p < 2; ++p)
+        if (options.names[p])
+            header.names[p] = *options.names[p];
+    header.race_to = options.race_to;
+    header.break_rule = options.break_rule;
+    auto started = Match::start(header, seed + 1);
+    if (Match* match = std::get_if<Match>(&started))
+        return std::move(*match);
+    // The options come checked; should the match still refuse them, the defaults play.
+    GameRecord defaults;
+    defaults.setup.game = options.setup.game;
+    defaults.seed = seed;
+    return std::get<Match>(Match::start(defaults, seed + 1));
+}
+
 } // namespace
 
 App::App(Terminal& terminal, const GameOptions& options)
     : term_(terminal), options_(options), table_(make_table(options.setup)),
       params_(options.setup.physics), seed_(options.seed.value_or(static_cast<std::uint64_t>(
                                           Clock::now().time_since_epoch().count()))),
-      match_(GameRecord{}) {
-    // Names first: the first message already says who breaks.
-    for (int p = 1; p <= 2; ++p)
-        if (options.names[p - 1])
-            match_.rename(p, *options.names[p - 1]);
-    new_game(1);
+      match_(first_match(options, seed_++)) {
+    shown_balls_ = game().balls();
+    message_ = name(1) + " breaks: place the cue ball in the kitchen";
     aim_.time_power = options.timed_power;
     aim_.show_aid = options.aim_aid;
     if (options.watch)

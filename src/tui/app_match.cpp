@@ -12,18 +12,9 @@
 namespace termpool::tui {
 
 void App::new_game(int breaker) {
-    // The players keep their seats (and names) from the game before.
-    GameRecord header;
-    header.setup = options_.setup;
-    header.seed = seed_++;
-    header.breaker = breaker;
-    for (int p = 0; p < 2; ++p) {
-        header.names[p] = match_.record().names[p];
-        header.computers[p] = match_.record().computers[p];
-    }
-    header.race_to = options_.race_to;
-    header.break_rule = options_.break_rule;
-    match_ = Match(header, seed_);
+    // The players keep their seats (and names) from the game before, the computers their
+    // streams.
+    match_ = std::move(match_).rematch(breaker, seed_++);
     shown_balls_ = game().balls();
     trajectory_.reset();
     message_ = name(breaker) + " breaks: place the cue ball in the kitchen";

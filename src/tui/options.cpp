@@ -50,7 +50,16 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
             std::vector<std::string_view> words{*kind};
             for (std::size_t c = 0; c < friction_constant_count(*named) && i + 1 < args.size(); ++c)
                 words.push_back(args[++i]);
-            const auto model = parse_friction(words);
+            auto model = parse_friction(words);
+            if (const auto* problem = std::get_if<FrictionProblem>(&model);
+                problem && problem->kind == FrictionProblem::Kind::missing_constant) {
+                // The constants given are read in turn before the one missing is asked for.
+                std::vector<std::string_view> padded = words;
+                padded.resize(friction_constant_count(*named) + 1, "1");
+                if (const auto padded_model = parse_friction(padded);
+                    std::holds_alternative<FrictionProblem>(padded_model))
+                    model = padded_model;
+            }
             if (const auto* problem = std::get_if<FrictionProblem>(&model)) {
                 const char* symbol = friction_constant_symbol(*named, problem->word - 1);
                 error = problem->kind == FrictionProblem::Kind::missing_constant

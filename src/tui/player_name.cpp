@@ -2,6 +2,8 @@
 
 #include "tui/player_name.hpp"
 
+#include <termpool/record.hpp>
+
 #include "tui/text_width.hpp"
 
 namespace termpool::tui {
@@ -33,7 +35,14 @@ std::optional<std::string> clean_player_name(std::string_view input, std::string
         }
     }
     // Cutting can leave a space at the end ("ab cd" cut after "ab "), so trim after it too.
-    const std::string cut = truncate_to_width(trim_spaces(input), max_name_columns);
+    std::string cut = truncate_to_width(trim_spaces(input), max_name_columns);
+    // Zero-width marks take no columns but bytes: the record holds at most so many.
+    if (cut.size() > max_player_name_bytes) {
+        std::size_t end = max_player_name_bytes;
+        while (end > 0 && (static_cast<unsigned char>(cut[end]) & 0xC0) == 0x80)
+            --end;
+        cut.resize(end);
+    }
     const std::string_view name = trim_spaces(cut);
     if (name.empty())
         return std::nullopt;
