@@ -248,3 +248,37 @@ TEST_CASE("a save that fails stays on the message line until one works", "[tui][
     CHECK(t.wait_for_text("Could not save"));
     CHECK(t.screen().find("Ann: aim") != std::string::npos);
 }
+
+TEST_CASE("a game saved after a ball-in-hand placement resumes at the aim with the ball put",
+          "[tui][e2e]") {
+    if (!have_tmux()) {
+        WARN("tmux is missing: the saves test is skipped");
+        return;
+    }
+    const ScratchDir dir("termpool-placed");
+    const std::string env = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
+                            " TERM=xterm-256color LANG=C.UTF-8 HOME=" + dir.path + " ";
+    const std::string save = dir.path + "/termpool/game.save";
+    {
+        Tmux t;
+        t.start(env + termpool_binary() + " --player1 Cy --player2 Dee --seed 4; sleep 60");
+        REQUIRE(t.wait_for_text("place the cue ball"));
+        t.keys("Up"); // a row up from the head spot: not where a new turn would put it
+        t.keys("Enter");
+        REQUIRE(t.wait_for_text("[ shoot ]"));
+        t.keys("q");
+        t.keys("y");
+        REQUIRE(t.wait_for_text("Game saved in"));
+    }
+    const std::string saved = file_text(save);
+    REQUIRE(saved.find("\nplace ") != std::string::npos);
+    Tmux t;
+    t.start(env + termpool_binary() + " --resume; sleep 60");
+    REQUIRE(t.wait_for_text("Game resumed: Cy to play"));
+    REQUIRE(t.wait_for_text("[ shoot ]")); // the aim, not a second placement
+    CHECK(t.screen().find("place the cue ball") == std::string::npos);
+    t.keys("q");
+    t.keys("y");
+    REQUIRE(t.wait_for_text("Game saved in"));
+    CHECK(file_text(save) == saved); // nothing placed twice
+}

@@ -6,6 +6,8 @@
 
 namespace termpool {
 
+static_assert(max_race_to == 99, "match_error_text names the longest race");
+
 const char* match_error_text(MatchError error) {
     switch (error) {
     case MatchError::none:

@@ -88,6 +88,8 @@ void App::compose(View& v) const {
     v.game = g.type();
     v.names[0] = name(1);
     v.names[1] = name(2);
+    // The panel marks who is at the table: at game over too, when the match's to_act() is
+    // already the next rack's breaker.
     v.shooter = mode_ == Mode::animating ? shooter_before_
                 : g.chooser() != 0       ? g.chooser()
                                          : g.shooter();
