@@ -59,3 +59,9 @@ TEST_CASE("an illegal 8-ball break says why a choice is owed", "[tui][messages]"
     v.legal_break = true; // a choice owed for another reason (a push-out) says only who
     CHECK(verdict_message(v, 1, names) == "Bob chooses");
 }
+
+TEST_CASE("the re-break choice reads right for whoever is offered it", "[tui]") {
+    // The opponent of an illegal break and the breaker who potted the 8 are both offered it:
+    // either way it is the breaker who breaks again.
+    CHECK(termpool::tui::choice_words(termpool::Choice::re_break) == "the breaker breaks again");
+}

@@ -33,7 +33,8 @@ std::string choice_words(Choice choice) {
     case Choice::re_rack:
         return "re-rack and break";
     case Choice::re_break:
-        return "opponent breaks again";
+        return "the breaker breaks again"; // offered to the breaker (the 8 on the break) or not
+
     case Choice::spot_eight:
         return "spot the 8 and shoot";
     case Choice::take_solids:
