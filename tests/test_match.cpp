@@ -58,11 +58,13 @@ struct Seen {
     MatchState score;
     int rack;
     std::array<PlayerStats, 2> figures;
+    std::uint64_t hash;
     bool operator==(const Seen&) const = default;
 };
 
 Seen seen(const Match& m) {
-    return {m.game().balls(), m.pending().kind, m.to_act(), m.score(), m.rack(), m.tally().both()};
+    return {m.game().balls(), m.pending().kind, m.to_act(),    m.score(),
+            m.rack(),         m.tally().both(), m.state_hash()};
 }
 
 } // namespace
@@ -88,6 +90,15 @@ TEST_CASE("whole games play through the Match alone and replay to every action",
         // match saw then.
         const GameRecord& record = match.record();
         REQUIRE(record.actions.size() + 1 == states.size());
+        // The digest tells the states apart: every action changes it.
+        for (std::size_t k = 1; k < states.size(); ++k)
+            CHECK(states[k].hash != states[k - 1].hash);
+        // Each action reads back from its line as the hall sends it.
+        for (const RecordedAction& a : record.actions) {
+            const auto back = parse_action(format_action(a));
+            REQUIRE(std::holds_alternative<RecordedAction>(back));
+            CHECK(format_action(std::get<RecordedAction>(back)) == format_action(a));
+        }
         for (std::size_t k = 0; k < states.size(); k += 1 + k / 8) {
             const auto replayed = Match::replay(record, k);
             REQUIRE(std::holds_alternative<Match>(replayed));

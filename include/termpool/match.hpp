@@ -140,6 +140,11 @@ public:
     const std::string& name(int player) const { return record_.names[player == 2 ? 1 : 0]; }
     /// The players' figures so far.
     const StatsTally& tally() const { return tally_; }
+    /// A 64-bit digest (FNV-1a) of everything a replay must agree on: the balls to the bit, the
+    /// turn, ball in hand, choices, groups, fouls, the score, the rack and the number of
+    /// actions. Two copies that played the same actions have the same hash on any build that
+    /// computes the same doubles.
+    std::uint64_t state_hash() const;
 
     /// What the match waits for and from whom.
     PendingAction pending() const;

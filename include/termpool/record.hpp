@@ -64,6 +64,13 @@ struct RecordError {
 /// The text form of a record. Numbers are written so that they read back bit for bit.
 std::string format_record(const GameRecord& record);
 
+/// The text of one action as a record writes it, without the newline ("place 0.6 0.5",
+/// "shot 12 0 0 0 call 1 3", "choose play-on", "rack 2 1234"): what the hall sends.
+std::string format_action(const RecordedAction& action);
+
+/// Reads one action line as `format_action` writes it; an error says what is wrong (line 1).
+std::variant<RecordedAction, RecordError> parse_action(std::string_view line);
+
 /// Reads the text form; an error names the line and the problem (truncated, foreign, from a
 /// newer version, bad values).
 std::variant<GameRecord, RecordError> parse_record(std::string_view text);

@@ -1,5 +1,6 @@
 // The flow of a match: who acts, what they may do, each action checked and recorded.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string>
 #include <termpool/match.hpp>
@@ -148,6 +149,59 @@ std::variant<Match, RecordError> Match::replay(const GameRecord& record, std::si
         }
     }
     return m;
+}
+
+namespace {
+
+// FNV-1a, fed whole values: integers widened to 64 bits, doubles by their bits.
+class Digest {
+public:
+    void add(std::uint64_t v) {
+        for (int i = 0; i < 8; ++i) {
+            hash_ ^= (v >> (8 * i)) & 0xFF;
+            hash_ *= 0x100000001b3ULL;
+        }
+    }
+    void add(int v) { add(static_cast<std::uint64_t>(static_cast<std::int64_t>(v))); }
+    void add(bool v) { add(static_cast<std::uint64_t>(v)); }
+    void add(double v) { add(std::bit_cast<std::uint64_t>(v)); }
+    std::uint64_t value() const { return hash_; }
+
+private:
+    std::uint64_t hash_ = 0xcbf29ce484222325ULL;
+};
+
+} // namespace
+
+std::uint64_t Match::state_hash() const {
+    Digest d;
+    d.add(static_cast<std::uint64_t>(record_.actions.size()));
+    d.add(rack_);
+    d.add(rack_breaker_);
+    d.add(score_.racks_won[0]);
+    d.add(score_.racks_won[1]);
+    d.add(placed_);
+    const Game& g = game_;
+    d.add(g.shooter());
+    d.add(g.chooser());
+    d.add(g.winner());
+    d.add(static_cast<int>(g.win_reason()));
+    d.add(static_cast<int>(g.ball_in_hand()));
+    d.add(g.is_break());
+    d.add(static_cast<int>(g.player1_group()));
+    d.add(g.push_out_allowed());
+    d.add(g.consecutive_fouls(1));
+    d.add(g.consecutive_fouls(2));
+    for (const Choice c : g.choices())
+        d.add(static_cast<int>(c));
+    for (const Ball& b : g.balls()) {
+        d.add(b.id);
+        d.add(static_cast<int>(b.state));
+        d.add(b.pocket);
+        d.add(b.position.x);
+        d.add(b.position.y);
+    }
+    return d.value();
 }
 
 Seat Match::seat(int player) const {

@@ -57,7 +57,97 @@ bool needs_version_2(const GameRecord& r) {
            });
 }
 
+// An action line's fields: the action, or what is wrong with it; nothing when the fields are
+// not an action line (another key, or the wrong number of fields).
+std::optional<std::variant<RecordedAction, std::string>>
+read_action(const std::vector<std::string_view>& f) {
+    const std::string_view key = f[0];
+    auto want = [&](std::size_t n) { return f.size() == n; };
+    RecordedAction a;
+    if (key == "rack" && want(3)) {
+        if (f[1] != "1" && f[1] != "2")
+            return "rack breaker must be 1 or 2";
+        const auto s = to_u64(f[2]);
+        if (!s)
+            return "bad rack seed";
+        a.kind = RecordedAction::Kind::rack;
+        a.breaker = f[1][0] - '0';
+        a.seed = *s;
+        return a;
+    }
+    if (key == "place" && want(3)) {
+        const auto x = to_double(f[1]), y = to_double(f[2]);
+        if (!x || !y)
+            return "bad place coordinates";
+        a.kind = RecordedAction::Kind::place;
+        a.place = {*x, *y};
+        return a;
+    }
+    if (key == "choose" && want(2)) {
+        const auto c = to_choice(f[1]);
+        if (!c)
+            return "unknown choice '" + std::string(f[1]) + "'";
+        a.kind = RecordedAction::Kind::choose;
+        a.choice = *c;
+        return a;
+    }
+    if (key != "shot" || f.size() < 5)
+        return std::nullopt;
+    a.kind = RecordedAction::Kind::shot;
+    const auto v = to_double(f[1]), phi = to_double(f[2]), side = to_double(f[3]),
+               follow = to_double(f[4]);
+    if (!v || !phi || !side || !follow)
+        return "bad shot numbers";
+    if (*v < 0 || *v > max_strike_speed || std::abs(*side) > 0.5 || std::abs(*follow) > 0.5)
+        return "shot out of range";
+    a.strike = {*v, *phi, *side, *follow};
+    std::size_t i = 5;
+    while (i < f.size()) {
+        if (f[i] == "safety") {
+            a.call.call.safety = true;
+            ++i;
+        } else if (f[i] == "push-out") {
+            a.call.push_out = true;
+            ++i;
+        } else if (f[i] == "call" && i + 2 < f.size()) {
+            const auto ball = to_u64(f[i + 1]), pocket = to_u64(f[i + 2]);
+            if (!ball || !pocket || *ball < 1 || *ball > 15 || *pocket < 1 || *pocket > 6)
+                return "bad call";
+            a.call.call.ball = static_cast<int>(*ball);
+            a.call.call.pocket = static_cast<int>(*pocket);
+            i += 3;
+        } else {
+            return "unknown shot field '" + std::string(f[i]) + "'";
+        }
+    }
+    return a;
+}
+
 } // namespace
+
+std::string format_action(const RecordedAction& a) {
+    switch (a.kind) {
+    case RecordedAction::Kind::place:
+        return "place " + number(a.place.x) + " " + number(a.place.y);
+    case RecordedAction::Kind::choose:
+        return std::string("choose ") + choice_name(a.choice);
+    case RecordedAction::Kind::shot: {
+        std::string out = "shot " + number(a.strike.speed) + " " + number(a.strike.angle_deg) +
+                          " " + number(a.strike.side) + " " + number(a.strike.follow);
+        if (a.call.call.safety)
+            out += " safety";
+        else if (a.call.call.ball != 0)
+            out += " call " + std::to_string(a.call.call.ball) + " " +
+                   std::to_string(a.call.call.pocket);
+        if (a.call.push_out)
+            out += " push-out";
+        return out;
+    }
+    case RecordedAction::Kind::rack:
+        return "rack " + std::to_string(a.breaker) + " " + std::to_string(a.seed);
+    }
+    return {};
+}
 
 std::string format_record(const GameRecord& r) {
     std::string out =
@@ -79,31 +169,8 @@ std::string format_record(const GameRecord& r) {
         out += "race " + std::to_string(r.race_to) + "\n";
         out += std::string("breaks ") + break_rule_name(r.break_rule) + "\n";
     }
-    for (const RecordedAction& a : r.actions) {
-        switch (a.kind) {
-        case RecordedAction::Kind::place:
-            out += "place " + number(a.place.x) + " " + number(a.place.y) + "\n";
-            break;
-        case RecordedAction::Kind::choose:
-            out += std::string("choose ") + choice_name(a.choice) + "\n";
-            break;
-        case RecordedAction::Kind::shot:
-            out += "shot " + number(a.strike.speed) + " " + number(a.strike.angle_deg) + " " +
-                   number(a.strike.side) + " " + number(a.strike.follow);
-            if (a.call.call.safety)
-                out += " safety";
-            else if (a.call.call.ball != 0)
-                out += " call " + std::to_string(a.call.call.ball) + " " +
-                       std::to_string(a.call.call.pocket);
-            if (a.call.push_out)
-                out += " push-out";
-            out += "\n";
-            break;
-        case RecordedAction::Kind::rack:
-            out += "rack " + std::to_string(a.breaker) + " " + std::to_string(a.seed) + "\n";
-            break;
-        }
-    }
+    for (const RecordedAction& a : r.actions)
+        out += format_action(a) + "\n";
     out += "end\n";
     return out;
 }
@@ -215,67 +282,11 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
             if (!rule)
                 return fail("unknown break rule '" + std::string(f[1]) + "' (alternate or winner)");
             r.break_rule = *rule;
-        } else if (key == "rack" && want(3)) {
-            if (f[1] != "1" && f[1] != "2")
-                return fail("rack breaker must be 1 or 2");
-            const auto s = to_u64(f[2]);
-            if (!s)
-                return fail("bad rack seed");
-            RecordedAction a;
-            a.kind = RecordedAction::Kind::rack;
-            a.breaker = f[1][0] - '0';
-            a.seed = *s;
-            a.line = line_number;
-            r.actions.push_back(a);
-        } else if (key == "place" && want(3)) {
-            const auto x = to_double(f[1]), y = to_double(f[2]);
-            if (!x || !y)
-                return fail("bad place coordinates");
-            RecordedAction a;
-            a.kind = RecordedAction::Kind::place;
-            a.place = {*x, *y};
-            a.line = line_number;
-            r.actions.push_back(a);
-        } else if (key == "choose" && want(2)) {
-            const auto c = to_choice(f[1]);
-            if (!c)
-                return fail("unknown choice '" + std::string(f[1]) + "'");
-            RecordedAction a;
-            a.kind = RecordedAction::Kind::choose;
-            a.choice = *c;
-            a.line = line_number;
-            r.actions.push_back(a);
-        } else if (key == "shot" && f.size() >= 5) {
-            RecordedAction a;
-            a.kind = RecordedAction::Kind::shot;
-            a.line = line_number;
-            const auto v = to_double(f[1]), phi = to_double(f[2]), side = to_double(f[3]),
-                       follow = to_double(f[4]);
-            if (!v || !phi || !side || !follow)
-                return fail("bad shot numbers");
-            if (*v < 0 || *v > max_strike_speed || std::abs(*side) > 0.5 || std::abs(*follow) > 0.5)
-                return fail("shot out of range");
-            a.strike = {*v, *phi, *side, *follow};
-            std::size_t i = 5;
-            while (i < f.size()) {
-                if (f[i] == "safety") {
-                    a.call.call.safety = true;
-                    ++i;
-                } else if (f[i] == "push-out") {
-                    a.call.push_out = true;
-                    ++i;
-                } else if (f[i] == "call" && i + 2 < f.size()) {
-                    const auto ball = to_u64(f[i + 1]), pocket = to_u64(f[i + 2]);
-                    if (!ball || !pocket || *ball < 1 || *ball > 15 || *pocket < 1 || *pocket > 6)
-                        return fail("bad call");
-                    a.call.call.ball = static_cast<int>(*ball);
-                    a.call.call.pocket = static_cast<int>(*pocket);
-                    i += 3;
-                } else {
-                    return fail("unknown shot field '" + std::string(f[i]) + "'");
-                }
-            }
-            r.actions.push_back(a);
+        } else if (auto action = read_action(f)) {
+            if (const std::string* problem = std::get_if<std::string>(&*action))
+                return fail(*problem);
+            std::get<RecordedAction>(*action).line = line_number;
+            r.actions.push_back(std::get<RecordedAction>(*action));
         } else if (key == "end" && want(1)) {
             ended = true;
         } else {
@@ -318,6 +329,16 @@ bool valid_player_name(std::string_view name) {
         i += length;
     }
     return true;
+}
+
+std::variant<RecordedAction, RecordError> parse_action(std::string_view line) {
+    const std::vector<std::string_view> f = split_fields(strip_comment(line));
+    auto action = f.empty() ? std::nullopt : read_action(f);
+    if (!action)
+        return RecordError{1, "not an action line"};
+    if (const std::string* problem = std::get_if<std::string>(&*action))
+        return RecordError{1, *problem};
+    return std::get<RecordedAction>(*action);
 }
 
 std::uint64_t rack_seed(std::uint64_t record_seed, int rack) {
