@@ -123,6 +123,7 @@ TEST_CASE("termpool practice in tmux: one name, shoot, take it again, move a bal
     CHECK(t.screen().find("no referee") != std::string::npos);
     const auto table_rows = [](const std::string& s) { return s.substr(0, s.find("power [")); };
     const std::string rack = table_rows(t.screen());
+    CHECK(t.screen().find("12.0 m/s") != std::string::npos); // the break's full bar
     t.keys("Space");
     t.keys("x");
     REQUIRE(t.wait_for_text("r takes the shot again"));
@@ -130,8 +131,9 @@ TEST_CASE("termpool practice in tmux: one name, shoot, take it again, move a bal
     CHECK(table_rows(t.screen()) != rack);
     t.keys("r");
     REQUIRE(t.wait_for_text("The balls are back"));
-    // The same balls and the same aim as before the shot.
+    // The same balls and the same aim as before the shot, and the break's full bar again.
     CHECK(t.wait_for([&](const std::string& s) { return table_rows(s) == rack; }, 3));
+    CHECK(t.wait_for_text("12.0 m/s"));
     // Move the cue ball: m, Tab picks it, three cells left, Enter puts it down.
     t.keys("m");
     t.keys("Tab");
