@@ -43,7 +43,8 @@ struct SavedTable {
     std::string seat_tokens[2]; ///< seat_token_hash of each seat's token, "" for none
 };
 
-/// A new seat token: 32 hex digits from the kernel's random source (getrandom).
+/// A new seat token: 32 hex digits from the kernel's random source (getrandom); empty when
+/// the kernel gives none, which the caller must treat as an error.
 std::string new_seat_token();
 
 /// What the state file keeps of `token`: its FNV-1a 64-bit hash as 16 lowercase hex digits.

@@ -19,8 +19,8 @@ std::size_t max_socket_path_bytes();
 /// Creates the socket's folder (mode 0700) if missing, and checks it: a directory (not a
 /// symbolic link) owned by this user and not writable by group or others (tmux's rule). Only
 /// the last folder is made: its parent ($XDG_RUNTIME_DIR, /tmp) must exist. An empty string
-/// when all is well, else why not, naming the folder ("FOLDER: owned by uid 0, not by this
-/// user (uid 1000)"); a socket path longer than `max_socket_path_bytes` is refused too.
+/// when all is well, else why not, naming the folder ("FOLDER: the socket folder is owned by
+/// uid 0, not by this user (uid 1000)"); a path longer than `max_socket_path_bytes` is refused.
 std::string prepare_socket_dir(const std::string& socket_path);
 
 } // namespace termpool::hall
