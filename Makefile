@@ -49,10 +49,12 @@ LDLIBS       += -lncursesw
 # ---------------------------------------------------------------------------
 # Sources and objects (out of tree, mirroring src/ under $(BUILD)/)
 
-# The core is a static library; the commands (src/cli) and the front end (src/tui) are
-# linked with it into the binary and the test binary.
+# The core is a static library; the commands (src/cli), the front end (src/tui) and the hall
+# (src/hall: its server, state and socket folders) are linked with it into the binary and the
+# test binary.
 CORE_SRCS := $(wildcard src/core/*.cpp)
-APP_SRCS  := $(wildcard src/cli/*.cpp) $(wildcard src/tui/*.cpp)
+HALL_SRCS := $(wildcard src/hall/*.cpp)
+APP_SRCS  := $(wildcard src/cli/*.cpp) $(wildcard src/tui/*.cpp) $(HALL_SRCS)
 MAIN_SRC  := src/main.cpp
 TEST_SRCS := $(wildcard tests/*.cpp)
 

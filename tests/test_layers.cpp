@@ -2,7 +2,9 @@
 // owned (and the byte benchmark that writes frames through curses to a file); the core
 // includes no front end, no command and none of src/ but its own files; the commands and the
 // front end do not include each other and use the core through include/termpool/ only; the
-// public headers include nothing but each other and the standard library. The build enforces
+// hall (src/hall) is a layer of its own that uses the core the same way, and neither the core
+// nor the commands include it (src/main.cpp dispatches to it); the public headers include
+// nothing but each other and the standard library. The build enforces
 // part of it (the core is compiled with -Iinclude only); these tests name the file and line.
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -80,18 +82,21 @@ TEST_CASE("the core includes the public headers, the standard library and its ow
         CHECK_FALSE(contains(inc.target, "tui/"));
         CHECK_FALSE(contains(inc.target, "cli/"));
         CHECK_FALSE(contains(inc.target, "core/")); // its own headers relative to itself
+        CHECK_FALSE(contains(inc.target, "hall/"));
         CHECK_FALSE(contains(inc.target, "curses"));
         if (!inc.angled)
             CHECK_FALSE(contains(inc.target, "/")); // nothing outside src/core
     }
 }
 
-TEST_CASE("the commands include neither the front end nor the core's private headers", "[layers]") {
+TEST_CASE("the commands include neither the front end, the hall nor the core's private headers",
+          "[layers]") {
     const std::vector<Include> all = includes("src/cli");
     REQUIRE(!all.empty());
     for (const Include& inc : all) {
         INFO(inc.file << ": " << inc.line);
         CHECK_FALSE(contains(inc.target, "tui/"));
+        CHECK_FALSE(contains(inc.target, "hall/"));
         CHECK_FALSE(contains(inc.target, "core/"));
     }
 }
@@ -104,6 +109,21 @@ TEST_CASE("the front end includes neither the commands nor the core's private he
         INFO(inc.file << ": " << inc.line);
         CHECK_FALSE(contains(inc.target, "cli/"));
         CHECK_FALSE(contains(inc.target, "core/"));
+    }
+}
+
+TEST_CASE("the hall includes the public headers, its own files, the standard library and POSIX",
+          "[layers]") {
+    const std::vector<Include> all = includes("src/hall");
+    REQUIRE(!all.empty());
+    for (const Include& inc : all) {
+        INFO(inc.file << ": " << inc.line);
+        CHECK_FALSE(contains(inc.target, "tui/"));
+        CHECK_FALSE(contains(inc.target, "cli/"));
+        CHECK_FALSE(contains(inc.target, "core/"));
+        CHECK_FALSE(contains(inc.target, "curses"));
+        if (!inc.angled) // "hall/x.hpp", as the other layers name their own files
+            CHECK(inc.target.starts_with("hall/"));
     }
 }
 

@@ -1,0 +1,442 @@
+// The hall's folders: the socket folder made private and refused when someone else could
+// reach into it (tmux's rule), the default paths, and the state folder, where every table is
+// saved atomically with its seat tokens' hashes and read back, a damaged file moved aside.
+#include <catch2/catch.hpp>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <termpool/match.hpp>
+#include <termpool/record.hpp>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+#include "hall/hall_state.hpp"
+#include "hall/socket_dir.hpp"
+#include "temp_dir.hpp"
+
+using namespace termpool;
+using namespace termpool::hall;
+using termpool::test::TempDir;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Sets (or, with nothing, unsets) an environment variable for one scope, then puts it back.
+class ScopedEnv {
+public:
+    ScopedEnv(const char* name, std::optional<std::string> value) : name_(name) {
+        if (const char* old = std::getenv(name))
+            old_ = old;
+        if (value)
+            ::setenv(name, value->c_str(), 1);
+        else
+            ::unsetenv(name);
+    }
+    ~ScopedEnv() {
+        if (old_)
+            ::setenv(name_, old_->c_str(), 1);
+        else
+            ::unsetenv(name_);
+    }
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+private:
+    const char* name_;
+    std::optional<std::string> old_;
+};
+
+mode_t mode_of(const std::string& path) {
+    struct stat st {};
+    REQUIRE(::lstat(path.c_str(), &st) == 0);
+    return st.st_mode & 07777;
+}
+
+std::string contents(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// The names in `dir`, sorted.
+std::vector<std::string> names_in(const std::string& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+// The seated computer makes its move through the match's own actions (as in test_match.cpp).
+void play_computer_move(Match& match) {
+    const int player = match.to_act();
+    if (match.pending().kind == Pending::next_rack) {
+        REQUIRE(match.next_rack(player) == MatchError::none);
+        return;
+    }
+    const std::optional<ComputerMove> move = match.computer_move();
+    REQUIRE(move);
+    switch (move->kind) {
+    case Pending::place:
+        REQUIRE(match.place(player, move->spot) == MatchError::none);
+        break;
+    case Pending::choose:
+        REQUIRE(match.choose(player, move->choice) == MatchError::none);
+        break;
+    default:
+        REQUIRE(std::holds_alternative<PlayedShot>(
+            match.shoot(player, move->shot.strike, move->shot.call)));
+    }
+}
+
+// A match of two computers, `moves` actions in (fewer if it ends first).
+Match played(GameType game, TableSize size, std::uint64_t seed, int race_to, int moves) {
+    GameRecord header;
+    header.setup.game = game;
+    header.setup.table = size;
+    header.seed = seed;
+    header.names[0] = "Ann";
+    header.names[1] = "Bob";
+    header.computers[0] = Level::easy;
+    header.computers[1] = Level::medium;
+    header.race_to = race_to;
+    auto started = Match::start(header, seed);
+    REQUIRE(std::holds_alternative<Match>(started));
+    Match match = std::move(std::get<Match>(started));
+    for (int k = 0; k < moves && match.pending().kind != Pending::over; ++k)
+        play_computer_move(match);
+    return match;
+}
+
+SavedTable table_of(int number, const Match& match, std::string token1, std::string token2) {
+    SavedTable table;
+    table.number = number;
+    table.record = match.record();
+    table.seat_tokens[0] = std::move(token1);
+    table.seat_tokens[1] = std::move(token2);
+    return table;
+}
+
+} // namespace
+
+TEST_CASE("the socket folder is made private, and refused when someone else could reach in",
+          "[hall]") {
+    TempDir tmp("termpool-hall");
+    const std::string folder = tmp.path() + "/sock";
+
+    SECTION("made with mode 0700, and found good again") {
+        CHECK(prepare_socket_dir(folder + "/hall.sock") == "");
+        CHECK(fs::is_directory(folder));
+        CHECK(mode_of(folder) == 0700);
+        CHECK(prepare_socket_dir(folder + "/hall.sock") == "");
+        // Readable by others is not tmux's concern: only writing lets someone swap the socket.
+        REQUIRE(::chmod(folder.c_str(), 0755) == 0);
+        CHECK(prepare_socket_dir(folder + "/hall.sock") == "");
+    }
+    SECTION("group-writable and world-writable folders are refused, naming the folder") {
+        REQUIRE(::mkdir(folder.c_str(), 0700) == 0);
+        REQUIRE(::chmod(folder.c_str(), 0770) == 0);
+        const std::string group = prepare_socket_dir(folder + "/hall.sock");
+        CHECK(group.starts_with(folder + ": "));
+        CHECK_THAT(group, Catch::Contains("writable by its group") && Catch::Contains("0770"));
+        REQUIRE(::chmod(folder.c_str(), 01777) == 0); // as /tmp is
+        CHECK_THAT(prepare_socket_dir(folder + "/hall.sock"),
+                   Catch::StartsWith(folder + ": ") && Catch::Contains("writable by others") &&
+                       Catch::Contains("1777"));
+    }
+    SECTION("a file, or a symbolic link to a good folder, is not a directory") {
+        tmp.write("plain", "not a folder\n");
+        CHECK_THAT(prepare_socket_dir(tmp.path() + "/plain/hall.sock"),
+                   Catch::Equals(tmp.path() + "/plain: the socket folder is not a directory"));
+        REQUIRE(::mkdir(folder.c_str(), 0700) == 0);
+        REQUIRE(::symlink(folder.c_str(), (tmp.path() + "/link").c_str()) == 0);
+        CHECK_THAT(prepare_socket_dir(tmp.path() + "/link/hall.sock"),
+                   Catch::StartsWith(tmp.path() + "/link: ") && Catch::Contains("symbolic link"));
+    }
+    SECTION("a folder owned by someone else is refused") {
+        // Without root, / is someone else's; as root, a folder given away to nobody is.
+        std::string theirs = "/";
+        if (::geteuid() == 0) {
+            theirs = folder;
+            REQUIRE(::mkdir(theirs.c_str(), 0700) == 0);
+            REQUIRE(::chown(theirs.c_str(), 65534, 65534) == 0);
+        }
+        const std::string problem =
+            prepare_socket_dir((theirs == "/" ? "" : theirs) + "/hall.sock");
+        CHECK_THAT(problem, Catch::StartsWith(theirs + ": ") && Catch::Contains("owned by uid") &&
+                                Catch::Contains("not by this user"));
+    }
+    SECTION("a missing parent and a path too long for a socket are said so") {
+        CHECK(prepare_socket_dir(tmp.path() + "/no/such/hall.sock") ==
+              tmp.path() + "/no/such: cannot create the socket folder: " + std::strerror(ENOENT));
+        const std::string too_long = folder + "/" + std::string(max_socket_path_bytes(), 'x');
+        CHECK_THAT(prepare_socket_dir(too_long), Catch::Contains("too long for a Unix socket"));
+        CHECK_FALSE(fs::exists(folder)); // refused before anything was made
+    }
+}
+
+TEST_CASE("the socket and the state folder follow XDG, with the fallbacks", "[hall]") {
+    {
+        ScopedEnv runtime("XDG_RUNTIME_DIR", "/run/user/4242");
+        CHECK(default_socket_path() == "/run/user/4242/termpool/hall.sock");
+    }
+    for (const std::optional<std::string>& unset : {std::optional<std::string>(), {""}}) {
+        ScopedEnv runtime("XDG_RUNTIME_DIR", unset);
+        CHECK(default_socket_path() ==
+              "/tmp/termpool-" + std::to_string(::geteuid()) + "/hall.sock");
+    }
+    {
+        ScopedEnv state("XDG_STATE_HOME", "/srv/pool/state");
+        CHECK(default_state_dir() == "/srv/pool/state/termpool/hall");
+    }
+    {
+        ScopedEnv state("XDG_STATE_HOME", std::nullopt);
+        ScopedEnv home("HOME", "/home/pool");
+        CHECK(default_state_dir() == "/home/pool/.local/state/termpool/hall");
+    }
+}
+
+TEST_CASE("seat tokens are random, and the state file keeps their FNV-1a hash", "[hall]") {
+    const std::string a = new_seat_token(), b = new_seat_token();
+    CHECK(a.size() == 32);
+    CHECK(a.find_first_not_of("0123456789abcdef") == std::string::npos);
+    CHECK(a != b);
+    // The published FNV-1a 64-bit test vectors.
+    CHECK(seat_token_hash("") == "cbf29ce484222325");
+    CHECK(seat_token_hash("a") == "af63dc4c8601ec8c");
+    CHECK(seat_token_hash("foobar") == "85944171f73967e8");
+    CHECK(valid_seat_token_hash(seat_token_hash(a)));
+    CHECK_FALSE(valid_seat_token_hash("85944171F73967E8"));
+    CHECK_FALSE(valid_seat_token_hash("85944171f73967e"));
+    CHECK_FALSE(valid_seat_token_hash(a));
+}
+
+TEST_CASE("tables save and load back with their seat tokens, in number order", "[hall]") {
+    TempDir tmp("termpool-hall");
+    const std::string dir = tmp.path() + "/state/hall"; // made by the first save
+    const std::string token1 = new_seat_token(), token2 = new_seat_token();
+    Match eight = played(GameType::eight_ball, TableSize::nine_foot, 7, 1, 6);
+    const Match nine = played(GameType::nine_ball, TableSize::seven_foot, 8, 1, 4);
+    const Match race = played(GameType::eight_ball_bar, TableSize::eight_foot, 9, 3, 3);
+    const std::vector<SavedTable> saved = {
+        table_of(10, eight, seat_token_hash(token1), seat_token_hash(token2)),
+        table_of(2, nine, "", seat_token_hash(token2)),
+        table_of(3, race, "", ""),
+    };
+    for (const SavedTable& table : saved)
+        REQUIRE(save_table(dir, table) == "");
+    CHECK(mode_of(tmp.path() + "/state") == 0700);
+    CHECK(mode_of(dir) == 0700);
+    CHECK(mode_of(table_path(dir, 10)) == 0600);
+    // Files the hall does not own are left alone.
+    std::ofstream(dir + "/notes.txt") << "hello\n";
+    std::ofstream(dir + "/table-02.save") << "not a name the hall writes\n";
+
+    // Readable text: the hash is there and the raw token is not.
+    const std::string text = contents(table_path(dir, 10));
+    CHECK_THAT(text,
+               Catch::StartsWith("termpool-hall-table 1\nnumber 10\nseat1-token-hash fnv1a64 " +
+                                 seat_token_hash(token1) + "\nseat2-token-hash fnv1a64 " +
+                                 seat_token_hash(token2) + "\ntermpool-record "));
+    CHECK(text.find(token1) == std::string::npos);
+    CHECK_THAT(contents(table_path(dir, 3)),
+               Catch::StartsWith("termpool-hall-table 1\nnumber 3\ntermpool-record 2\n"));
+
+    std::vector<std::string> problems;
+    std::vector<SavedTable> loaded = load_tables(dir, problems);
+    CHECK(problems.empty());
+    REQUIRE(loaded.size() == 3);
+    const std::vector<const Match*> live = {&nine, &race, &eight}; // 2, 3, 10: as numbers
+    for (std::size_t k = 0; k < loaded.size(); ++k) {
+        const SavedTable& back = loaded[k];
+        const SavedTable& original =
+            *std::find_if(saved.begin(), saved.end(),
+                          [&](const SavedTable& t) { return t.number == back.number; });
+        INFO("table " << back.number);
+        CHECK(back.number == (k == 0 ? 2 : k == 1 ? 3 : 10));
+        CHECK(format_record(back.record) == format_record(original.record));
+        CHECK(back.seat_tokens[0] == original.seat_tokens[0]);
+        CHECK(back.seat_tokens[1] == original.seat_tokens[1]);
+        const auto replayed = Match::replay(back.record);
+        REQUIRE(std::holds_alternative<Match>(replayed));
+        CHECK(std::get<Match>(replayed).state_hash() == live[k]->state_hash());
+    }
+    CHECK(loaded[2].seat_tokens[0] == seat_token_hash(token1)); // a returning player's proof
+
+    // A save after more play replaces the old one; a forgotten table is gone.
+    play_computer_move(eight);
+    REQUIRE(save_table(dir, table_of(10, eight, seat_token_hash(token1), "")) == "");
+    forget_table(dir, 2);
+    forget_table(dir, 99); // never saved: nothing happens
+    loaded = load_tables(dir, problems);
+    CHECK(problems.empty());
+    REQUIRE(loaded.size() == 2);
+    CHECK(loaded[0].number == 3);
+    CHECK(loaded[1].number == 10);
+    CHECK(loaded[1].record.actions.size() == eight.record().actions.size());
+    CHECK(loaded[1].seat_tokens[1] == "");
+    CHECK(names_in(dir) ==
+          std::vector<std::string>{"notes.txt", "table-02.save", "table-10.save", "table-3.save"});
+    CHECK(load_tables(tmp.path() + "/never-made", problems).empty());
+    CHECK(problems.empty());
+}
+
+TEST_CASE("a save is atomic: a temporary file in the same folder, synced, renamed", "[hall]") {
+    TempDir tmp("termpool-hall");
+    const std::string dir = tmp.path();
+    const Match short_game = played(GameType::eight_ball, TableSize::nine_foot, 3, 1, 1);
+    const Match long_game = played(GameType::nine_ball, TableSize::nine_foot, 4, 3, 12);
+    const SavedTable first = table_of(1, short_game, "", "");
+    const SavedTable second = table_of(1, long_game, seat_token_hash("x"), "");
+    REQUIRE(save_table(dir, second) == "");
+    const std::string long_text = contents(table_path(dir, 1));
+    REQUIRE(save_table(dir, first) == "");
+    const std::string short_text = contents(table_path(dir, 1));
+    REQUIRE(short_text.size() < long_text.size());
+    CHECK(names_in(dir) == std::vector<std::string>{"table-1.save"}); // no temporary file left
+
+    SECTION("a failed save leaves the old file whole and says why") {
+        // The temporary name taken by a folder: the file cannot be made.
+        REQUIRE(::mkdir((table_path(dir, 1) + ".tmp").c_str(), 0700) == 0);
+        CHECK(save_table(dir, second) ==
+              table_path(dir, 1) + ".tmp: cannot create: " + std::strerror(EISDIR));
+        CHECK(contents(table_path(dir, 1)) == short_text);
+        REQUIRE(::rmdir((table_path(dir, 1) + ".tmp").c_str()) == 0);
+        // The file's own name taken by a folder that is not empty: the rename fails, and the
+        // temporary file goes.
+        REQUIRE(::mkdir(table_path(dir, 2).c_str(), 0700) == 0);
+        tmp.write("table-2.save/inside", "x");
+        CHECK_THAT(save_table(dir, table_of(2, short_game, "", "")),
+                   Catch::StartsWith(table_path(dir, 2) + ": cannot rename " + table_path(dir, 2) +
+                                     ".tmp to it: "));
+        CHECK_FALSE(fs::exists(table_path(dir, 2) + ".tmp"));
+        CHECK_THAT(save_table(tmp.path() + "/table-1.save/sub", first),
+                   Catch::Contains("cannot create the state folder: ") &&
+                       Catch::Contains(std::strerror(ENOTDIR)));
+    }
+    SECTION("bad numbers and hashes are refused before anything is written") {
+        CHECK_THAT(save_table(dir, table_of(0, short_game, "", "")),
+                   Catch::Contains("table number 0 out of range"));
+        CHECK_THAT(save_table(dir, table_of(1, short_game, "", "raw-token\nend")),
+                   Catch::Contains("seat 2's token hash is not 16 lowercase hex digits"));
+        CHECK(contents(table_path(dir, 1)) == short_text);
+    }
+    SECTION("a writer killed at any moment leaves the old file or the new one") {
+        for (int round = 0; round < 6; ++round) {
+            const pid_t child = ::fork();
+            REQUIRE(child >= 0);
+            if (child == 0) {
+                // Saves the two versions in turn until killed (bounded in count and time).
+                const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+                for (int k = 0; k < 100000 && std::chrono::steady_clock::now() < until; ++k)
+                    if (!save_table(dir, k % 2 == 0 ? second : first).empty())
+                        ::_exit(1);
+                ::_exit(0);
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(3 + 4 * round));
+            ::kill(child, SIGKILL);
+            int status = 0;
+            REQUIRE(::waitpid(child, &status, 0) == child);
+            CHECK(WIFSIGNALED(status)); // killed mid-loop, not finished or failed
+            const std::string text = contents(table_path(dir, 1));
+            CHECK((text == short_text || text == long_text));
+            std::vector<std::string> problems;
+            CHECK(load_tables(dir, problems).size() == 1);
+            CHECK(problems.empty()); // a leftover table-1.save.tmp is not a table
+        }
+        // The next save takes over a temporary file the killed writer left.
+        REQUIRE(save_table(dir, first) == "");
+        CHECK(names_in(dir) == std::vector<std::string>{"table-1.save"});
+    }
+}
+
+TEST_CASE("a damaged table file is moved aside as .bad, never over an older one, the good "
+          "ones load",
+          "[hall]") {
+    TempDir tmp("termpool-hall");
+    const std::string dir = tmp.path();
+    const Match game = played(GameType::eight_ball, TableSize::nine_foot, 11, 1, 4);
+    REQUIRE(save_table(dir, table_of(1, game, "", "")) == "");
+    REQUIRE(save_table(dir, table_of(2, game, seat_token_hash("a"), "")) == "");
+    const std::string good = contents(table_path(dir, 2));
+    REQUIRE(good.find("termpool-hall-table 1\nnumber 2\nseat1-token-hash fnv1a64 "
+                      "af63dc4c8601ec8c\ntermpool-record 1\n") == 0);
+    // The line (from 1) that starts with `start`, and the text with that line replaced.
+    auto line_of = [](const std::string& text, const std::string& start) {
+        const std::size_t at = text.find("\n" + start);
+        REQUIRE(at != std::string::npos);
+        return 2 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+    };
+    auto replace_line = [](std::string text, const std::string& start, const std::string& with) {
+        const std::size_t at = text.find("\n" + start) + 1;
+        return text.replace(at, text.find('\n', at) - at, with);
+    };
+    const int first_shot = line_of(good, "shot ");
+    const int end_line = line_of(good, "end");
+
+    struct Damage {
+        std::string text;
+        int line;
+        std::string message;
+    };
+    const std::vector<Damage> damages = {
+        {replace_line(good, "shot ", "shot banana"), first_shot, "shot"},
+        {replace_line(good, "shot ", "place 0.01 0.01"), first_shot, "cannot be placed"},
+        {good.substr(0, good.size() - 4), end_line - 1, "truncated"},
+        {replace_line(good, "number 2", "number 5"), 2, "does not match the file's name"},
+        {replace_line(good, "termpool-hall-table 1", "termpool-hall-table 9"), 1, "newer"},
+        {replace_line(good, "seat1-token-hash", "seat1-token-hash fnv1a64 secret"), 3,
+         "16 lowercase hex digits"},
+        {replace_line(good, "seat1-token-hash", "seat1-token-hash sha256 00"), 3,
+         "unknown token hash 'sha256'"},
+        {replace_line(good, "number 2", "colour blue"), 2, "unknown or malformed line 'colour'"},
+        {replace_line(good, "seat1-token-hash", "number 2"), 3, "a second 'number' line"},
+        {"", 1, "empty"},
+    };
+    const std::string damaged = table_path(dir, 2);
+    for (std::size_t round = 0; round < damages.size(); ++round) {
+        const Damage& damage = damages[round];
+        INFO(damage.message);
+        tmp.write("table-2.save", damage.text);
+        std::vector<std::string> problems;
+        const std::vector<SavedTable> loaded = load_tables(dir, problems);
+        REQUIRE(loaded.size() == 1);
+        CHECK(loaded[0].number == 1);
+        REQUIRE(problems.size() == 1);
+        // Each damaged file goes aside under a name of its own, never over an older one.
+        const std::string aside =
+            damaged + ".bad" + (round == 0 ? "" : "." + std::to_string(round));
+        CHECK_THAT(problems[0],
+                   Catch::StartsWith(damaged + ":" + std::to_string(damage.line) + ": ") &&
+                       Catch::Contains(damage.message) &&
+                       Catch::EndsWith(" (moved aside as " + aside + ")"));
+        CHECK_FALSE(fs::exists(damaged));
+        CHECK(contents(aside) == damage.text);
+    }
+    CHECK(contents(damaged + ".bad") == damages.front().text);
+    // What cannot be read at all goes aside too, so that no new table writes over it.
+    REQUIRE(::mkdir(table_path(dir, 4).c_str(), 0700) == 0);
+    std::vector<std::string> unreadable;
+    CHECK(load_tables(dir, unreadable).size() == 1);
+    REQUIRE(unreadable.size() == 1);
+    CHECK(unreadable[0] == table_path(dir, 4) + ": cannot read: " + std::strerror(EISDIR) +
+                               " (moved aside as " + table_path(dir, 4) + ".bad)");
+    // The good text under the same name loads again: the damage was in the text alone.
+    tmp.write("table-2.save", good);
+    std::vector<std::string> problems;
+    CHECK(load_tables(dir, problems).size() == 2);
+    CHECK(problems.empty());
+}
