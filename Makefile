@@ -53,8 +53,9 @@ LDLIBS       += -lncursesw
 # (src/hall: its server, state and socket folders) are linked with it into the binary and the
 # test binary.
 CORE_SRCS := $(wildcard src/core/*.cpp)
+FILES_SRCS := $(wildcard src/files/*.cpp)
 HALL_SRCS := $(wildcard src/hall/*.cpp)
-APP_SRCS  := $(wildcard src/cli/*.cpp) $(wildcard src/tui/*.cpp) $(HALL_SRCS)
+APP_SRCS  := $(wildcard src/cli/*.cpp) $(wildcard src/tui/*.cpp) $(FILES_SRCS) $(HALL_SRCS)
 MAIN_SRC  := src/main.cpp
 TEST_SRCS := $(wildcard tests/*.cpp)
 
@@ -170,9 +171,9 @@ FUZZ_DIR      := build/fuzz
 FUZZ_CORE_FLAGS := -std=c++20 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -Iinclude
 FUZZ_FLAGS    := $(FUZZ_CORE_FLAGS) -Isrc
 FUZZ_APP_SRCS := src/cli/scenario.cpp src/cli/numbers.cpp \
-                 src/tui/config.cpp src/tui/xdg_dir.cpp src/tui/player_name.cpp \
+                 src/tui/config.cpp src/files/xdg_dir.cpp src/tui/player_name.cpp \
                  src/tui/text_width.cpp src/tui/options.cpp src/tui/stats_file.cpp \
-                 src/tui/keep_aside.cpp src/tui/save_file.cpp
+                 src/files/keep_aside.cpp src/files/atomic_file.cpp src/tui/save_file.cpp
 FUZZ_CORE_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(CORE_SRCS))
 FUZZ_APP_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_APP_SRCS))
 FUZZ_CORE_LIB := $(FUZZ_DIR)/libtermpool.a

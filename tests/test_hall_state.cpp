@@ -324,7 +324,7 @@ TEST_CASE("a save is atomic: a temporary file in the same folder, synced, rename
                                      ".tmp to it: "));
         CHECK_FALSE(fs::exists(table_path(dir, 2) + ".tmp"));
         CHECK_THAT(save_table(tmp.path() + "/table-1.save/sub", first),
-                   Catch::Contains("cannot create the state folder: ") &&
+                   Catch::Contains("cannot create the folder: ") &&
                        Catch::Contains(std::strerror(ENOTDIR)));
     }
     SECTION("bad numbers and hashes are refused before anything is written") {

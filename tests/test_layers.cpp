@@ -83,6 +83,7 @@ TEST_CASE("the core includes the public headers, the standard library and its ow
         CHECK_FALSE(contains(inc.target, "cli/"));
         CHECK_FALSE(contains(inc.target, "core/")); // its own headers relative to itself
         CHECK_FALSE(contains(inc.target, "hall/"));
+        CHECK_FALSE(contains(inc.target, "files/"));
         CHECK_FALSE(contains(inc.target, "curses"));
         if (!inc.angled)
             CHECK_FALSE(contains(inc.target, "/")); // nothing outside src/core
@@ -122,8 +123,20 @@ TEST_CASE("the hall includes the public headers, its own files, the standard lib
         CHECK_FALSE(contains(inc.target, "cli/"));
         CHECK_FALSE(contains(inc.target, "core/"));
         CHECK_FALSE(contains(inc.target, "curses"));
-        if (!inc.angled) // "hall/x.hpp", as the other layers name their own files
-            CHECK(inc.target.starts_with("hall/"));
+        if (!inc.angled) // "hall/x.hpp", as the other layers name their own files, or files/
+            CHECK((inc.target.starts_with("hall/") || inc.target.starts_with("files/")));
+    }
+}
+
+TEST_CASE("the file helpers include only the public headers, each other and the system",
+          "[layers]") {
+    const std::vector<Include> all = includes("src/files");
+    REQUIRE(!all.empty());
+    for (const Include& inc : all) {
+        INFO(inc.file << ": " << inc.line);
+        CHECK_FALSE(contains(inc.target, "curses"));
+        if (!inc.angled)
+            CHECK(inc.target.starts_with("files/"));
     }
 }
 

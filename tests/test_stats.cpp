@@ -498,8 +498,8 @@ TEST_CASE("a failed write leaves the old totals whole and no temporary file", "[
     const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
     REQUIRE(tui::save_game_stats(path, names, stats) == "");
     const std::string before = slurp(path);
-    // write_atomically writes PATH.tmp.PID first: a directory in its way makes it fail.
-    const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+    // write_atomically writes PATH.tmp first: a directory in its way makes it fail.
+    const std::string temporary = path + ".tmp";
     std::filesystem::create_directory(temporary);
     const std::string notice = tui::save_game_stats(path, names, stats);
     CHECK(notice.starts_with("could not save the statistics: " + temporary));

@@ -1,5 +1,8 @@
 #include "hall/hall_state.hpp"
 
+#include "files/atomic_file.hpp"
+#include "files/keep_aside.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -24,8 +27,6 @@ constexpr const char* file_magic = "termpool-hall-table";
 constexpr const char* hash_algorithm = "fnv1a64";
 // Table numbers the hall hands out stay far below this; a bigger one is a damaged file.
 constexpr int max_table_number = 1'000'000;
-// Enough for any sane number of damaged files; a folder full of them is an error.
-constexpr int max_aside_candidates = 1000;
 
 std::string system_error(const std::string& path, const char* what = nullptr) {
     return path + ": " + (what ? std::string(what) + ": " : std::string()) + std::strerror(errno);
@@ -49,113 +50,6 @@ std::optional<int> number_of_file_name(std::string_view name) {
     if (!n || name != "table-" + std::to_string(*n) + ".save")
         return std::nullopt;
     return n;
-}
-
-// mkdir -p, each new folder private.
-std::string make_directories(const std::string& dir) {
-    for (std::size_t i = 1; i <= dir.size(); ++i)
-        if (i == dir.size() || dir[i] == '/') {
-            const std::string part = dir.substr(0, i);
-            if (::mkdir(part.c_str(), 0700) != 0 && errno != EEXIST)
-                return system_error(part, "cannot create the state folder");
-        }
-    return {};
-}
-
-std::string write_all(int fd, const std::string& text, const std::string& path) {
-    for (std::size_t done = 0; done < text.size();) {
-        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            return system_error(path, "cannot write");
-        done += static_cast<std::size_t>(n);
-    }
-    return {};
-}
-
-// Temporary file, fsync, rename, then fsync the folder so that the rename is durable too.
-std::string write_atomically(const std::string& dir, const std::string& path,
-                             const std::string& text) {
-    const std::string temporary = path + ".tmp";
-    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
-    if (fd < 0)
-        return system_error(temporary, "cannot create");
-    std::string error = write_all(fd, text, temporary);
-    if (error.empty() && ::fsync(fd) != 0)
-        error = system_error(temporary, "cannot sync");
-    if (::close(fd) != 0 && error.empty())
-        error = system_error(temporary, "cannot close");
-    if (error.empty() && ::rename(temporary.c_str(), path.c_str()) != 0)
-        error = system_error(path, ("cannot rename " + temporary + " to it").c_str());
-    if (!error.empty()) {
-        ::unlink(temporary.c_str());
-        return error;
-    }
-    if (const int folder = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); folder >= 0) {
-        ::fsync(folder);
-        ::close(folder);
-    }
-    return {};
-}
-
-std::optional<std::string> read_file(const std::string& path, std::string& error) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) {
-        error = system_error(path, "cannot open");
-        return std::nullopt;
-    }
-    std::string text;
-    char buffer[8192];
-    for (;;) {
-        const ssize_t n = ::read(fd, buffer, sizeof buffer);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n < 0) {
-            error = system_error(path, "cannot read");
-            ::close(fd);
-            return std::nullopt;
-        }
-        if (n == 0)
-            break;
-        text.append(buffer, static_cast<std::size_t>(n));
-    }
-    ::close(fd);
-    return text;
-}
-
-bool exists(const std::string& path) {
-    struct stat st {};
-    return ::lstat(path.c_str(), &st) == 0 || errno != ENOENT;
-}
-
-// rename without replacing: in one step where the file system allows it, else checked just
-// before.
-int rename_no_replace(const std::string& from, const std::string& to) {
-    if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0)
-        return 0;
-    if (errno != EINVAL && errno != ENOSYS)
-        return -1;
-    if (exists(to)) {
-        errno = EEXIST;
-        return -1;
-    }
-    return std::rename(from.c_str(), to.c_str());
-}
-
-// Moves `path` to path.bad (or .bad.1, ...): its new name, or nothing with `error`.
-std::optional<std::string> keep_aside(const std::string& path, std::string& error) {
-    for (int n = 0; n < max_aside_candidates; ++n) {
-        const std::string aside = path + ".bad" + (n == 0 ? "" : "." + std::to_string(n));
-        if (rename_no_replace(path, aside) == 0)
-            return aside;
-        if (errno != EEXIST) {
-            error = system_error(path, ("cannot rename it to " + aside).c_str());
-            return std::nullopt;
-        }
-    }
-    error = path + ": " + std::to_string(max_aside_candidates) + " older .bad files are in the way";
-    return std::nullopt;
 }
 
 std::string format_table(const SavedTable& table) {
@@ -295,15 +189,15 @@ std::string save_table(const std::string& dir, const SavedTable& table) {
         if (!table.seat_tokens[p].empty() && !valid_seat_token_hash(table.seat_tokens[p]))
             return path + ": seat " + std::to_string(p + 1) +
                    "'s token hash is not 16 lowercase hex digits";
-    if (std::string error = make_directories(dir); !error.empty())
-        return error;
-    return write_atomically(dir, path, format_table(table));
+    std::string error;
+    write_atomically(path, format_table(table), error);
+    return error;
 }
 
 void forget_table(const std::string& dir, int number) {
     const std::string path = table_path(dir, number);
     ::unlink(path.c_str());
-    ::unlink((path + ".tmp").c_str());
+    ::unlink((path + ".tmp").c_str()); // what a save killed midway left
 }
 
 std::vector<SavedTable> load_tables(const std::string& dir, std::vector<std::string>& problems) {
@@ -323,7 +217,7 @@ std::vector<SavedTable> load_tables(const std::string& dir, std::vector<std::str
     for (const int number : numbers) {
         const std::string path = table_path(dir, number);
         std::string problem;
-        if (const auto text = read_file(path, problem)) {
+        if (const auto text = read_whole_file(path, problem)) {
             auto table = parse_table(*text, number);
             if (auto* saved = std::get_if<SavedTable>(&table)) {
                 tables.push_back(std::move(*saved));

@@ -2,8 +2,8 @@
 
 #include <termpool/text_lines.hpp>
 
+#include "files/xdg_dir.hpp"
 #include "tui/player_name.hpp"
-#include "tui/xdg_dir.hpp"
 
 namespace termpool::tui {
 namespace {

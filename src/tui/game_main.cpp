@@ -9,9 +9,9 @@
 #include <utility>
 #include <variant>
 
+#include "files/keep_aside.hpp"
 #include "tui/app.hpp"
 #include "tui/config.hpp"
-#include "tui/keep_aside.hpp"
 #include "tui/options.hpp"
 #include "tui/save_file.hpp"
 #include "tui/save_slots.hpp"

@@ -8,10 +8,10 @@
 #include <termpool/text_lines.hpp>
 #include <unistd.h>
 
-#include "tui/keep_aside.hpp"
+#include "files/keep_aside.hpp"
+#include "files/xdg_dir.hpp"
 #include "tui/save_file.hpp"
 #include "tui/text_width.hpp"
-#include "tui/xdg_dir.hpp"
 
 namespace termpool::tui {
 namespace {

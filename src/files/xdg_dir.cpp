@@ -1,8 +1,8 @@
-#include "tui/xdg_dir.hpp"
+#include "files/xdg_dir.hpp"
 
 #include <cstdlib>
 
-namespace termpool::tui {
+namespace termpool {
 
 std::string xdg_dir(const char* variable, std::string_view under_home) {
     if (const char* dir = std::getenv(variable); dir && *dir)
@@ -11,4 +11,4 @@ std::string xdg_dir(const char* variable, std::string_view under_home) {
     return std::string(home && *home ? home : ".") + "/" + std::string(under_home);
 }
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -5,10 +5,10 @@
 #include <optional>
 #include <string>
 
-namespace termpool::tui {
+namespace termpool {
 
 /// Renames `path` to `path`.bad, or `path`.bad.1, .bad.2, ... when those exist: never over an
 /// existing file. Returns the new name, or nothing (with `error`) when it could not be moved.
 std::optional<std::string> keep_aside(const std::string& path, std::string& error);
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -1,4 +1,4 @@
-#include "tui/keep_aside.hpp"
+#include "files/keep_aside.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 
-namespace termpool::tui {
+namespace termpool {
 namespace {
 
 // Enough for any sane number of damaged files; a directory full of them is an error.
@@ -47,4 +47,4 @@ std::optional<std::string> keep_aside(const std::string& path, std::string& erro
     return std::nullopt;
 }
 
-} // namespace termpool::tui
+} // namespace termpool
