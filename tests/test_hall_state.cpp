@@ -23,6 +23,7 @@
 
 #include "hall/hall_state.hpp"
 #include "hall/socket_dir.hpp"
+#include "match_helpers.hpp"
 #include "temp_dir.hpp"
 
 using namespace termpool;
@@ -80,28 +81,6 @@ std::vector<std::string> names_in(const std::string& dir) {
     return names;
 }
 
-// The seated computer makes its move through the match's own actions (as in test_match.cpp).
-void play_computer_move(Match& match) {
-    const int player = match.to_act();
-    if (match.pending().kind == Pending::next_rack) {
-        REQUIRE(match.next_rack(player) == MatchError::none);
-        return;
-    }
-    const std::optional<ComputerMove> move = match.computer_move();
-    REQUIRE(move);
-    switch (move->kind) {
-    case Pending::place:
-        REQUIRE(match.place(player, move->spot) == MatchError::none);
-        break;
-    case Pending::choose:
-        REQUIRE(match.choose(player, move->choice) == MatchError::none);
-        break;
-    default:
-        REQUIRE(std::holds_alternative<PlayedShot>(
-            match.shoot(player, move->shot.strike, move->shot.call)));
-    }
-}
-
 // A match of two computers, `moves` actions in (fewer if it ends first).
 Match played(GameType game, TableSize size, std::uint64_t seed, int race_to, int moves) {
     GameRecord header;
@@ -113,11 +92,9 @@ Match played(GameType game, TableSize size, std::uint64_t seed, int race_to, int
     header.computers[0] = Level::easy;
     header.computers[1] = Level::medium;
     header.race_to = race_to;
-    auto started = Match::start(header, seed);
-    REQUIRE(std::holds_alternative<Match>(started));
-    Match match = std::move(std::get<Match>(started));
+    Match match = test::started(header, seed);
     for (int k = 0; k < moves && match.pending().kind != Pending::over; ++k)
-        play_computer_move(match);
+        REQUIRE(test::play_computer_move(match) == MatchError::none);
     return match;
 }
 
@@ -277,7 +254,7 @@ TEST_CASE("tables save and load back with their seat tokens, in number order", "
     CHECK(loaded[2].seat_tokens[0] == seat_token_hash(token1)); // a returning player's proof
 
     // A save after more play replaces the old one; a forgotten table is gone.
-    play_computer_move(eight);
+    REQUIRE(test::play_computer_move(eight) == MatchError::none);
     REQUIRE(save_table(dir, table_of(10, eight, seat_token_hash(token1), "")) == "");
     forget_table(dir, 2);
     forget_table(dir, 99); // never saved: nothing happens

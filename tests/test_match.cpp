@@ -7,7 +7,11 @@
 #include <termpool/computer.hpp>
 #include <termpool/match.hpp>
 
+#include "match_helpers.hpp"
+
 using namespace termpool;
+using termpool::test::play_computer_move;
+using termpool::test::started;
 
 namespace {
 
@@ -21,33 +25,6 @@ GameRecord header_for(GameType game, std::uint64_t seed, int race_to = 1) {
     header.computers[1] = Level::medium;
     header.race_to = race_to;
     return header;
-}
-
-// A match the header must give.
-Match started(const GameRecord& header, std::uint64_t computer_seed = 0) {
-    auto match = Match::start(header, computer_seed);
-    REQUIRE(std::holds_alternative<Match>(match));
-    return std::move(std::get<Match>(match));
-}
-
-// The seated computer makes its move through the match's own actions.
-MatchError play_computer_move(Match& match) {
-    const int player = match.to_act();
-    if (match.pending().kind == Pending::next_rack)
-        return match.next_rack(player);
-    const std::optional<ComputerMove> move = match.computer_move();
-    REQUIRE(move);
-    switch (move->kind) {
-    case Pending::place:
-        return match.place(player, move->spot);
-    case Pending::choose:
-        return match.choose(player, move->choice);
-    default: {
-        const auto played = match.shoot(player, move->shot.strike, move->shot.call);
-        return std::holds_alternative<MatchError>(played) ? std::get<MatchError>(played)
-                                                          : MatchError::none;
-    }
-    }
 }
 
 // What a front end sees of a match, to compare a replay with the live match.
