@@ -49,10 +49,10 @@ LDLIBS       += -lncursesw
 # ---------------------------------------------------------------------------
 # Sources and objects (out of tree, mirroring src/ under $(BUILD)/)
 
-# The core is a static library; the commands (src/cli) and the front end (src/tui) are
-# linked with it into the binary and the test binary.
+# The core is a static library; the commands (src/cli), the front end (src/tui) and the hall
+# (src/hall) are linked with it into the binary and the test binary.
 CORE_SRCS := $(wildcard src/core/*.cpp)
-APP_SRCS  := $(wildcard src/cli/*.cpp) $(wildcard src/tui/*.cpp)
+APP_SRCS  := $(wildcard src/cli/*.cpp) $(wildcard src/tui/*.cpp) $(wildcard src/hall/*.cpp)
 MAIN_SRC  := src/main.cpp
 TEST_SRCS := $(wildcard tests/*.cpp)
 
@@ -170,7 +170,7 @@ FUZZ_FLAGS    := $(FUZZ_CORE_FLAGS) -Isrc
 FUZZ_APP_SRCS := src/cli/scenario.cpp src/cli/numbers.cpp \
                  src/tui/config.cpp src/tui/xdg_dir.cpp src/tui/player_name.cpp \
                  src/tui/text_width.cpp src/tui/options.cpp src/tui/stats_file.cpp \
-                 src/tui/keep_aside.cpp src/tui/save_file.cpp
+                 src/tui/keep_aside.cpp src/tui/save_file.cpp src/hall/protocol.cpp
 FUZZ_CORE_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(CORE_SRCS))
 FUZZ_APP_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_APP_SRCS))
 FUZZ_CORE_LIB := $(FUZZ_DIR)/libtermpool.a
