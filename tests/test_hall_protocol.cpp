@@ -112,6 +112,7 @@ TEST_CASE("hall protocol: every server message reads back", "[hall]") {
     server_round_trip(Created{1});
     server_round_trip(Joined{1, 0});
     server_round_trip(Left{1});
+    server_round_trip(Yours{4, 2});
     server_round_trip(RecordLine{1, "names Ann Bob"});
     server_round_trip(RecordLine{1, ""});
     server_round_trip(RecordEnd{1, 42, 0xfedcba9876543210ULL});

@@ -431,6 +431,9 @@ std::string format_server(const ServerMessage& message) {
                 return "joined " + std::to_string(m.table) + " " + std::to_string(m.seat);
             },
             [](const Left& m) { return "left " + std::to_string(m.table); },
+            [](const Yours& m) {
+                return "yours " + std::to_string(m.table) + " " + std::to_string(m.seat);
+            },
             [](const RecordLine& m) { return "record " + std::to_string(m.table) + " " + m.text; },
             [](const RecordEnd& m) {
                 return "record-end " + std::to_string(m.table) + " " + std::to_string(m.seq) + " " +
@@ -655,6 +658,12 @@ std::variant<ServerMessage, ProtocolError> parse_server(std::string_view line) {
     if (kind == "left") {
         Left m;
         m.table = r.integer(1, max_table_number, "a table");
+        return wrap(finish(r, m));
+    }
+    if (kind == "yours") {
+        Yours m;
+        m.table = r.integer(1, max_table_number, "a table");
+        m.seat = r.integer(1, 2, "a seat");
         return wrap(finish(r, m));
     }
     if (kind == "record") {

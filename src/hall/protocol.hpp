@@ -42,6 +42,7 @@
 ///   joined TABLE SEAT                 you sit (SEAT 1 or 2) or watch (SEAT 0); the record
 ///                                     follows
 ///   left TABLE                        you are back in the lobby
+///   yours TABLE SEAT                  after welcome: this away seat is yours, sit to play on
 ///   record TABLE TEXT                 one line of the table's record (`format_record`)
 ///   record-end TABLE SEQ HASH         the record is complete: SEQ actions, state HASH
 ///   seat TABLE SEAT KIND NAME         a seat changed (sat, away, back, computer, freed)
@@ -230,6 +231,11 @@ struct Joined {
 struct Left {
     int table = 1; ///< the table left
 };
+/// `yours TABLE SEAT`.
+struct Yours {
+    int table = 1; ///< the table
+    int seat = 1;  ///< the seat kept for this token
+};
 /// `record TABLE TEXT`: one line of the record, without its newline.
 struct RecordLine {
     int table = 1;    ///< the table
@@ -272,7 +278,7 @@ struct Pong {};
 /// Anything the server says.
 using ServerMessage =
     std::variant<Welcome, Error, LobbyBegin, TableView, PlayerView, LobbyEnd, Created, Joined, Left,
-                 RecordLine, RecordEnd, SeatChange, ActionDone, AimShown, ChatShown, Pong>;
+                 Yours, RecordLine, RecordEnd, SeatChange, ActionDone, AimShown, ChatShown, Pong>;
 
 // --- text ---------------------------------------------------------------------------------
 
