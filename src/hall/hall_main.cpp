@@ -8,6 +8,7 @@
 #include <termpool/text_numbers.hpp>
 #include <unistd.h>
 
+#include "hall/hall_bench.hpp"
 #include "hall/server.hpp"
 
 namespace termpool::hall {
@@ -126,6 +127,8 @@ int hall_command(const std::vector<std::string>& args) {
     }
     if (args.front() == "serve")
         return serve(args);
+    if (args.front() == "bench")
+        return hall_bench_command(args);
     return usage_error("unknown hall command '" + args.front() + "'");
 }
 
