@@ -173,7 +173,8 @@ FUZZ_FLAGS    := $(FUZZ_CORE_FLAGS) -Isrc
 FUZZ_APP_SRCS := src/cli/scenario.cpp src/cli/numbers.cpp \
                  src/tui/config.cpp src/files/xdg_dir.cpp src/tui/player_name.cpp \
                  src/tui/text_width.cpp src/tui/options.cpp src/tui/stats_file.cpp \
-                 src/files/keep_aside.cpp src/files/atomic_file.cpp src/tui/save_file.cpp
+                 src/files/keep_aside.cpp src/files/atomic_file.cpp src/tui/save_file.cpp \
+                 src/hall/protocol.cpp
 FUZZ_CORE_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(CORE_SRCS))
 FUZZ_APP_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_APP_SRCS))
 FUZZ_CORE_LIB := $(FUZZ_DIR)/libtermpool.a

@@ -1,6 +1,7 @@
 // termpool entry point: dispatches to the subcommands.
 
 #include "cli/commands.hpp"
+#include "hall/hall_main.hpp"
 #include "tui/bench_render.hpp"
 #include "tui/game_main.hpp"
 #include "tui/stats_command.hpp"
@@ -35,6 +36,8 @@ void print_usage(std::ostream& out) {
            "                        the seed report's friction and mass study\n"
            "  selfplay --games N --p1 LEVEL --p2 LEVEL [--game G] [--seed S] [--jobs J]\n"
            "                        computer against computer\n"
+           "  hall serve [--socket PATH] [--state DIR] [--max-clients N] [--max-tables N]\n"
+           "                        run the pool hall's server (friends play over SSH)\n"
            "  COMMAND --help        the options of one command\n";
 }
 
@@ -79,6 +82,9 @@ int main(int argc, char** argv) {
         }
         if (command == "selfplay") {
             return termpool::cli::selfplay_command(rest);
+        }
+        if (command == "hall") {
+            return termpool::hall::hall_command(rest);
         }
         if (command == "stats") {
             return termpool::tui::stats_command(rest);

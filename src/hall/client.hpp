@@ -1,0 +1,78 @@
+#pragma once
+/// \file
+/// A headless hall client: connects to the server's socket, says hello, sends messages, reads
+/// and parses the server's lines, and follows tables. A followed table is a local Match built
+/// from the record the server sends on join; each broadcast action is applied to it with Match
+/// and its state hash checked; on a mismatch the client asks `sync` and rebuilds from the
+/// record. Used by the tests and by `termpool hall bench`; the terminal client builds on it.
+
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <termpool/match.hpp>
+
+#include "hall/protocol.hpp"
+#include "hall/unique_fd.hpp"
+
+namespace termpool::hall {
+
+/// One connection to a hall.
+class HallClient {
+public:
+    /// Connects to the server at `socket_path`; "" or why not.
+    std::string connect(const std::string& socket_path);
+    /// Sends `message`; false once the connection is gone.
+    bool send(const ClientMessage& message);
+    /// Sends raw bytes (tests send garbage with it); false once the connection is gone.
+    bool send_raw(std::string_view bytes);
+    /// The next message, waiting at most `timeout`; nothing on timeout, on a line that does not
+    /// read (counted in `bad_lines`), or once the server closed. Followed tables take it first.
+    std::optional<ServerMessage> receive(std::chrono::milliseconds timeout);
+    /// Receives until `done` says yes to a message, for at most `timeout` in all; that message,
+    /// or nothing.
+    std::optional<ServerMessage> wait_for(const std::function<bool(const ServerMessage&)>& done,
+                                          std::chrono::milliseconds timeout);
+    /// Sends hello and waits (at most `timeout`) for welcome; the error's text, or "".
+    std::string hello(const std::string& name, const std::string& token,
+                      std::chrono::milliseconds timeout);
+    /// Closes the connection.
+    void disconnect() { fd_.reset(); }
+
+    /// True once the server closed the connection (or it was never open).
+    bool closed() const { return !fd_; }
+    /// The token from welcome.
+    const std::string& token() const { return token_; }
+    /// The table this client sits at or watches (0: none) and its seat (0: watching).
+    int table() const { return table_; }
+    /// The seat at `table()`: 1 or 2, 0 watching.
+    int seat() const { return seat_; }
+    /// The local copy of table `number`'s match, once its record came; nullptr before.
+    const Match* match(int number) const;
+    /// Hash or sequence mismatches seen (each one asked a sync).
+    int mismatches() const { return mismatches_; }
+    /// Lines from the server that did not read.
+    int bad_lines() const { return bad_lines_; }
+
+private:
+    struct Followed {
+        std::string record_text;    // the record's lines so far
+        std::optional<Match> match; // nothing until a record ends, or while resyncing
+    };
+    void follow(const ServerMessage& message);
+    void resync(int number, Followed& followed);
+
+    UniqueFd fd_;
+    std::string in_;
+    std::string token_;
+    int table_ = 0;
+    int seat_ = 0;
+    std::map<int, Followed> followed_;
+    int mismatches_ = 0;
+    int bad_lines_ = 0;
+};
+
+} // namespace termpool::hall

@@ -1,0 +1,117 @@
+#include "hall/hall_main.hpp"
+
+#include <atomic>
+#include <csignal>
+#include <cstdlib>
+#include <iostream>
+#include <sys/stat.h>
+#include <termpool/text_numbers.hpp>
+#include <unistd.h>
+
+#include "files/atomic_file.hpp"
+#include "hall/hall_bench.hpp"
+#include "hall/hall_state.hpp"
+#include "hall/server.hpp"
+#include "hall/socket_dir.hpp"
+
+namespace termpool::hall {
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: termpool hall serve [--socket PATH] [--state DIR] [--max-clients N] [--max-tables N]\n"
+    "  serve            run the hall's server in the foreground (SIGTERM or SIGINT: save, exit)\n"
+    "  --socket PATH    the Unix socket (default $XDG_RUNTIME_DIR/termpool/hall.sock, or\n"
+    "                   /tmp/termpool-UID/hall.sock)\n"
+    "  --state DIR      where tables are saved (default $XDG_STATE_HOME/termpool/hall)\n"
+    "  --max-clients N  connections at once (default 256)\n"
+    "  --max-tables N   tables at once (default 100)\n";
+
+// The server a signal stops. A lock-free atomic pointer is safe to read in a handler, and
+// Server::stop only writes a byte to a pipe.
+std::atomic<Server*> signalled_server{nullptr};
+
+extern "C" void on_stop_signal(int) {
+    if (Server* server = signalled_server.load())
+        server->stop();
+}
+
+int usage_error(const std::string& why) {
+    std::cerr << "termpool hall: " << why << "\n\n" << kUsage;
+    return 2;
+}
+
+int serve(const std::vector<std::string>& args) {
+    ServerOptions options;
+    options.log = &std::cerr;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg == "--help" || arg == "-h") {
+            std::cout << kUsage;
+            return 0;
+        }
+        if (i + 1 >= args.size())
+            return usage_error(arg.starts_with("--") ? arg + " needs a value"
+                                                     : "unknown argument '" + arg + "'");
+        const std::string& value = args[++i];
+        if (arg == "--socket") {
+            options.socket_path = value;
+        } else if (arg == "--state") {
+            options.state_dir = value;
+        } else if (arg == "--max-clients" || arg == "--max-tables") {
+            const auto n = parse_integer(value);
+            if (!n || *n < 1 || *n > 100000)
+                return usage_error(arg + " takes a whole number from 1 to 100000");
+            (arg == "--max-clients" ? options.max_clients : options.max_tables) =
+                static_cast<int>(*n);
+        } else {
+            return usage_error("unknown option '" + arg + "'");
+        }
+    }
+    if (options.socket_path.empty())
+        options.socket_path = default_socket_path();
+    // tmux's rule: the socket's folder is ours alone, or the server does not start.
+    if (const std::string problem = prepare_socket_dir(options.socket_path); !problem.empty()) {
+        std::cerr << "termpool hall: " << problem << '\n';
+        return 1;
+    }
+    if (options.state_dir.empty())
+        options.state_dir = default_state_dir();
+    if (const std::string problem = make_directories(options.state_dir); !problem.empty()) {
+        std::cerr << "termpool hall: " << problem << '\n';
+        return 1;
+    }
+
+    Server server(options);
+    if (const std::string problem = server.open(); !problem.empty()) {
+        std::cerr << "termpool hall: " << problem << '\n';
+        return 1;
+    }
+    signalled_server = &server;
+    struct sigaction action {};
+    action.sa_handler = on_stop_signal;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(SIGTERM, &action, nullptr);
+    ::sigaction(SIGINT, &action, nullptr);
+    const int status = server.run();
+    signalled_server = nullptr;
+    return status;
+}
+
+} // namespace
+
+int hall_command(const std::vector<std::string>& args) {
+    if (args.empty())
+        return usage_error("which hall command? (serve)");
+    if (args.front() == "--help" || args.front() == "-h") {
+        std::cout << kUsage;
+        return 0;
+    }
+    if (args.front() == "serve")
+        return serve(args);
+    if (args.front() == "bench")
+        return hall_bench_command(args);
+    return usage_error("unknown hall command '" + args.front() + "'");
+}
+
+} // namespace termpool::hall

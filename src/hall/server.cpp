@@ -1,0 +1,769 @@
+// The hall's poll loop. Plain POSIX sockets and poll(2), one thread: the hall needs no
+// dependency for this, and its load is small (a few hundred connections, a few messages a
+// second each); tmux uses libevent for portability to systems we do not target. The computer
+// seats think on a small worker pool (computer_pool.hpp) so that no search stalls the loop.
+
+#include "hall/server.hpp"
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <map>
+#include <poll.h>
+#include <random>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <termpool/match.hpp>
+#include <unistd.h>
+#include <vector>
+
+#include "hall/computer_pool.hpp"
+#include "hall/connection.hpp"
+#include "hall/hall_state.hpp"
+#include "hall/protocol.hpp"
+#include "hall/unique_fd.hpp"
+
+namespace termpool::hall {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A person connected: their socket, who they said they are, where they are.
+struct Client {
+    Client(int client_id, Connection c) : id(client_id), connection(std::move(c)) {}
+    int id = 0;
+    Connection connection;
+    bool welcomed = false;
+    std::string token;
+    std::string token_hash;
+    std::string name;
+    int table = 0; // 0: in the lobby
+    int seat = 0;  // 1 or 2 seated, 0 watching
+    int errors = 0;
+    bool closing = false;
+    std::optional<Clock::time_point> last_chat;
+};
+
+// A seat as the server keeps it.
+struct SeatSlot {
+    std::string token_hash; // the owner's; empty for an empty or computer seat
+    int client = 0;         // the owner's connection, 0 while away
+    bool computer = false;
+    std::optional<Strike> pending_aim; // the newest aim not yet forwarded
+    std::optional<Clock::time_point> last_aim;
+};
+
+struct Table {
+    int number = 0;
+    Match match;
+    SeatSlot seats[2];
+    std::uint64_t ticket = 0; // moves on with each search asked, so stale answers are dropped
+    bool searching = false;
+};
+
+std::variant<Match, MatchError> new_match(const Create& create, std::uint64_t seed) {
+    GameRecord header;
+    header.setup.game = create.game;
+    header.setup.table = create.size;
+    header.seed = seed;
+    header.race_to = create.race_to;
+    return Match::start(header, seed);
+}
+
+std::string default_name(int seat) {
+    return "Player " + std::to_string(seat);
+}
+
+std::string computer_name(Level level) {
+    return std::string("Computer (") + level_name(level) + ")";
+}
+
+} // namespace
+
+struct Server::State {
+    ServerOptions options;
+    UniqueFd listener;
+    bool made_socket = false;
+    WakePipe stop_pipe;
+    ComputerPool pool;
+    std::map<int, Client> clients; // by id
+    std::map<int, Table> tables;   // by number
+    int next_client_id = 1;
+    bool lobby_dirty = false;
+    std::atomic<std::size_t> table_count{0};
+    std::mt19937_64 random{std::random_device{}()};
+
+    explicit State(ServerOptions o) : options(std::move(o)), pool(options.computer_threads) {}
+
+    void log(const std::string& line) const {
+        if (options.log)
+            *options.log << "termpool hall: " << line << '\n' << std::flush;
+    }
+
+    // --- sending ---------------------------------------------------------------------------
+
+    void send(Client& client, const ServerMessage& message) {
+        if (client.closing)
+            return;
+        if (!client.connection.queue(format_server(message), options.output_limit)) {
+            log("client " + std::to_string(client.id) + " stopped reading: disconnected");
+            client.closing = true;
+        }
+    }
+
+    void send_error(Client& client, ErrorCode code, const std::string& text) {
+        send(client, Error{code, text});
+        if (++client.errors >= options.max_errors) {
+            log("client " + std::to_string(client.id) + ": too many errors, disconnected");
+            client.closing = true;
+        }
+    }
+
+    // Sends what can go now and ends the connection (after a fatal error).
+    void send_and_close(Client& client, ErrorCode code, const std::string& text) {
+        send(client, Error{code, text});
+        client.connection.flush();
+        client.closing = true;
+    }
+
+    void send_to_table(const Table& table, const ServerMessage& message, int except = 0) {
+        const std::string line = format_server(message);
+        for (auto& [id, client] : clients)
+            if (client.table == table.number && id != except && !client.closing &&
+                !client.connection.queue(line, options.output_limit)) {
+                log("client " + std::to_string(id) + " stopped reading: disconnected");
+                client.closing = true;
+            }
+    }
+
+    // --- views -----------------------------------------------------------------------------
+
+    SeatView seat_view(const Table& table, int seat) const {
+        const SeatSlot& slot = table.seats[seat - 1];
+        if (slot.computer)
+            return {SeatKind::computer, table.match.name(seat)};
+        if (slot.token_hash.empty())
+            return {SeatKind::empty, ""};
+        return {slot.client != 0 ? SeatKind::player : SeatKind::away, table.match.name(seat)};
+    }
+
+    static bool seat_taken(const SeatSlot& slot) {
+        return slot.computer || !slot.token_hash.empty();
+    }
+    static bool full(const Table& table) {
+        return seat_taken(table.seats[0]) && seat_taken(table.seats[1]);
+    }
+    static bool started(const Table& table) { return !table.match.record().actions.empty(); }
+    static bool over(const Table& table) { return table.match.pending().kind == Pending::over; }
+
+    TableView table_view(const Table& table) const {
+        TableView view;
+        view.number = table.number;
+        view.game = table.match.setup().game;
+        view.size = table.match.setup().table;
+        view.race_to = std::max(1, table.match.record().race_to);
+        view.state = over(table)   ? TableState::over
+                     : full(table) ? TableState::playing
+                                   : TableState::waiting;
+        for (int s = 1; s <= 2; ++s)
+            view.seats[s - 1] = seat_view(table, s);
+        for (const auto& [id, client] : clients)
+            if (client.table == table.number && client.seat == 0)
+                ++view.spectators;
+        return view;
+    }
+
+    void send_lobby(Client& client) {
+        send(client, LobbyBegin{});
+        for (const auto& [number, table] : tables)
+            send(client, table_view(table));
+        for (const auto& [id, other] : clients)
+            if (other.welcomed && !other.closing)
+                send(client, PlayerView{other.name, other.table, other.seat});
+        send(client, LobbyEnd{});
+    }
+
+    void send_record(Client& client, const Table& table) {
+        const std::string text = format_record(table.match.record());
+        for (std::size_t start = 0; start < text.size();) {
+            const std::size_t end = text.find('\n', start);
+            const std::size_t stop = end == std::string::npos ? text.size() : end;
+            send(client, RecordLine{table.number, text.substr(start, stop - start)});
+            start = stop + 1;
+        }
+        send(client, RecordEnd{table.number, table.match.record().actions.size(),
+                               table.match.state_hash()});
+        for (int s = 1; s <= 2; ++s)
+            send(client, SeatChange{table.number, s, seat_view(table, s)});
+    }
+
+    void seat_changed(const Table& table, int seat) {
+        send_to_table(table, SeatChange{table.number, seat, seat_view(table, seat)});
+        lobby_dirty = true;
+    }
+
+    // --- saving ----------------------------------------------------------------------------
+
+    bool save(const Table& table) {
+        if (options.state_dir.empty())
+            return true;
+        SavedTable stored{table.number, table.match.record(), {}};
+        for (int s = 0; s < 2; ++s)
+            stored.seat_tokens[s] = table.seats[s].token_hash;
+        if (const std::string problem = save_table(options.state_dir, stored); !problem.empty()) {
+            log("cannot save table " + std::to_string(table.number) + ": " + problem);
+            return false;
+        }
+        return true;
+    }
+
+    void restore() {
+        if (options.state_dir.empty())
+            return;
+        std::vector<std::string> problems;
+        for (SavedTable& stored : load_tables(options.state_dir, problems)) {
+            // A restored computer starts a new stream, as a resumed local game's does.
+            auto replayed =
+                Match::replay(stored.record, std::numeric_limits<std::size_t>::max(), {}, random());
+            if (!std::holds_alternative<Match>(replayed))
+                continue;
+            Table table{stored.number, std::move(std::get<Match>(replayed)), {}, 0, false};
+            for (int s = 0; s < 2; ++s) {
+                table.seats[s].computer = stored.record.computers[s].has_value();
+                table.seats[s].token_hash = stored.seat_tokens[s];
+            }
+            tables.emplace(stored.number, std::move(table));
+        }
+        for (const std::string& problem : problems)
+            log("not restored: " + problem);
+        log("restored " + std::to_string(tables.size()) + " tables");
+        table_count = tables.size();
+        for (auto& [number, table] : tables)
+            think(table);
+    }
+
+    // --- the game --------------------------------------------------------------------------
+
+    // After a change: a computer to act gets a search; a race whose next breaker is a computer
+    // racks at once (a person racks with next-rack when they are ready).
+    void think(Table& table) {
+        if (!full(table) || table.searching)
+            return;
+        const PendingAction pending = table.match.pending();
+        if (pending.kind == Pending::next_rack && table.seats[pending.player - 1].computer) {
+            if (table.match.next_rack(pending.player) == MatchError::none)
+                action_taken(table);
+            return;
+        }
+        if (!table.match.computer_to_act())
+            return;
+        table.searching = true;
+        pool.submit(ComputerJob{table.number, ++table.ticket, table.match, std::nullopt});
+    }
+
+    // The match took an action: save, tell the table, move on.
+    void action_taken(Table& table) {
+        const bool now_over = over(table);
+        save(table);
+        const auto& actions = table.match.record().actions;
+        send_to_table(table, ActionDone{table.number, actions.size(), table.match.state_hash(),
+                                        actions.back()});
+        for (SeatSlot& slot : table.seats)
+            slot.pending_aim.reset();
+        if (now_over)
+            lobby_dirty = true;
+        think(table);
+    }
+
+    MatchError play(Table& table, int seat, const RecordedAction& action) {
+        switch (action.kind) {
+        case RecordedAction::Kind::place:
+            return table.match.place(seat, action.place);
+        case RecordedAction::Kind::choose:
+            return table.match.choose(seat, action.choice);
+        case RecordedAction::Kind::shot: {
+            const auto played = table.match.shoot(seat, action.strike, action.call);
+            const MatchError* error = std::get_if<MatchError>(&played);
+            return error ? *error : MatchError::none;
+        }
+        case RecordedAction::Kind::rack:
+            return table.match.next_rack(seat);
+        }
+        return MatchError::not_now;
+    }
+
+    void computer_answers() {
+        for (ComputerJob& answer : pool.take_answers()) {
+            const auto found = tables.find(answer.table);
+            if (found == tables.end() || found->second.ticket != answer.ticket)
+                continue;
+            Table& table = found->second;
+            table.searching = false;
+            // Nothing but the computer can act while it thinks; should the match have moved
+            // anyway, the answer is for an old position: ask again.
+            if (answer.match.record().actions.size() != table.match.record().actions.size() ||
+                !answer.move) {
+                think(table);
+                continue;
+            }
+            const int seat = table.match.to_act();
+            table.match = std::move(answer.match); // the computer's stream, moved on
+            RecordedAction action;
+            action.kind = answer.move->kind == Pending::place    ? RecordedAction::Kind::place
+                          : answer.move->kind == Pending::choose ? RecordedAction::Kind::choose
+                                                                 : RecordedAction::Kind::shot;
+            action.place = answer.move->spot;
+            action.choice = answer.move->choice;
+            action.strike = answer.move->shot.strike;
+            action.call = answer.move->shot.call;
+            if (const MatchError error = play(table, seat, action); error != MatchError::none) {
+                log("table " + std::to_string(table.number) +
+                    ": the computer's move was refused: " + match_error_text(error));
+                continue;
+            }
+            action_taken(table);
+        }
+    }
+
+    // --- people ----------------------------------------------------------------------------
+
+    Table* table_of(const Client& client) {
+        const auto found = tables.find(client.table);
+        return found == tables.end() ? nullptr : &found->second;
+    }
+
+    // `client` leaves its table: by `leave` (or moving on), or because its connection dropped.
+    // The table closes if idle, unless it is `staying` (the client moves to another seat of it).
+    void leave_table(Client& client, bool dropped, int staying = 0) {
+        Table* table = table_of(client);
+        const int seat = client.seat;
+        client.table = 0;
+        client.seat = 0;
+        lobby_dirty = true;
+        if (!table)
+            return;
+        if (seat != 0) {
+            SeatSlot& slot = table->seats[seat - 1];
+            slot.client = 0;
+            slot.pending_aim.reset();
+            // A seat in a game under way waits for its owner; before the first action, or
+            // once the match is over, a leave frees it.
+            if ((!started(*table) && !dropped) || over(*table)) {
+                slot.token_hash.clear();
+                table->match.rename(seat, default_name(seat));
+            }
+            save(*table);
+            seat_changed(*table, seat);
+        }
+        if (table->number != staying)
+            forget_if_idle(*table);
+    }
+
+    // A table nobody is at, and nobody will come back to, goes.
+    void forget_if_idle(Table& table) {
+        for (const auto& [id, client] : clients)
+            if (client.table == table.number && !client.closing)
+                return;
+        const bool away = !table.seats[0].token_hash.empty() || !table.seats[1].token_hash.empty();
+        const bool computers_play = table.seats[0].computer && table.seats[1].computer;
+        if (!over(table) && (away || computers_play))
+            return;
+        if (!options.state_dir.empty())
+            forget_table(options.state_dir, table.number);
+        log("table " + std::to_string(table.number) + " closed");
+        tables.erase(table.number);
+        table_count = tables.size();
+        lobby_dirty = true;
+    }
+
+    void join(Client& client, Table& table, int seat) {
+        client.table = table.number;
+        client.seat = seat;
+        send(client, Joined{table.number, seat});
+        send_record(client, table);
+        lobby_dirty = true;
+    }
+
+    void on_hello(Client& client, const Hello& hello) {
+        if (client.welcomed)
+            return send_error(client, ErrorCode::hello_first, "hello comes once");
+        std::string token = hello.token.empty() ? new_seat_token() : hello.token;
+        if (token.empty())
+            return send_error(client, ErrorCode::internal, "no random token to give: try again");
+        const std::string hash = seat_token_hash(token);
+        // The same person again: the old connection gives way (its seats go away, then the
+        // new one may take them back).
+        for (auto& [id, other] : clients)
+            if (id != client.id && other.welcomed && other.token_hash == hash && !other.closing) {
+                send_and_close(other, ErrorCode::replaced, "you connected again elsewhere");
+                leave_table(other, true);
+            }
+        client.welcomed = true;
+        client.token = std::move(token);
+        client.token_hash = hash;
+        client.name = hello.name;
+        send(client, Welcome{protocol_version, client.token});
+        for (const auto& [number, table] : tables)
+            for (int s = 1; s <= 2; ++s)
+                if (table.seats[s - 1].token_hash == hash && table.seats[s - 1].client == 0)
+                    send(client, Yours{number, s});
+        lobby_dirty = true;
+        send_lobby(client);
+    }
+
+    void on_create(Client& client, const Create& create) {
+        if (static_cast<int>(tables.size()) >= options.max_tables)
+            return send_error(client, ErrorCode::full, "the hall has all the tables it takes");
+        int number = 1;
+        while (tables.count(number))
+            ++number;
+        if (number > max_table_number)
+            return send_error(client, ErrorCode::full, "no table number is free");
+        auto started_match = new_match(create, random());
+        if (const MatchError* e = std::get_if<MatchError>(&started_match))
+            return send_error(client, ErrorCode::refused, match_error_text(*e));
+        tables.emplace(number,
+                       Table{number, std::move(std::get<Match>(started_match)), {}, 0, false});
+        table_count = tables.size();
+        save(tables.at(number));
+        send(client, Created{number});
+        lobby_dirty = true;
+        log("table " + std::to_string(number) + " created by " + client.name);
+    }
+
+    void on_sit(Client& client, const Sit& sit) {
+        const auto found = tables.find(sit.table);
+        if (found == tables.end())
+            return send_error(client, ErrorCode::no_table, "no such table");
+        Table& table = found->second;
+        SeatSlot& slot = table.seats[sit.seat - 1];
+        const bool mine = slot.token_hash == client.token_hash;
+        if (slot.computer || (!slot.token_hash.empty() && !mine))
+            return send_error(client, ErrorCode::seat_taken, "that seat is taken");
+        if (!mine && over(table))
+            return send_error(client, ErrorCode::refused, "the match is over");
+        if (client.table != 0)
+            leave_table(client, false, sit.table); // never closes this table
+        slot.client = client.id;
+        if (!mine) {
+            slot.token_hash = client.token_hash;
+            table.match.rename(sit.seat, client.name);
+        }
+        save(table);
+        join(client, table, sit.seat);
+        seat_changed(table, sit.seat);
+        think(table);
+    }
+
+    void on_watch(Client& client, const Watch& watch) {
+        if (!tables.count(watch.table))
+            return send_error(client, ErrorCode::no_table, "no such table");
+        if (client.table != 0)
+            leave_table(client, false, watch.table);
+        join(client, tables.at(watch.table), 0);
+    }
+
+    void on_act(Client& client, const RecordedAction& action) {
+        Table* table = table_of(client);
+        if (!table)
+            return send_error(client, ErrorCode::no_table, "you are at no table");
+        if (client.seat == 0)
+            return send_error(client, ErrorCode::not_seated, "spectators do not play");
+        if (!full(*table))
+            return send_error(client, ErrorCode::refused, "waiting for an opponent");
+        if (const MatchError error = play(*table, client.seat, action); error != MatchError::none)
+            return send_error(client, ErrorCode::refused, match_error_text(error));
+        action_taken(*table);
+    }
+
+    void on_aim(Client& client, const Aim& aim) {
+        Table* table = table_of(client);
+        // An aim from someone not to shoot is dropped silently: one sent just before the
+        // other player's shot arrived is no fault.
+        if (!table || client.seat == 0 || !full(*table) || table->match.to_act() != client.seat)
+            return;
+        table->seats[client.seat - 1].pending_aim = aim.strike;
+        flush_aims(Clock::now());
+    }
+
+    // Forwards each seat's newest aim once its interval has passed.
+    void flush_aims(Clock::time_point now) {
+        for (auto& [number, table] : tables)
+            for (int s = 1; s <= 2; ++s) {
+                SeatSlot& slot = table.seats[s - 1];
+                if (!slot.pending_aim ||
+                    (slot.last_aim && now - *slot.last_aim < options.aim_interval))
+                    continue;
+                send_to_table(table, AimShown{number, s, *slot.pending_aim}, slot.client);
+                slot.pending_aim.reset();
+                slot.last_aim = now;
+            }
+    }
+
+    // Milliseconds until the next aim is due, -1 for none.
+    int aim_timeout(Clock::time_point now) const {
+        int timeout = -1;
+        for (const auto& [number, table] : tables)
+            for (const SeatSlot& slot : table.seats)
+                if (slot.pending_aim && slot.last_aim) {
+                    const auto due = *slot.last_aim + options.aim_interval - now;
+                    const int ms = static_cast<int>(std::max<long long>(
+                        0, std::chrono::ceil<std::chrono::milliseconds>(due).count()));
+                    timeout = timeout < 0 ? ms : std::min(timeout, ms);
+                }
+        return timeout;
+    }
+
+    void on_chat(Client& client, const Chat& chat) {
+        Table* table = table_of(client);
+        if (!table)
+            return send_error(client, ErrorCode::no_table, "chat is at a table");
+        const auto now = Clock::now();
+        if (client.last_chat && now - *client.last_chat < options.chat_interval)
+            return send_error(client, ErrorCode::rate, "one chat line a second");
+        client.last_chat = now;
+        send_to_table(*table, ChatShown{table->number, client.name, chat.text});
+    }
+
+    void on_computer(Client& client, const SeatComputer& request) {
+        Table* table = table_of(client);
+        if (!table)
+            return send_error(client, ErrorCode::no_table, "you are at no table");
+        SeatSlot& slot = table->seats[request.seat - 1];
+        if (!slot.token_hash.empty() || (slot.computer && request.level && started(*table)))
+            return send_error(client, ErrorCode::seat_taken, "that seat is taken");
+        if (!request.level && (!slot.computer || started(*table)))
+            return send_error(client, ErrorCode::refused, "no computer to unseat");
+        if (over(*table))
+            return send_error(client, ErrorCode::refused, "the match is over");
+        table->match.seat_computer(request.seat, request.level);
+        table->match.rename(request.seat, request.level ? computer_name(*request.level)
+                                                        : default_name(request.seat));
+        slot.computer = request.level.has_value();
+        save(*table);
+        seat_changed(*table, request.seat);
+        think(*table);
+    }
+
+    void on_message(Client& client, const ClientMessage& message) {
+        if (!client.welcomed && !std::holds_alternative<Hello>(message))
+            return send_error(client, ErrorCode::hello_first, "say hello first");
+        if (const auto* m = std::get_if<Hello>(&message))
+            return on_hello(client, *m);
+        if (const auto* m = std::get_if<Create>(&message))
+            return on_create(client, *m);
+        if (const auto* m = std::get_if<Sit>(&message))
+            return on_sit(client, *m);
+        if (const auto* m = std::get_if<Watch>(&message))
+            return on_watch(client, *m);
+        if (std::holds_alternative<Leave>(message)) {
+            const int number = client.table;
+            if (number == 0)
+                return send_error(client, ErrorCode::no_table, "you are at no table");
+            leave_table(client, false);
+            return send(client, Left{number});
+        }
+        if (const auto* m = std::get_if<Act>(&message))
+            return on_act(client, m->action);
+        if (std::holds_alternative<NextRack>(message)) {
+            RecordedAction rack;
+            rack.kind = RecordedAction::Kind::rack;
+            return on_act(client, rack);
+        }
+        if (const auto* m = std::get_if<Aim>(&message))
+            return on_aim(client, *m);
+        if (const auto* m = std::get_if<Chat>(&message))
+            return on_chat(client, *m);
+        if (const auto* m = std::get_if<SeatComputer>(&message))
+            return on_computer(client, *m);
+        if (std::holds_alternative<Sync>(message)) {
+            Table* table = table_of(client);
+            if (!table)
+                return send_error(client, ErrorCode::no_table, "you are at no table");
+            log("client " + std::to_string(client.id) + " resynchronises table " +
+                std::to_string(table->number));
+            return send_record(client, *table);
+        }
+        send(client, Pong{});
+    }
+
+    void on_line(Client& client, std::string_view line) {
+        auto parsed = parse_client(line);
+        if (const auto* error = std::get_if<ProtocolError>(&parsed)) {
+            if (error->code == ErrorCode::version)
+                return send_and_close(client, ErrorCode::version, error->text);
+            return send_error(client, error->code, error->text);
+        }
+        on_message(client, std::get<ClientMessage>(parsed));
+    }
+
+    // --- sockets ---------------------------------------------------------------------------
+
+    void accept_clients() {
+        // A few at a time, so that a flood of connections cannot starve the others' input.
+        for (int i = 0; i < 16; ++i) {
+            UniqueFd fd(::accept(listener.get(), nullptr, nullptr));
+            if (!fd)
+                return;
+            if (!make_nonblocking(fd.get()))
+                continue;
+            Client client(next_client_id++, Connection(std::move(fd)));
+            if (static_cast<int>(clients.size()) >= options.max_clients) {
+                send_and_close(client, ErrorCode::full, "the hall has all the clients it takes");
+                continue; // closed as it goes out of scope
+            }
+            clients.emplace(client.id, std::move(client));
+        }
+    }
+
+    void read_client(Client& client) {
+        std::vector<std::string> lines;
+        switch (client.connection.read_lines(lines)) {
+        case Connection::ReadResult::closed:
+            client.closing = true;
+            break;
+        case Connection::ReadResult::too_long:
+            send_and_close(client, ErrorCode::too_long,
+                           "a line is at most " + std::to_string(max_line_bytes) + " bytes");
+            return;
+        case Connection::ReadResult::ok:
+            break;
+        }
+        for (const std::string& line : lines) {
+            if (client.closing)
+                return;
+            on_line(client, line);
+        }
+    }
+
+    void drop_closed() {
+        std::vector<int> closed;
+        for (auto& [id, client] : clients)
+            if (client.closing)
+                closed.push_back(id);
+        for (const int id : closed) {
+            Client& client = clients.at(id);
+            const int number = client.table;
+            leave_table(client, true);
+            clients.erase(id);
+            if (auto found = tables.find(number); found != tables.end())
+                forget_if_idle(found->second);
+            lobby_dirty = true;
+        }
+    }
+
+    std::string listen_on(const std::string& path) {
+        sockaddr_un address{};
+        address.sun_family = AF_UNIX;
+        if (path.empty() || path.size() >= sizeof address.sun_path)
+            return "socket path too long (at most " + std::to_string(sizeof address.sun_path - 1) +
+                   " bytes): " + path;
+        std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+        const auto* raw = reinterpret_cast<const sockaddr*>(&address);
+
+        // A socket file nobody answers on is a dead server's: replace it. One that answers
+        // is a live hall's.
+        if (::access(path.c_str(), F_OK) == 0) {
+            const UniqueFd probe(::socket(AF_UNIX, SOCK_STREAM, 0));
+            if (probe && ::connect(probe.get(), raw, sizeof address) == 0)
+                return "a hall already serves on " + path;
+            ::unlink(path.c_str());
+        }
+        listener = UniqueFd(::socket(AF_UNIX, SOCK_STREAM, 0));
+        if (!listener || !make_nonblocking(listener.get()))
+            return std::string("socket: ") + std::strerror(errno);
+        if (::bind(listener.get(), raw, sizeof address) != 0)
+            return path + ": " + std::strerror(errno);
+        made_socket = true;
+        if (::listen(listener.get(), 64) != 0)
+            return path + ": " + std::strerror(errno);
+        return {};
+    }
+};
+
+Server::Server(ServerOptions options) : state_(std::make_unique<State>(std::move(options))) {}
+
+Server::~Server() {
+    // The workers stop before the sockets close (the pool is a member, destroyed with state_).
+    if (state_->made_socket)
+        ::unlink(state_->options.socket_path.c_str());
+}
+
+std::string Server::open() {
+    State& s = *state_;
+    if (!s.stop_pipe.open() || !s.pool.ok())
+        return std::string("pipe: ") + std::strerror(errno);
+    if (std::string problem = s.listen_on(s.options.socket_path); !problem.empty())
+        return problem;
+    s.restore();
+    s.log("serving on " + s.options.socket_path);
+    return {};
+}
+
+void Server::stop() {
+    state_->stop_pipe.wake();
+}
+
+std::size_t Server::table_count() const {
+    return state_->table_count;
+}
+
+int Server::run() {
+    State& s = *state_;
+    std::vector<pollfd> fds;
+    std::vector<int> ids; // the client of fds[i + 3]
+    for (;;) {
+        fds.clear();
+        ids.clear();
+        fds.push_back({s.stop_pipe.read_end.get(), POLLIN, 0});
+        fds.push_back({s.pool.wake_fd(), POLLIN, 0});
+        fds.push_back({s.listener.get(), POLLIN, 0});
+        for (auto& [id, client] : s.clients) {
+            const short events =
+                static_cast<short>(POLLIN | (client.connection.wants_write() ? POLLOUT : 0));
+            fds.push_back({client.connection.fd(), events, 0});
+            ids.push_back(id);
+        }
+        // A lobby change left over from the last round (a connection dropped) goes out now.
+        const int timeout = s.lobby_dirty ? 0 : s.aim_timeout(Clock::now());
+        if (::poll(fds.data(), fds.size(), timeout) < 0 && errno != EINTR) {
+            s.log(std::string("poll: ") + std::strerror(errno));
+            break;
+        }
+        if (fds[0].revents & POLLIN)
+            break;
+        if (fds[1].revents & POLLIN)
+            s.computer_answers();
+        if (fds[2].revents & POLLIN)
+            s.accept_clients();
+        for (std::size_t i = 0; i < ids.size(); ++i) {
+            const auto found = s.clients.find(ids[i]);
+            if (found == s.clients.end() || found->second.closing)
+                continue;
+            if (fds[i + 3].revents & (POLLIN | POLLHUP | POLLERR))
+                s.read_client(found->second);
+        }
+        s.flush_aims(Clock::now());
+        s.drop_closed();
+        if (s.lobby_dirty) {
+            s.lobby_dirty = false;
+            for (auto& [id, client] : s.clients)
+                if (client.welcomed)
+                    s.send_lobby(client);
+        }
+        for (auto& [id, client] : s.clients)
+            if (!client.closing && client.connection.wants_write() && !client.connection.flush())
+                client.closing = true;
+        s.drop_closed();
+    }
+
+    int status = 0;
+    for (auto& [number, table] : s.tables)
+        if (!s.save(table))
+            status = 1;
+    s.log("stopped with " + std::to_string(s.tables.size()) + " tables saved");
+    return status;
+}
+
+} // namespace termpool::hall

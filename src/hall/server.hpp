@@ -1,0 +1,57 @@
+#pragma once
+/// \file
+/// The hall's server: tables of Matches, the people at them, one Unix stream socket. It is
+/// authoritative: every action is validated and applied by the table's Match, saved, then sent
+/// to everyone at the table with the state hash after it.
+
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <ostream>
+#include <string>
+
+namespace termpool::hall {
+
+/// How a server runs.
+struct ServerOptions {
+    std::string socket_path; ///< where to listen (the folder must exist)
+    std::string state_dir;   ///< where tables are saved and restored from; empty: nowhere
+    int max_clients = 256;   ///< connections beyond this are told "full" and closed
+    int max_tables = 100;    ///< tables beyond this are refused
+    /// Bytes queued for one client beyond which it is disconnected (it stopped reading). A
+    /// whole race-to-99 record still fits.
+    std::size_t output_limit = 256 * 1024;
+    int max_errors = 10;                           ///< error replies before a client is cut
+    int computer_threads = 2;                      ///< the computer seats' worker pool
+    std::chrono::milliseconds aim_interval{50};    ///< at most one aim per seat this often
+    std::chrono::milliseconds chat_interval{1000}; ///< at most one chat per person this often
+    std::ostream* log = nullptr;                   ///< where to log (nothing when null)
+};
+
+/// A hall server. `open`, then `run` until `stop`.
+class Server {
+public:
+    /// A server that is not listening yet.
+    explicit Server(ServerOptions options);
+    /// Closes every socket, removes the socket file when it made one, joins its threads.
+    ~Server();
+    Server(const Server&) = delete;
+    Server& operator=(const Server&) = delete;
+
+    /// Restores the saved tables and listens on the socket; "" or why not. A socket file left
+    /// by a server that is gone is replaced; one a server answers on is refused.
+    std::string open();
+    /// Serves until `stop`, then saves every table; returns 0 (1 if a save failed).
+    int run();
+    /// Asks `run` to return; callable from any thread and from a signal handler.
+    void stop();
+
+    /// Tables held (for tests and the log).
+    std::size_t table_count() const;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+} // namespace termpool::hall

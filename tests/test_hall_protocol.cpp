@@ -1,0 +1,234 @@
+// The hall's line protocol: every message formats to one line that reads back to the same
+// line, and malformed, oversized and other-version lines are refused with the right code.
+#include <catch2/catch.hpp>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "hall/protocol.hpp"
+
+using namespace termpool;
+using namespace termpool::hall;
+
+namespace {
+
+const std::string kToken = "0123456789abcdef0123456789abcdef";
+
+RecordedAction action_of(const std::string& line) {
+    auto parsed = parse_action(line);
+    REQUIRE(std::holds_alternative<RecordedAction>(parsed));
+    return std::get<RecordedAction>(parsed);
+}
+
+std::string body(const std::string& line) {
+    REQUIRE(!line.empty());
+    REQUIRE(line.back() == '\n');
+    return line.substr(0, line.size() - 1);
+}
+
+// Formats, parses and formats again: the same line both times.
+void client_round_trip(const ClientMessage& message) {
+    const std::string line = format_client(message);
+    INFO(line);
+    CHECK(line.size() <= max_line_bytes);
+    const auto parsed = parse_client(body(line));
+    if (const auto* e = std::get_if<ProtocolError>(&parsed))
+        FAIL(e->text);
+    const auto& again = std::get<ClientMessage>(parsed);
+    CHECK(again.index() == message.index());
+    CHECK(format_client(again) == line);
+}
+
+void server_round_trip(const ServerMessage& message) {
+    const std::string line = format_server(message);
+    INFO(line);
+    CHECK(line.size() <= max_line_bytes);
+    const auto parsed = parse_server(body(line));
+    if (const auto* e = std::get_if<ProtocolError>(&parsed))
+        FAIL(e->text);
+    const auto& again = std::get<ServerMessage>(parsed);
+    CHECK(again.index() == message.index());
+    CHECK(format_server(again) == line);
+}
+
+ErrorCode client_refusal(const std::string& line) {
+    INFO(line);
+    const auto parsed = parse_client(line);
+    REQUIRE(std::holds_alternative<ProtocolError>(parsed));
+    return std::get<ProtocolError>(parsed).code;
+}
+
+ErrorCode server_refusal(const std::string& line) {
+    INFO(line);
+    const auto parsed = parse_server(line);
+    REQUIRE(std::holds_alternative<ProtocolError>(parsed));
+    return std::get<ProtocolError>(parsed).code;
+}
+
+} // namespace
+
+TEST_CASE("hall protocol: every client message reads back", "[hall]") {
+    client_round_trip(Hello{protocol_version, "", "Ann"});
+    client_round_trip(Hello{protocol_version, kToken, "Ann Marie 100%"});
+    client_round_trip(Create{GameType::nine_ball, TableSize::seven_foot, 5});
+    client_round_trip(Create{GameType::eight_ball_bar, TableSize::eight_foot, 1});
+    client_round_trip(Sit{12, 2});
+    client_round_trip(Watch{9999});
+    client_round_trip(Leave{});
+    client_round_trip(Act{action_of("place 0.6 0.5")});
+    client_round_trip(Act{action_of("shot 12 0 0 0 call 1 3")});
+    client_round_trip(Act{action_of("shot 3.25 181.5 -0.25 0.5 safety")});
+    client_round_trip(Act{action_of("choose play-on")});
+    client_round_trip(NextRack{});
+    client_round_trip(Aim{Strike{7.5, 123.456, 0.1, -0.2}});
+    client_round_trip(Chat{"good shot, 100% — ünïcödé"});
+    client_round_trip(SeatComputer{2, Level::pro});
+    client_round_trip(SeatComputer{1, std::nullopt});
+    client_round_trip(Sync{});
+    client_round_trip(Ping{});
+}
+
+TEST_CASE("hall protocol: every server message reads back", "[hall]") {
+    server_round_trip(Welcome{protocol_version, kToken});
+    server_round_trip(Error{ErrorCode::refused, "it is the other player's turn"});
+    server_round_trip(Error{ErrorCode::too_long, ""});
+    server_round_trip(LobbyBegin{});
+    TableView table;
+    table.number = 3;
+    table.game = GameType::nine_ball;
+    table.size = TableSize::eight_foot;
+    table.race_to = 7;
+    table.state = TableState::playing;
+    table.seats[0] = {SeatKind::away, "Bob the Builder"};
+    table.seats[1] = {SeatKind::computer, "Computer (hard)"};
+    table.spectators = 4;
+    server_round_trip(table);
+    table.seats[0] = {SeatKind::empty, ""};
+    table.state = TableState::waiting;
+    server_round_trip(table);
+    server_round_trip(PlayerView{"Ann", 0, 0});
+    server_round_trip(PlayerView{"Ann", 3, 2});
+    server_round_trip(LobbyEnd{});
+    server_round_trip(Created{1});
+    server_round_trip(Joined{1, 0});
+    server_round_trip(Left{1});
+    server_round_trip(Yours{4, 2});
+    server_round_trip(RecordLine{1, "names Ann Bob"});
+    server_round_trip(RecordLine{1, ""});
+    server_round_trip(RecordEnd{1, 42, 0xfedcba9876543210ULL});
+    server_round_trip(SeatChange{2, 1, {SeatKind::player, "Ann"}});
+    server_round_trip(SeatChange{2, 2, {SeatKind::empty, ""}});
+    server_round_trip(ActionDone{2, 7, 1, action_of("rack 2 1234")});
+    server_round_trip(ActionDone{2, 8, 0, action_of("shot 12 0 0 0 call 1 3 push-out")});
+    server_round_trip(AimShown{2, 1, Strike{1, 2, 0.5, -0.5}});
+    server_round_trip(ChatShown{2, "Ann", "hi there"});
+    server_round_trip(Pong{});
+}
+
+TEST_CASE("hall protocol: text fields stay one field", "[hall]") {
+    CHECK(encode_field("a b%c") == "a%20b%25c");
+    CHECK(encode_field("\n\x7f") == "%0A%7F");
+    CHECK(decode_field("a%20b%25c") == std::optional<std::string>("a b%c"));
+    CHECK_FALSE(decode_field("a%2"));
+    CHECK_FALSE(decode_field("a%zz"));
+    CHECK_FALSE(decode_field("a%41")); // 'A' needs no escape: one text, one encoding
+    CHECK_FALSE(decode_field("a%0a")); // lower-case hex is not ours
+    CHECK(valid_chat_text("hello"));
+    CHECK(valid_chat_text(std::string(200, 'x')));
+    CHECK_FALSE(valid_chat_text(std::string(201, 'x')));
+    CHECK(valid_chat_text(std::string(200 * 2 / 2, 'y')));
+    CHECK_FALSE(valid_chat_text(""));
+    CHECK_FALSE(valid_chat_text("tab\there"));
+    CHECK_FALSE(valid_chat_text("\xc2\x85"));     // C1 NEL
+    CHECK_FALSE(valid_chat_text("\xc0\xaf"));     // overlong
+    CHECK_FALSE(valid_chat_text("\xed\xa0\x80")); // surrogate
+}
+
+TEST_CASE("hall protocol: malformed client lines are refused", "[hall]") {
+    const std::vector<std::string> bad = {
+        "",
+        " ",
+        "ping ",
+        "ping extra",
+        "PING",
+        "hello 1 - ",
+        "hello 1 -",
+        "hello 1 abc Ann",
+        "hello 1 0123456789ABCDEF0123456789ABCDEF Ann",
+        "hello 1 - %20Ann",
+        "hello 1 - Ann%",
+        "hello one - Ann",
+        "create 10ball 9ft 1",
+        "create 8ball 10ft 1",
+        "create 8ball 9ft 0",
+        "create 8ball 9ft 100",
+        "create 8ball 9ft +5",
+        "sit 0 1",
+        "sit 1 3",
+        "sit 1  1",
+        "sit 10000 1",
+        "sit 1 1.0",
+        "watch",
+        "watch -1",
+        "act",
+        "act rack 1 2",
+        "act shot nan 0 0 0",
+        "act shot 12 0 0.9 0",
+        "act place x y",
+        "act choose dance",
+        "aim 0 21 0 0",
+        "aim 0 1 0.6 0",
+        "aim inf 1 0 0",
+        "aim 0 1 0",
+        "chat",
+        "chat a b",
+        "chat %09",
+        "chat " + std::string(201, 'x'),
+        "computer 3 hard",
+        "computer 1 godlike",
+        "next-rack now",
+        "sync\r",
+        std::string("ping\0", 5),
+        "\xff\xfe garbage",
+    };
+    for (const std::string& line : bad)
+        CHECK(client_refusal(line) == ErrorCode::syntax);
+}
+
+TEST_CASE("hall protocol: oversized lines and other versions", "[hall]") {
+    // The longest line that fits: 4095 bytes and the newline.
+    const std::string longest = "chat " + std::string(max_line_bytes - 1 - 5, 'x');
+    CHECK(client_refusal(longest) == ErrorCode::syntax); // over 200 characters, but not too long
+    CHECK(client_refusal(longest + "x") == ErrorCode::too_long);
+    CHECK(server_refusal("record 1 " + std::string(max_line_bytes, 'x')) == ErrorCode::too_long);
+    const std::string fits = "record 1 " + std::string(max_line_bytes - 1 - 9, 'x');
+    CHECK(std::holds_alternative<ServerMessage>(parse_server(fits)));
+
+    CHECK(client_refusal("hello 2 - Ann") == ErrorCode::version);
+    CHECK(client_refusal("hello 0 - Ann") == ErrorCode::version);
+    CHECK(client_refusal("hello 2 some future format") == ErrorCode::version);
+    CHECK(server_refusal("welcome 2 " + kToken) == ErrorCode::version);
+}
+
+TEST_CASE("hall protocol: malformed server lines are refused", "[hall]") {
+    const std::vector<std::string> bad = {
+        "welcome 1 xyz",
+        "error nonsense oops",
+        "error refused tab\there",
+        "table 1 8ball 9ft 1 waiting empty Ann empty - 0",
+        "table 1 8ball 9ft 1 dancing empty - empty - 0",
+        "table 1 8ball 9ft 1 waiting player %2 empty - 0",
+        "table 1 8ball 9ft 1 waiting empty - empty - -1",
+        "player Ann 0 1",
+        "record-end 1 3 123",
+        "record-end 1 3 FEDCBA9876543210",
+        "action 1 0 fedcba9876543210 choose play-on",
+        "action 1 1 fedcba9876543210 fly away",
+        "seat 1 0 empty -",
+        "chat 1 Ann",
+        "aim 1 1 0 1 0",
+        "record 1",
+    };
+    for (const std::string& line : bad)
+        CHECK(server_refusal(line) == ErrorCode::syntax);
+}

@@ -1,0 +1,382 @@
+// The hall's server through real Unix sockets in a temporary folder, run in-process on a
+// thread: whole games played by scripted clients and by the computer, a spectator who joins
+// late, and the faults the issue lists. Every wait is bounded (kWait); the server's thread is
+// stopped and joined by RunningServer whatever way a test ends.
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <string>
+#include <termpool/match.hpp>
+#include <thread>
+#include <variant>
+#include <vector>
+
+#include "hall/client.hpp"
+#include "hall/hall_state.hpp"
+#include "hall/server.hpp"
+#include "temp_dir.hpp"
+
+using namespace termpool;
+using namespace termpool::hall;
+using namespace std::chrono_literals;
+
+namespace {
+
+constexpr auto kWait = 5000ms;
+
+// A server on `dir`/hall.sock, serving on a thread until destroyed.
+class RunningServer {
+public:
+    RunningServer(const std::string& dir, ServerOptions options = {}) {
+        options.socket_path = dir + "/hall.sock";
+        options.state_dir = dir;
+        server_ = std::make_unique<Server>(options);
+        const std::string problem = server_->open();
+        REQUIRE(problem == "");
+        thread_ = std::thread([this] { status_ = server_->run(); });
+    }
+    ~RunningServer() { stop(); }
+    RunningServer(const RunningServer&) = delete;
+    RunningServer& operator=(const RunningServer&) = delete;
+
+    void stop() {
+        if (thread_.joinable()) {
+            server_->stop();
+            thread_.join();
+        }
+        server_.reset(); // closes every connection, removes the socket file
+    }
+    Server& server() { return *server_; }
+
+private:
+    std::unique_ptr<Server> server_;
+    std::thread thread_;
+    int status_ = 0;
+};
+
+template <class T> bool is(const ServerMessage& m) {
+    return std::holds_alternative<T>(m);
+}
+
+HallClient connected(const std::string& dir, const std::string& name,
+                     const std::string& token = "") {
+    HallClient client;
+    REQUIRE(client.connect(dir + "/hall.sock") == "");
+    REQUIRE(client.hello(name, token, kWait) == "");
+    return client;
+}
+
+template <class T> T expect(HallClient& client) {
+    const auto m = client.wait_for(is<T>, kWait);
+    REQUIRE(m);
+    return std::get<T>(*m);
+}
+
+Error expect_error(HallClient& client) {
+    return expect<Error>(client);
+}
+
+int create_table(HallClient& client, GameType game = GameType::eight_ball, int race_to = 1) {
+    REQUIRE(client.send(Create{game, TableSize::seven_foot, race_to}));
+    return expect<Created>(client).table;
+}
+
+void sit(HallClient& client, int table, int seat) {
+    REQUIRE(client.send(Sit{table, seat}));
+    const auto end = expect<RecordEnd>(client);
+    CHECK(end.table == table);
+    REQUIRE(client.match(table));
+}
+
+// The move a computer of the easy level would make for whoever is to act.
+RecordedAction chosen_move(const Match& match) {
+    Match copy = match;
+    copy.seat_computer(copy.to_act(), Level::easy);
+    const auto move = copy.computer_move();
+    REQUIRE(move);
+    RecordedAction action;
+    action.kind = move->kind == Pending::place    ? RecordedAction::Kind::place
+                  : move->kind == Pending::choose ? RecordedAction::Kind::choose
+                                                  : RecordedAction::Kind::shot;
+    action.place = move->spot;
+    action.choice = move->choice;
+    action.strike = move->shot.strike;
+    action.call = move->shot.call;
+    return action;
+}
+
+// Waits until `client` has seen action `seq` of `table`.
+void await_action(HallClient& client, int table, std::size_t seq) {
+    const auto m = client.wait_for(
+        [&](const ServerMessage& m) {
+            const auto* a = std::get_if<ActionDone>(&m);
+            return a && a->table == table && a->seq == seq;
+        },
+        kWait);
+    REQUIRE(m);
+}
+
+// The seated player to act plays one move; every client in `all` sees it.
+void play_one(HallClient& p1, HallClient& p2, int table, std::vector<HallClient*> all) {
+    const Match& local = *p1.match(table);
+    const std::size_t seq = local.record().actions.size() + 1;
+    HallClient& actor = local.to_act() == 1 ? p1 : p2;
+    REQUIRE(actor.send(Act{chosen_move(*actor.match(table))}));
+    for (HallClient* client : all)
+        await_action(*client, table, seq);
+}
+
+std::uint64_t saved_hash(const std::string& dir, int table) {
+    std::vector<std::string> problems;
+    const auto tables = load_tables(dir, problems);
+    for (const std::string& problem : problems)
+        UNSCOPED_INFO(problem);
+    for (const SavedTable& stored : tables)
+        if (stored.number == table) {
+            auto replayed = Match::replay(stored.record);
+            REQUIRE(std::holds_alternative<Match>(replayed));
+            return std::get<Match>(replayed).state_hash();
+        }
+    FAIL("table not saved");
+    return 0;
+}
+
+bool still_serves(const std::string& dir) {
+    HallClient probe = connected(dir, "Probe");
+    probe.send(Ping{});
+    return probe.wait_for(is<Pong>, kWait).has_value();
+}
+
+} // namespace
+
+TEST_CASE("hall server: two clients play a whole game, a late spectator follows", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob Smith");
+    HallClient eve = connected(dir.path(), "Eve");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+
+    bool watching = false;
+    for (int step = 0; step < 400 && ann.match(table)->pending().kind != Pending::over; ++step) {
+        std::vector<HallClient*> all = {&ann, &bob};
+        if (watching)
+            all.push_back(&eve);
+        play_one(ann, bob, table, all);
+        if (step == 3) {
+            REQUIRE(eve.send(Watch{table}));
+            expect<RecordEnd>(eve);
+            watching = true;
+        }
+    }
+    REQUIRE(ann.match(table)->pending().kind == Pending::over);
+    REQUIRE(watching);
+    const std::uint64_t hash = ann.match(table)->state_hash();
+    CHECK(bob.match(table)->state_hash() == hash);
+    REQUIRE(eve.match(table));
+    CHECK(eve.match(table)->state_hash() == hash);
+    CHECK(ann.mismatches() + bob.mismatches() + eve.mismatches() == 0);
+    CHECK(ann.match(table)->record().names[1] == "Bob Smith");
+    CHECK(saved_hash(dir.path(), table) == hash);
+}
+
+TEST_CASE("hall server: the computer plays both seats on the worker pool", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient eve = connected(dir.path(), "Eve");
+    const int table = create_table(eve, GameType::nine_ball);
+    REQUIRE(eve.send(Watch{table}));
+    expect<RecordEnd>(eve);
+    REQUIRE(eve.send(SeatComputer{1, Level::easy}));
+    REQUIRE(eve.send(SeatComputer{2, Level::easy}));
+    for (int step = 0; step < 400 && eve.match(table)->pending().kind != Pending::over; ++step)
+        await_action(eve, table, eve.match(table)->record().actions.size() + 1);
+    REQUIRE(eve.match(table)->pending().kind == Pending::over);
+    CHECK(eve.mismatches() == 0);
+    CHECK(saved_hash(dir.path(), table) == eve.match(table)->state_hash());
+}
+
+TEST_CASE("hall server: bad input gets an error, the server goes on", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+
+    SECTION("garbage bytes") {
+        HallClient client = connected(dir.path(), "Ann");
+        client.send_raw("\xff\xfe\x01 garbage\n");
+        CHECK(expect_error(client).code == ErrorCode::syntax);
+        client.send(Ping{});
+        CHECK(client.wait_for(is<Pong>, kWait));
+    }
+    SECTION("before hello") {
+        HallClient client;
+        REQUIRE(client.connect(dir.path() + "/hall.sock") == "");
+        client.send(Ping{});
+        CHECK(expect_error(client).code == ErrorCode::hello_first);
+    }
+    SECTION("an oversized line ends the connection") {
+        HallClient client = connected(dir.path(), "Ann");
+        client.send_raw("chat " + std::string(5000, 'x'));
+        CHECK(expect_error(client).code == ErrorCode::too_long);
+        CHECK_FALSE(client.wait_for(is<Pong>, kWait));
+        CHECK(client.closed());
+    }
+    SECTION("a wrong protocol version ends the connection") {
+        HallClient client;
+        REQUIRE(client.connect(dir.path() + "/hall.sock") == "");
+        client.send_raw("hello 2 - Ann\n");
+        CHECK(expect_error(client).code == ErrorCode::version);
+        CHECK_FALSE(client.wait_for(is<Pong>, kWait));
+        CHECK(client.closed());
+    }
+    SECTION("repeated errors end the connection") {
+        HallClient client = connected(dir.path(), "Ann");
+        for (int i = 0; i < 10; ++i)
+            client.send_raw("nonsense\n");
+        client.send(Ping{});
+        CHECK_FALSE(client.wait_for(is<Pong>, kWait));
+        CHECK(client.closed());
+    }
+    CHECK(still_serves(dir.path()));
+}
+
+TEST_CASE("hall server: an out-of-turn action is refused and changes nothing", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+    REQUIRE(ann.match(table)->to_act() == 1);
+    const std::uint64_t before = ann.match(table)->state_hash();
+
+    REQUIRE(bob.send(Act{chosen_move(*bob.match(table))}));
+    const Error error = expect_error(bob);
+    CHECK(error.code == ErrorCode::refused);
+    CHECK(error.text == match_error_text(MatchError::wrong_player));
+    // A spectator may not play either, nor may anyone chat twice in a second.
+    bob.send(Chat{"hi"});
+    expect<ChatShown>(ann);
+    bob.send(Chat{"again"});
+    CHECK(expect_error(bob).code == ErrorCode::rate);
+
+    // The game is as it was: the next action is still action 1, and Ann's.
+    play_one(ann, bob, table, {&ann, &bob});
+    CHECK(ann.match(table)->record().actions.size() == 1);
+    CHECK(ann.match(table)->state_hash() != before);
+    CHECK(bob.match(table)->state_hash() == ann.match(table)->state_hash());
+}
+
+TEST_CASE("hall server: a player who drops keeps the seat and takes it back", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+    for (int i = 0; i < 2; ++i)
+        play_one(ann, bob, table, {&ann, &bob});
+    const std::string token = ann.token();
+    ann.disconnect();
+
+    const auto away = bob.wait_for(
+        [](const ServerMessage& m) {
+            const auto* s = std::get_if<SeatChange>(&m);
+            return s && s->seat == 1 && s->view.kind == SeatKind::away;
+        },
+        kWait);
+    REQUIRE(away);
+
+    // Someone else cannot take it; its owner can.
+    HallClient mallory = connected(dir.path(), "Mallory");
+    mallory.send(Sit{table, 1});
+    CHECK(expect_error(mallory).code == ErrorCode::seat_taken);
+
+    HallClient again;
+    REQUIRE(again.connect(dir.path() + "/hall.sock") == "");
+    REQUIRE(again.hello("Ann", token, kWait) == "");
+    const Yours yours = expect<Yours>(again);
+    CHECK(yours.table == table);
+    CHECK(yours.seat == 1);
+    sit(again, table, 1);
+    CHECK(again.match(table)->state_hash() == bob.match(table)->state_hash());
+    for (int i = 0; i < 2; ++i)
+        play_one(again, bob, table, {&again, &bob});
+    CHECK(again.match(table)->state_hash() == bob.match(table)->state_hash());
+}
+
+TEST_CASE("hall server: a client that stops reading is disconnected", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    ServerOptions options;
+    options.output_limit = 64 * 1024;
+    RunningServer running(dir.path(), options);
+    HallClient ann = connected(dir.path(), "Ann");
+    const int table = create_table(ann);
+    ann.send(Watch{table});
+    // Each sync asks for the whole record; never read, they pile up past the bound.
+    std::string syncs;
+    for (int i = 0; i < 4000; ++i)
+        syncs += "sync\n";
+    ann.send_raw(syncs);
+    // Read everything: the connection must end (the server closed it), within the bound.
+    const auto end = std::chrono::steady_clock::now() + kWait;
+    while (!ann.closed() && std::chrono::steady_clock::now() < end)
+        ann.receive(100ms);
+    CHECK(ann.closed());
+    CHECK(still_serves(dir.path()));
+}
+
+TEST_CASE("hall server: a thousand connects and disconnects", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    ServerOptions options;
+    options.max_clients = 8; // every closed connection must be freed for the next
+    RunningServer running(dir.path(), options);
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < 1000; ++i) {
+        HallClient client;
+        REQUIRE(client.connect(dir.path() + "/hall.sock") == "");
+        if (i % 2 == 0)
+            REQUIRE(client.hello("Guest", "", kWait) == "");
+    }
+    CHECK(std::chrono::steady_clock::now() - start < 30s);
+    HallClient last = connected(dir.path(), "Last");
+    // The lobby lists only who is connected.
+    int players = 0;
+    for (auto m = last.receive(kWait); m && !is<LobbyEnd>(*m); m = last.receive(kWait))
+        players += is<PlayerView>(*m) ? 1 : 0;
+    CHECK(players == 1);
+}
+
+TEST_CASE("hall server: a restart restores the tables and the seats", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    std::string ann_token;
+    std::string bob_token;
+    std::uint64_t hash = 0;
+    int table = 0;
+    {
+        RunningServer running(dir.path());
+        HallClient ann = connected(dir.path(), "Ann");
+        HallClient bob = connected(dir.path(), "Bob");
+        table = create_table(ann);
+        sit(ann, table, 1);
+        sit(bob, table, 2);
+        for (int i = 0; i < 3; ++i)
+            play_one(ann, bob, table, {&ann, &bob});
+        hash = ann.match(table)->state_hash();
+        ann_token = ann.token();
+        bob_token = bob.token();
+        running.stop(); // as SIGTERM does: the clients are still connected
+    }
+    RunningServer running(dir.path());
+    CHECK(running.server().table_count() == 1);
+    HallClient ann = connected(dir.path(), "Ann", ann_token);
+    HallClient bob = connected(dir.path(), "Bob", bob_token);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+    CHECK(ann.match(table)->state_hash() == hash);
+    play_one(ann, bob, table, {&ann, &bob});
+    CHECK(bob.match(table)->state_hash() == ann.match(table)->state_hash());
+    CHECK(ann.match(table)->record().actions.size() == 4);
+}
