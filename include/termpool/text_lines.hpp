@@ -4,6 +4,8 @@
 /// file) read their input the same way: numbered lines, `#` comments, whitespace-separated
 /// fields.
 
+#include <cstddef>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -24,5 +26,9 @@ std::string_view strip_comment(std::string_view line);
 
 /// The fields of `line`, separated by runs of blanks (space, tab, CR, VT, FF).
 std::vector<std::string_view> split_fields(std::string_view line);
+
+/// The number of characters (code points) of `text` when it is valid UTF-8 without control
+/// characters (C0, DEL, C1); nothing otherwise. Names and chat lines must pass it.
+std::optional<std::size_t> printable_characters(std::string_view text);
 
 } // namespace termpool

@@ -301,34 +301,8 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
 }
 
 bool valid_player_name(std::string_view name) {
-    if (name.empty() || name.size() > max_player_name_bytes || name.front() == ' ' ||
-        name.back() == ' ')
-        return false;
-    for (std::size_t i = 0; i < name.size();) {
-        const auto byte = static_cast<unsigned char>(name[i]);
-        // The sequence length from the lead byte; overlong forms and surrogates are refused.
-        const std::size_t length = byte < 0x80                   ? 1
-                                   : byte >= 0xC2 && byte < 0xE0 ? 2
-                                   : byte >= 0xE0 && byte < 0xF0 ? 3
-                                   : byte >= 0xF0 && byte < 0xF5 ? 4
-                                                                 : 0;
-        if (length == 0 || i + length > name.size())
-            return false;
-        char32_t code = length == 1 ? byte : byte & (0x7F >> length);
-        for (std::size_t k = 1; k < length; ++k) {
-            const auto next = static_cast<unsigned char>(name[i + k]);
-            if ((next & 0xC0) != 0x80)
-                return false;
-            code = (code << 6) | (next & 0x3F);
-        }
-        const char32_t lowest[] = {0, 0, 0x80, 0x800, 0x10000};
-        if (code < lowest[length] || code > 0x10FFFF || (code >= 0xD800 && code < 0xE000))
-            return false;
-        if (code < 0x20 || (code >= 0x7F && code < 0xA0))
-            return false;
-        i += length;
-    }
-    return true;
+    return !name.empty() && name.size() <= max_player_name_bytes && name.front() != ' ' &&
+           name.back() != ' ' && printable_characters(name).has_value();
 }
 
 std::variant<RecordedAction, RecordError> parse_action(std::string_view line) {

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <termpool/match.hpp>
+#include <termpool/text_lines.hpp>
 #include <termpool/text_numbers.hpp>
 #include <vector>
 
@@ -346,33 +347,8 @@ std::optional<std::string> decode_field(std::string_view field) {
 }
 
 bool valid_chat_text(std::string_view text) {
-    std::size_t chars = 0;
-    for (std::size_t i = 0; i < text.size();) {
-        const auto byte = static_cast<unsigned char>(text[i]);
-        const std::size_t length = byte < 0x80                   ? 1
-                                   : byte >= 0xC2 && byte < 0xE0 ? 2
-                                   : byte >= 0xE0 && byte < 0xF0 ? 3
-                                   : byte >= 0xF0 && byte < 0xF5 ? 4
-                                                                 : 0;
-        if (length == 0 || i + length > text.size())
-            return false;
-        std::uint32_t point = length == 1 ? byte : byte & (0x7f >> length);
-        for (std::size_t k = 1; k < length; ++k) {
-            const auto next = static_cast<unsigned char>(text[i + k]);
-            if ((next & 0xC0) != 0x80)
-                return false;
-            point = (point << 6) | (next & 0x3f);
-        }
-        // Overlong forms, surrogates and code points past U+10FFFF are not UTF-8.
-        static constexpr std::uint32_t least[] = {0, 0, 0x80, 0x800, 0x10000};
-        if (point < least[length] || (point >= 0xD800 && point <= 0xDFFF) || point > 0x10FFFF)
-            return false;
-        if (point < 0x20 || (point >= 0x7f && point <= 0x9f))
-            return false;
-        i += length;
-        ++chars;
-    }
-    return chars >= 1 && chars <= max_chat_chars;
+    const std::optional<std::size_t> chars = printable_characters(text);
+    return chars && *chars >= 1 && *chars <= max_chat_chars;
 }
 
 std::string format_client(const ClientMessage& message) {
