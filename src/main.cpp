@@ -38,6 +38,8 @@ void print_usage(std::ostream& out) {
            "                        computer against computer\n"
            "  hall serve [--socket PATH] [--state DIR] [--max-clients N] [--max-tables N]\n"
            "                        run the pool hall's server (friends play over SSH)\n"
+           "  hall bench [--tables N] [--seconds S] [--think MS] [--seed S]\n"
+           "                        time the hall: tables of computers through its server\n"
            "  COMMAND --help        the options of one command\n";
 }
 

@@ -25,7 +25,10 @@ constexpr const char* kUsage =
     "                   /tmp/termpool-UID/hall.sock)\n"
     "  --state DIR      where tables are saved (default $XDG_STATE_HOME/termpool/hall)\n"
     "  --max-clients N  connections at once (default 256)\n"
-    "  --max-tables N   tables at once (default 100)\n";
+    "  --max-tables N   tables at once (default 100)\n"
+    "       termpool hall bench [--tables N] [--seconds S] [--think MS] [--seed S]\n"
+    "  bench            play N tables of computers through a private server; print actions a\n"
+    "                   second, the action round trip, the server's CPU and memory\n";
 
 // The server a signal stops. A lock-free atomic pointer is safe to read in a handler, and
 // Server::stop only writes a byte to a pipe.
@@ -102,7 +105,7 @@ int serve(const std::vector<std::string>& args) {
 
 int hall_command(const std::vector<std::string>& args) {
     if (args.empty())
-        return usage_error("which hall command? (serve)");
+        return usage_error("which hall command? (serve or bench)");
     if (args.front() == "--help" || args.front() == "-h") {
         std::cout << kUsage;
         return 0;
