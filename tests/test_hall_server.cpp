@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hall/client.hpp"
+#include "hall/hall_state.hpp"
 #include "hall/server.hpp"
 #include "hall_helpers.hpp"
 #include "temp_dir.hpp"
@@ -221,6 +222,25 @@ TEST_CASE("hall server: a player who drops keeps the seat and takes it back", "[
     for (int i = 0; i < 2; ++i)
         play_one(again, bob, table, {&again, &bob});
     CHECK(again.match(table)->state_hash() == bob.match(table)->state_hash());
+}
+
+TEST_CASE("hall server: a table whose creator goes without sitting closes", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    {
+        HallClient ann = connected(dir.path(), "Ann");
+        create_table(ann);
+        CHECK(running.server().table_count() == 1);
+    }
+    // Nobody sat, nobody can come back to it: were it kept, such tables would fill the hall.
+    HallClient bob = connected(dir.path(), "Bob");
+    int tables = 0;
+    for (auto m = bob.receive(kWait); m && !is<LobbyEnd>(*m); m = bob.receive(kWait))
+        tables += is<TableView>(*m) ? 1 : 0;
+    CHECK(tables == 0);
+    CHECK(running.server().table_count() == 0);
+    std::vector<std::string> problems;
+    CHECK(load_tables(dir.path(), problems).empty());
 }
 
 TEST_CASE("hall server: a client that stops reading is disconnected", "[hall]") {
