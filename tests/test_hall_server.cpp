@@ -13,15 +13,15 @@
 #include "hall/client.hpp"
 #include "hall/hall_state.hpp"
 #include "hall/server.hpp"
+#include "hall_helpers.hpp"
 #include "temp_dir.hpp"
 
 using namespace termpool;
 using namespace termpool::hall;
+using namespace termpool::test;
 using namespace std::chrono_literals;
 
 namespace {
-
-constexpr auto kWait = 5000ms;
 
 // A server on `dir`/hall.sock, serving on a thread until destroyed.
 class RunningServer {
@@ -53,91 +53,8 @@ private:
     int status_ = 0;
 };
 
-template <class T> bool is(const ServerMessage& m) {
-    return std::holds_alternative<T>(m);
-}
-
-HallClient connected(const std::string& dir, const std::string& name,
-                     const std::string& token = "") {
-    HallClient client;
-    REQUIRE(client.connect(dir + "/hall.sock") == "");
-    REQUIRE(client.hello(name, token, kWait) == "");
-    return client;
-}
-
-template <class T> T expect(HallClient& client) {
-    const auto m = client.wait_for(is<T>, kWait);
-    REQUIRE(m);
-    return std::get<T>(*m);
-}
-
 Error expect_error(HallClient& client) {
     return expect<Error>(client);
-}
-
-int create_table(HallClient& client, GameType game = GameType::eight_ball, int race_to = 1) {
-    REQUIRE(client.send(Create{game, TableSize::seven_foot, race_to}));
-    return expect<Created>(client).table;
-}
-
-void sit(HallClient& client, int table, int seat) {
-    REQUIRE(client.send(Sit{table, seat}));
-    const auto end = expect<RecordEnd>(client);
-    CHECK(end.table == table);
-    REQUIRE(client.match(table));
-}
-
-// The move a computer of the easy level would make for whoever is to act.
-RecordedAction chosen_move(const Match& match) {
-    Match copy = match;
-    copy.seat_computer(copy.to_act(), Level::easy);
-    const auto move = copy.computer_move();
-    REQUIRE(move);
-    RecordedAction action;
-    action.kind = move->kind == Pending::place    ? RecordedAction::Kind::place
-                  : move->kind == Pending::choose ? RecordedAction::Kind::choose
-                                                  : RecordedAction::Kind::shot;
-    action.place = move->spot;
-    action.choice = move->choice;
-    action.strike = move->shot.strike;
-    action.call = move->shot.call;
-    return action;
-}
-
-// Waits until `client` has seen action `seq` of `table`.
-void await_action(HallClient& client, int table, std::size_t seq) {
-    const auto m = client.wait_for(
-        [&](const ServerMessage& m) {
-            const auto* a = std::get_if<ActionDone>(&m);
-            return a && a->table == table && a->seq == seq;
-        },
-        kWait);
-    REQUIRE(m);
-}
-
-// The seated player to act plays one move; every client in `all` sees it.
-void play_one(HallClient& p1, HallClient& p2, int table, std::vector<HallClient*> all) {
-    const Match& local = *p1.match(table);
-    const std::size_t seq = local.record().actions.size() + 1;
-    HallClient& actor = local.to_act() == 1 ? p1 : p2;
-    REQUIRE(actor.send(Act{chosen_move(*actor.match(table))}));
-    for (HallClient* client : all)
-        await_action(*client, table, seq);
-}
-
-std::uint64_t saved_hash(const std::string& dir, int table) {
-    std::vector<std::string> problems;
-    const auto tables = load_tables(dir, problems);
-    for (const std::string& problem : problems)
-        UNSCOPED_INFO(problem);
-    for (const SavedTable& stored : tables)
-        if (stored.number == table) {
-            auto replayed = Match::replay(stored.record);
-            REQUIRE(std::holds_alternative<Match>(replayed));
-            return std::get<Match>(replayed).state_hash();
-        }
-    FAIL("table not saved");
-    return 0;
 }
 
 bool still_serves(const std::string& dir) {
@@ -305,6 +222,25 @@ TEST_CASE("hall server: a player who drops keeps the seat and takes it back", "[
     for (int i = 0; i < 2; ++i)
         play_one(again, bob, table, {&again, &bob});
     CHECK(again.match(table)->state_hash() == bob.match(table)->state_hash());
+}
+
+TEST_CASE("hall server: a table whose creator goes without sitting closes", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    {
+        HallClient ann = connected(dir.path(), "Ann");
+        create_table(ann);
+        CHECK(running.server().table_count() == 1);
+    }
+    // Nobody sat, nobody can come back to it: were it kept, such tables would fill the hall.
+    HallClient bob = connected(dir.path(), "Bob");
+    int tables = 0;
+    for (auto m = bob.receive(kWait); m && !is<LobbyEnd>(*m); m = bob.receive(kWait))
+        tables += is<TableView>(*m) ? 1 : 0;
+    CHECK(tables == 0);
+    CHECK(running.server().table_count() == 0);
+    std::vector<std::string> problems;
+    CHECK(load_tables(dir.path(), problems).empty());
 }
 
 TEST_CASE("hall server: a client that stops reading is disconnected", "[hall]") {

@@ -60,6 +60,7 @@ struct Table {
     SeatSlot seats[2];
     std::uint64_t ticket = 0; // moves on with each search asked, so stale answers are dropped
     bool searching = false;
+    int creator = 0; // the client who made it (ids are not reused); 0 for a restored table
 };
 
 std::variant<Match, MatchError> new_match(const Create& create, std::uint64_t seed) {
@@ -228,7 +229,7 @@ struct Server::State {
                 Match::replay(stored.record, std::numeric_limits<std::size_t>::max(), {}, random());
             if (!std::holds_alternative<Match>(replayed))
                 continue;
-            Table table{stored.number, std::move(std::get<Match>(replayed)), {}, 0, false};
+            Table table{stored.number, std::move(std::get<Match>(replayed)), {}, 0, false, 0};
             for (int s = 0; s < 2; ++s) {
                 table.seats[s].computer = stored.record.computers[s].has_value();
                 table.seats[s].token_hash = stored.seat_tokens[s];
@@ -423,8 +424,9 @@ struct Server::State {
         auto started_match = new_match(create, random());
         if (const MatchError* e = std::get_if<MatchError>(&started_match))
             return send_error(client, ErrorCode::refused, match_error_text(*e));
-        tables.emplace(number,
-                       Table{number, std::move(std::get<Match>(started_match)), {}, 0, false});
+        tables.emplace(
+            number,
+            Table{number, std::move(std::get<Match>(started_match)), {}, 0, false, client.id});
         table_count = tables.size();
         save(tables.at(number));
         send(client, Created{number});
@@ -647,8 +649,14 @@ struct Server::State {
             const int number = client.table;
             leave_table(client, true);
             clients.erase(id);
-            if (auto found = tables.find(number); found != tables.end())
-                forget_if_idle(found->second);
+            // Its table, and any it created: one it never sat at would otherwise stay forever.
+            std::vector<int> numbers = {number};
+            for (const auto& [n, table] : tables)
+                if (table.creator == id)
+                    numbers.push_back(n);
+            for (const int n : numbers)
+                if (auto found = tables.find(n); found != tables.end())
+                    forget_if_idle(found->second);
             lobby_dirty = true;
         }
     }

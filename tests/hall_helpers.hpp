@@ -1,0 +1,120 @@
+#pragma once
+// Scripted hall players for the tests: connect and say hello, wait for one kind of message,
+// sit, and play the easy computer's move for whoever is to act. Every wait is bounded (kWait).
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <termpool/match.hpp>
+#include <variant>
+#include <vector>
+
+#include "hall/client.hpp"
+#include "hall/hall_state.hpp"
+
+namespace termpool::test {
+
+/// The longest any one answer may take.
+inline constexpr std::chrono::milliseconds kWait{5000};
+
+/// True when `m` is a T.
+template <class T> bool is(const hall::ServerMessage& m) {
+    return std::holds_alternative<T>(m);
+}
+
+/// A client connected to `dir`/hall.sock that said hello (with `token`, or asking a new one).
+inline hall::HallClient connected(const std::string& dir, const std::string& name,
+                                  const std::string& token = "") {
+    hall::HallClient client;
+    REQUIRE(client.connect(dir + "/hall.sock") == "");
+    REQUIRE(client.hello(name, token, kWait) == "");
+    return client;
+}
+
+/// The next T `client` receives; the test stops when none comes in time.
+template <class T> T expect(hall::HallClient& client) {
+    const auto m = client.wait_for(is<T>, kWait);
+    REQUIRE(m);
+    return std::get<T>(*m);
+}
+
+/// A new table of `game`, on the 7 ft table; its number. The test stops on a refusal.
+inline int create_table(hall::HallClient& client, GameType game = GameType::eight_ball,
+                        int race_to = 1) {
+    REQUIRE(client.send(hall::Create{game, TableSize::seven_foot, race_to}));
+    const auto m = client.wait_for(
+        [](const hall::ServerMessage& m) { return is<hall::Created>(m) || is<hall::Error>(m); },
+        kWait);
+    REQUIRE(m);
+    if (const auto* error = std::get_if<hall::Error>(&*m))
+        FAIL("create refused: " << hall::error_code_name(error->code) << " " << error->text);
+    return std::get<hall::Created>(*m).table;
+}
+
+/// `client` sits at `seat` of `table` and has its record; the record's end.
+inline hall::RecordEnd sit(hall::HallClient& client, int table, int seat) {
+    REQUIRE(client.send(hall::Sit{table, seat}));
+    const auto end = expect<hall::RecordEnd>(client);
+    CHECK(end.table == table);
+    REQUIRE(client.match(table));
+    return end;
+}
+
+/// The move a computer of the easy level would make for whoever is to act.
+inline RecordedAction chosen_move(const Match& match) {
+    Match copy = match;
+    copy.seat_computer(copy.to_act(), Level::easy);
+    const auto move = copy.computer_move();
+    REQUIRE(move);
+    RecordedAction action;
+    action.kind = move->kind == Pending::place    ? RecordedAction::Kind::place
+                  : move->kind == Pending::choose ? RecordedAction::Kind::choose
+                                                  : RecordedAction::Kind::shot;
+    action.place = move->spot;
+    action.choice = move->choice;
+    action.strike = move->shot.strike;
+    action.call = move->shot.call;
+    return action;
+}
+
+/// Waits until `client` has seen action `seq` of `table`.
+inline void await_action(hall::HallClient& client, int table, std::size_t seq) {
+    const auto m = client.wait_for(
+        [&](const hall::ServerMessage& m) {
+            const auto* a = std::get_if<hall::ActionDone>(&m);
+            return a && a->table == table && a->seq == seq;
+        },
+        kWait);
+    REQUIRE(m);
+}
+
+/// The seated player to act plays one move; every client in `all` sees it.
+inline void play_one(hall::HallClient& p1, hall::HallClient& p2, int table,
+                     const std::vector<hall::HallClient*>& all) {
+    const Match& local = *p1.match(table);
+    const std::size_t seq = local.record().actions.size() + 1;
+    hall::HallClient& actor = local.to_act() == 1 ? p1 : p2;
+    REQUIRE(actor.send(hall::Act{chosen_move(*actor.match(table))}));
+    for (hall::HallClient* client : all)
+        await_action(*client, table, seq);
+}
+
+/// The state hash of table `table` as saved in `dir` (its record replayed).
+inline std::uint64_t saved_hash(const std::string& dir, int table) {
+    std::vector<std::string> problems;
+    const auto tables = hall::load_tables(dir, problems);
+    for (const std::string& problem : problems)
+        UNSCOPED_INFO(problem);
+    for (const hall::SavedTable& stored : tables)
+        if (stored.number == table) {
+            auto replayed = Match::replay(stored.record);
+            REQUIRE(std::holds_alternative<Match>(replayed));
+            return std::get<Match>(replayed).state_hash();
+        }
+    FAIL("table not saved");
+    return 0;
+}
+
+} // namespace termpool::test
