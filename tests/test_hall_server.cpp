@@ -2,6 +2,7 @@
 // thread: whole games played by scripted clients and by the computer, a spectator who joins
 // late, and the faults the issue lists. Every wait is bounded (kWait); the server's thread is
 // stopped and joined by RunningServer whatever way a test ends.
+#include <array>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <string>
@@ -379,4 +380,36 @@ TEST_CASE("hall server: a restart restores the tables and the seats", "[hall]") 
     play_one(ann, bob, table, {&ann, &bob});
     CHECK(bob.match(table)->state_hash() == ann.match(table)->state_hash());
     CHECK(ann.match(table)->record().actions.size() == 4);
+}
+
+// The seat tokens table `number` is saved with.
+std::array<std::string, 2> saved_tokens(const std::string& dir, int number) {
+    std::vector<std::string> problems;
+    for (const SavedTable& stored : load_tables(dir, problems))
+        if (stored.number == number)
+            return {stored.seat_tokens[0], stored.seat_tokens[1]};
+    FAIL("table not saved");
+    return {};
+}
+
+TEST_CASE("hall server: sitting again in one's own seat changes nothing", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(ann, table, 1); // the record comes again; the seat stays Ann's
+    CHECK(ann.match(table)->record().names[0] == "Ann");
+    CHECK(saved_tokens(dir.path(), table)[0] == seat_token_hash(ann.token()));
+    bob.send(Sit{table, 1});
+    CHECK(expect_error(bob).code == ErrorCode::seat_taken);
+
+    // Ann again, from a second connection: she may not hold both seats.
+    HallClient again = connected(dir.path(), "Ann", ann.token());
+    again.send(Sit{table, 2});
+    REQUIRE(again.wait_for([](const ServerMessage& m) { return is<Error>(m) || is<RecordEnd>(m); },
+                           kWait));
+    const auto tokens = saved_tokens(dir.path(), table);
+    CHECK_FALSE((tokens[0] == tokens[1] && !tokens[0].empty()));
 }

@@ -438,13 +438,24 @@ struct Server::State {
             return send_error(client, ErrorCode::no_table, "no such table");
         Table& table = found->second;
         SeatSlot& slot = table.seats[sit.seat - 1];
-        const bool mine = slot.token_hash == client.token_hash;
-        if (slot.computer || (!slot.token_hash.empty() && !mine))
+        // Sitting again where one sits changes nothing (a leave first would free the seat
+        // before the first shot): the record comes again, as after a sync.
+        if (client.table == sit.table && client.seat == sit.seat)
+            return join(client, table, sit.seat);
+        if (slot.computer || (!slot.token_hash.empty() && slot.token_hash != client.token_hash))
             return send_error(client, ErrorCode::seat_taken, "that seat is taken");
-        if (!mine && over(table))
+        if (slot.token_hash != client.token_hash && over(table))
             return send_error(client, ErrorCode::refused, "the match is over");
+        // One person holds one seat of a table: the other seat stays theirs unless they sit in
+        // it now and a leave frees it (before the first action).
+        const SeatSlot& other = table.seats[2 - sit.seat];
+        const bool moving_over = client.table == sit.table && client.seat == 3 - sit.seat &&
+                                 !started(table) && !over(table);
+        if (other.token_hash == client.token_hash && !moving_over)
+            return send_error(client, ErrorCode::refused, "you hold the other seat of this table");
         if (client.table != 0)
             leave_table(client, false, sit.table); // never closes this table
+        const bool mine = slot.token_hash == client.token_hash;
         slot.client = client.id;
         if (!mine) {
             slot.token_hash = client.token_hash;
