@@ -5,7 +5,10 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <ctime>
+#include <fcntl.h>
 #include <string>
+#include <sys/stat.h>
 #include <termpool/match.hpp>
 #include <thread>
 #include <variant>
@@ -382,13 +385,12 @@ TEST_CASE("hall server: a restart restores the tables and the seats", "[hall]") 
     CHECK(ann.match(table)->record().actions.size() == 4);
 }
 
-// The seat tokens table `number` is saved with.
+// The seat tokens table `number` is saved with (none for a table not saved).
 std::array<std::string, 2> saved_tokens(const std::string& dir, int number) {
     std::vector<std::string> problems;
     for (const SavedTable& stored : load_tables(dir, problems))
         if (stored.number == number)
             return {stored.seat_tokens[0], stored.seat_tokens[1]};
-    FAIL("table not saved");
     return {};
 }
 
@@ -405,11 +407,85 @@ TEST_CASE("hall server: sitting again in one's own seat changes nothing", "[hall
     bob.send(Sit{table, 1});
     CHECK(expect_error(bob).code == ErrorCode::seat_taken);
 
-    // Ann again, from a second connection: she may not hold both seats.
+    // Ann again, from a second connection: she may not hold both seats (the table may be gone:
+    // her first connection gave way, and nobody else was at it).
     HallClient again = connected(dir.path(), "Ann", ann.token());
     again.send(Sit{table, 2});
     REQUIRE(again.wait_for([](const ServerMessage& m) { return is<Error>(m) || is<RecordEnd>(m); },
                            kWait));
     const auto tokens = saved_tokens(dir.path(), table);
     CHECK_FALSE((tokens[0] == tokens[1] && !tokens[0].empty()));
+}
+
+// Waits (at most kWait) until the server holds `count` tables.
+bool tables_become(RunningServer& running, std::size_t count) {
+    const auto end = std::chrono::steady_clock::now() + kWait;
+    while (running.server().table_count() != count && std::chrono::steady_clock::now() < end)
+        std::this_thread::sleep_for(5ms);
+    return running.server().table_count() == count;
+}
+
+TEST_CASE("hall server: a table nobody plays at goes", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+
+    SECTION("its creator disconnects before anyone came") {
+        HallClient ann = connected(dir.path(), "Ann");
+        create_table(ann);
+        CHECK(running.server().table_count() == 1);
+        ann.disconnect();
+        CHECK(tables_become(running, 0));
+    }
+    SECTION("the only player drops before the first action") {
+        HallClient ann = connected(dir.path(), "Ann");
+        sit(ann, create_table(ann), 1);
+        ann.disconnect();
+        CHECK(tables_become(running, 0));
+    }
+    SECTION("one token may have a few tables waiting") {
+        HallClient ann = connected(dir.path(), "Ann");
+        for (int i = 0; i < 3; ++i)
+            create_table(ann);
+        ann.send(Create{GameType::eight_ball, TableSize::nine_foot, 1});
+        CHECK(expect_error(ann).code == ErrorCode::full);
+        CHECK(running.server().table_count() == 3);
+    }
+    CHECK(still_serves(dir.path()));
+}
+
+TEST_CASE("hall server: an away seat is freed after away_limit", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    ServerOptions options;
+    options.away_limit = 300ms;
+    int table = 0;
+    {
+        RunningServer running(dir.path(), options);
+        HallClient ann = connected(dir.path(), "Ann");
+        HallClient bob = connected(dir.path(), "Bob");
+        table = create_table(ann);
+        sit(ann, table, 1);
+        sit(bob, table, 2);
+        play_one(ann, bob, table, {&ann, &bob});
+        ann.disconnect();
+        const auto seat_is = [&](SeatKind kind) {
+            return bob.wait_for(
+                [&](const ServerMessage& m) {
+                    const auto* s = std::get_if<SeatChange>(&m);
+                    return s && s->seat == 1 && s->view.kind == kind;
+                },
+                kWait);
+        };
+        REQUIRE(seat_is(SeatKind::away));
+        REQUIRE(seat_is(SeatKind::empty));
+        CHECK(saved_tokens(dir.path(), table)[0].empty());
+        // Bob goes away too; the server stops before his seat is due.
+        running.stop();
+    }
+    CHECK(saved_tokens(dir.path(), table)[1] != "");
+    // Restarted after his time was up (the file's time says when he left): the table is gone.
+    const timespec an_hour_ago[2] = {{std::time(nullptr) - 3600, 0},
+                                     {std::time(nullptr) - 3600, 0}};
+    REQUIRE(::utimensat(AT_FDCWD, table_path(dir.path(), table).c_str(), an_hour_ago, 0) == 0);
+    RunningServer running(dir.path(), options);
+    CHECK(running.server().table_count() == 0);
 }

@@ -5,13 +5,16 @@
 
 #include "hall/server.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <poll.h>
 #include <random>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/un.h>
 #include <termpool/match.hpp>
 #include <unistd.h>
@@ -52,6 +55,7 @@ struct SeatSlot {
     bool computer = false;
     std::optional<Strike> pending_aim; // the newest aim not yet forwarded
     std::optional<Clock::time_point> last_aim;
+    std::optional<Clock::time_point> away_since; // while the owner's token keeps it, unseated
 };
 
 struct Table {
@@ -60,6 +64,7 @@ struct Table {
     SeatSlot seats[2];
     std::uint64_t ticket = 0; // moves on with each search asked, so stale answers are dropped
     bool searching = false;
+    std::string creator; // the creator's token hash (empty for a restored table)
 };
 
 std::variant<Match, MatchError> new_match(const Create& create, std::uint64_t seed) {
@@ -228,19 +233,84 @@ struct Server::State {
                 Match::replay(stored.record, std::numeric_limits<std::size_t>::max(), {}, random());
             if (!std::holds_alternative<Match>(replayed))
                 continue;
-            Table table{stored.number, std::move(std::get<Match>(replayed)), {}, 0, false};
+            Table table{stored.number, std::move(std::get<Match>(replayed)), {}, 0, false, {}};
+            const auto away_since = file_changed(stored.number);
             for (int s = 0; s < 2; ++s) {
                 table.seats[s].computer = stored.record.computers[s].has_value();
-                table.seats[s].token_hash = stored.seat_tokens[s];
+                // Nobody is connected yet: a seat of a game not started is nobody's.
+                if (started(table)) {
+                    table.seats[s].token_hash = stored.seat_tokens[s];
+                    table.seats[s].away_since = away_since;
+                }
             }
             tables.emplace(stored.number, std::move(table));
         }
         for (const std::string& problem : problems)
             log("not restored: " + problem);
-        log("restored " + std::to_string(tables.size()) + " tables");
         table_count = tables.size();
+        expire_away(Clock::now());
+        std::vector<int> numbers;
+        for (const auto& [number, table] : tables)
+            numbers.push_back(number);
+        for (const int number : numbers)
+            forget_if_idle(tables.at(number));
+        log("restored " + std::to_string(tables.size()) + " tables");
         for (auto& [number, table] : tables)
             think(table);
+    }
+
+    // When table `number`'s file last changed, on the steady clock: a restored away seat went
+    // away then at the latest (the file is rewritten on every change of the table).
+    Clock::time_point file_changed(int number) const {
+        struct stat info {};
+        const auto now = Clock::now();
+        if (::stat(table_path(options.state_dir, number).c_str(), &info) != 0)
+            return now;
+        const auto changed = std::chrono::system_clock::from_time_t(info.st_mtim.tv_sec);
+        const auto age = std::chrono::system_clock::now() - changed;
+        return age > Clock::duration::zero()
+                   ? now - std::chrono::duration_cast<Clock::duration>(age)
+                   : now;
+    }
+
+    // Frees every away seat whose owner has been gone longer than away_limit; a table left
+    // with nobody goes.
+    void expire_away(Clock::time_point now) {
+        std::vector<int> emptied;
+        for (auto& [number, table] : tables)
+            for (int s = 1; s <= 2; ++s) {
+                SeatSlot& slot = table.seats[s - 1];
+                if (slot.token_hash.empty() || slot.client != 0 || !slot.away_since ||
+                    now - *slot.away_since < options.away_limit)
+                    continue;
+                log("table " + std::to_string(number) + ": seat " + std::to_string(s) +
+                    " was away too long: freed");
+                slot.token_hash.clear();
+                slot.away_since.reset();
+                table.match.rename(s, default_name(s));
+                save(table);
+                seat_changed(table, s);
+                emptied.push_back(number);
+            }
+        for (const int number : emptied)
+            if (auto found = tables.find(number); found != tables.end())
+                forget_if_idle(found->second);
+    }
+
+    // Milliseconds until the next away seat is due to be freed, -1 for none.
+    int away_timeout(Clock::time_point now) const {
+        int timeout = -1;
+        for (const auto& [number, table] : tables)
+            for (const SeatSlot& slot : table.seats)
+                if (!slot.token_hash.empty() && slot.client == 0 && slot.away_since) {
+                    const auto due = *slot.away_since + options.away_limit - now;
+                    const auto ms = std::clamp<long long>(
+                        std::chrono::ceil<std::chrono::milliseconds>(due).count(), 0,
+                        std::numeric_limits<int>::max());
+                    timeout = timeout < 0 ? static_cast<int>(ms)
+                                          : std::min(timeout, static_cast<int>(ms));
+                }
+        return timeout;
     }
 
     // --- the game --------------------------------------------------------------------------
@@ -333,9 +403,10 @@ struct Server::State {
         return found == tables.end() ? nullptr : &found->second;
     }
 
-    // `client` leaves its table: by `leave` (or moving on), or because its connection dropped.
+    // `client` leaves its table: by `leave` (or moving on), or because its connection dropped
+    // (both are the same to the seat).
     // The table closes if idle, unless it is `staying` (the client moves to another seat of it).
-    void leave_table(Client& client, bool dropped, int staying = 0) {
+    void leave_table(Client& client, int staying = 0) {
         Table* table = table_of(client);
         const int seat = client.seat;
         client.table = 0;
@@ -347,11 +418,14 @@ struct Server::State {
             SeatSlot& slot = table->seats[seat - 1];
             slot.client = 0;
             slot.pending_aim.reset();
-            // A seat in a game under way waits for its owner; before the first action, or
-            // once the match is over, a leave frees it.
-            if ((!started(*table) && !dropped) || over(*table)) {
+            // A seat in a game under way waits for its owner (for away_limit at most); before
+            // the first action, or once the match is over, a leave or a drop frees it, so
+            // that a table nobody plays at does not stay.
+            if (!started(*table) || over(*table)) {
                 slot.token_hash.clear();
                 table->match.rename(seat, default_name(seat));
+            } else {
+                slot.away_since = Clock::now();
             }
             save(*table);
             seat_changed(*table, seat);
@@ -397,7 +471,7 @@ struct Server::State {
         for (auto& [id, other] : clients)
             if (id != client.id && other.welcomed && other.token_hash == hash && !other.closing) {
                 send_and_close(other, ErrorCode::replaced, "you connected again elsewhere");
-                leave_table(other, true);
+                leave_table(other);
             }
         client.welcomed = true;
         client.token = std::move(token);
@@ -415,6 +489,12 @@ struct Server::State {
     void on_create(Client& client, const Create& create) {
         if (static_cast<int>(tables.size()) >= options.max_tables)
             return send_error(client, ErrorCode::full, "the hall has all the tables it takes");
+        const auto waiting = std::count_if(tables.begin(), tables.end(), [&](const auto& entry) {
+            return entry.second.creator == client.token_hash && !started(entry.second);
+        });
+        if (waiting >= options.max_waiting_tables)
+            return send_error(client, ErrorCode::full,
+                              "you have " + std::to_string(waiting) + " tables waiting already");
         int number = 1;
         while (tables.count(number))
             ++number;
@@ -423,8 +503,12 @@ struct Server::State {
         auto started_match = new_match(create, random());
         if (const MatchError* e = std::get_if<MatchError>(&started_match))
             return send_error(client, ErrorCode::refused, match_error_text(*e));
-        tables.emplace(number,
-                       Table{number, std::move(std::get<Match>(started_match)), {}, 0, false});
+        tables.emplace(number, Table{number,
+                                     std::move(std::get<Match>(started_match)),
+                                     {},
+                                     0,
+                                     false,
+                                     client.token_hash});
         table_count = tables.size();
         save(tables.at(number));
         send(client, Created{number});
@@ -454,9 +538,10 @@ struct Server::State {
         if (other.token_hash == client.token_hash && !moving_over)
             return send_error(client, ErrorCode::refused, "you hold the other seat of this table");
         if (client.table != 0)
-            leave_table(client, false, sit.table); // never closes this table
+            leave_table(client, sit.table); // never closes this table
         const bool mine = slot.token_hash == client.token_hash;
         slot.client = client.id;
+        slot.away_since.reset();
         if (!mine) {
             slot.token_hash = client.token_hash;
             table.match.rename(sit.seat, client.name);
@@ -471,7 +556,7 @@ struct Server::State {
         if (!tables.count(watch.table))
             return send_error(client, ErrorCode::no_table, "no such table");
         if (client.table != 0)
-            leave_table(client, false, watch.table);
+            leave_table(client, watch.table);
         join(client, tables.at(watch.table), 0);
     }
 
@@ -572,7 +657,7 @@ struct Server::State {
             const int number = client.table;
             if (number == 0)
                 return send_error(client, ErrorCode::no_table, "you are at no table");
-            leave_table(client, false);
+            leave_table(client);
             return send(client, Left{number});
         }
         if (const auto* m = std::get_if<Act>(&message))
@@ -656,12 +741,30 @@ struct Server::State {
         for (const int id : closed) {
             Client& client = clients.at(id);
             const int number = client.table;
-            leave_table(client, true);
+            const std::string token_hash = client.token_hash;
+            leave_table(client);
             clients.erase(id);
             if (auto found = tables.find(number); found != tables.end())
                 forget_if_idle(found->second);
+            forget_waiting_tables_of(token_hash);
             lobby_dirty = true;
         }
+    }
+
+    // A creator gone (and not connected again elsewhere) takes the tables they made and
+    // nobody came to: a table not started, nobody at it.
+    void forget_waiting_tables_of(const std::string& token_hash) {
+        if (token_hash.empty())
+            return;
+        for (const auto& [id, client] : clients)
+            if (client.token_hash == token_hash && !client.closing)
+                return;
+        std::vector<int> numbers;
+        for (const auto& [number, table] : tables)
+            if (table.creator == token_hash && !started(table))
+                numbers.push_back(number);
+        for (const int number : numbers)
+            forget_if_idle(tables.at(number));
     }
 
     std::string listen_on(const std::string& path) {
@@ -737,7 +840,13 @@ int Server::run() {
             ids.push_back(id);
         }
         // A lobby change left over from the last round (a connection dropped) goes out now.
-        const int timeout = s.lobby_dirty ? 0 : s.aim_timeout(Clock::now());
+        const auto now = Clock::now();
+        const int aim = s.aim_timeout(now);
+        const int away = s.away_timeout(now);
+        const int timeout = s.lobby_dirty ? 0
+                            : aim < 0     ? away
+                            : away < 0    ? aim
+                                          : std::min(aim, away);
         if (::poll(fds.data(), fds.size(), timeout) < 0 && errno != EINTR) {
             s.log(std::string("poll: ") + std::strerror(errno));
             break;
@@ -757,6 +866,7 @@ int Server::run() {
         }
         s.flush_aims(Clock::now());
         s.drop_closed();
+        s.expire_away(Clock::now());
         if (s.lobby_dirty) {
             s.lobby_dirty = false;
             for (auto& [id, client] : s.clients)

@@ -18,6 +18,15 @@ struct ServerOptions {
     std::string state_dir;   ///< where tables are saved and restored from; empty: nowhere
     int max_clients = 256;   ///< connections beyond this are told "full" and closed
     int max_tables = 100;    ///< tables beyond this are refused
+    /// Tables not started yet that one token may have created; more are refused ("full"). A
+    /// table nobody sits at or watches goes when its creator disconnects, and any table not
+    /// started goes when the last person leaves it.
+    int max_waiting_tables = 3;
+    /// How long a seat in a game under way waits for its owner, away, before it is freed (and
+    /// a table left with nobody goes). A restored seat counts from its table file's last
+    /// change (its mtime: the file is rewritten on every change of the table), so a restart
+    /// does not give it more time; a seat of a restored game not started is freed at once.
+    std::chrono::milliseconds away_limit = std::chrono::hours(7 * 24);
     /// Bytes queued for one client beyond which it is disconnected (it stopped reading). A
     /// whole race-to-99 record still fits.
     std::size_t output_limit = 256 * 1024;
