@@ -315,6 +315,7 @@ TEST_CASE("hall server: a client that stops reading is disconnected", "[hall]") 
     test::TempDir dir("termpool-hall");
     ServerOptions options;
     options.output_limit = 64 * 1024;
+    options.request_burst = 1e6; // the output bound must cut it, not the request budget
     RunningServer running(dir.path(), options);
     HallClient ann = connected(dir.path(), "Ann");
     const int table = create_table(ann);
@@ -488,4 +489,43 @@ TEST_CASE("hall server: an away seat is freed after away_limit", "[hall]") {
     REQUIRE(::utimensat(AT_FDCWD, table_path(dir.path(), table).c_str(), an_hour_ago, 0) == 0);
     RunningServer running(dir.path(), options);
     CHECK(running.server().table_count() == 0);
+}
+
+TEST_CASE("hall server: the lobby's changes go out coalesced, requests have a budget", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient lobby = connected(dir.path(), "Lou");
+    REQUIRE(lobby.wait_for(is<LobbyEnd>, kWait));
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient eve = connected(dir.path(), "Eve");
+    const int table = create_table(ann);
+    sit(ann, table, 1); // the table stays while Eve comes and goes
+
+    SECTION("a watcher toggling does not flood the lobby") {
+        const auto start = std::chrono::steady_clock::now();
+        for (int i = 0; i < 9; ++i) { // 18 requests: within the budget
+            REQUIRE(eve.send(Watch{table}));
+            expect<RecordEnd>(eve);
+            REQUIRE(eve.send(Leave{}));
+            expect<Left>(eve);
+        }
+        const auto elapsed = std::chrono::steady_clock::now() - start;
+        // Everything sent by now has had its time to come.
+        int snapshots = 0;
+        const auto end = std::chrono::steady_clock::now() + 400ms;
+        while (std::chrono::steady_clock::now() < end)
+            if (const auto m = lobby.receive(50ms); m && is<LobbyBegin>(*m))
+                ++snapshots;
+        CHECK(snapshots >= 1);
+        CHECK(snapshots <= 2 + static_cast<int>((elapsed + 400ms) / 250ms));
+    }
+    SECTION("too many syncs are refused") {
+        REQUIRE(eve.send(Watch{table}));
+        expect<RecordEnd>(eve);
+        std::string syncs;
+        for (int i = 0; i < 25; ++i)
+            syncs += "sync\n";
+        eve.send_raw(syncs);
+        CHECK(expect_error(eve).code == ErrorCode::rate);
+    }
 }

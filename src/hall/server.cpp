@@ -24,6 +24,7 @@
 #include "hall/connection.hpp"
 #include "hall/hall_state.hpp"
 #include "hall/protocol.hpp"
+#include "hall/token_bucket.hpp"
 #include "hall/unique_fd.hpp"
 
 namespace termpool::hall {
@@ -46,6 +47,8 @@ struct Client {
     int errors = 0;
     bool closing = false;
     std::optional<Clock::time_point> last_chat;
+    TokenBucket requests;    // sit, watch, leave, create, sync
+    bool lobby_owed = false; // a lobby snapshot is due once its output queue drains
 };
 
 // A seat as the server keeps it.
@@ -95,7 +98,8 @@ struct Server::State {
     std::map<int, Client> clients; // by id
     std::map<int, Table> tables;   // by number
     int next_client_id = 1;
-    bool lobby_dirty = false;
+    bool lobby_dirty = false; // the lobby changed since the last snapshot went out
+    std::optional<Clock::time_point> last_lobby;
     std::atomic<std::size_t> table_count{0};
     std::mt19937_64 random{std::random_device{}()};
 
@@ -187,6 +191,38 @@ struct Server::State {
             if (other.welcomed && !other.closing)
                 send(client, PlayerView{other.name, other.table, other.seat});
         send(client, LobbyEnd{});
+    }
+
+    // The lobby's changes go out as one snapshot at most every lobby_interval; a client whose
+    // output still holds more than lobby_queue_limit bytes gets it once it has read them.
+    void send_lobbies(Clock::time_point now) {
+        if (lobby_dirty && (!last_lobby || now - *last_lobby >= options.lobby_interval)) {
+            lobby_dirty = false;
+            last_lobby = now;
+            for (auto& [id, client] : clients)
+                client.lobby_owed = client.welcomed;
+        }
+        for (auto& [id, client] : clients)
+            if (client.lobby_owed && !client.closing &&
+                client.connection.queued() <= options.lobby_queue_limit) {
+                client.lobby_owed = false;
+                send_lobby(client);
+            }
+    }
+
+    // Milliseconds until a lobby snapshot is due, -1 for none.
+    int lobby_timeout(Clock::time_point now) const {
+        for (const auto& [id, client] : clients)
+            if (client.lobby_owed && !client.closing &&
+                client.connection.queued() <= options.lobby_queue_limit)
+                return 0;
+        if (!lobby_dirty)
+            return -1;
+        if (!last_lobby)
+            return 0;
+        const auto due = *last_lobby + options.lobby_interval - now;
+        return static_cast<int>(
+            std::max<long long>(0, std::chrono::ceil<std::chrono::milliseconds>(due).count()));
     }
 
     void send_record(Client& client, const Table& table) {
@@ -647,6 +683,15 @@ struct Server::State {
             return send_error(client, ErrorCode::hello_first, "say hello first");
         if (const auto* m = std::get_if<Hello>(&message))
             return on_hello(client, *m);
+        // The requests that send a record or change the lobby have a budget, so that one
+        // client cannot make the hall busy for everyone.
+        const bool costly =
+            std::holds_alternative<Create>(message) || std::holds_alternative<Sit>(message) ||
+            std::holds_alternative<Watch>(message) || std::holds_alternative<Leave>(message) ||
+            std::holds_alternative<Sync>(message);
+        if (costly &&
+            !client.requests.take(options.request_rate, options.request_burst, Clock::now()))
+            return send_error(client, ErrorCode::rate, "too many requests: slow down");
         if (const auto* m = std::get_if<Create>(&message))
             return on_create(client, *m);
         if (const auto* m = std::get_if<Sit>(&message))
@@ -843,10 +888,9 @@ int Server::run() {
         const auto now = Clock::now();
         const int aim = s.aim_timeout(now);
         const int away = s.away_timeout(now);
-        const int timeout = s.lobby_dirty ? 0
-                            : aim < 0     ? away
-                            : away < 0    ? aim
-                                          : std::min(aim, away);
+        int timeout = aim < 0 ? away : away < 0 ? aim : std::min(aim, away);
+        if (const int lobby = s.lobby_timeout(now); lobby >= 0)
+            timeout = timeout < 0 ? lobby : std::min(timeout, lobby);
         if (::poll(fds.data(), fds.size(), timeout) < 0 && errno != EINTR) {
             s.log(std::string("poll: ") + std::strerror(errno));
             break;
@@ -867,12 +911,7 @@ int Server::run() {
         s.flush_aims(Clock::now());
         s.drop_closed();
         s.expire_away(Clock::now());
-        if (s.lobby_dirty) {
-            s.lobby_dirty = false;
-            for (auto& [id, client] : s.clients)
-                if (client.welcomed)
-                    s.send_lobby(client);
-        }
+        s.send_lobbies(Clock::now());
         for (auto& [id, client] : s.clients)
             if (!client.closing && client.connection.wants_write() && !client.connection.flush())
                 client.closing = true;

@@ -34,7 +34,16 @@ struct ServerOptions {
     int computer_threads = 2;                      ///< the computer seats' worker pool
     std::chrono::milliseconds aim_interval{50};    ///< at most one aim per seat this often
     std::chrono::milliseconds chat_interval{1000}; ///< at most one chat per person this often
-    std::ostream* log = nullptr;                   ///< where to log (nothing when null)
+    /// The lobby's changes go out as one snapshot at most this often.
+    std::chrono::milliseconds lobby_interval{250};
+    /// A client whose output queue holds more than this gets the next snapshot only once it has
+    /// read it down: a slow reader is not buried in lobbies.
+    std::size_t lobby_queue_limit = 16 * 1024;
+    /// create, sit, watch, leave and sync: at most `request_burst` at once, `request_rate` a
+    /// second after that; beyond, "rate" (which counts as an error).
+    double request_rate = 5;
+    double request_burst = 20;   ///< see request_rate
+    std::ostream* log = nullptr; ///< where to log (nothing when null)
 };
 
 /// A hall server. `open`, then `run` until `stop`.
