@@ -529,3 +529,24 @@ TEST_CASE("hall server: the lobby's changes go out coalesced, requests have a bu
         CHECK(expect_error(eve).code == ErrorCode::rate);
     }
 }
+
+TEST_CASE("hall server: the computer's answer for a table that changed is dropped", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient eve = connected(dir.path(), "Eve");
+    const int table = create_table(ann);
+    REQUIRE(eve.send(Watch{table}));
+    expect<RecordEnd>(eve);
+    REQUIRE(eve.match(table)->to_act() == 1);
+    // Read in one round, before the computer's answer can be: Ann sits, seats the computer
+    // to break (it starts thinking) and leaves.
+    ann.send_raw("sit " + std::to_string(table) + " 2\ncomputer 1 easy\nleave\n");
+    REQUIRE(ann.wait_for(is<Left>, kWait));
+    // Seat 2 is empty: the computer must not break.
+    CHECK_FALSE(eve.wait_for(is<ActionDone>, 1500ms));
+    REQUIRE(eve.send(Sync{}));
+    expect<RecordEnd>(eve);
+    CHECK(eve.match(table)->record().actions.empty());
+    CHECK(eve.match(table)->record().names[1] == "Player 2");
+}

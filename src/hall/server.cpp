@@ -65,9 +65,14 @@ struct Table {
     int number = 0;
     Match match;
     SeatSlot seats[2];
-    std::uint64_t ticket = 0; // moves on with each search asked, so stale answers are dropped
-    bool searching = false;
-    std::string creator; // the creator's token hash (empty for a restored table)
+    // From a server-wide count, moved on by every change of the table (a seat, a name, a
+    // computer, an action): a computer's answer asked at an older ticket is for a table that
+    // is no more, and is dropped. Tables never share one, even a table number used again.
+    std::uint64_t ticket = 0;
+    bool searching = false; // a search is out, asked at search_ticket
+    std::string creator;    // the creator's token hash (empty for a restored table)
+    std::uint64_t search_ticket = 0;
+    int refusals = 0; // the computer's moves refused in a row
 };
 
 std::variant<Match, MatchError> new_match(const Create& create, std::uint64_t seed) {
@@ -98,7 +103,8 @@ struct Server::State {
     std::map<int, Client> clients; // by id
     std::map<int, Table> tables;   // by number
     int next_client_id = 1;
-    bool lobby_dirty = false; // the lobby changed since the last snapshot went out
+    std::uint64_t last_ticket = 0; // the newest Table::ticket given
+    bool lobby_dirty = false;      // the lobby changed since the last snapshot went out
     std::optional<Clock::time_point> last_lobby;
     std::atomic<std::size_t> table_count{0};
     std::mt19937_64 random{std::random_device{}()};
@@ -239,7 +245,10 @@ struct Server::State {
             send(client, SeatChange{table.number, s, seat_view(table, s)});
     }
 
-    void seat_changed(const Table& table, int seat) {
+    void changed(Table& table) { table.ticket = ++last_ticket; }
+
+    void seat_changed(Table& table, int seat) {
+        changed(table);
         send_to_table(table, SeatChange{table.number, seat, seat_view(table, seat)});
         lobby_dirty = true;
     }
@@ -269,7 +278,14 @@ struct Server::State {
                 Match::replay(stored.record, std::numeric_limits<std::size_t>::max(), {}, random());
             if (!std::holds_alternative<Match>(replayed))
                 continue;
-            Table table{stored.number, std::move(std::get<Match>(replayed)), {}, 0, false, {}};
+            Table table{stored.number,
+                        std::move(std::get<Match>(replayed)),
+                        {},
+                        ++last_ticket,
+                        false,
+                        {},
+                        0,
+                        0};
             const auto away_since = file_changed(stored.number);
             for (int s = 0; s < 2; ++s) {
                 table.seats[s].computer = stored.record.computers[s].has_value();
@@ -365,11 +381,13 @@ struct Server::State {
         if (!table.match.computer_to_act())
             return;
         table.searching = true;
-        pool.submit(ComputerJob{table.number, ++table.ticket, table.match, std::nullopt});
+        table.search_ticket = table.ticket;
+        pool.submit(ComputerJob{table.number, table.ticket, table.match, std::nullopt});
     }
 
     // The match took an action: save, tell the table, move on.
     void action_taken(Table& table) {
+        changed(table);
         const bool now_over = over(table);
         save(table);
         const auto& actions = table.match.record().actions;
@@ -402,19 +420,24 @@ struct Server::State {
     void computer_answers() {
         for (ComputerJob& answer : pool.take_answers()) {
             const auto found = tables.find(answer.table);
-            if (found == tables.end() || found->second.ticket != answer.ticket)
-                continue;
+            if (found == tables.end() || !found->second.searching ||
+                found->second.search_ticket != answer.ticket)
+                continue; // a table that is gone (its number may be another table's now)
             Table& table = found->second;
             table.searching = false;
-            // Nothing but the computer can act while it thinks; should the match have moved
-            // anyway, the answer is for an old position: ask again.
-            if (answer.match.record().actions.size() != table.match.record().actions.size() ||
-                !answer.move) {
+            // The table changed while the computer thought (someone left, a seat changed):
+            // the answer is for a table that is no more; ask again if still the computer's turn.
+            if (answer.ticket != table.ticket) {
                 think(table);
                 continue;
             }
+            if (!full(table) || !table.match.computer_to_act())
+                continue;
             const int seat = table.match.to_act();
-            table.match = std::move(answer.match); // the computer's stream, moved on
+            if (!answer.move) {
+                computer_refused(table, seat, "it found no move");
+                continue;
+            }
             RecordedAction action;
             action.kind = answer.move->kind == Pending::place    ? RecordedAction::Kind::place
                           : answer.move->kind == Pending::choose ? RecordedAction::Kind::choose
@@ -423,13 +446,33 @@ struct Server::State {
             action.choice = answer.move->choice;
             action.strike = answer.move->shot.strike;
             action.call = answer.move->shot.call;
+            // Played on the live match, which stays the authority; the computers go on with
+            // new streams (the one the search moved on is in the copy, not worth carrying).
             if (const MatchError error = play(table, seat, action); error != MatchError::none) {
-                log("table " + std::to_string(table.number) +
-                    ": the computer's move was refused: " + match_error_text(error));
+                computer_refused(table, seat, match_error_text(error));
                 continue;
             }
+            table.refusals = 0;
+            table.match.reseed_computers(random());
             action_taken(table);
         }
+    }
+
+    // The computer's move did not play: it searches again (with a new stream); after a few
+    // refusals in a row the seat is freed rather than leave the table stuck.
+    void computer_refused(Table& table, int seat, const std::string& why) {
+        log("table " + std::to_string(table.number) + ": the computer's move was refused: " + why);
+        table.match.reseed_computers(random());
+        if (++table.refusals < 3)
+            return think(table);
+        log("table " + std::to_string(table.number) + ": seat " + std::to_string(seat) +
+            " freed: its computer cannot move");
+        table.refusals = 0;
+        table.seats[seat - 1].computer = false;
+        table.match.seat_computer(seat, std::nullopt);
+        table.match.rename(seat, default_name(seat));
+        save(table);
+        seat_changed(table, seat);
     }
 
     // --- people ----------------------------------------------------------------------------
@@ -542,9 +585,11 @@ struct Server::State {
         tables.emplace(number, Table{number,
                                      std::move(std::get<Match>(started_match)),
                                      {},
-                                     0,
+                                     ++last_ticket,
                                      false,
-                                     client.token_hash});
+                                     client.token_hash,
+                                     0,
+                                     0});
         table_count = tables.size();
         save(tables.at(number));
         send(client, Created{number});
