@@ -550,3 +550,28 @@ TEST_CASE("hall server: the computer's answer for a table that changed is droppe
     CHECK(eve.match(table)->record().actions.empty());
     CHECK(eve.match(table)->record().names[1] == "Player 2");
 }
+
+TEST_CASE("hall server: connections that never say hello do not hold the hall", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    ServerOptions options;
+    options.max_clients = 2;
+    options.hello_timeout = 300ms;
+    RunningServer running(dir.path(), options);
+    std::vector<HallClient> silent(3);
+    for (HallClient& client : silent)
+        REQUIRE(client.connect(dir.path() + "/hall.sock") == "");
+    // Only people count toward max_clients.
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    HallClient carl;
+    REQUIRE(carl.connect(dir.path() + "/hall.sock") == "");
+    const std::string refused = carl.hello("Carl", "", kWait);
+    CHECK(refused.rfind("full", 0) == 0); // the reply arrives before the close
+    // The silent ones are closed once their time is up.
+    for (HallClient& client : silent) {
+        const auto end = std::chrono::steady_clock::now() + kWait;
+        while (!client.closed() && std::chrono::steady_clock::now() < end)
+            client.receive(50ms);
+        CHECK(client.closed());
+    }
+}

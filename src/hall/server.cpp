@@ -35,7 +35,8 @@ using Clock = std::chrono::steady_clock;
 
 // A person connected: their socket, who they said they are, where they are.
 struct Client {
-    Client(int client_id, Connection c) : id(client_id), connection(std::move(c)) {}
+    Client(int client_id, Connection c, Clock::time_point now)
+        : id(client_id), connection(std::move(c)), connected_at(now) {}
     int id = 0;
     Connection connection;
     bool welcomed = false;
@@ -47,8 +48,9 @@ struct Client {
     int errors = 0;
     bool closing = false;
     std::optional<Clock::time_point> last_chat;
-    TokenBucket requests;    // sit, watch, leave, create, sync
-    bool lobby_owed = false; // a lobby snapshot is due once its output queue drains
+    TokenBucket requests;           // sit, watch, leave, create, sync
+    bool lobby_owed = false;        // a lobby snapshot is due once its output queue drains
+    Clock::time_point connected_at; // hello is due within hello_timeout of it
 };
 
 // A seat as the server keeps it.
@@ -139,6 +141,9 @@ struct Server::State {
     void send_and_close(Client& client, ErrorCode code, const std::string& text) {
         send(client, Error{code, text});
         client.connection.flush();
+        // The end of the stream follows the reply, so the peer reads it before the close
+        // rather than lose it to a reset (its unread input is discarded with the socket).
+        ::shutdown(client.connection.fd(), SHUT_WR);
         client.closing = true;
     }
 
@@ -214,6 +219,30 @@ struct Server::State {
                 client.lobby_owed = false;
                 send_lobby(client);
             }
+    }
+
+    // A connection that has not said hello within hello_timeout goes: a silent one must not
+    // hold a place.
+    void expire_unwelcomed(Clock::time_point now) {
+        for (auto& [id, client] : clients)
+            if (!client.welcomed && !client.closing &&
+                now - client.connected_at >= options.hello_timeout) {
+                log("client " + std::to_string(id) + " said no hello: disconnected");
+                send_and_close(client, ErrorCode::hello_first, "no hello in time");
+            }
+    }
+
+    // Milliseconds until a connection's hello is due, -1 for none.
+    int hello_timeout(Clock::time_point now) const {
+        int timeout = -1;
+        for (const auto& [id, client] : clients)
+            if (!client.welcomed && !client.closing) {
+                const auto due = client.connected_at + options.hello_timeout - now;
+                const int ms = static_cast<int>(std::max<long long>(
+                    0, std::chrono::ceil<std::chrono::milliseconds>(due).count()));
+                timeout = timeout < 0 ? ms : std::min(timeout, ms);
+            }
+        return timeout;
     }
 
     // Milliseconds until a lobby snapshot is due, -1 for none.
@@ -545,6 +574,14 @@ struct Server::State {
         if (token.empty())
             return send_error(client, ErrorCode::internal, "no random token to give: try again");
         const std::string hash = seat_token_hash(token);
+        // Only people who said hello count toward max_clients (the same person again does
+        // not: their old connection gives way below).
+        const auto others = std::count_if(clients.begin(), clients.end(), [&](const auto& entry) {
+            const Client& other = entry.second;
+            return other.welcomed && !other.closing && other.token_hash != hash;
+        });
+        if (others >= options.max_clients)
+            return send_and_close(client, ErrorCode::full, "the hall has all the clients it takes");
         // The same person again: the old connection gives way (its seats go away, then the
         // new one may take them back).
         for (auto& [id, other] : clients)
@@ -794,9 +831,13 @@ struct Server::State {
                 return;
             if (!make_nonblocking(fd.get()))
                 continue;
-            Client client(next_client_id++, Connection(std::move(fd)));
-            if (static_cast<int>(clients.size()) >= options.max_clients) {
-                send_and_close(client, ErrorCode::full, "the hall has all the clients it takes");
+            Client client(next_client_id++, Connection(std::move(fd)), Clock::now());
+            const auto unwelcomed =
+                std::count_if(clients.begin(), clients.end(), [](const auto& e) {
+                    return !e.second.welcomed && !e.second.closing;
+                });
+            if (unwelcomed >= options.max_unwelcomed) {
+                send_and_close(client, ErrorCode::full, "too many connections wait for hello");
                 continue; // closed as it goes out of scope
             }
             clients.emplace(client.id, std::move(client));
@@ -934,8 +975,9 @@ int Server::run() {
         const int aim = s.aim_timeout(now);
         const int away = s.away_timeout(now);
         int timeout = aim < 0 ? away : away < 0 ? aim : std::min(aim, away);
-        if (const int lobby = s.lobby_timeout(now); lobby >= 0)
-            timeout = timeout < 0 ? lobby : std::min(timeout, lobby);
+        for (const int due : {s.lobby_timeout(now), s.hello_timeout(now)})
+            if (due >= 0)
+                timeout = timeout < 0 ? due : std::min(timeout, due);
         if (::poll(fds.data(), fds.size(), timeout) < 0 && errno != EINTR) {
             s.log(std::string("poll: ") + std::strerror(errno));
             break;
@@ -956,6 +998,7 @@ int Server::run() {
         s.flush_aims(Clock::now());
         s.drop_closed();
         s.expire_away(Clock::now());
+        s.expire_unwelcomed(Clock::now());
         s.send_lobbies(Clock::now());
         for (auto& [id, client] : s.clients)
             if (!client.closing && client.connection.wants_write() && !client.connection.flush())

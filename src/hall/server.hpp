@@ -16,8 +16,13 @@ namespace termpool::hall {
 struct ServerOptions {
     std::string socket_path; ///< where to listen (the folder must exist)
     std::string state_dir;   ///< where tables are saved and restored from; empty: nowhere
-    int max_clients = 256;   ///< connections beyond this are told "full" and closed
-    int max_tables = 100;    ///< tables beyond this are refused
+    /// People (connections that said hello) beyond this are told "full" and closed.
+    int max_clients = 256;
+    /// Connections not yet past hello beyond this are told "full" and closed at once.
+    int max_unwelcomed = 32;
+    /// A connection that has not said hello within this is closed.
+    std::chrono::milliseconds hello_timeout{10000};
+    int max_tables = 100; ///< tables beyond this are refused
     /// Tables not started yet that one token may have created; more are refused ("full"). A
     /// table nobody sits at or watches goes when its creator disconnects, and any table not
     /// started goes when the last person leaves it.
