@@ -5,12 +5,17 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cstring>
 #include <ctime>
 #include <fcntl.h>
 #include <string>
+#include <sys/resource.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
+#include <sys/un.h>
 #include <termpool/match.hpp>
 #include <thread>
+#include <unistd.h>
 #include <variant>
 #include <vector>
 
@@ -574,4 +579,45 @@ TEST_CASE("hall server: connections that never say hello do not hold the hall", 
             client.receive(50ms);
         CHECK(client.closed());
     }
+}
+
+TEST_CASE("hall server: out of file descriptors, the server waits rather than spin", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    const std::string path = dir.path() + "/hall.sock";
+    REQUIRE(path.size() < sizeof address.sun_path);
+    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+    const int waiting = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    REQUIRE(waiting >= 0);
+    // The lowest free descriptor is the next one made: a limit at it leaves accept none.
+    const int next = ::dup(waiting);
+    REQUIRE(next >= 0);
+    ::close(next);
+    rlimit saved{};
+    REQUIRE(::getrlimit(RLIMIT_NOFILE, &saved) == 0);
+    rlimit tight = saved;
+    tight.rlim_cur = static_cast<rlim_t>(next);
+    REQUIRE(::setrlimit(RLIMIT_NOFILE, &tight) == 0);
+    const int connected_ok =
+        ::connect(waiting, reinterpret_cast<const sockaddr*>(&address), sizeof address);
+    const auto cpu = [] {
+        rusage usage{};
+        ::getrusage(RUSAGE_SELF, &usage);
+        return usage.ru_utime.tv_sec * 1e6 + usage.ru_utime.tv_usec + usage.ru_stime.tv_sec * 1e6 +
+               usage.ru_stime.tv_usec;
+    };
+    const double before = cpu();
+    std::this_thread::sleep_for(400ms);
+    const double used = cpu() - before;
+    REQUIRE(::setrlimit(RLIMIT_NOFILE, &saved) == 0);
+    ::close(waiting);
+    REQUIRE(connected_ok == 0);
+    CHECK(used < 200e3); // microseconds of CPU in 400 ms: a spinning loop takes them all
+    // Descriptors back, it serves again.
+    CHECK(still_serves(dir.path()));
+    ann.send(Ping{});
+    CHECK(ann.wait_for(is<Pong>, kWait));
 }

@@ -108,6 +108,9 @@ struct Server::State {
     std::uint64_t last_ticket = 0; // the newest Table::ticket given
     bool lobby_dirty = false;      // the lobby changed since the last snapshot went out
     std::optional<Clock::time_point> last_lobby;
+    // Out of file descriptors, accept fails while the listener stays readable: it is left out
+    // of poll until then, rather than spin.
+    std::optional<Clock::time_point> accept_paused_until;
     std::atomic<std::size_t> table_count{0};
     std::mt19937_64 random{std::random_device{}()};
 
@@ -827,8 +830,13 @@ struct Server::State {
         // A few at a time, so that a flood of connections cannot starve the others' input.
         for (int i = 0; i < 16; ++i) {
             UniqueFd fd(::accept(listener.get(), nullptr, nullptr));
-            if (!fd)
+            if (!fd) {
+                if (errno == EMFILE || errno == ENFILE || errno == ENOBUFS || errno == ENOMEM) {
+                    log(std::string("accept: ") + std::strerror(errno) + ": pausing 100 ms");
+                    accept_paused_until = Clock::now() + std::chrono::milliseconds(100);
+                }
                 return;
+            }
             if (!make_nonblocking(fd.get()))
                 continue;
             Client client(next_client_id++, Connection(std::move(fd)), Clock::now());
@@ -963,7 +971,11 @@ int Server::run() {
         ids.clear();
         fds.push_back({s.stop_pipe.read_end.get(), POLLIN, 0});
         fds.push_back({s.pool.wake_fd(), POLLIN, 0});
-        fds.push_back({s.listener.get(), POLLIN, 0});
+        const auto now = Clock::now();
+        if (s.accept_paused_until && now >= *s.accept_paused_until)
+            s.accept_paused_until.reset();
+        // A negative fd is left out by poll.
+        fds.push_back({s.accept_paused_until ? -1 : s.listener.get(), POLLIN, 0});
         for (auto& [id, client] : s.clients) {
             const short events =
                 static_cast<short>(POLLIN | (client.connection.wants_write() ? POLLOUT : 0));
@@ -971,11 +983,15 @@ int Server::run() {
             ids.push_back(id);
         }
         // A lobby change left over from the last round (a connection dropped) goes out now.
-        const auto now = Clock::now();
         const int aim = s.aim_timeout(now);
         const int away = s.away_timeout(now);
         int timeout = aim < 0 ? away : away < 0 ? aim : std::min(aim, away);
-        for (const int due : {s.lobby_timeout(now), s.hello_timeout(now)})
+        const int paused = s.accept_paused_until
+                               ? static_cast<int>(std::chrono::ceil<std::chrono::milliseconds>(
+                                                      *s.accept_paused_until - now)
+                                                      .count())
+                               : -1;
+        for (const int due : {s.lobby_timeout(now), s.hello_timeout(now), paused})
             if (due >= 0)
                 timeout = timeout < 0 ? due : std::min(timeout, due);
         if (::poll(fds.data(), fds.size(), timeout) < 0 && errno != EINTR) {
