@@ -2,11 +2,20 @@
 // thread: whole games played by scripted clients and by the computer, a spectator who joins
 // late, and the faults the issue lists. Every wait is bounded (kWait); the server's thread is
 // stopped and joined by RunningServer whatever way a test ends.
+#include <array>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cstring>
+#include <ctime>
+#include <fcntl.h>
 #include <string>
+#include <sys/resource.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
 #include <termpool/match.hpp>
 #include <thread>
+#include <unistd.h>
 #include <variant>
 #include <vector>
 
@@ -247,6 +256,7 @@ TEST_CASE("hall server: a client that stops reading is disconnected", "[hall]") 
     test::TempDir dir("termpool-hall");
     ServerOptions options;
     options.output_limit = 64 * 1024;
+    options.request_burst = 1e6; // the output bound must cut it, not the request budget
     RunningServer running(dir.path(), options);
     HallClient ann = connected(dir.path(), "Ann");
     const int table = create_table(ann);
@@ -315,4 +325,235 @@ TEST_CASE("hall server: a restart restores the tables and the seats", "[hall]") 
     play_one(ann, bob, table, {&ann, &bob});
     CHECK(bob.match(table)->state_hash() == ann.match(table)->state_hash());
     CHECK(ann.match(table)->record().actions.size() == 4);
+}
+
+// The seat tokens table `number` is saved with (none for a table not saved).
+std::array<std::string, 2> saved_tokens(const std::string& dir, int number) {
+    std::vector<std::string> problems;
+    for (const SavedTable& stored : load_tables(dir, problems))
+        if (stored.number == number)
+            return {stored.seat_tokens[0], stored.seat_tokens[1]};
+    return {};
+}
+
+TEST_CASE("hall server: sitting again in one's own seat changes nothing", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(ann, table, 1); // the record comes again; the seat stays Ann's
+    CHECK(ann.match(table)->record().names[0] == "Ann");
+    CHECK(saved_tokens(dir.path(), table)[0] == seat_token_hash(ann.token()));
+    bob.send(Sit{table, 1});
+    CHECK(expect_error(bob).code == ErrorCode::seat_taken);
+
+    // Ann again, from a second connection: she may not hold both seats (the table may be gone:
+    // her first connection gave way, and nobody else was at it).
+    HallClient again = connected(dir.path(), "Ann", ann.token());
+    again.send(Sit{table, 2});
+    REQUIRE(again.wait_for([](const ServerMessage& m) { return is<Error>(m) || is<RecordEnd>(m); },
+                           kWait));
+    const auto tokens = saved_tokens(dir.path(), table);
+    CHECK_FALSE((tokens[0] == tokens[1] && !tokens[0].empty()));
+}
+
+// Waits (at most kWait) until the server holds `count` tables.
+bool tables_become(RunningServer& running, std::size_t count) {
+    const auto end = std::chrono::steady_clock::now() + kWait;
+    while (running.server().table_count() != count && std::chrono::steady_clock::now() < end)
+        std::this_thread::sleep_for(5ms);
+    return running.server().table_count() == count;
+}
+
+TEST_CASE("hall server: a table nobody plays at goes", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+
+    SECTION("its creator disconnects before anyone came") {
+        HallClient ann = connected(dir.path(), "Ann");
+        create_table(ann);
+        CHECK(running.server().table_count() == 1);
+        ann.disconnect();
+        CHECK(tables_become(running, 0));
+    }
+    SECTION("the only player drops before the first action") {
+        HallClient ann = connected(dir.path(), "Ann");
+        sit(ann, create_table(ann), 1);
+        ann.disconnect();
+        CHECK(tables_become(running, 0));
+    }
+    SECTION("one token may have a few tables waiting") {
+        HallClient ann = connected(dir.path(), "Ann");
+        for (int i = 0; i < 3; ++i)
+            create_table(ann);
+        ann.send(Create{GameType::eight_ball, TableSize::nine_foot, 1});
+        CHECK(expect_error(ann).code == ErrorCode::full);
+        CHECK(running.server().table_count() == 3);
+    }
+    CHECK(still_serves(dir.path()));
+}
+
+TEST_CASE("hall server: an away seat is freed after away_limit", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    ServerOptions options;
+    options.away_limit = 300ms;
+    int table = 0;
+    {
+        RunningServer running(dir.path(), options);
+        HallClient ann = connected(dir.path(), "Ann");
+        HallClient bob = connected(dir.path(), "Bob");
+        table = create_table(ann);
+        sit(ann, table, 1);
+        sit(bob, table, 2);
+        play_one(ann, bob, table, {&ann, &bob});
+        ann.disconnect();
+        const auto seat_is = [&](SeatKind kind) {
+            return bob.wait_for(
+                [&](const ServerMessage& m) {
+                    const auto* s = std::get_if<SeatChange>(&m);
+                    return s && s->seat == 1 && s->view.kind == kind;
+                },
+                kWait);
+        };
+        REQUIRE(seat_is(SeatKind::away));
+        REQUIRE(seat_is(SeatKind::empty));
+        CHECK(saved_tokens(dir.path(), table)[0].empty());
+        // Bob goes away too; the server stops before his seat is due.
+        running.stop();
+    }
+    CHECK(saved_tokens(dir.path(), table)[1] != "");
+    // Restarted after his time was up (the file's time says when he left): the table is gone.
+    const timespec an_hour_ago[2] = {{std::time(nullptr) - 3600, 0},
+                                     {std::time(nullptr) - 3600, 0}};
+    REQUIRE(::utimensat(AT_FDCWD, table_path(dir.path(), table).c_str(), an_hour_ago, 0) == 0);
+    RunningServer running(dir.path(), options);
+    CHECK(running.server().table_count() == 0);
+}
+
+TEST_CASE("hall server: the lobby's changes go out coalesced, requests have a budget", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient lobby = connected(dir.path(), "Lou");
+    REQUIRE(lobby.wait_for(is<LobbyEnd>, kWait));
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient eve = connected(dir.path(), "Eve");
+    const int table = create_table(ann);
+    sit(ann, table, 1); // the table stays while Eve comes and goes
+
+    SECTION("a watcher toggling does not flood the lobby") {
+        const auto start = std::chrono::steady_clock::now();
+        for (int i = 0; i < 9; ++i) { // 18 requests: within the budget
+            REQUIRE(eve.send(Watch{table}));
+            expect<RecordEnd>(eve);
+            REQUIRE(eve.send(Leave{}));
+            expect<Left>(eve);
+        }
+        const auto elapsed = std::chrono::steady_clock::now() - start;
+        // Everything sent by now has had its time to come.
+        int snapshots = 0;
+        const auto end = std::chrono::steady_clock::now() + 400ms;
+        while (std::chrono::steady_clock::now() < end)
+            if (const auto m = lobby.receive(50ms); m && is<LobbyBegin>(*m))
+                ++snapshots;
+        CHECK(snapshots >= 1);
+        CHECK(snapshots <= 2 + static_cast<int>((elapsed + 400ms) / 250ms));
+    }
+    SECTION("too many syncs are refused") {
+        REQUIRE(eve.send(Watch{table}));
+        expect<RecordEnd>(eve);
+        std::string syncs;
+        for (int i = 0; i < 25; ++i)
+            syncs += "sync\n";
+        eve.send_raw(syncs);
+        CHECK(expect_error(eve).code == ErrorCode::rate);
+    }
+}
+
+TEST_CASE("hall server: the computer's answer for a table that changed is dropped", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient eve = connected(dir.path(), "Eve");
+    const int table = create_table(ann);
+    REQUIRE(eve.send(Watch{table}));
+    expect<RecordEnd>(eve);
+    REQUIRE(eve.match(table)->to_act() == 1);
+    // Read in one round, before the computer's answer can be: Ann sits, seats the computer
+    // to break (it starts thinking) and leaves.
+    ann.send_raw("sit " + std::to_string(table) + " 2\ncomputer 1 easy\nleave\n");
+    REQUIRE(ann.wait_for(is<Left>, kWait));
+    // Seat 2 is empty: the computer must not break.
+    CHECK_FALSE(eve.wait_for(is<ActionDone>, 1500ms));
+    REQUIRE(eve.send(Sync{}));
+    expect<RecordEnd>(eve);
+    CHECK(eve.match(table)->record().actions.empty());
+    CHECK(eve.match(table)->record().names[1] == "Player 2");
+}
+
+TEST_CASE("hall server: connections that never say hello do not hold the hall", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    ServerOptions options;
+    options.max_clients = 2;
+    options.hello_timeout = 300ms;
+    RunningServer running(dir.path(), options);
+    std::vector<HallClient> silent(3);
+    for (HallClient& client : silent)
+        REQUIRE(client.connect(dir.path() + "/hall.sock") == "");
+    // Only people count toward max_clients.
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    HallClient carl;
+    REQUIRE(carl.connect(dir.path() + "/hall.sock") == "");
+    const std::string refused = carl.hello("Carl", "", kWait);
+    CHECK(refused.rfind("full", 0) == 0); // the reply arrives before the close
+    // The silent ones are closed once their time is up.
+    for (HallClient& client : silent) {
+        const auto end = std::chrono::steady_clock::now() + kWait;
+        while (!client.closed() && std::chrono::steady_clock::now() < end)
+            client.receive(50ms);
+        CHECK(client.closed());
+    }
+}
+
+TEST_CASE("hall server: out of file descriptors, the server waits rather than spin", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    const std::string path = dir.path() + "/hall.sock";
+    REQUIRE(path.size() < sizeof address.sun_path);
+    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+    const int waiting = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    REQUIRE(waiting >= 0);
+    // The lowest free descriptor is the next one made: a limit at it leaves accept none.
+    const int next = ::dup(waiting);
+    REQUIRE(next >= 0);
+    ::close(next);
+    rlimit saved{};
+    REQUIRE(::getrlimit(RLIMIT_NOFILE, &saved) == 0);
+    rlimit tight = saved;
+    tight.rlim_cur = static_cast<rlim_t>(next);
+    REQUIRE(::setrlimit(RLIMIT_NOFILE, &tight) == 0);
+    const int connected_ok =
+        ::connect(waiting, reinterpret_cast<const sockaddr*>(&address), sizeof address);
+    const auto cpu = [] {
+        rusage usage{};
+        ::getrusage(RUSAGE_SELF, &usage);
+        return usage.ru_utime.tv_sec * 1e6 + usage.ru_utime.tv_usec + usage.ru_stime.tv_sec * 1e6 +
+               usage.ru_stime.tv_usec;
+    };
+    const double before = cpu();
+    std::this_thread::sleep_for(400ms);
+    const double used = cpu() - before;
+    REQUIRE(::setrlimit(RLIMIT_NOFILE, &saved) == 0);
+    ::close(waiting);
+    REQUIRE(connected_ok == 0);
+    CHECK(used < 200e3); // microseconds of CPU in 400 ms: a spinning loop takes them all
+    // Descriptors back, it serves again.
+    CHECK(still_serves(dir.path()));
+    ann.send(Ping{});
+    CHECK(ann.wait_for(is<Pong>, kWait));
 }

@@ -5,13 +5,16 @@
 
 #include "hall/server.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <limits>
 #include <map>
 #include <poll.h>
 #include <random>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/un.h>
 #include <termpool/match.hpp>
 #include <unistd.h>
@@ -21,6 +24,7 @@
 #include "hall/connection.hpp"
 #include "hall/hall_state.hpp"
 #include "hall/protocol.hpp"
+#include "hall/token_bucket.hpp"
 #include "hall/unique_fd.hpp"
 
 namespace termpool::hall {
@@ -31,7 +35,8 @@ using Clock = std::chrono::steady_clock;
 
 // A person connected: their socket, who they said they are, where they are.
 struct Client {
-    Client(int client_id, Connection c) : id(client_id), connection(std::move(c)) {}
+    Client(int client_id, Connection c, Clock::time_point now)
+        : id(client_id), connection(std::move(c)), connected_at(now) {}
     int id = 0;
     Connection connection;
     bool welcomed = false;
@@ -43,6 +48,9 @@ struct Client {
     int errors = 0;
     bool closing = false;
     std::optional<Clock::time_point> last_chat;
+    TokenBucket requests;           // sit, watch, leave, create, sync
+    bool lobby_owed = false;        // a lobby snapshot is due once its output queue drains
+    Clock::time_point connected_at; // hello is due within hello_timeout of it
 };
 
 // A seat as the server keeps it.
@@ -52,15 +60,21 @@ struct SeatSlot {
     bool computer = false;
     std::optional<Strike> pending_aim; // the newest aim not yet forwarded
     std::optional<Clock::time_point> last_aim;
+    std::optional<Clock::time_point> away_since; // while the owner's token keeps it, unseated
 };
 
 struct Table {
     int number = 0;
     Match match;
     SeatSlot seats[2];
-    std::uint64_t ticket = 0; // moves on with each search asked, so stale answers are dropped
-    bool searching = false;
-    int creator = 0; // the client who made it (ids are not reused); 0 for a restored table
+    // From a server-wide count, moved on by every change of the table (a seat, a name, a
+    // computer, an action): a computer's answer asked at an older ticket is for a table that
+    // is no more, and is dropped. Tables never share one, even a table number used again.
+    std::uint64_t ticket = 0;
+    bool searching = false; // a search is out, asked at search_ticket
+    std::string creator;    // the creator's token hash (empty for a restored table)
+    std::uint64_t search_ticket = 0;
+    int refusals = 0; // the computer's moves refused in a row
 };
 
 std::variant<Match, MatchError> new_match(const Create& create, std::uint64_t seed) {
@@ -91,7 +105,12 @@ struct Server::State {
     std::map<int, Client> clients; // by id
     std::map<int, Table> tables;   // by number
     int next_client_id = 1;
-    bool lobby_dirty = false;
+    std::uint64_t last_ticket = 0; // the newest Table::ticket given
+    bool lobby_dirty = false;      // the lobby changed since the last snapshot went out
+    std::optional<Clock::time_point> last_lobby;
+    // Out of file descriptors, accept fails while the listener stays readable: it is left out
+    // of poll until then, rather than spin.
+    std::optional<Clock::time_point> accept_paused_until;
     std::atomic<std::size_t> table_count{0};
     std::mt19937_64 random{std::random_device{}()};
 
@@ -125,6 +144,9 @@ struct Server::State {
     void send_and_close(Client& client, ErrorCode code, const std::string& text) {
         send(client, Error{code, text});
         client.connection.flush();
+        // The end of the stream follows the reply, so the peer reads it before the close
+        // rather than lose it to a reset (its unread input is discarded with the socket).
+        ::shutdown(client.connection.fd(), SHUT_WR);
         client.closing = true;
     }
 
@@ -185,6 +207,62 @@ struct Server::State {
         send(client, LobbyEnd{});
     }
 
+    // The lobby's changes go out as one snapshot at most every lobby_interval; a client whose
+    // output still holds more than lobby_queue_limit bytes gets it once it has read them.
+    void send_lobbies(Clock::time_point now) {
+        if (lobby_dirty && (!last_lobby || now - *last_lobby >= options.lobby_interval)) {
+            lobby_dirty = false;
+            last_lobby = now;
+            for (auto& [id, client] : clients)
+                client.lobby_owed = client.welcomed;
+        }
+        for (auto& [id, client] : clients)
+            if (client.lobby_owed && !client.closing &&
+                client.connection.queued() <= options.lobby_queue_limit) {
+                client.lobby_owed = false;
+                send_lobby(client);
+            }
+    }
+
+    // A connection that has not said hello within hello_timeout goes: a silent one must not
+    // hold a place.
+    void expire_unwelcomed(Clock::time_point now) {
+        for (auto& [id, client] : clients)
+            if (!client.welcomed && !client.closing &&
+                now - client.connected_at >= options.hello_timeout) {
+                log("client " + std::to_string(id) + " said no hello: disconnected");
+                send_and_close(client, ErrorCode::hello_first, "no hello in time");
+            }
+    }
+
+    // Milliseconds until a connection's hello is due, -1 for none.
+    int hello_timeout(Clock::time_point now) const {
+        int timeout = -1;
+        for (const auto& [id, client] : clients)
+            if (!client.welcomed && !client.closing) {
+                const auto due = client.connected_at + options.hello_timeout - now;
+                const int ms = static_cast<int>(std::max<long long>(
+                    0, std::chrono::ceil<std::chrono::milliseconds>(due).count()));
+                timeout = timeout < 0 ? ms : std::min(timeout, ms);
+            }
+        return timeout;
+    }
+
+    // Milliseconds until a lobby snapshot is due, -1 for none.
+    int lobby_timeout(Clock::time_point now) const {
+        for (const auto& [id, client] : clients)
+            if (client.lobby_owed && !client.closing &&
+                client.connection.queued() <= options.lobby_queue_limit)
+                return 0;
+        if (!lobby_dirty)
+            return -1;
+        if (!last_lobby)
+            return 0;
+        const auto due = *last_lobby + options.lobby_interval - now;
+        return static_cast<int>(
+            std::max<long long>(0, std::chrono::ceil<std::chrono::milliseconds>(due).count()));
+    }
+
     void send_record(Client& client, const Table& table) {
         const std::string text = format_record(table.match.record());
         for (std::size_t start = 0; start < text.size();) {
@@ -199,7 +277,10 @@ struct Server::State {
             send(client, SeatChange{table.number, s, seat_view(table, s)});
     }
 
-    void seat_changed(const Table& table, int seat) {
+    void changed(Table& table) { table.ticket = ++last_ticket; }
+
+    void seat_changed(Table& table, int seat) {
+        changed(table);
         send_to_table(table, SeatChange{table.number, seat, seat_view(table, seat)});
         lobby_dirty = true;
     }
@@ -229,19 +310,91 @@ struct Server::State {
                 Match::replay(stored.record, std::numeric_limits<std::size_t>::max(), {}, random());
             if (!std::holds_alternative<Match>(replayed))
                 continue;
-            Table table{stored.number, std::move(std::get<Match>(replayed)), {}, 0, false, 0};
+            Table table{stored.number,
+                        std::move(std::get<Match>(replayed)),
+                        {},
+                        ++last_ticket,
+                        false,
+                        {},
+                        0,
+                        0};
+            const auto away_since = file_changed(stored.number);
             for (int s = 0; s < 2; ++s) {
                 table.seats[s].computer = stored.record.computers[s].has_value();
-                table.seats[s].token_hash = stored.seat_tokens[s];
+                // Nobody is connected yet: a seat of a game not started is nobody's.
+                if (started(table)) {
+                    table.seats[s].token_hash = stored.seat_tokens[s];
+                    table.seats[s].away_since = away_since;
+                }
             }
             tables.emplace(stored.number, std::move(table));
         }
         for (const std::string& problem : problems)
             log("not restored: " + problem);
-        log("restored " + std::to_string(tables.size()) + " tables");
         table_count = tables.size();
+        expire_away(Clock::now());
+        std::vector<int> numbers;
+        for (const auto& [number, table] : tables)
+            numbers.push_back(number);
+        for (const int number : numbers)
+            forget_if_idle(tables.at(number));
+        log("restored " + std::to_string(tables.size()) + " tables");
         for (auto& [number, table] : tables)
             think(table);
+    }
+
+    // When table `number`'s file last changed, on the steady clock: a restored away seat went
+    // away then at the latest (the file is rewritten on every change of the table).
+    Clock::time_point file_changed(int number) const {
+        struct stat info {};
+        const auto now = Clock::now();
+        if (::stat(table_path(options.state_dir, number).c_str(), &info) != 0)
+            return now;
+        const auto changed = std::chrono::system_clock::from_time_t(info.st_mtim.tv_sec);
+        const auto age = std::chrono::system_clock::now() - changed;
+        return age > Clock::duration::zero()
+                   ? now - std::chrono::duration_cast<Clock::duration>(age)
+                   : now;
+    }
+
+    // Frees every away seat whose owner has been gone longer than away_limit; a table left
+    // with nobody goes.
+    void expire_away(Clock::time_point now) {
+        std::vector<int> emptied;
+        for (auto& [number, table] : tables)
+            for (int s = 1; s <= 2; ++s) {
+                SeatSlot& slot = table.seats[s - 1];
+                if (slot.token_hash.empty() || slot.client != 0 || !slot.away_since ||
+                    now - *slot.away_since < options.away_limit)
+                    continue;
+                log("table " + std::to_string(number) + ": seat " + std::to_string(s) +
+                    " was away too long: freed");
+                slot.token_hash.clear();
+                slot.away_since.reset();
+                table.match.rename(s, default_name(s));
+                save(table);
+                seat_changed(table, s);
+                emptied.push_back(number);
+            }
+        for (const int number : emptied)
+            if (auto found = tables.find(number); found != tables.end())
+                forget_if_idle(found->second);
+    }
+
+    // Milliseconds until the next away seat is due to be freed, -1 for none.
+    int away_timeout(Clock::time_point now) const {
+        int timeout = -1;
+        for (const auto& [number, table] : tables)
+            for (const SeatSlot& slot : table.seats)
+                if (!slot.token_hash.empty() && slot.client == 0 && slot.away_since) {
+                    const auto due = *slot.away_since + options.away_limit - now;
+                    const auto ms = std::clamp<long long>(
+                        std::chrono::ceil<std::chrono::milliseconds>(due).count(), 0,
+                        std::numeric_limits<int>::max());
+                    timeout = timeout < 0 ? static_cast<int>(ms)
+                                          : std::min(timeout, static_cast<int>(ms));
+                }
+        return timeout;
     }
 
     // --- the game --------------------------------------------------------------------------
@@ -260,11 +413,13 @@ struct Server::State {
         if (!table.match.computer_to_act())
             return;
         table.searching = true;
-        pool.submit(ComputerJob{table.number, ++table.ticket, table.match, std::nullopt});
+        table.search_ticket = table.ticket;
+        pool.submit(ComputerJob{table.number, table.ticket, table.match, std::nullopt});
     }
 
     // The match took an action: save, tell the table, move on.
     void action_taken(Table& table) {
+        changed(table);
         const bool now_over = over(table);
         save(table);
         const auto& actions = table.match.record().actions;
@@ -297,19 +452,24 @@ struct Server::State {
     void computer_answers() {
         for (ComputerJob& answer : pool.take_answers()) {
             const auto found = tables.find(answer.table);
-            if (found == tables.end() || found->second.ticket != answer.ticket)
-                continue;
+            if (found == tables.end() || !found->second.searching ||
+                found->second.search_ticket != answer.ticket)
+                continue; // a table that is gone (its number may be another table's now)
             Table& table = found->second;
             table.searching = false;
-            // Nothing but the computer can act while it thinks; should the match have moved
-            // anyway, the answer is for an old position: ask again.
-            if (answer.match.record().actions.size() != table.match.record().actions.size() ||
-                !answer.move) {
+            // The table changed while the computer thought (someone left, a seat changed):
+            // the answer is for a table that is no more; ask again if still the computer's turn.
+            if (answer.ticket != table.ticket) {
                 think(table);
                 continue;
             }
+            if (!full(table) || !table.match.computer_to_act())
+                continue;
             const int seat = table.match.to_act();
-            table.match = std::move(answer.match); // the computer's stream, moved on
+            if (!answer.move) {
+                computer_refused(table, seat, "it found no move");
+                continue;
+            }
             RecordedAction action;
             action.kind = answer.move->kind == Pending::place    ? RecordedAction::Kind::place
                           : answer.move->kind == Pending::choose ? RecordedAction::Kind::choose
@@ -318,13 +478,33 @@ struct Server::State {
             action.choice = answer.move->choice;
             action.strike = answer.move->shot.strike;
             action.call = answer.move->shot.call;
+            // Played on the live match, which stays the authority; the computers go on with
+            // new streams (the one the search moved on is in the copy, not worth carrying).
             if (const MatchError error = play(table, seat, action); error != MatchError::none) {
-                log("table " + std::to_string(table.number) +
-                    ": the computer's move was refused: " + match_error_text(error));
+                computer_refused(table, seat, match_error_text(error));
                 continue;
             }
+            table.refusals = 0;
+            table.match.reseed_computers(random());
             action_taken(table);
         }
+    }
+
+    // The computer's move did not play: it searches again (with a new stream); after a few
+    // refusals in a row the seat is freed rather than leave the table stuck.
+    void computer_refused(Table& table, int seat, const std::string& why) {
+        log("table " + std::to_string(table.number) + ": the computer's move was refused: " + why);
+        table.match.reseed_computers(random());
+        if (++table.refusals < 3)
+            return think(table);
+        log("table " + std::to_string(table.number) + ": seat " + std::to_string(seat) +
+            " freed: its computer cannot move");
+        table.refusals = 0;
+        table.seats[seat - 1].computer = false;
+        table.match.seat_computer(seat, std::nullopt);
+        table.match.rename(seat, default_name(seat));
+        save(table);
+        seat_changed(table, seat);
     }
 
     // --- people ----------------------------------------------------------------------------
@@ -334,9 +514,10 @@ struct Server::State {
         return found == tables.end() ? nullptr : &found->second;
     }
 
-    // `client` leaves its table: by `leave` (or moving on), or because its connection dropped.
+    // `client` leaves its table: by `leave` (or moving on), or because its connection dropped
+    // (both are the same to the seat).
     // The table closes if idle, unless it is `staying` (the client moves to another seat of it).
-    void leave_table(Client& client, bool dropped, int staying = 0) {
+    void leave_table(Client& client, int staying = 0) {
         Table* table = table_of(client);
         const int seat = client.seat;
         client.table = 0;
@@ -348,11 +529,14 @@ struct Server::State {
             SeatSlot& slot = table->seats[seat - 1];
             slot.client = 0;
             slot.pending_aim.reset();
-            // A seat in a game under way waits for its owner; before the first action, or
-            // once the match is over, a leave frees it.
-            if ((!started(*table) && !dropped) || over(*table)) {
+            // A seat in a game under way waits for its owner (for away_limit at most); before
+            // the first action, or once the match is over, a leave or a drop frees it, so
+            // that a table nobody plays at does not stay.
+            if (!started(*table) || over(*table)) {
                 slot.token_hash.clear();
                 table->match.rename(seat, default_name(seat));
+            } else {
+                slot.away_since = Clock::now();
             }
             save(*table);
             seat_changed(*table, seat);
@@ -393,12 +577,20 @@ struct Server::State {
         if (token.empty())
             return send_error(client, ErrorCode::internal, "no random token to give: try again");
         const std::string hash = seat_token_hash(token);
+        // Only people who said hello count toward max_clients (the same person again does
+        // not: their old connection gives way below).
+        const auto others = std::count_if(clients.begin(), clients.end(), [&](const auto& entry) {
+            const Client& other = entry.second;
+            return other.welcomed && !other.closing && other.token_hash != hash;
+        });
+        if (others >= options.max_clients)
+            return send_and_close(client, ErrorCode::full, "the hall has all the clients it takes");
         // The same person again: the old connection gives way (its seats go away, then the
         // new one may take them back).
         for (auto& [id, other] : clients)
             if (id != client.id && other.welcomed && other.token_hash == hash && !other.closing) {
                 send_and_close(other, ErrorCode::replaced, "you connected again elsewhere");
-                leave_table(other, true);
+                leave_table(other);
             }
         client.welcomed = true;
         client.token = std::move(token);
@@ -416,6 +608,12 @@ struct Server::State {
     void on_create(Client& client, const Create& create) {
         if (static_cast<int>(tables.size()) >= options.max_tables)
             return send_error(client, ErrorCode::full, "the hall has all the tables it takes");
+        const auto waiting = std::count_if(tables.begin(), tables.end(), [&](const auto& entry) {
+            return entry.second.creator == client.token_hash && !started(entry.second);
+        });
+        if (waiting >= options.max_waiting_tables)
+            return send_error(client, ErrorCode::full,
+                              "you have " + std::to_string(waiting) + " tables waiting already");
         int number = 1;
         while (tables.count(number))
             ++number;
@@ -424,9 +622,14 @@ struct Server::State {
         auto started_match = new_match(create, random());
         if (const MatchError* e = std::get_if<MatchError>(&started_match))
             return send_error(client, ErrorCode::refused, match_error_text(*e));
-        tables.emplace(
-            number,
-            Table{number, std::move(std::get<Match>(started_match)), {}, 0, false, client.id});
+        tables.emplace(number, Table{number,
+                                     std::move(std::get<Match>(started_match)),
+                                     {},
+                                     ++last_ticket,
+                                     false,
+                                     client.token_hash,
+                                     0,
+                                     0});
         table_count = tables.size();
         save(tables.at(number));
         send(client, Created{number});
@@ -440,14 +643,26 @@ struct Server::State {
             return send_error(client, ErrorCode::no_table, "no such table");
         Table& table = found->second;
         SeatSlot& slot = table.seats[sit.seat - 1];
-        const bool mine = slot.token_hash == client.token_hash;
-        if (slot.computer || (!slot.token_hash.empty() && !mine))
+        // Sitting again where one sits changes nothing (a leave first would free the seat
+        // before the first shot): the record comes again, as after a sync.
+        if (client.table == sit.table && client.seat == sit.seat)
+            return join(client, table, sit.seat);
+        if (slot.computer || (!slot.token_hash.empty() && slot.token_hash != client.token_hash))
             return send_error(client, ErrorCode::seat_taken, "that seat is taken");
-        if (!mine && over(table))
+        if (slot.token_hash != client.token_hash && over(table))
             return send_error(client, ErrorCode::refused, "the match is over");
+        // One person holds one seat of a table: the other seat stays theirs unless they sit in
+        // it now and a leave frees it (before the first action).
+        const SeatSlot& other = table.seats[2 - sit.seat];
+        const bool moving_over = client.table == sit.table && client.seat == 3 - sit.seat &&
+                                 !started(table) && !over(table);
+        if (other.token_hash == client.token_hash && !moving_over)
+            return send_error(client, ErrorCode::refused, "you hold the other seat of this table");
         if (client.table != 0)
-            leave_table(client, false, sit.table); // never closes this table
+            leave_table(client, sit.table); // never closes this table
+        const bool mine = slot.token_hash == client.token_hash;
         slot.client = client.id;
+        slot.away_since.reset();
         if (!mine) {
             slot.token_hash = client.token_hash;
             table.match.rename(sit.seat, client.name);
@@ -462,7 +677,7 @@ struct Server::State {
         if (!tables.count(watch.table))
             return send_error(client, ErrorCode::no_table, "no such table");
         if (client.table != 0)
-            leave_table(client, false, watch.table);
+            leave_table(client, watch.table);
         join(client, tables.at(watch.table), 0);
     }
 
@@ -553,6 +768,15 @@ struct Server::State {
             return send_error(client, ErrorCode::hello_first, "say hello first");
         if (const auto* m = std::get_if<Hello>(&message))
             return on_hello(client, *m);
+        // The requests that send a record or change the lobby have a budget, so that one
+        // client cannot make the hall busy for everyone.
+        const bool costly =
+            std::holds_alternative<Create>(message) || std::holds_alternative<Sit>(message) ||
+            std::holds_alternative<Watch>(message) || std::holds_alternative<Leave>(message) ||
+            std::holds_alternative<Sync>(message);
+        if (costly &&
+            !client.requests.take(options.request_rate, options.request_burst, Clock::now()))
+            return send_error(client, ErrorCode::rate, "too many requests: slow down");
         if (const auto* m = std::get_if<Create>(&message))
             return on_create(client, *m);
         if (const auto* m = std::get_if<Sit>(&message))
@@ -563,7 +787,7 @@ struct Server::State {
             const int number = client.table;
             if (number == 0)
                 return send_error(client, ErrorCode::no_table, "you are at no table");
-            leave_table(client, false);
+            leave_table(client);
             return send(client, Left{number});
         }
         if (const auto* m = std::get_if<Act>(&message))
@@ -606,13 +830,22 @@ struct Server::State {
         // A few at a time, so that a flood of connections cannot starve the others' input.
         for (int i = 0; i < 16; ++i) {
             UniqueFd fd(::accept(listener.get(), nullptr, nullptr));
-            if (!fd)
+            if (!fd) {
+                if (errno == EMFILE || errno == ENFILE || errno == ENOBUFS || errno == ENOMEM) {
+                    log(std::string("accept: ") + std::strerror(errno) + ": pausing 100 ms");
+                    accept_paused_until = Clock::now() + std::chrono::milliseconds(100);
+                }
                 return;
+            }
             if (!make_nonblocking(fd.get()))
                 continue;
-            Client client(next_client_id++, Connection(std::move(fd)));
-            if (static_cast<int>(clients.size()) >= options.max_clients) {
-                send_and_close(client, ErrorCode::full, "the hall has all the clients it takes");
+            Client client(next_client_id++, Connection(std::move(fd)), Clock::now());
+            const auto unwelcomed =
+                std::count_if(clients.begin(), clients.end(), [](const auto& e) {
+                    return !e.second.welcomed && !e.second.closing;
+                });
+            if (unwelcomed >= options.max_unwelcomed) {
+                send_and_close(client, ErrorCode::full, "too many connections wait for hello");
                 continue; // closed as it goes out of scope
             }
             clients.emplace(client.id, std::move(client));
@@ -647,18 +880,30 @@ struct Server::State {
         for (const int id : closed) {
             Client& client = clients.at(id);
             const int number = client.table;
-            leave_table(client, true);
+            const std::string token_hash = client.token_hash;
+            leave_table(client);
             clients.erase(id);
-            // Its table, and any it created: one it never sat at would otherwise stay forever.
-            std::vector<int> numbers = {number};
-            for (const auto& [n, table] : tables)
-                if (table.creator == id)
-                    numbers.push_back(n);
-            for (const int n : numbers)
-                if (auto found = tables.find(n); found != tables.end())
-                    forget_if_idle(found->second);
+            if (auto found = tables.find(number); found != tables.end())
+                forget_if_idle(found->second);
+            forget_waiting_tables_of(token_hash);
             lobby_dirty = true;
         }
+    }
+
+    // A creator gone (and not connected again elsewhere) takes the tables they made and
+    // nobody came to: a table not started, nobody at it.
+    void forget_waiting_tables_of(const std::string& token_hash) {
+        if (token_hash.empty())
+            return;
+        for (const auto& [id, client] : clients)
+            if (client.token_hash == token_hash && !client.closing)
+                return;
+        std::vector<int> numbers;
+        for (const auto& [number, table] : tables)
+            if (table.creator == token_hash && !started(table))
+                numbers.push_back(number);
+        for (const int number : numbers)
+            forget_if_idle(tables.at(number));
     }
 
     std::string listen_on(const std::string& path) {
@@ -726,7 +971,11 @@ int Server::run() {
         ids.clear();
         fds.push_back({s.stop_pipe.read_end.get(), POLLIN, 0});
         fds.push_back({s.pool.wake_fd(), POLLIN, 0});
-        fds.push_back({s.listener.get(), POLLIN, 0});
+        const auto now = Clock::now();
+        if (s.accept_paused_until && now >= *s.accept_paused_until)
+            s.accept_paused_until.reset();
+        // A negative fd is left out by poll.
+        fds.push_back({s.accept_paused_until ? -1 : s.listener.get(), POLLIN, 0});
         for (auto& [id, client] : s.clients) {
             const short events =
                 static_cast<short>(POLLIN | (client.connection.wants_write() ? POLLOUT : 0));
@@ -734,7 +983,17 @@ int Server::run() {
             ids.push_back(id);
         }
         // A lobby change left over from the last round (a connection dropped) goes out now.
-        const int timeout = s.lobby_dirty ? 0 : s.aim_timeout(Clock::now());
+        const int aim = s.aim_timeout(now);
+        const int away = s.away_timeout(now);
+        int timeout = aim < 0 ? away : away < 0 ? aim : std::min(aim, away);
+        const int paused = s.accept_paused_until
+                               ? static_cast<int>(std::chrono::ceil<std::chrono::milliseconds>(
+                                                      *s.accept_paused_until - now)
+                                                      .count())
+                               : -1;
+        for (const int due : {s.lobby_timeout(now), s.hello_timeout(now), paused})
+            if (due >= 0)
+                timeout = timeout < 0 ? due : std::min(timeout, due);
         if (::poll(fds.data(), fds.size(), timeout) < 0 && errno != EINTR) {
             s.log(std::string("poll: ") + std::strerror(errno));
             break;
@@ -754,12 +1013,9 @@ int Server::run() {
         }
         s.flush_aims(Clock::now());
         s.drop_closed();
-        if (s.lobby_dirty) {
-            s.lobby_dirty = false;
-            for (auto& [id, client] : s.clients)
-                if (client.welcomed)
-                    s.send_lobby(client);
-        }
+        s.expire_away(Clock::now());
+        s.expire_unwelcomed(Clock::now());
+        s.send_lobbies(Clock::now());
         for (auto& [id, client] : s.clients)
             if (!client.closing && client.connection.wants_write() && !client.connection.flush())
                 client.closing = true;

@@ -16,8 +16,22 @@ namespace termpool::hall {
 struct ServerOptions {
     std::string socket_path; ///< where to listen (the folder must exist)
     std::string state_dir;   ///< where tables are saved and restored from; empty: nowhere
-    int max_clients = 256;   ///< connections beyond this are told "full" and closed
-    int max_tables = 100;    ///< tables beyond this are refused
+    /// People (connections that said hello) beyond this are told "full" and closed.
+    int max_clients = 256;
+    /// Connections not yet past hello beyond this are told "full" and closed at once.
+    int max_unwelcomed = 32;
+    /// A connection that has not said hello within this is closed.
+    std::chrono::milliseconds hello_timeout{10000};
+    int max_tables = 100; ///< tables beyond this are refused
+    /// Tables not started yet that one token may have created; more are refused ("full"). A
+    /// table nobody sits at or watches goes when its creator disconnects, and any table not
+    /// started goes when the last person leaves it.
+    int max_waiting_tables = 3;
+    /// How long a seat in a game under way waits for its owner, away, before it is freed (and
+    /// a table left with nobody goes). A restored seat counts from its table file's last
+    /// change (its mtime: the file is rewritten on every change of the table), so a restart
+    /// does not give it more time; a seat of a restored game not started is freed at once.
+    std::chrono::milliseconds away_limit = std::chrono::hours(7 * 24);
     /// Bytes queued for one client beyond which it is disconnected (it stopped reading). A
     /// whole race-to-99 record still fits.
     std::size_t output_limit = 256 * 1024;
@@ -25,7 +39,16 @@ struct ServerOptions {
     int computer_threads = 2;                      ///< the computer seats' worker pool
     std::chrono::milliseconds aim_interval{50};    ///< at most one aim per seat this often
     std::chrono::milliseconds chat_interval{1000}; ///< at most one chat per person this often
-    std::ostream* log = nullptr;                   ///< where to log (nothing when null)
+    /// The lobby's changes go out as one snapshot at most this often.
+    std::chrono::milliseconds lobby_interval{250};
+    /// A client whose output queue holds more than this gets the next snapshot only once it has
+    /// read it down: a slow reader is not buried in lobbies.
+    std::size_t lobby_queue_limit = 16 * 1024;
+    /// create, sit, watch, leave and sync: at most `request_burst` at once, `request_rate` a
+    /// second after that; beyond, "rate" (which counts as an error).
+    double request_rate = 5;
+    double request_burst = 20;   ///< see request_rate
+    std::ostream* log = nullptr; ///< where to log (nothing when null)
 };
 
 /// A hall server. `open`, then `run` until `stop`.
