@@ -24,7 +24,7 @@ constexpr const char* kUsage =
     "  --socket PATH    the Unix socket (default $XDG_RUNTIME_DIR/termpool/hall.sock, or\n"
     "                   /tmp/termpool-UID/hall.sock)\n"
     "  --state DIR      where tables are saved (default $XDG_STATE_HOME/termpool/hall)\n"
-    "  --max-clients N  connections at once (default 256)\n"
+    "  --max-clients N  people in the hall at once (default 256)\n"
     "  --max-tables N   tables at once (default 100)\n"
     "       termpool hall bench [--tables N] [--seconds S] [--think MS] [--seed S]\n"
     "  bench            play N tables of computers through a private server; print actions a\n"
