@@ -61,6 +61,7 @@ struct SeatSlot {
     std::optional<Strike> pending_aim; // the newest aim not yet forwarded
     std::optional<Clock::time_point> last_aim;
     std::optional<Clock::time_point> away_since; // while the owner's token keeps it, unseated
+    TokenBucket actions; // each action is validated, saved (fsync) and broadcast
 };
 
 struct Table {
@@ -689,6 +690,9 @@ struct Server::State {
             return send_error(client, ErrorCode::not_seated, "spectators do not play");
         if (!full(*table))
             return send_error(client, ErrorCode::refused, "waiting for an opponent");
+        if (!table->seats[client.seat - 1].actions.take(options.action_rate, options.action_burst,
+                                                        Clock::now()))
+            return send_error(client, ErrorCode::rate, "too many actions: slow down");
         if (const MatchError error = play(*table, client.seat, action); error != MatchError::none)
             return send_error(client, ErrorCode::refused, match_error_text(error));
         action_taken(*table);
@@ -852,23 +856,27 @@ struct Server::State {
         }
     }
 
-    void read_client(Client& client) {
-        std::vector<std::string> lines;
-        switch (client.connection.read_lines(lines)) {
-        case Connection::ReadResult::closed:
-            client.closing = true;
-            break;
-        case Connection::ReadResult::too_long:
-            send_and_close(client, ErrorCode::too_long,
-                           "a line is at most " + std::to_string(max_line_bytes) + " bytes");
-            return;
-        case Connection::ReadResult::ok:
-            break;
+    // Reads what the socket holds only once the lines read before are handled (the input
+    // buffer stays bounded), then handles at most lines_per_round of them: a client that
+    // sends a flood waits its turn behind the others, round by round.
+    void serve_client(Client& client, bool readable) {
+        if (readable && !client.connection.has_line()) {
+            switch (client.connection.read()) {
+            case Connection::ReadResult::closed:
+                client.closing = true;
+                return;
+            case Connection::ReadResult::too_long:
+                send_and_close(client, ErrorCode::too_long,
+                               "a line is at most " + std::to_string(max_line_bytes) + " bytes");
+                return;
+            case Connection::ReadResult::ok:
+                break;
+            }
         }
-        for (const std::string& line : lines) {
+        for (int i = 0; i < options.lines_per_round && client.connection.has_line(); ++i) {
             if (client.closing)
                 return;
-            on_line(client, line);
+            on_line(client, client.connection.take_line());
         }
     }
 
@@ -976,9 +984,12 @@ int Server::run() {
             s.accept_paused_until.reset();
         // A negative fd is left out by poll.
         fds.push_back({s.accept_paused_until ? -1 : s.listener.get(), POLLIN, 0});
+        bool lines_waiting = false; // lines read and not handled yet: poll must not sleep
         for (auto& [id, client] : s.clients) {
-            const short events =
-                static_cast<short>(POLLIN | (client.connection.wants_write() ? POLLOUT : 0));
+            const bool waiting = client.connection.has_line() && !client.closing;
+            lines_waiting = lines_waiting || waiting;
+            const short events = static_cast<short>(
+                (waiting ? 0 : POLLIN) | (client.connection.wants_write() ? POLLOUT : 0));
             fds.push_back({client.connection.fd(), events, 0});
             ids.push_back(id);
         }
@@ -994,6 +1005,8 @@ int Server::run() {
         for (const int due : {s.lobby_timeout(now), s.hello_timeout(now), paused})
             if (due >= 0)
                 timeout = timeout < 0 ? due : std::min(timeout, due);
+        if (lines_waiting)
+            timeout = 0;
         if (::poll(fds.data(), fds.size(), timeout) < 0 && errno != EINTR) {
             s.log(std::string("poll: ") + std::strerror(errno));
             break;
@@ -1008,8 +1021,9 @@ int Server::run() {
             const auto found = s.clients.find(ids[i]);
             if (found == s.clients.end() || found->second.closing)
                 continue;
-            if (fds[i + 3].revents & (POLLIN | POLLHUP | POLLERR))
-                s.read_client(found->second);
+            const bool readable = fds[i + 3].revents & (POLLIN | POLLHUP | POLLERR);
+            if (readable || found->second.connection.has_line())
+                s.serve_client(found->second, readable);
         }
         s.flush_aims(Clock::now());
         s.drop_closed();
