@@ -672,3 +672,28 @@ TEST_CASE("hall server: a seat's actions have a budget", "[hall]") {
     // Ann's seat has its own budget.
     play_one(ann, bob, table, {&ann, &bob});
 }
+
+TEST_CASE("hall server: an action that cannot be saved is not taken", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+    // A folder where the save's temporary file goes makes the atomic write fail (a chmod
+    // would not stop the tests' root).
+    const std::string in_the_way = table_path(dir.path(), table) + ".tmp";
+    REQUIRE(::mkdir(in_the_way.c_str(), 0700) == 0);
+    const RecordedAction move = chosen_move(*ann.match(table));
+    REQUIRE(ann.send(Act{move}));
+    CHECK(expect_error(ann).code == ErrorCode::internal);
+    REQUIRE(::rmdir(in_the_way.c_str()) == 0);
+    // Nothing changed: the same move is action 1 still, for everyone and in the file.
+    REQUIRE(ann.send(Act{move}));
+    await_action(bob, table, 1);
+    await_action(ann, table, 1);
+    CHECK(bob.match(table)->record().actions.size() == 1);
+    CHECK(ann.mismatches() + bob.mismatches() == 0);
+    CHECK(saved_hash(dir.path(), table) == ann.match(table)->state_hash());
+}

@@ -288,10 +288,13 @@ struct Server::State {
 
     // --- saving ----------------------------------------------------------------------------
 
-    bool save(const Table& table) {
+    bool save(const Table& table) { return save(table, table.match); }
+
+    // Saves `table` as it is with `match` in place of its own.
+    bool save(const Table& table, const Match& match) {
         if (options.state_dir.empty())
             return true;
-        SavedTable stored{table.number, table.match.record(), {}};
+        SavedTable stored{table.number, match.record(), {}};
         for (int s = 0; s < 2; ++s)
             stored.seat_tokens[s] = table.seats[s].token_hash;
         if (const std::string problem = save_table(options.state_dir, stored); !problem.empty()) {
@@ -407,8 +410,10 @@ struct Server::State {
             return;
         const PendingAction pending = table.match.pending();
         if (pending.kind == Pending::next_rack && table.seats[pending.player - 1].computer) {
-            if (table.match.next_rack(pending.player) == MatchError::none)
-                action_taken(table);
+            Match next = table.match;
+            if (next.next_rack(pending.player) == MatchError::none &&
+                !commit(table, std::move(next)))
+                log("table " + std::to_string(table.number) + ": the next rack waits");
             return;
         }
         if (!table.match.computer_to_act())
@@ -418,11 +423,21 @@ struct Server::State {
         pool.submit(ComputerJob{table.number, table.ticket, table.match, std::nullopt});
     }
 
-    // The match took an action: save, tell the table, move on.
+    // `next`, the table's match with one more action, is saved; only then does it become the
+    // table's, and the table is told. An action that could not be saved is not taken: were it
+    // played, a restart would lose it. False when the save failed (nothing changed).
+    bool commit(Table& table, Match next) {
+        if (!save(table, next))
+            return false;
+        table.match = std::move(next);
+        action_taken(table);
+        return true;
+    }
+
+    // The match took an action (saved): tell the table, move on.
     void action_taken(Table& table) {
         changed(table);
         const bool now_over = over(table);
-        save(table);
         const auto& actions = table.match.record().actions;
         send_to_table(table, ActionDone{table.number, actions.size(), table.match.state_hash(),
                                         actions.back()});
@@ -433,19 +448,19 @@ struct Server::State {
         think(table);
     }
 
-    MatchError play(Table& table, int seat, const RecordedAction& action) {
+    static MatchError play(Match& match, int seat, const RecordedAction& action) {
         switch (action.kind) {
         case RecordedAction::Kind::place:
-            return table.match.place(seat, action.place);
+            return match.place(seat, action.place);
         case RecordedAction::Kind::choose:
-            return table.match.choose(seat, action.choice);
+            return match.choose(seat, action.choice);
         case RecordedAction::Kind::shot: {
-            const auto played = table.match.shoot(seat, action.strike, action.call);
+            const auto played = match.shoot(seat, action.strike, action.call);
             const MatchError* error = std::get_if<MatchError>(&played);
             return error ? *error : MatchError::none;
         }
         case RecordedAction::Kind::rack:
-            return table.match.next_rack(seat);
+            return match.next_rack(seat);
         }
         return MatchError::not_now;
     }
@@ -479,15 +494,20 @@ struct Server::State {
             action.choice = answer.move->choice;
             action.strike = answer.move->shot.strike;
             action.call = answer.move->shot.call;
-            // Played on the live match, which stays the authority; the computers go on with
-            // new streams (the one the search moved on is in the copy, not worth carrying).
-            if (const MatchError error = play(table, seat, action); error != MatchError::none) {
+            // Played on a copy of the live match, which stays the authority; the computers go
+            // on with new streams (the one the search moved on is in the job's copy, not worth
+            // carrying).
+            Match next = table.match;
+            if (const MatchError error = play(next, seat, action); error != MatchError::none) {
                 computer_refused(table, seat, match_error_text(error));
                 continue;
             }
+            next.reseed_computers(random());
+            if (!commit(table, std::move(next))) {
+                computer_refused(table, seat, "it could not be saved");
+                continue;
+            }
             table.refusals = 0;
-            table.match.reseed_computers(random());
-            action_taken(table);
         }
     }
 
@@ -693,9 +713,12 @@ struct Server::State {
         if (!table->seats[client.seat - 1].actions.take(options.action_rate, options.action_burst,
                                                         Clock::now()))
             return send_error(client, ErrorCode::rate, "too many actions: slow down");
-        if (const MatchError error = play(*table, client.seat, action); error != MatchError::none)
+        Match next = table->match;
+        if (const MatchError error = play(next, client.seat, action); error != MatchError::none)
             return send_error(client, ErrorCode::refused, match_error_text(error));
-        action_taken(*table);
+        if (!commit(*table, std::move(next)))
+            return send_error(client, ErrorCode::internal,
+                              "the action could not be saved: nothing changed, try again");
     }
 
     void on_aim(Client& client, const Aim& aim) {
