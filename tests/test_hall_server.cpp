@@ -111,20 +111,61 @@ TEST_CASE("hall server: two clients play a whole game, a late spectator follows"
     CHECK(saved_hash(dir.path(), table) == hash);
 }
 
-TEST_CASE("hall server: the computer plays both seats on the worker pool", "[hall]") {
+TEST_CASE("hall server: the computer plays a seat on the worker pool", "[hall]") {
     test::TempDir dir("termpool-hall");
     RunningServer running(dir.path());
     HallClient eve = connected(dir.path(), "Eve");
     const int table = create_table(eve, GameType::nine_ball);
-    REQUIRE(eve.send(Watch{table}));
-    expect<RecordEnd>(eve);
-    REQUIRE(eve.send(SeatComputer{1, Level::easy}));
+    sit(eve, table, 1);
     REQUIRE(eve.send(SeatComputer{2, Level::easy}));
-    for (int step = 0; step < 400 && eve.match(table)->pending().kind != Pending::over; ++step)
-        await_action(eve, table, eve.match(table)->record().actions.size() + 1);
+    REQUIRE(eve.wait_for(
+        [](const ServerMessage& m) {
+            const auto* s = std::get_if<SeatChange>(&m);
+            return s && s->seat == 2 && s->view.kind == SeatKind::computer;
+        },
+        kWait));
+    for (int step = 0; step < 400 && eve.match(table)->pending().kind != Pending::over; ++step) {
+        const Match& match = *eve.match(table);
+        if (match.to_act() == 1)
+            REQUIRE(eve.send(Act{chosen_move(match)}));
+        await_action(eve, table, match.record().actions.size() + 1);
+    }
     REQUIRE(eve.match(table)->pending().kind == Pending::over);
     CHECK(eve.mismatches() == 0);
     CHECK(saved_hash(dir.path(), table) == eve.match(table)->state_hash());
+}
+
+TEST_CASE("hall server: a spectator cannot seat or unseat the computer", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient eve = connected(dir.path(), "Eve");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    REQUIRE(eve.send(Watch{table}));
+    expect<RecordEnd>(eve);
+    REQUIRE(eve.send(SeatComputer{2, Level::easy}));
+    CHECK(expect_error(eve).code == ErrorCode::not_seated);
+    // Ann may; then Eve may not take it away either.
+    REQUIRE(ann.send(SeatComputer{2, Level::easy}));
+    REQUIRE(eve.wait_for(
+        [](const ServerMessage& m) {
+            const auto* s = std::get_if<SeatChange>(&m);
+            return s && s->seat == 2 && s->view.kind == SeatKind::computer;
+        },
+        kWait));
+    REQUIRE(eve.send(SeatComputer{2, std::nullopt}));
+    CHECK(expect_error(eve).code == ErrorCode::not_seated);
+    REQUIRE(eve.send(Sync{}));
+    expect<RecordEnd>(eve);
+    const auto seat = eve.wait_for(
+        [](const ServerMessage& m) {
+            const auto* s = std::get_if<SeatChange>(&m);
+            return s && s->seat == 2;
+        },
+        kWait);
+    REQUIRE(seat);
+    CHECK(std::get<SeatChange>(*seat).view.kind == SeatKind::computer);
 }
 
 TEST_CASE("hall server: bad input gets an error, the server goes on", "[hall]") {

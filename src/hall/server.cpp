@@ -774,6 +774,10 @@ struct Server::State {
         Table* table = table_of(client);
         if (!table)
             return send_error(client, ErrorCode::no_table, "you are at no table");
+        // The players choose their opponent; a spectator must not change the game.
+        if (client.seat == 0)
+            return send_error(client, ErrorCode::not_seated,
+                              "only a player seated here seats the computer");
         SeatSlot& slot = table->seats[request.seat - 1];
         if (!slot.token_hash.empty() || (slot.computer && request.level && started(*table)))
             return send_error(client, ErrorCode::seat_taken, "that seat is taken");
