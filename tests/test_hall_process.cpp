@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -241,6 +242,34 @@ TEST_CASE("hall process: SIGTERM saves the tables, removes the socket and exits 
     CHECK(tables[1].number == waiting);
     CHECK(tables[1].seat_tokens[0] == seat_token_hash(eve.token()));
     CHECK(tables[1].seat_tokens[1] == "");
+}
+
+TEST_CASE("hall process: a log whose reader is gone does not stop the server", "[hall][e2e]") {
+    TempDir dir("termpool-hall-proc");
+    // The server logs to a pipe (a FIFO, opened for reading before the server opens it).
+    const std::string fifo = dir.path() + "/log.fifo";
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+    REQUIRE(reader >= 0);
+    auto server = run_termpool(
+        dir.path(),
+        {"hall", "serve", "--socket", socket_of(dir.path()), "--state", dir.path() + "/state"},
+        fifo);
+    bool up = false;
+    for (const auto end = Clock::now() + kWait; !up && server->running() && Clock::now() < end;) {
+        HallClient probe;
+        up = probe.connect(socket_of(dir.path())).empty();
+        if (!up)
+            std::this_thread::sleep_for(10ms);
+    }
+    REQUIRE(up);
+    ::close(reader);
+    // Creating a table is logged: the write meets a pipe nobody reads.
+    HallClient ann = connected(dir.path(), "Ann");
+    create_table(ann);
+    ann.send(Ping{});
+    CHECK(ann.wait_for(is<Pong>, kWait));
+    CHECK(server->running());
 }
 
 TEST_CASE("hall process: serve refuses a socket folder others may write to, and bad arguments",

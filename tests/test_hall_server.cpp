@@ -5,9 +5,13 @@
 #include <array>
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <condition_variable>
 #include <cstring>
 #include <ctime>
 #include <fcntl.h>
+#include <mutex>
+#include <ostream>
+#include <streambuf>
 #include <string>
 #include <sys/resource.h>
 #include <sys/socket.h>
@@ -107,20 +111,61 @@ TEST_CASE("hall server: two clients play a whole game, a late spectator follows"
     CHECK(saved_hash(dir.path(), table) == hash);
 }
 
-TEST_CASE("hall server: the computer plays both seats on the worker pool", "[hall]") {
+TEST_CASE("hall server: the computer plays a seat on the worker pool", "[hall]") {
     test::TempDir dir("termpool-hall");
     RunningServer running(dir.path());
     HallClient eve = connected(dir.path(), "Eve");
     const int table = create_table(eve, GameType::nine_ball);
-    REQUIRE(eve.send(Watch{table}));
-    expect<RecordEnd>(eve);
-    REQUIRE(eve.send(SeatComputer{1, Level::easy}));
+    sit(eve, table, 1);
     REQUIRE(eve.send(SeatComputer{2, Level::easy}));
-    for (int step = 0; step < 400 && eve.match(table)->pending().kind != Pending::over; ++step)
-        await_action(eve, table, eve.match(table)->record().actions.size() + 1);
+    REQUIRE(eve.wait_for(
+        [](const ServerMessage& m) {
+            const auto* s = std::get_if<SeatChange>(&m);
+            return s && s->seat == 2 && s->view.kind == SeatKind::computer;
+        },
+        kWait));
+    for (int step = 0; step < 400 && eve.match(table)->pending().kind != Pending::over; ++step) {
+        const Match& match = *eve.match(table);
+        if (match.to_act() == 1)
+            REQUIRE(eve.send(Act{chosen_move(match)}));
+        await_action(eve, table, match.record().actions.size() + 1);
+    }
     REQUIRE(eve.match(table)->pending().kind == Pending::over);
     CHECK(eve.mismatches() == 0);
     CHECK(saved_hash(dir.path(), table) == eve.match(table)->state_hash());
+}
+
+TEST_CASE("hall server: a spectator cannot seat or unseat the computer", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient eve = connected(dir.path(), "Eve");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    REQUIRE(eve.send(Watch{table}));
+    expect<RecordEnd>(eve);
+    REQUIRE(eve.send(SeatComputer{2, Level::easy}));
+    CHECK(expect_error(eve).code == ErrorCode::not_seated);
+    // Ann may; then Eve may not take it away either.
+    REQUIRE(ann.send(SeatComputer{2, Level::easy}));
+    REQUIRE(eve.wait_for(
+        [](const ServerMessage& m) {
+            const auto* s = std::get_if<SeatChange>(&m);
+            return s && s->seat == 2 && s->view.kind == SeatKind::computer;
+        },
+        kWait));
+    REQUIRE(eve.send(SeatComputer{2, std::nullopt}));
+    CHECK(expect_error(eve).code == ErrorCode::not_seated);
+    REQUIRE(eve.send(Sync{}));
+    expect<RecordEnd>(eve);
+    const auto seat = eve.wait_for(
+        [](const ServerMessage& m) {
+            const auto* s = std::get_if<SeatChange>(&m);
+            return s && s->seat == 2;
+        },
+        kWait);
+    REQUIRE(seat);
+    CHECK(std::get<SeatChange>(*seat).view.kind == SeatKind::computer);
 }
 
 TEST_CASE("hall server: bad input gets an error, the server goes on", "[hall]") {
@@ -556,4 +601,140 @@ TEST_CASE("hall server: out of file descriptors, the server waits rather than sp
     CHECK(still_serves(dir.path()));
     ann.send(Ping{});
     CHECK(ann.wait_for(is<Pong>, kWait));
+}
+
+// A log that can hold the server's thread in the middle of a round: armed, the next write
+// waits (at most kWait) until released. What arrives meanwhile is all there at the next poll.
+class GateLog : public std::streambuf {
+public:
+    void arm() {
+        const std::lock_guard lock(mutex_);
+        armed_ = true;
+        held_ = false;
+    }
+    bool wait_held() {
+        std::unique_lock lock(mutex_);
+        return changed_.wait_for(lock, kWait, [&] { return held_; });
+    }
+    void release() {
+        const std::lock_guard lock(mutex_);
+        armed_ = false;
+        changed_.notify_all();
+    }
+
+protected:
+    int overflow(int c) override {
+        hold();
+        return c == EOF ? 0 : c;
+    }
+    std::streamsize xsputn(const char*, std::streamsize n) override {
+        hold();
+        return n;
+    }
+
+private:
+    void hold() {
+        std::unique_lock lock(mutex_);
+        if (!armed_)
+            return;
+        held_ = true;
+        changed_.notify_all();
+        changed_.wait_for(lock, kWait, [&] { return !armed_; });
+    }
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    bool armed_ = false;
+    bool held_ = false;
+};
+
+TEST_CASE("hall server: a flood of lines from one client does not starve another", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    GateLog gate;
+    std::ostream log(&gate);
+    ServerOptions options;
+    options.log = &log;
+    RunningServer running(dir.path(), options);
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    for (HallClient* client : {&ann, &bob}) {
+        REQUIRE(client->send(Watch{table}));
+        expect<RecordEnd>(*client);
+    }
+    // The server is held by the log of Ann's sync while her flood (within one read of the
+    // server's) and then Bob's ping arrive: both are read in the same round, Ann's first.
+    // The flood ends with a chat, which Bob sees at the table: were the whole flood handled at
+    // once, the chat would come before the answer to Bob's ping.
+    gate.arm();
+    REQUIRE(ann.send(Sync{}));
+    REQUIRE(gate.wait_held());
+    std::string flood;
+    for (int i = 0; i < 5000; ++i)
+        flood += "ping\n";
+    flood += "chat done\n";
+    REQUIRE(ann.send_raw(flood));
+    REQUIRE(bob.send(Ping{}));
+    gate.release();
+    const auto first =
+        bob.wait_for([](const ServerMessage& m) { return is<Pong>(m) || is<ChatShown>(m); }, kWait);
+    REQUIRE(first);
+    CHECK(is<Pong>(*first));
+    // Ann is served in full all the same.
+    REQUIRE(ann.wait_for(is<ChatShown>, kWait));
+    CHECK(still_serves(dir.path()));
+}
+
+TEST_CASE("hall server: a seat's actions have a budget", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    ServerOptions options;
+    options.max_errors = 1000; // the refusals must not end the connection first
+    RunningServer running(dir.path(), options);
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+    // Bob is not to act: each action is refused by the match, until the budget runs out.
+    const std::string line = format_client(Act{chosen_move(*ann.match(table))});
+    std::string flood;
+    for (int i = 0; i < 100; ++i)
+        flood += line;
+    REQUIRE(bob.send_raw(flood));
+    int refused = 0;
+    int rate = 0;
+    for (int i = 0; i < 100; ++i) {
+        const auto m = bob.wait_for(is<Error>, kWait);
+        REQUIRE(m);
+        const Error& error = std::get<Error>(*m);
+        (error.code == ErrorCode::rate ? rate : refused) += 1;
+    }
+    CHECK(refused >= 40);
+    CHECK(rate > 0);
+    // Ann's seat has its own budget.
+    play_one(ann, bob, table, {&ann, &bob});
+}
+
+TEST_CASE("hall server: an action that cannot be saved is not taken", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+    // A folder where the save's temporary file goes makes the atomic write fail (a chmod
+    // would not stop the tests' root).
+    const std::string in_the_way = table_path(dir.path(), table) + ".tmp";
+    REQUIRE(::mkdir(in_the_way.c_str(), 0700) == 0);
+    const RecordedAction move = chosen_move(*ann.match(table));
+    REQUIRE(ann.send(Act{move}));
+    CHECK(expect_error(ann).code == ErrorCode::internal);
+    REQUIRE(::rmdir(in_the_way.c_str()) == 0);
+    // Nothing changed: the same move is action 1 still, for everyone and in the file.
+    REQUIRE(ann.send(Act{move}));
+    await_action(bob, table, 1);
+    await_action(ann, table, 1);
+    CHECK(bob.match(table)->record().actions.size() == 1);
+    CHECK(ann.mismatches() + bob.mismatches() == 0);
+    CHECK(saved_hash(dir.path(), table) == ann.match(table)->state_hash());
 }

@@ -7,7 +7,7 @@
 
 namespace termpool::hall {
 
-Connection::ReadResult Connection::read_lines(std::vector<std::string>& lines) {
+Connection::ReadResult Connection::read() {
     char buffer[65536];
     const ssize_t n = ::recv(fd_.get(), buffer, sizeof buffer, 0);
     if (n < 0)
@@ -22,13 +22,19 @@ Connection::ReadResult Connection::read_lines(std::vector<std::string>& lines) {
         if (in_.size() + (end - start) + 1 > max_line_bytes)
             return ReadResult::too_long;
         in_.append(got.substr(start, end - start));
-        lines.push_back(std::move(in_));
+        lines_.push_back(std::move(in_));
         in_.clear();
     }
     in_.append(got.substr(start));
     // A partial line that can no longer end within the limit is refused at once, so the
     // buffer never holds more than one line's worth.
     return in_.size() + 1 > max_line_bytes ? ReadResult::too_long : ReadResult::ok;
+}
+
+std::string Connection::take_line() {
+    std::string line = std::move(lines_.front());
+    lines_.pop_front();
+    return line;
 }
 
 bool Connection::queue(std::string_view bytes, std::size_t limit) {

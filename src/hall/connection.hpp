@@ -5,9 +5,9 @@
 /// reading cannot make the server buffer without end.
 
 #include <cstddef>
+#include <deque>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "hall/unique_fd.hpp"
 
@@ -28,9 +28,13 @@ public:
 
     /// The socket.
     int fd() const { return fd_.get(); }
-    /// Reads once (what the socket holds, up to 64 KiB) and appends each complete line,
-    /// without its '\n', to `lines`.
-    ReadResult read_lines(std::vector<std::string>& lines);
+    /// Reads once (what the socket holds, up to 64 KiB) and keeps each complete line, without
+    /// its '\n', for `take_line`.
+    ReadResult read();
+    /// True while a complete line read waits to be handled.
+    bool has_line() const { return !lines_.empty(); }
+    /// The oldest complete line read (there must be one).
+    std::string take_line();
     /// Queues `bytes` to send; false when the queue now holds more than `limit` bytes.
     bool queue(std::string_view bytes, std::size_t limit);
     /// Writes what the socket takes now; false when the socket failed.
@@ -42,7 +46,8 @@ public:
 
 private:
     UniqueFd fd_;
-    std::string in_;
+    std::string in_;                // the line being read, not complete yet
+    std::deque<std::string> lines_; // complete lines not handled yet
     std::string out_;
     std::size_t sent_ = 0; // bytes of out_ already written
 };

@@ -4,6 +4,8 @@
 #include <csignal>
 #include <cstdlib>
 #include <iostream>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <termpool/text_numbers.hpp>
 #include <unistd.h>
@@ -85,7 +87,22 @@ int serve(const std::vector<std::string>& args) {
         return 1;
     }
 
+    // The log goes to stderr, which may be a pipe whose reader is gone: a write there must
+    // fail, not kill the hall with every table unsaved.
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    sigemptyset(&ignore.sa_mask);
+    ::sigaction(SIGPIPE, &ignore, nullptr);
+    // The computer pool's workers start with SIGTERM and SIGINT blocked, so that the handler
+    // runs on the loop's thread, never in the middle of a search.
+    sigset_t stopping;
+    sigset_t previous;
+    sigemptyset(&stopping);
+    sigaddset(&stopping, SIGTERM);
+    sigaddset(&stopping, SIGINT);
+    ::pthread_sigmask(SIG_BLOCK, &stopping, &previous);
     Server server(options);
+    ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
     if (const std::string problem = server.open(); !problem.empty()) {
         std::cerr << "termpool hall: " << problem << '\n';
         return 1;

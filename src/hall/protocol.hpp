@@ -23,7 +23,8 @@
 ///   next-rack                         rack the next rack of a race
 ///   aim DEG SPEED SIDE FOLLOW         the shooter's cue as it aims (a Strike, not played)
 ///   chat TEXT                         to the table: 1..200 characters, no control characters
-///   computer SEAT LEVEL|none          seat (or unseat) the computer in an empty seat
+///   computer SEAT LEVEL|none          seat (or unseat) the computer in an empty seat (a
+///                                     player seated at the table only)
 ///   sync                              send me my table's record again
 ///   ping                              answered by pong
 ///

@@ -61,6 +61,7 @@ struct SeatSlot {
     std::optional<Strike> pending_aim; // the newest aim not yet forwarded
     std::optional<Clock::time_point> last_aim;
     std::optional<Clock::time_point> away_since; // while the owner's token keeps it, unseated
+    TokenBucket actions; // each action is validated, saved (fsync) and broadcast
 };
 
 struct Table {
@@ -287,10 +288,13 @@ struct Server::State {
 
     // --- saving ----------------------------------------------------------------------------
 
-    bool save(const Table& table) {
+    bool save(const Table& table) { return save(table, table.match); }
+
+    // Saves `table` as it is with `match` in place of its own.
+    bool save(const Table& table, const Match& match) {
         if (options.state_dir.empty())
             return true;
-        SavedTable stored{table.number, table.match.record(), {}};
+        SavedTable stored{table.number, match.record(), {}};
         for (int s = 0; s < 2; ++s)
             stored.seat_tokens[s] = table.seats[s].token_hash;
         if (const std::string problem = save_table(options.state_dir, stored); !problem.empty()) {
@@ -406,8 +410,10 @@ struct Server::State {
             return;
         const PendingAction pending = table.match.pending();
         if (pending.kind == Pending::next_rack && table.seats[pending.player - 1].computer) {
-            if (table.match.next_rack(pending.player) == MatchError::none)
-                action_taken(table);
+            Match next = table.match;
+            if (next.next_rack(pending.player) == MatchError::none &&
+                !commit(table, std::move(next)))
+                log("table " + std::to_string(table.number) + ": the next rack waits");
             return;
         }
         if (!table.match.computer_to_act())
@@ -417,11 +423,21 @@ struct Server::State {
         pool.submit(ComputerJob{table.number, table.ticket, table.match, std::nullopt});
     }
 
-    // The match took an action: save, tell the table, move on.
+    // `next`, the table's match with one more action, is saved; only then does it become the
+    // table's, and the table is told. An action that could not be saved is not taken: were it
+    // played, a restart would lose it. False when the save failed (nothing changed).
+    bool commit(Table& table, Match next) {
+        if (!save(table, next))
+            return false;
+        table.match = std::move(next);
+        action_taken(table);
+        return true;
+    }
+
+    // The match took an action (saved): tell the table, move on.
     void action_taken(Table& table) {
         changed(table);
         const bool now_over = over(table);
-        save(table);
         const auto& actions = table.match.record().actions;
         send_to_table(table, ActionDone{table.number, actions.size(), table.match.state_hash(),
                                         actions.back()});
@@ -432,19 +448,19 @@ struct Server::State {
         think(table);
     }
 
-    MatchError play(Table& table, int seat, const RecordedAction& action) {
+    static MatchError play(Match& match, int seat, const RecordedAction& action) {
         switch (action.kind) {
         case RecordedAction::Kind::place:
-            return table.match.place(seat, action.place);
+            return match.place(seat, action.place);
         case RecordedAction::Kind::choose:
-            return table.match.choose(seat, action.choice);
+            return match.choose(seat, action.choice);
         case RecordedAction::Kind::shot: {
-            const auto played = table.match.shoot(seat, action.strike, action.call);
+            const auto played = match.shoot(seat, action.strike, action.call);
             const MatchError* error = std::get_if<MatchError>(&played);
             return error ? *error : MatchError::none;
         }
         case RecordedAction::Kind::rack:
-            return table.match.next_rack(seat);
+            return match.next_rack(seat);
         }
         return MatchError::not_now;
     }
@@ -478,15 +494,20 @@ struct Server::State {
             action.choice = answer.move->choice;
             action.strike = answer.move->shot.strike;
             action.call = answer.move->shot.call;
-            // Played on the live match, which stays the authority; the computers go on with
-            // new streams (the one the search moved on is in the copy, not worth carrying).
-            if (const MatchError error = play(table, seat, action); error != MatchError::none) {
+            // Played on a copy of the live match, which stays the authority; the computers go
+            // on with new streams (the one the search moved on is in the job's copy, not worth
+            // carrying).
+            Match next = table.match;
+            if (const MatchError error = play(next, seat, action); error != MatchError::none) {
                 computer_refused(table, seat, match_error_text(error));
                 continue;
             }
+            next.reseed_computers(random());
+            if (!commit(table, std::move(next))) {
+                computer_refused(table, seat, "it could not be saved");
+                continue;
+            }
             table.refusals = 0;
-            table.match.reseed_computers(random());
-            action_taken(table);
         }
     }
 
@@ -689,9 +710,15 @@ struct Server::State {
             return send_error(client, ErrorCode::not_seated, "spectators do not play");
         if (!full(*table))
             return send_error(client, ErrorCode::refused, "waiting for an opponent");
-        if (const MatchError error = play(*table, client.seat, action); error != MatchError::none)
+        if (!table->seats[client.seat - 1].actions.take(options.action_rate, options.action_burst,
+                                                        Clock::now()))
+            return send_error(client, ErrorCode::rate, "too many actions: slow down");
+        Match next = table->match;
+        if (const MatchError error = play(next, client.seat, action); error != MatchError::none)
             return send_error(client, ErrorCode::refused, match_error_text(error));
-        action_taken(*table);
+        if (!commit(*table, std::move(next)))
+            return send_error(client, ErrorCode::internal,
+                              "the action could not be saved: nothing changed, try again");
     }
 
     void on_aim(Client& client, const Aim& aim) {
@@ -747,6 +774,10 @@ struct Server::State {
         Table* table = table_of(client);
         if (!table)
             return send_error(client, ErrorCode::no_table, "you are at no table");
+        // The players choose their opponent; a spectator must not change the game.
+        if (client.seat == 0)
+            return send_error(client, ErrorCode::not_seated,
+                              "only a player seated here seats the computer");
         SeatSlot& slot = table->seats[request.seat - 1];
         if (!slot.token_hash.empty() || (slot.computer && request.level && started(*table)))
             return send_error(client, ErrorCode::seat_taken, "that seat is taken");
@@ -852,23 +883,27 @@ struct Server::State {
         }
     }
 
-    void read_client(Client& client) {
-        std::vector<std::string> lines;
-        switch (client.connection.read_lines(lines)) {
-        case Connection::ReadResult::closed:
-            client.closing = true;
-            break;
-        case Connection::ReadResult::too_long:
-            send_and_close(client, ErrorCode::too_long,
-                           "a line is at most " + std::to_string(max_line_bytes) + " bytes");
-            return;
-        case Connection::ReadResult::ok:
-            break;
+    // Reads what the socket holds only once the lines read before are handled (the input
+    // buffer stays bounded), then handles at most lines_per_round of them: a client that
+    // sends a flood waits its turn behind the others, round by round.
+    void serve_client(Client& client, bool readable) {
+        if (readable && !client.connection.has_line()) {
+            switch (client.connection.read()) {
+            case Connection::ReadResult::closed:
+                client.closing = true;
+                return;
+            case Connection::ReadResult::too_long:
+                send_and_close(client, ErrorCode::too_long,
+                               "a line is at most " + std::to_string(max_line_bytes) + " bytes");
+                return;
+            case Connection::ReadResult::ok:
+                break;
+            }
         }
-        for (const std::string& line : lines) {
+        for (int i = 0; i < options.lines_per_round && client.connection.has_line(); ++i) {
             if (client.closing)
                 return;
-            on_line(client, line);
+            on_line(client, client.connection.take_line());
         }
     }
 
@@ -976,9 +1011,12 @@ int Server::run() {
             s.accept_paused_until.reset();
         // A negative fd is left out by poll.
         fds.push_back({s.accept_paused_until ? -1 : s.listener.get(), POLLIN, 0});
+        bool lines_waiting = false; // lines read and not handled yet: poll must not sleep
         for (auto& [id, client] : s.clients) {
-            const short events =
-                static_cast<short>(POLLIN | (client.connection.wants_write() ? POLLOUT : 0));
+            const bool waiting = client.connection.has_line() && !client.closing;
+            lines_waiting = lines_waiting || waiting;
+            const short events = static_cast<short>(
+                (waiting ? 0 : POLLIN) | (client.connection.wants_write() ? POLLOUT : 0));
             fds.push_back({client.connection.fd(), events, 0});
             ids.push_back(id);
         }
@@ -994,6 +1032,8 @@ int Server::run() {
         for (const int due : {s.lobby_timeout(now), s.hello_timeout(now), paused})
             if (due >= 0)
                 timeout = timeout < 0 ? due : std::min(timeout, due);
+        if (lines_waiting)
+            timeout = 0;
         if (::poll(fds.data(), fds.size(), timeout) < 0 && errno != EINTR) {
             s.log(std::string("poll: ") + std::strerror(errno));
             break;
@@ -1008,8 +1048,9 @@ int Server::run() {
             const auto found = s.clients.find(ids[i]);
             if (found == s.clients.end() || found->second.closing)
                 continue;
-            if (fds[i + 3].revents & (POLLIN | POLLHUP | POLLERR))
-                s.read_client(found->second);
+            const bool readable = fds[i + 3].revents & (POLLIN | POLLHUP | POLLERR);
+            if (readable || found->second.connection.has_line())
+                s.serve_client(found->second, readable);
         }
         s.flush_aims(Clock::now());
         s.drop_closed();

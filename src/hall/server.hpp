@@ -47,7 +47,14 @@ struct ServerOptions {
     /// create, sit, watch, leave and sync: at most `request_burst` at once, `request_rate` a
     /// second after that; beyond, "rate" (which counts as an error).
     double request_rate = 5;
-    double request_burst = 20;   ///< see request_rate
+    double request_burst = 20; ///< see request_rate
+    /// Actions (act, next-rack) from one seat: at most `action_burst` at once, `action_rate`
+    /// a second after that; beyond, "rate" (which counts as an error).
+    double action_rate = 20;
+    double action_burst = 40; ///< see action_rate
+    /// Lines of one client handled in one round of the poll loop; the rest wait for the next
+    /// round, after the other clients' turn.
+    int lines_per_round = 32;
     std::ostream* log = nullptr; ///< where to log (nothing when null)
 };
 
