@@ -9,6 +9,7 @@
 #include <cstring>
 #include <ctime>
 #include <fcntl.h>
+#include <fstream>
 #include <mutex>
 #include <ostream>
 #include <streambuf>
@@ -737,4 +738,40 @@ TEST_CASE("hall server: an action that cannot be saved is not taken", "[hall]") 
     CHECK(bob.match(table)->record().actions.size() == 1);
     CHECK(ann.mismatches() + bob.mismatches() == 0);
     CHECK(saved_hash(dir.path(), table) == ann.match(table)->state_hash());
+}
+
+TEST_CASE("hall server: a table keeps at most max_actions actions", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    ServerOptions options;
+    options.max_actions = 3;
+    RunningServer running(dir.path(), options);
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+    for (int k = 0; k < 3 && ann.match(table)->pending().kind != Pending::over; ++k)
+        play_one(ann, bob, table, {&ann, &bob});
+    REQUIRE(ann.match(table)->record().actions.size() == 3);
+    HallClient& actor = ann.match(table)->to_act() == 1 ? ann : bob;
+    REQUIRE(actor.send(Act{chosen_move(*actor.match(table))}));
+    const Error error = expect_error(actor);
+    CHECK(error.code == ErrorCode::refused);
+    CHECK(error.text.find("the most a table keeps") != std::string::npos);
+    CHECK(saved_hash(dir.path(), table) == ann.match(table)->state_hash());
+}
+
+TEST_CASE("hall server: a file at the socket's path that is not its socket is left alone",
+          "[hall]") {
+    test::TempDir dir("termpool-hall");
+    const std::string path = dir.path() + "/hall.sock";
+    std::ofstream(path) << "not a socket\n";
+    ServerOptions options;
+    options.socket_path = path;
+    Server server(options);
+    CHECK(server.open().find("not a socket of this user's") != std::string::npos);
+    std::ifstream in(path);
+    std::string text;
+    std::getline(in, text);
+    CHECK(text == "not a socket");
 }

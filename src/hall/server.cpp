@@ -101,6 +101,7 @@ struct Server::State {
     ServerOptions options;
     UniqueFd listener;
     bool made_socket = false;
+    std::pair<dev_t, ino_t> socket_id{}; // the socket file it made, to remove only that one
     WakePipe stop_pipe;
     ComputerPool pool;
     std::map<int, Client> clients; // by id
@@ -405,8 +406,13 @@ struct Server::State {
 
     // After a change: a computer to act gets a search; a race whose next breaker is a computer
     // racks at once (a person racks with next-rack when they are ready).
+    // Two seats trading fouls could grow a record without end: a table keeps so many actions.
+    bool at_action_cap(const Table& table) const {
+        return table.match.record().actions.size() >= options.max_actions;
+    }
+
     void think(Table& table) {
-        if (!full(table) || table.searching)
+        if (!full(table) || table.searching || at_action_cap(table))
             return;
         const PendingAction pending = table.match.pending();
         if (pending.kind == Pending::next_rack && table.seats[pending.player - 1].computer) {
@@ -713,6 +719,10 @@ struct Server::State {
         if (!table->seats[client.seat - 1].actions.take(options.action_rate, options.action_burst,
                                                         Clock::now()))
             return send_error(client, ErrorCode::rate, "too many actions: slow down");
+        if (at_action_cap(*table))
+            return send_error(client, ErrorCode::refused,
+                              "this game has had " + std::to_string(options.max_actions) +
+                                  " actions, the most a table keeps: no more are taken");
         Match next = table->match;
         if (const MatchError error = play(next, client.seat, action); error != MatchError::none)
             return send_error(client, ErrorCode::refused, match_error_text(error));
@@ -950,12 +960,17 @@ struct Server::State {
         std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
         const auto* raw = reinterpret_cast<const sockaddr*>(&address);
 
-        // A socket file nobody answers on is a dead server's: replace it. One that answers
-        // is a live hall's.
-        if (::access(path.c_str(), F_OK) == 0) {
+        // A socket of ours that nobody answers on is a dead server's: replace it. One that
+        // answers is a live hall's; anything else at the path is not ours to delete.
+        struct stat st {};
+        if (::lstat(path.c_str(), &st) == 0) {
+            if (!S_ISSOCK(st.st_mode) || st.st_uid != ::getuid())
+                return path + ": not a socket of this user's: it is left alone";
             const UniqueFd probe(::socket(AF_UNIX, SOCK_STREAM, 0));
             if (probe && ::connect(probe.get(), raw, sizeof address) == 0)
                 return "a hall already serves on " + path;
+            if (errno != ECONNREFUSED)
+                return path + ": " + std::strerror(errno);
             ::unlink(path.c_str());
         }
         listener = UniqueFd(::socket(AF_UNIX, SOCK_STREAM, 0));
@@ -964,6 +979,8 @@ struct Server::State {
         if (::bind(listener.get(), raw, sizeof address) != 0)
             return path + ": " + std::strerror(errno);
         made_socket = true;
+        if (::stat(path.c_str(), &st) == 0)
+            socket_id = {st.st_dev, st.st_ino};
         if (::listen(listener.get(), 64) != 0)
             return path + ": " + std::strerror(errno);
         return {};
@@ -974,8 +991,12 @@ Server::Server(ServerOptions options) : state_(std::make_unique<State>(std::move
 
 Server::~Server() {
     // The workers stop before the sockets close (the pool is a member, destroyed with state_).
-    if (state_->made_socket)
-        ::unlink(state_->options.socket_path.c_str());
+    // Only the socket it made: another server may have replaced it since.
+    struct stat st {};
+    const std::string& path = state_->options.socket_path;
+    if (state_->made_socket && ::lstat(path.c_str(), &st) == 0 &&
+        std::pair{st.st_dev, st.st_ino} == state_->socket_id)
+        ::unlink(path.c_str());
 }
 
 std::string Server::open() {

@@ -55,6 +55,9 @@ struct ServerOptions {
     /// Lines of one client handled in one round of the poll loop; the rest wait for the next
     /// round, after the other clients' turn.
     int lines_per_round = 32;
+    /// Actions one table's record may hold (a game of pool takes a few hundred); beyond, an
+    /// action is refused, so that a record cannot grow without end.
+    std::size_t max_actions = 5000;
     std::ostream* log = nullptr; ///< where to log (nothing when null)
 };
 
