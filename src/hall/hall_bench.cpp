@@ -37,7 +37,8 @@ constexpr const char* usage =
     "usage: termpool hall bench [--tables N] [--seconds S] [--think MS] [--seed S]\n"
     "  plays N tables (default 10, at most 500) of two easy computers through a hall server\n"
     "  on a private socket for S seconds (default 10, at most 600), each taking MS ms\n"
-    "  (default 100) between actions as a player would, then checks every table\n";
+    "  (default 100, at least 50: the hall takes 20 actions a second from a seat) between\n"
+    "  actions as a player would, then checks every table\n";
 
 constexpr milliseconds wait_limit{5000}; // the longest any one answer may take
 
@@ -141,7 +142,7 @@ std::optional<Options> parse(const std::vector<std::string>& args, std::string& 
             o.tables = static_cast<int>(*n);
         else if (args[i] == "--seconds" && n && *n >= 1 && *n <= 600)
             o.seconds = static_cast<int>(*n);
-        else if (args[i] == "--think" && n && *n <= 10000)
+        else if (args[i] == "--think" && n && *n >= 50 && *n <= 10000) // a seat may act 20 a second
             o.think_ms = static_cast<int>(*n);
         else if (args[i] == "--seed" && n)
             o.seed = *n;
@@ -153,19 +154,27 @@ std::optional<Options> parse(const std::vector<std::string>& args, std::string& 
     return o;
 }
 
-// Both players' copies have applied action `seq` (or the connection went).
-bool both_have(HallClient (&players)[2], int table, std::size_t seq) {
+// Both players' copies have applied action `seq`: "" then, else what went wrong (the server's
+// error to the one who acted, or no answer).
+std::string both_have(HallClient (&players)[2], HallClient& actor, int table, std::size_t seq) {
     for (HallClient& p : players) {
+        std::string refused;
         const auto got = p.wait_for(
             [&](const ServerMessage& m) {
+                if (const auto* e = std::get_if<Error>(&m); e && &p == &actor) {
+                    refused = std::string(error_code_name(e->code)) + ": " + e->text;
+                    return true;
+                }
                 const auto* done = std::get_if<ActionDone>(&m);
                 return done && done->table == table && done->seq >= seq;
             },
             wait_limit);
+        if (!refused.empty())
+            return "refused: " + refused;
         if (!got)
-            return false;
+            return "no answer within 5 s";
     }
-    return true;
+    return {};
 }
 
 // One table: two clients sit, each plays its seat with its own easy computer, as a person at a
@@ -175,13 +184,23 @@ TableRun drive_table(const std::string& socket, int index, std::uint64_t seed, i
     TableRun run;
     HallClient players[2];
     for (int p = 0; p < 2; ++p) {
-        if (std::string e = players[p].connect(socket); !e.empty()) {
-            run.problem = e;
-            return run;
-        }
+        // A hall takes so many newcomers at once: a client told "full" tries again, waiting a
+        // little longer each time, as a player's terminal would.
         const std::string name = "Bench " + std::to_string(index) + (p == 0 ? "a" : "b");
-        if (std::string e = players[p].hello(name, "", wait_limit); !e.empty()) {
-            run.problem = "hello: " + e;
+        std::string problem = "no answer";
+        milliseconds pause{10};
+        for (const auto until = Clock::now() + wait_limit; Clock::now() < until;
+             pause = std::min(pause * 2, milliseconds(500))) {
+            problem = players[p].connect(socket);
+            if (problem.empty())
+                problem = players[p].hello(name, "", wait_limit);
+            if (problem.empty())
+                break;
+            players[p].disconnect();
+            std::this_thread::sleep_for(pause);
+        }
+        if (!problem.empty()) {
+            run.problem = "hello: " + problem;
             return run;
         }
     }
@@ -236,8 +255,10 @@ TableRun drive_table(const std::string& socket, int index, std::uint64_t seed, i
         }
         std::this_thread::sleep_for(milliseconds(think_ms));
         const auto sent = Clock::now();
-        if (!actor.send(message) || !both_have(players, table, seq)) {
-            run.problem = "action " + std::to_string(seq) + " did not reach both players";
+        const std::string problem =
+            actor.send(message) ? both_have(players, actor, table, seq) : "the server went away";
+        if (!problem.empty()) {
+            run.problem = "action " + std::to_string(seq) + ": " + problem;
             return run;
         }
         run.round_trips_ms.push_back(
