@@ -61,29 +61,39 @@ double classic_line_contact(const Ball& b, Vec2 point, Vec2 normal, double horiz
     return advance_until_contact(gap, bound, horizon);
 }
 
+// The earliest table event a search has found in a piece, from `now` on; the piece's own end
+// (its next transition) until something comes sooner.
+struct EarliestEvent {
+    EarliestEvent(const MotionPiece& piece, double now)
+        : now(now), best{piece.end, TableEventKind::transition, 0} {}
+    // An event `dt` seconds after `now`, kept when it is the soonest yet.
+    void consider(double dt, TableEventKind kind, int feature) {
+        if (now + dt < best.time)
+            best = {now + dt, kind, feature};
+    }
+    double now;
+    TableEvent best;
+};
+
 } // namespace
 
 TableEvent physical_table_event(const MotionPiece& piece, const Box& reach, double now,
                                 const Table& table, const PhysicsParams& params) {
-    TableEvent best{piece.end, TableEventKind::transition, 0};
+    EarliestEvent found(piece, now);
     const double R = params.ball_radius;
     const double horizon = piece.end - now;
-    auto consider = [&](double dt, TableEventKind kind, int feature) {
-        if (now + dt < best.time)
-            best = {now + dt, kind, feature};
-    };
     const Path path = path_from(piece, now);
     for (int c = 0; c < 6; ++c) {
         const CushionSegment& seg = table.cushions[c];
         if (!box_reaches_line(reach, seg.start, seg.normal, R))
             continue;
         const double dt = path_line_contact_time(path, seg.start, seg.normal, R, horizon);
-        if (now + dt < best.time && hits_segment(path, dt, seg))
-            consider(dt, TableEventKind::rail, c);
+        if (now + dt < found.best.time && hits_segment(path, dt, seg))
+            found.consider(dt, TableEventKind::rail, c);
     }
     // Nothing of the table is met after the first rail hit, so the pockets are searched only up
     // to it: for a fast ball that path's box is far smaller than the whole slide's.
-    const double until_rail = std::min(horizon, best.time - now);
+    const double until_rail = std::min(horizon, found.best.time - now);
     const Box to_rail = path_box(path, until_rail);
     for (int p = 0; p < 6; ++p) {
         if (!near_pocket(table, to_rail, p, R))
@@ -96,50 +106,46 @@ TableEvent physical_table_event(const MotionPiece& piece, const Box& reach, doub
             if (boxes_within(to_rail, box_of(seg.start, seg.end), R)) {
                 const double dt =
                     path_line_contact_time(path, seg.start, seg.normal, R, until_rail);
-                if (now + dt < best.time && hits_segment(path, dt, seg))
-                    consider(dt, TableEventKind::jaw_line, c);
+                if (now + dt < found.best.time && hits_segment(path, dt, seg))
+                    found.consider(dt, TableEventKind::jaw_line, c);
             }
             const int point = 2 * p + side;
             const Vec2 jaw = table.jaw_points[point];
             if (boxes_within(to_rail, {jaw, jaw}, R))
-                consider(path_point_contact_time(path, jaw, R, until_rail),
-                         TableEventKind::jaw_point, point);
+                found.consider(path_point_contact_time(path, jaw, R, until_rail),
+                               TableEventKind::jaw_point, point);
         }
         const Pocket& pocket = table.pockets[p];
         if (box_reaches_line(to_rail, pocket.capture_point, pocket.capture_normal, 0))
-            consider(path_line_contact_time(path, pocket.capture_point, pocket.capture_normal, 0,
-                                            until_rail),
-                     TableEventKind::capture, p);
+            found.consider(path_line_contact_time(path, pocket.capture_point, pocket.capture_normal,
+                                                  0, until_rail),
+                           TableEventKind::capture, p);
     }
-    return best;
+    return found.best;
 }
 
 TableEvent classic_table_event(const MotionPiece& piece, const Box& reach, double now,
                                const Table& table, const PhysicsParams& params, AdvanceFn advance) {
-    TableEvent best{piece.end, TableEventKind::transition, 0};
+    EarliestEvent found(piece, now);
     const double R = params.ball_radius;
     const double horizon = piece.end - now;
-    auto consider = [&](double dt, TableEventKind kind, int feature) {
-        if (now + dt < best.time)
-            best = {now + dt, kind, feature};
-    };
     const Ball b = state_at(piece, now, advance, params);
     for (int c = 0; c < 18; ++c) {
         const CushionSegment& seg = table.cushions[c];
         if (seg.pocket != 0 && !near_pocket(table, reach, seg.pocket - 1, R))
             continue;
-        consider(classic_segment_contact(b, seg, horizon, params, advance),
-                 c < 6 ? TableEventKind::rail : TableEventKind::jaw_line, c);
+        found.consider(classic_segment_contact(b, seg, horizon, params, advance),
+                       c < 6 ? TableEventKind::rail : TableEventKind::jaw_line, c);
     }
     for (int p = 0; p < 6; ++p) {
         if (!near_pocket(table, reach, p, R))
             continue;
         const Pocket& pocket = table.pockets[p];
-        consider(classic_line_contact(b, pocket.capture_point, pocket.capture_normal, horizon,
-                                      params, advance),
-                 TableEventKind::capture, p);
+        found.consider(classic_line_contact(b, pocket.capture_point, pocket.capture_normal, horizon,
+                                            params, advance),
+                       TableEventKind::capture, p);
     }
-    return best;
+    return found.best;
 }
 
 Vec2 physical_towards_cushion(const Ball&, const CushionSegment& seg) {
