@@ -4,6 +4,7 @@
 #include "hall/hall_main.hpp"
 #include "tui/bench_render.hpp"
 #include "tui/game_main.hpp"
+#include "tui/hall_session.hpp"
 #include "tui/stats_command.hpp"
 
 #include <exception>
@@ -36,6 +37,8 @@ void print_usage(std::ostream& out) {
            "                        the seed report's friction and mass study\n"
            "  selfplay --games N --p1 LEVEL --p2 LEVEL [--game G] [--seed S] [--jobs J]\n"
            "                        computer against computer\n"
+           "  hall [--name NAME] [--socket PATH] [--ascii]\n"
+           "                        play in the pool hall (its server starts if need be)\n"
            "  hall serve [--socket PATH] [--state DIR] [--max-clients N] [--max-tables N]\n"
            "                        run the pool hall's server (friends play over SSH)\n"
            "  hall bench [--tables N] [--seconds S] [--think MS] [--seed S]\n"
@@ -86,7 +89,10 @@ int main(int argc, char** argv) {
             return termpool::cli::selfplay_command(rest);
         }
         if (command == "hall") {
-            return termpool::hall::hall_command(rest);
+            // serve and bench are the hall's own; the rest is a player's terminal in it.
+            if (!rest.empty() && (rest.front() == "serve" || rest.front() == "bench"))
+                return termpool::hall::hall_command(rest);
+            return termpool::tui::run_hall(rest);
         }
         if (command == "stats") {
             return termpool::tui::stats_command(rest);

@@ -56,7 +56,8 @@ std::optional<ServerMessage> HallClient::receive(std::chrono::milliseconds timeo
                 return std::nullopt;
             }
             ServerMessage message = std::move(std::get<ServerMessage>(parsed));
-            follow(message);
+            if (keep_copies_)
+                follow(message);
             return message;
         }
         if (!fd_ || in_.size() >= max_line_bytes)

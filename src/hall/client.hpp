@@ -44,6 +44,14 @@ public:
 
     /// True once the server closed the connection (or it was never open).
     bool closed() const { return !fd_; }
+    /// The socket, to wait on beside other input (-1 when closed).
+    int fd() const { return fd_ ? fd_.get() : -1; }
+    /// True when a whole line is read already: `receive(0)` gives it without the socket.
+    bool line_waiting() const { return in_.find('\n') != std::string::npos; }
+    /// Whether `receive` follows tables: keeps their copies, `table()` and `seat()` (default:
+    /// yes). A front end that plays each action itself turns it off rather than simulate every
+    /// shot twice.
+    void keep_copies(bool keep) { keep_copies_ = keep; }
     /// The token from welcome.
     const std::string& token() const { return token_; }
     /// The table this client sits at or watches (0: none) and its seat (0: watching).
@@ -73,6 +81,7 @@ private:
     std::map<int, Followed> followed_;
     int mismatches_ = 0;
     int bad_lines_ = 0;
+    bool keep_copies_ = true;
 };
 
 } // namespace termpool::hall

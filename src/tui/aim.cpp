@@ -145,6 +145,12 @@ double speed_from_power(double power, bool is_break) {
     return min_shot_speed + p * (top - min_shot_speed);
 }
 
+double power_from_speed(double speed, bool is_break) {
+    const double top = is_break ? max_break_speed : max_shot_speed;
+    const double p = (speed - min_shot_speed) / (top - min_shot_speed);
+    return std::isfinite(p) ? std::clamp(p, 0.0, 1.0) : 0.0;
+}
+
 double clamp_spin(double offset) {
     if (!std::isfinite(offset))
         return 0;

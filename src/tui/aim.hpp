@@ -37,6 +37,10 @@ double power_from_time(double seconds, double period = 1.5);
 /// break, `max_shot_speed` otherwise (power is clamped first).
 double speed_from_power(double power, bool is_break);
 
+/// The power that gives `speed` (the inverse of speed_from_power, clamped to [0, 1]): the bar
+/// of a shot someone else aims, or the computer.
+double power_from_speed(double speed, bool is_break);
+
 /// A tip offset clamped to +-`max_spin`, rounded to a millionth so that steps stay tidy.
 double clamp_spin(double offset);
 

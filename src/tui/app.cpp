@@ -145,8 +145,10 @@ void App::compose(View& v) const {
         break;
     }
     compose_prompt(v);
+    if (in_hall())
+        compose_hall(v);
     if (confirm_quit_)
-        v.overlay = "Quit the game?  y / n";
+        v.overlay = in_hall() ? "Leave the table?  y / n" : "Quit the game?  y / n";
 }
 
 void App::compose_aiming(View& v) const {
@@ -225,7 +227,8 @@ void App::handle(const Input& in) {
         running_ = false;
         return;
     }
-    if (in.kind == Input::Kind::none || in.kind == Input::Kind::resize)
+    if (in.kind == Input::Kind::none || in.kind == Input::Kind::resize ||
+        in.kind == Input::Kind::watched)
         return;
     if (entry_.player != 0) {
         handle_text_entry(in);
@@ -236,6 +239,8 @@ void App::handle(const Input& in) {
         return;
     }
     if (handle_overlay(in))
+        return;
+    if (in_hall() && handle_hall_key(in))
         return;
     if (replaying_) {
         handle_replay_key(in);
@@ -289,7 +294,7 @@ void App::handle_key(int key, const std::string& text) {
         help_ = true;
         return;
     }
-    if (text == "n" && mode_ != Mode::game_over && mode_ != Mode::animating) {
+    if (text == "n" && mode_ != Mode::game_over && mode_ != Mode::animating && !in_hall()) {
         entry_.player = match_.to_act();
         entry_.text.clear();
         return;
@@ -311,6 +316,8 @@ void App::handle_key(int key, const std::string& text) {
                 next_rack();
             return;
         }
+        if (in_hall())
+            return; // a new game is a new table, from the lobby
         if (text == "r" || text == "n") {
             const int loser = 3 - game().winner();
             new_game(text == "r" ? loser : 1);
@@ -320,7 +327,13 @@ void App::handle_key(int key, const std::string& text) {
     case Mode::choosing: {
         const auto& choices = game().choices();
         if (text.size() == 1 && text[0] >= '1' &&
-            text[0] < '1' + static_cast<int>(choices.size())) {
+            text[0] < '1' + static_cast<int>(choices.size()) && in_hall()) {
+            RecordedAction action;
+            action.kind = RecordedAction::Kind::choose;
+            action.choice = choices[static_cast<std::size_t>(text[0] - '1')];
+            send_to_hall(action);
+        } else if (text.size() == 1 && text[0] >= '1' &&
+                   text[0] < '1' + static_cast<int>(choices.size())) {
             choose(choices[static_cast<std::size_t>(text[0] - '1')]);
             message_ = name(game().shooter()) + (game().is_break() ? " breaks" : " to shoot");
             start_turn();
@@ -361,28 +374,35 @@ void App::handle_mouse(const Input& in) {
         handle_aiming_mouse(in);
 }
 
+void App::step() {
+    if (mode_ == Mode::animating) {
+        const double t = std::chrono::duration<double>(Clock::now() - shot_start_).count();
+        if (t >= result_.rest_time)
+            after_shot();
+        else
+            shown_balls_ = trajectory_->sample(t);
+    }
+    if (in_hall())
+        apply_hall_actions();
+    else if (replaying_)
+        replay_step();
+    else if (computer_to_act())
+        computer_turn();
+    else if (computers_watched_rack_over())
+        next_rack();
+}
+
+bool App::moving() const {
+    return mode_ == Mode::animating || (mode_ == Mode::aiming && aim_.time_power) ||
+           computer_to_act() || (replaying_ && !paused_) || !hall_queue_.empty();
+}
+
 int App::run() {
     while (running_) {
         const int w = term_.width(), h = term_.height();
-        if (mode_ == Mode::animating) {
-            const double t = std::chrono::duration<double>(Clock::now() - shot_start_).count();
-            if (t >= result_.rest_time) {
-                after_shot();
-            } else {
-                shown_balls_ = trajectory_->sample(t);
-            }
-        }
-        if (replaying_)
-            replay_step();
-        else if (computer_to_act())
-            computer_turn();
-        else if (computers_watched_rack_over())
-            next_rack();
+        step();
         term_.draw(frame(w, h));
-        const bool moving = mode_ == Mode::animating ||
-                            (mode_ == Mode::aiming && aim_.time_power) || computer_to_act() ||
-                            (replaying_ && !paused_);
-        Input in = term_.read(moving ? frame_ms : 500);
+        Input in = term_.read(moving() ? frame_ms : 500);
         // Drain what has queued up so that a fast mouse does not lag behind.
         while (in.kind != Input::Kind::none && running_) {
             handle(in);

@@ -4,14 +4,19 @@
 // frame is drawn from. The game's flow is the Match's; curses stays in terminal.cpp.
 
 #include <chrono>
+#include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 #include <termpool/match.hpp>
 #include <termpool/practice.hpp>
+#include <utility>
+#include <vector>
 
 #include "tui/aim_state.hpp"
 #include "tui/computer_pacing.hpp"
 #include "tui/options.hpp"
+#include "tui/table_link.hpp"
 #include "tui/terminal.hpp"
 #include "tui/text_entry.hpp"
 #include "tui/view.hpp"
@@ -29,6 +34,40 @@ public:
     void resume(Match match);
     /// Plays a saved game back instead of playing: space pauses, Left/Right step a shot.
     void start_replay(const GameRecord& record);
+
+    // The loop's parts, for a front end with a loop of its own (the hall's).
+    /// Moves time on: the shot rolling, the computer's or the hall's next move.
+    void step();
+    /// The frame to draw at this size.
+    Grid frame(int width, int height);
+    /// One input event.
+    void handle(const Input& in);
+    /// False once the players quit (in the hall: leave the table).
+    bool running() const { return running_; }
+    /// True while something moves on screen by itself: frames are due often.
+    bool moving() const;
+
+    // A table in the hall (app_hall.cpp): the server owns the match; this App shows the
+    // server's actions as they come and sends what the player here does through `link`.
+    /// Takes up the hall's table at `match`, playing `link.seat` (0: watching).
+    void join_hall(Match match, TableLink link);
+    /// The whole table again, from the server's record (after a mismatch or a reconnect).
+    void hall_record(Match match);
+    /// The server applied `action` as the table's action `seq`, giving state `hash`.
+    void hall_action(std::size_t seq, std::uint64_t hash, const RecordedAction& action);
+    /// The shooter in `seat` aims so.
+    void hall_aim(int seat, const Strike& strike);
+    /// A chat line at the table.
+    void hall_chat(const std::string& name, const std::string& text);
+    /// Who sits in `seat` (1 or 2) now.
+    void hall_seat(int seat, const HallSeat& who);
+    /// The server refused what this terminal sent.
+    void hall_refused(const std::string& why);
+    /// A word from the hall for the message line (the connection went or came back).
+    void hall_notice(const std::string& text);
+    /// True once (then false) when the local copy disagreed with the server's: ask for the
+    /// record.
+    bool take_sync_request() { return std::exchange(sync_wanted_, false); }
 
 private:
     enum class Mode { names, placing, aiming, animating, choosing, game_over, replay, moving };
@@ -50,6 +89,7 @@ private:
     bool nudge(Vec2& spot, int key, const std::string& text) const;
     void shoot();
     void play(const Strike& strike, const ShotCall& call);
+    void show_shot(PlayedShot shot, Trajectory trajectory, MatchState score_before, Game before);
     bool place(Vec2 spot);
     void choose(Choice choice);
     void save();
@@ -64,8 +104,6 @@ private:
     void compose(View& view) const;
     void compose_aiming(View& view) const;
     void compose_prompt(View& view) const;
-    Grid frame(int width, int height);
-    void handle(const Input& in);
     bool handle_overlay(const Input& in);
     void handle_key(int key, const std::string& text);
     void handle_aiming_key(int key, const std::string& text);
@@ -91,6 +129,18 @@ private:
     void handle_moving_key(int key, const std::string& text);
     void handle_moving_mouse(const Input& in);
     void compose_moving(View& view) const;
+
+    // The hall (app_hall.cpp).
+    bool in_hall() const { return link_.has_value(); }
+    bool hall_seat_to_act() const;
+    bool hall_waits() const;
+    bool send_to_hall(const RecordedAction& action);
+    void apply_hall_actions();
+    bool apply_hall_action(const RecordedAction& action);
+    void send_hall_aim();
+    bool handle_hall_key(const Input& in);
+    void compose_hall(View& view) const;
+    std::string hall_game_over_text() const;
 
     Terminal& term_;
     GameOptions options_;
@@ -137,6 +187,22 @@ private:
     bool replaying_ = false;
     bool paused_ = false;
     std::size_t next_action_ = 0; // replay: the next action of replay_record_ to show
+
+    // The hall: where this terminal's actions go, the server's actions not shown yet, the
+    // seats as the hall sees them, the table's chat and the line being typed into it.
+    struct HallAction {
+        std::size_t seq = 0;
+        std::uint64_t hash = 0;
+        RecordedAction action;
+    };
+    std::optional<TableLink> link_;
+    std::deque<HallAction> hall_queue_;
+    bool awaiting_hall_ = false; // an action of ours is on its way to the server
+    bool sync_wanted_ = false;
+    HallSeat hall_seats_[2];
+    std::vector<std::string> chat_;
+    std::optional<TextEntry> chat_entry_;
+    std::optional<Strike> aim_sent_;
 
     std::string message_;
     std::string save_problem_;       // why the last save failed, shown until one works

@@ -22,6 +22,13 @@ void App::new_game(int breaker) {
 
 void App::next_rack() {
     const int breaker = match_.next_breaker();
+    if (in_hall()) {
+        RecordedAction action;
+        action.kind = RecordedAction::Kind::rack;
+        action.breaker = breaker;
+        send_to_hall(action);
+        return;
+    }
     if (match_.next_rack(breaker) != MatchError::none)
         return;
     shown_balls_ = game().balls();
@@ -40,6 +47,8 @@ void App::save_stats() {
 }
 
 std::string App::game_over_text() const {
+    if (in_hall())
+        return hall_game_over_text();
     const MatchState& s = match_.score();
     const auto score_words = [&] {
         return name(1) + " " + std::to_string(s.racks_won[0]) + ", " + name(2) + " " +
@@ -58,7 +67,8 @@ std::string App::game_over_text() const {
 }
 
 bool App::computer_to_act() const {
-    if (practice_ || replaying_ || mode_ == Mode::names || mode_ == Mode::animating ||
+    // In the hall the server plays the computer's seats.
+    if (practice_ || replaying_ || in_hall() || mode_ == Mode::names || mode_ == Mode::animating ||
         mode_ == Mode::game_over)
         return false;
     return match_.computer_to_act();
@@ -66,8 +76,8 @@ bool App::computer_to_act() const {
 
 bool App::computers_watched_rack_over() const {
     // Two computers in a race go on by themselves, after a look at the score.
-    return mode_ == Mode::game_over && match_.seat(1).computer && match_.seat(2).computer &&
-           match_.pending().kind == Pending::next_rack &&
+    return mode_ == Mode::game_over && !in_hall() && match_.seat(1).computer &&
+           match_.seat(2).computer && match_.pending().kind == Pending::next_rack &&
            Clock::now() - game_over_at_ > std::chrono::seconds(4);
 }
 

@@ -67,7 +67,8 @@ void App::start_aiming() {
     aim_at_easiest();
     warn_of_third_foul();
     const std::string& who = name(game().shooter());
-    const bool computer = computer_to_act();
+    // Someone else's turn (the computer's, or another terminal's in the hall): no how-to.
+    const bool computer = computer_to_act() || (in_hall() && !hall_seat_to_act());
     if (game().push_out_allowed()) {
         const std::string hint = "u declares a push-out";
         message_ = message_.empty() ? who + ": aim and shoot, or " + hint : message_ + "; " + hint;
@@ -85,6 +86,17 @@ void App::start_aiming() {
 }
 
 bool App::try_place(Vec2 spot) {
+    if (in_hall()) {
+        // The server places it; the aim starts when its word comes back.
+        if (!game().legal_placement(spot)) {
+            message_ = "The cue ball cannot go there: " + placement_problem(game(), spot);
+            return false;
+        }
+        RecordedAction action;
+        action.kind = RecordedAction::Kind::place;
+        action.place = spot;
+        return send_to_hall(action);
+    }
     if (!place(spot)) {
         message_ = "The cue ball cannot go there: " + placement_problem(game(), spot);
         return false;
@@ -101,6 +113,14 @@ void App::shoot() {
     const ShotCall call =
         game().call_as_taken(aim_.call([this](int ball) { return calls_pocket(ball); }));
     aim_.power = power;
+    if (in_hall()) {
+        RecordedAction action;
+        action.kind = RecordedAction::Kind::shot;
+        action.strike = strike;
+        action.call = call;
+        send_to_hall(action);
+        return;
+    }
     play(strike, call);
 }
 
@@ -117,8 +137,10 @@ void App::choose(Choice choice) {
 }
 
 void App::save() {
-    if (replaying_ || practice_)
-        return; // a replay shows a game, practice has none: neither writes over a saved game
+    // A replay shows a game, practice has none: neither writes over a saved game. The hall's
+    // server keeps its tables itself.
+    if (replaying_ || practice_ || in_hall())
+        return;
     // The record is the whole game: rewritten after every action, so a dropped connection
     // loses at most the shot in flight. A failure stays on the message line until a save works
     // again: other messages come and go, and the player must not miss that the game is not
@@ -133,20 +155,30 @@ void App::play(const Strike& strike, const ShotCall& call) {
     Trajectory trajectory(params_, game().balls().size());
     if (practice_) {
         result_ = practice_->shoot(strike, &trajectory);
-    } else {
-        Game before = match_.game();
-        const MatchState score = match_.score();
-        auto played = match_.shoot(match_.to_act(), strike, call, &trajectory);
-        if (const MatchError* refused = std::get_if<MatchError>(&played)) {
-            message_ = std::string("The shot was refused: ") + match_error_text(*refused);
-            return;
-        }
-        PlayedShot& shot = std::get<PlayedShot>(played);
-        result_ = std::move(shot.result);
-        verdict_ = std::move(shot.verdict);
-        before_shot_ = std::move(before);
-        score_before_ = score;
+        trajectory_ = std::move(trajectory);
+        shot_start_ = Clock::now();
+        mode_ = Mode::animating;
+        message_ = name(shooter_before_) + " shoots";
+        return;
     }
+    Game before = match_.game();
+    const MatchState score = match_.score();
+    auto played = match_.shoot(match_.to_act(), strike, call, &trajectory);
+    if (const MatchError* refused = std::get_if<MatchError>(&played)) {
+        message_ = std::string("The shot was refused: ") + match_error_text(*refused);
+        return;
+    }
+    show_shot(std::move(std::get<PlayedShot>(played)), std::move(trajectory), score,
+              std::move(before));
+}
+
+void App::show_shot(PlayedShot shot, Trajectory trajectory, MatchState score_before, Game before) {
+    // The match has judged the shot already; the game as it was shows until the balls stop.
+    shooter_before_ = shot.shooter;
+    result_ = std::move(shot.result);
+    verdict_ = std::move(shot.verdict);
+    before_shot_ = std::move(before);
+    score_before_ = score_before;
     trajectory_ = std::move(trajectory);
     shot_start_ = Clock::now();
     mode_ = Mode::animating;
@@ -162,7 +194,7 @@ void App::after_shot() {
     }
     message_ = verdict_message(verdict_, shooter_before_, match_.record().names);
     save();
-    if (verdict_.winner != 0 && match_.score().match_winner() != 0 && !replaying_)
+    if (verdict_.winner != 0 && match_.score().match_winner() != 0 && !replaying_ && !in_hall())
         save_stats();
     start_turn();
     if (replaying_)

@@ -35,8 +35,7 @@ double ComputerPacing::aim_at(double t) const {
 }
 
 double ComputerPacing::power_at(double t, bool is_break) const {
-    const double upper = is_break ? 12.0 : 7.0;
-    return std::clamp((move_->shot.strike.speed - 0.3) / (upper - 0.3), 0.0, 1.0) *
+    return power_from_speed(move_->shot.strike.speed, is_break) *
            std::clamp((t - turn_time) / fill_time, 0.0, 1.0);
 }
 

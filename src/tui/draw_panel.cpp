@@ -232,6 +232,19 @@ int legend_rows(const Frame& f, int width) {
     return rows == INT_MAX ? 0 : rows;
 }
 
+// The last lines of the chat that fit in `rows` at `width`, oldest first.
+std::vector<Line> chat_tail(const View& v, int width, int rows) {
+    std::vector<Line> tail;
+    for (auto it = v.chat.rbegin(); it != v.chat.rend() && rows > 0; ++it) {
+        std::vector<Line> lines = wrapped(*it, width, dim);
+        if (static_cast<int>(lines.size()) > rows)
+            lines.erase(lines.begin(), lines.end() - rows); // its end, which is the news
+        rows -= static_cast<int>(lines.size());
+        tail.insert(tail.begin(), lines.begin(), lines.end());
+    }
+    return tail;
+}
+
 const char* const hints[] = {"? help  q quit", "? help"};
 
 // The cue ball's face with a '+' where the tip will strike; the outermost cells are the
@@ -307,6 +320,12 @@ void draw_side_panel(const Frame& f) {
                    width - w - 3);
             y += h + 1;
         }
+    }
+    y = std::min(y, limit);
+    // The chat has what the legend at its smallest leaves, under a blank row.
+    if (!v.chat.empty() && limit - y >= 2) {
+        ++y;
+        put_lines(chat_tail(v, width, limit - y));
     }
     y = std::min(y, limit);
     draw_legend(f, x, y, width, hint_row - y);
@@ -425,6 +444,8 @@ void draw_below_panel(const Frame& f) {
             draw_line(p, mid_x, y++, message[static_cast<std::size_t>(i)], mid_w);
         for (int i = 0; i < call_rows; ++i)
             draw_line(p, mid_x, y++, call[static_cast<std::size_t>(i)], mid_w);
+        for (const Line& line : chat_tail(v, mid_w, l.panel_y + rows - y))
+            draw_line(p, mid_x, y++, line, mid_w);
     }
     if (face)
         draw_spin_face(f, right + 1, l.panel_y, face_w, face_h);

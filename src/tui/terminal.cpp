@@ -318,11 +318,24 @@ void Terminal::draw(const Grid& grid) {
     paint(grid, caps_.colours, pairs_);
 }
 
-Input Terminal::read(int timeout_ms) {
+Input Terminal::read(int timeout_ms, int watched_fd) {
     Input in;
     if (pending_signal) {
         in.kind = Input::Kind::signal;
         return in;
+    }
+    if (watched_fd >= 0) {
+        // What curses has read ahead is not on the descriptor any more: take that first, then
+        // wait for either side.
+        timeout(0);
+        if (Input queued = read(0); queued.kind != Input::Kind::none)
+            return queued;
+        pollfd fds[2] = {{STDIN_FILENO, POLLIN, 0}, {watched_fd, POLLIN, 0}};
+        if (::poll(fds, 2, timeout_ms) > 0 && fds[1].revents != 0 && fds[0].revents == 0) {
+            in.kind = Input::Kind::watched;
+            return in;
+        }
+        timeout_ms = 0;
     }
     timeout(timeout_ms);
     wint_t ch = 0;

@@ -14,7 +14,7 @@ namespace termpool::tui {
 
 /// One input event.
 struct Input {
-    enum class Kind { none, key, text, mouse, resize, signal };
+    enum class Kind { none, key, text, mouse, resize, signal, watched };
     Kind kind = Kind::none; ///< what happened
     int key = 0;            ///< Kind::key: a control character or one of the key_ codes below
     std::string text;       ///< Kind::text: one printable character, UTF-8
@@ -88,8 +88,10 @@ public:
     void draw(const Grid& grid);
     /// Waits up to `timeout_ms` (negative: until something happens) for one input event.
     /// A terminal that hung up reads as SIGHUP (Input::Kind::signal). Mouse reports and other
-    /// control sequences curses cannot decode give Kind::none, never keys.
-    Input read(int timeout_ms);
+    /// control sequences curses cannot decode give Kind::none, never keys. With a
+    /// `watched_fd` (the hall's socket), that descriptor becoming readable (or closed) ends
+    /// the wait too, as Kind::watched: one loop serves the keyboard and the network.
+    Input read(int timeout_ms, int watched_fd = -1);
     /// True once SIGINT, SIGTERM or SIGHUP arrived, or the terminal hung up; the caller should
     /// leave.
     static bool signalled();

@@ -162,6 +162,7 @@ struct View {
     int fouls[2] = {0, 0};          ///< consecutive fouls of each player (9-ball)
     bool practice = false;          ///< practice: one player, no groups or fouls in the panel
     std::string overlay; ///< a box of text (questions, game over), if any, clear of the balls
+    std::vector<std::string> chat; ///< a hall table's chat, oldest first: the last lines show
 };
 
 /// Draws `view` into a grid of `width` x `height` with the given capabilities. When the layout

@@ -1,0 +1,84 @@
+// `termpool hall [--name NAME] [--socket PATH] [--ascii]`: the command line read, the
+// terminal started, the session run.
+
+#include <cstdio>
+#include <exception>
+#include <limits.h>
+#include <unistd.h>
+
+#include "hall/socket_dir.hpp"
+#include "tui/hall_session.hpp"
+#include "tui/player_name.hpp"
+
+namespace termpool::tui {
+namespace {
+
+constexpr const char* usage =
+    "usage: termpool hall [--name NAME] [--socket PATH] [--ascii]\n"
+    "  play in the pool hall: the lobby's tables, friends in their own terminals\n"
+    "  --name NAME    your name in the hall (asked for when not given)\n"
+    "  --socket PATH  the hall's socket (default $XDG_RUNTIME_DIR/termpool/hall.sock, or\n"
+    "                 /tmp/termpool-UID/hall.sock); a hall that is not running is started\n"
+    "  --ascii        plain ASCII, no colour\n";
+
+// This program, to start the hall's server with.
+std::string self_exe(const char* fallback) {
+    char path[PATH_MAX];
+    const ssize_t n = ::readlink("/proc/self/exe", path, sizeof path - 1);
+    return n > 0 ? std::string(path, static_cast<std::size_t>(n)) : std::string(fallback);
+}
+
+} // namespace
+
+int run_hall(const std::vector<std::string>& args) {
+    HallOptions options;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg == "--help" || arg == "-h") {
+            std::fputs(usage, stdout);
+            return 0;
+        }
+        if (arg == "--ascii") {
+            options.ascii = true;
+            continue;
+        }
+        if ((arg == "--name" || arg == "--socket") && i + 1 < args.size()) {
+            const std::string& value = args[++i];
+            if (arg == "--socket") {
+                options.socket_path = value;
+                continue;
+            }
+            std::string error;
+            const auto name = clean_player_name(value, error);
+            if (!name) {
+                std::fprintf(stderr, "termpool hall: --name: %s\n",
+                             error.empty() ? "the name is blank" : error.c_str());
+                return 2;
+            }
+            options.name = *name;
+            continue;
+        }
+        std::fprintf(stderr, "termpool hall: %s\n\n%s",
+                     arg.starts_with("--") && (arg == "--name" || arg == "--socket")
+                         ? (arg + " needs a value").c_str()
+                         : ("unknown argument '" + arg + "'").c_str(),
+                     usage);
+        return 2;
+    }
+    if (options.socket_path.empty())
+        options.socket_path = hall::default_socket_path();
+    options.self_exe = self_exe("termpool");
+    try {
+        Terminal terminal(options.ascii, options.ascii);
+        HallSession session(terminal, options);
+        session.run();
+        const int signal = Terminal::signal_number();
+        return signal != 0 ? 128 + signal : 0;
+    } catch (const std::exception& e) {
+        restore_terminal_modes();
+        std::fprintf(stderr, "termpool hall: %s\n", e.what());
+        return 1;
+    }
+}
+
+} // namespace termpool::tui
