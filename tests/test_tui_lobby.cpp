@@ -1,0 +1,112 @@
+// The hall's lobby frame: what a player reads there at the common sizes, and that no size,
+// however small or odd, writes outside the grid or loses the keys.
+#include <catch2/catch.hpp>
+#include <string>
+
+#include "tui/lobby_view.hpp"
+
+using namespace termpool;
+using namespace termpool::tui;
+
+namespace {
+
+std::string row_text(const Grid& g, int y) {
+    std::string s;
+    for (int x = 0; x < g.width; ++x)
+        s += g.at(x, y).glyph;
+    return s;
+}
+
+std::string all_text(const Grid& g) {
+    std::string s;
+    for (int y = 0; y < g.height; ++y)
+        s += row_text(g, y) + "\n";
+    return s;
+}
+
+LobbyView two_tables() {
+    LobbyView v;
+    v.name = "Ann";
+    hall::TableView first;
+    first.number = 1;
+    first.state = hall::TableState::waiting;
+    first.seats[0] = {hall::SeatKind::player, "Ann"};
+    hall::TableView second;
+    second.number = 7;
+    second.game = GameType::nine_ball;
+    second.size = TableSize::seven_foot;
+    second.race_to = 5;
+    second.state = hall::TableState::playing;
+    second.seats[0] = {hall::SeatKind::away, "Bob"};
+    second.seats[1] = {hall::SeatKind::computer, "Computer (pro)"};
+    second.spectators = 2;
+    v.tables = {first, second};
+    v.players = {{"Ann", 1, 1}, {"Cid", 7, 0}, {"Dee", 0, 0}};
+    v.selected = 1;
+    v.message = "Welcome, Ann.";
+    return v;
+}
+
+} // namespace
+
+TEST_CASE("the lobby lists the tables, who is where, the message and the keys", "[tui][lobby]") {
+    const Capabilities caps;
+    for (const auto& [w, h] : {std::pair{80, 24}, std::pair{100, 32}, std::pair{200, 60}}) {
+        INFO(w << "x" << h);
+        const Grid g = render_lobby(two_tables(), caps, w, h);
+        const std::string text = all_text(g);
+        INFO(text);
+        CHECK(row_text(g, 0).find("termpool hall") != std::string::npos);
+        CHECK(row_text(g, 0).find("Ann") != std::string::npos);
+        CHECK(row_text(g, 0).find("3 people here") != std::string::npos);
+        CHECK(text.find("(empty)") != std::string::npos);
+        CHECK(text.find("Bob (away)") != std::string::npos);
+        CHECK(text.find("Computer (pro)") != std::string::npos);
+        CHECK(text.find("9-ball") != std::string::npos);
+        CHECK(text.find("playing") != std::string::npos);
+        CHECK(text.find("waiting") != std::string::npos);
+        CHECK(text.find("Cid (watching 7)") != std::string::npos);
+        CHECK(text.find("Ann (table 1)") != std::string::npos);
+        CHECK(text.find("Welcome, Ann.") != std::string::npos);
+        CHECK(row_text(g, h - 1).find("c create") != std::string::npos);
+        // The marked row (table 7) is reversed, the other is not.
+        const std::string seven = row_text(g, 4);
+        CHECK(seven.find("Bob (away)") != std::string::npos);
+        CHECK(g.at(2, 4).style.reverse);
+        CHECK_FALSE(g.at(2, 3).style.reverse);
+        if (w >= 90) { // room for the size, the race and the spectators
+            CHECK(seven.find("7ft") != std::string::npos);
+            CHECK(seven.find(" 5 ") != std::string::npos);
+        }
+    }
+}
+
+TEST_CASE("the lobby at every size from 0x0 to 120x40 stays inside its grid", "[tui][lobby]") {
+    LobbyView v = two_tables();
+    v.overlay = "A new table\n\ng  game      8-ball\nEnter creates it, Esc goes back";
+    for (int i = 0; i < 30; ++i) { // more tables than rows: the list scrolls to the marked one
+        hall::TableView t;
+        t.number = 10 + i;
+        v.tables.push_back(t);
+    }
+    v.selected = 25;
+    for (const bool utf8 : {true, false})
+        for (int w = 0; w <= 120; w += 7)
+            for (int h = 0; h <= 40; h += 3) {
+                Capabilities caps;
+                caps.utf8 = utf8;
+                INFO(w << "x" << h << (utf8 ? " UTF-8" : " ASCII"));
+                const Grid g = render_lobby(v, caps, w, h);
+                REQUIRE(g.width == w);
+                REQUIRE(g.height == h);
+                LobbyView plain = v;
+                plain.overlay.clear();
+                const Grid list = render_lobby(plain, caps, w, h);
+                if (w >= 40 && h >= 10) {
+                    CHECK(all_text(g).find("A new table") != std::string::npos);
+                    CHECK(all_text(list).find("\n 33 ") != std::string::npos);
+                } else if (w >= 40 && h > 0) {
+                    CHECK(all_text(g).find("Please enlarge") != std::string::npos);
+                }
+            }
+}
