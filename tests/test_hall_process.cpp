@@ -295,7 +295,9 @@ TEST_CASE("hall process: serve refuses a socket folder others may write to, and 
     }
 
     const std::vector<std::vector<std::string>> bad = {
-        {"hall"},
+        {"hall", "--bogus"},
+        {"hall", "--name"},
+        {"hall", "--name", "bad\x01name"},
         {"hall", "frobnicate"},
         {"hall", "serve", "--bogus", "1"},
         {"hall", "serve", "stray"},

@@ -72,9 +72,14 @@ std::set<int> balls_on_table(const std::string& screen) {
     return balls;
 }
 
+// While the break rolls the message is "Ann shoots"; after it, "Ann shoots again" or another's
+// turn.
 bool shot_rolling(const std::string& screen) {
-    return screen.find("Ann shoots\n") != std::string::npos ||
-           screen.find("Ann shoots ") != std::string::npos;
+    for (std::size_t at = screen.find("Ann shoots"); at != std::string::npos;
+         at = screen.find("Ann shoots", at + 1))
+        if (screen.compare(at, 16, "Ann shoots again") != 0)
+            return true;
+    return false;
 }
 
 } // namespace

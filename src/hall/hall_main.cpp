@@ -120,6 +120,10 @@ int serve(const std::vector<std::string>& args) {
 
 } // namespace
 
+const char* hall_usage() {
+    return kUsage;
+}
+
 int hall_command(const std::vector<std::string>& args) {
     if (args.empty())
         return usage_error("which hall command? (serve or bench)");

@@ -6,6 +6,7 @@
 #include <limits.h>
 #include <unistd.h>
 
+#include "hall/hall_main.hpp"
 #include "hall/socket_dir.hpp"
 #include "tui/hall_session.hpp"
 #include "tui/player_name.hpp"
@@ -36,6 +37,7 @@ int run_hall(const std::vector<std::string>& args) {
         const std::string& arg = args[i];
         if (arg == "--help" || arg == "-h") {
             std::fputs(usage, stdout);
+            std::fputs(hall::hall_usage(), stdout);
             return 0;
         }
         if (arg == "--ascii") {
@@ -51,18 +53,19 @@ int run_hall(const std::vector<std::string>& args) {
             std::string error;
             const auto name = clean_player_name(value, error);
             if (!name) {
-                std::fprintf(stderr, "termpool hall: --name: %s\n",
-                             error.empty() ? "the name is blank" : error.c_str());
+                std::fprintf(stderr, "termpool hall: --name: %s\n\n%s%s",
+                             error.empty() ? "the name is blank" : error.c_str(), usage,
+                             hall::hall_usage());
                 return 2;
             }
             options.name = *name;
             continue;
         }
-        std::fprintf(stderr, "termpool hall: %s\n\n%s",
-                     arg.starts_with("--") && (arg == "--name" || arg == "--socket")
+        std::fprintf(stderr, "termpool hall: %s\n\n%s%s",
+                     arg == "--name" || arg == "--socket"
                          ? (arg + " needs a value").c_str()
                          : ("unknown argument '" + arg + "'").c_str(),
-                     usage);
+                     usage, hall::hall_usage());
         return 2;
     }
     if (options.socket_path.empty())
