@@ -25,40 +25,17 @@
 #include "hall/sha256.hpp"
 #include "hall/socket_dir.hpp"
 #include "match_helpers.hpp"
+#include "scoped_env.hpp"
 #include "temp_dir.hpp"
 
 using namespace termpool;
 using namespace termpool::hall;
+using termpool::test::ScopedEnv;
 using termpool::test::TempDir;
 
 namespace {
 
 namespace fs = std::filesystem;
-
-// Sets (or, with nothing, unsets) an environment variable for one scope, then puts it back.
-class ScopedEnv {
-public:
-    ScopedEnv(const char* name, std::optional<std::string> value) : name_(name) {
-        if (const char* old = std::getenv(name))
-            old_ = old;
-        if (value)
-            ::setenv(name, value->c_str(), 1);
-        else
-            ::unsetenv(name);
-    }
-    ~ScopedEnv() {
-        if (old_)
-            ::setenv(name_, old_->c_str(), 1);
-        else
-            ::unsetenv(name_);
-    }
-    ScopedEnv(const ScopedEnv&) = delete;
-    ScopedEnv& operator=(const ScopedEnv&) = delete;
-
-private:
-    const char* name_;
-    std::optional<std::string> old_;
-};
 
 mode_t mode_of(const std::string& path) {
     struct stat st {};
