@@ -214,6 +214,13 @@ TEST_CASE("reconnect backoff: 0.25, 0.5, 1, 2, 4, then 5 s; reset starts again",
     CHECK(backoff.next() == 500ms);
 }
 
+TEST_CASE("own_executable: the running program's own file", "[hall][autostart]") {
+    const std::string self = own_executable();
+    CHECK(fs::path(self).is_absolute());
+    CHECK(fs::path(self).filename() == "termpool_tests");
+    CHECK(fs::equivalent(self, "/proc/self/exe"));
+}
+
 TEST_CASE("hall lock: one holder at a time, the file kept private", "[hall][autostart]") {
     TempDir dir("termpool-autostart");
     const std::string socket = dir.path() + "/hall.sock";
