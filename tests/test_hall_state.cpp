@@ -22,42 +22,20 @@
 #include <vector>
 
 #include "hall/hall_state.hpp"
+#include "hall/sha256.hpp"
 #include "hall/socket_dir.hpp"
 #include "match_helpers.hpp"
+#include "scoped_env.hpp"
 #include "temp_dir.hpp"
 
 using namespace termpool;
 using namespace termpool::hall;
+using termpool::test::ScopedEnv;
 using termpool::test::TempDir;
 
 namespace {
 
 namespace fs = std::filesystem;
-
-// Sets (or, with nothing, unsets) an environment variable for one scope, then puts it back.
-class ScopedEnv {
-public:
-    ScopedEnv(const char* name, std::optional<std::string> value) : name_(name) {
-        if (const char* old = std::getenv(name))
-            old_ = old;
-        if (value)
-            ::setenv(name, value->c_str(), 1);
-        else
-            ::unsetenv(name);
-    }
-    ~ScopedEnv() {
-        if (old_)
-            ::setenv(name_, old_->c_str(), 1);
-        else
-            ::unsetenv(name_);
-    }
-    ScopedEnv(const ScopedEnv&) = delete;
-    ScopedEnv& operator=(const ScopedEnv&) = delete;
-
-private:
-    const char* name_;
-    std::optional<std::string> old_;
-};
 
 mode_t mode_of(const std::string& path) {
     struct stat st {};
@@ -186,18 +164,24 @@ TEST_CASE("the socket and the state folder follow XDG, with the fallbacks", "[ha
     }
 }
 
-TEST_CASE("seat tokens are random, and the state file keeps their FNV-1a hash", "[hall]") {
+TEST_CASE("seat tokens are random, and the state file keeps their SHA-256", "[hall]") {
     const std::string a = new_seat_token(), b = new_seat_token();
     CHECK(a.size() == 32);
     CHECK(a.find_first_not_of("0123456789abcdef") == std::string::npos);
     CHECK(a != b);
-    // The published FNV-1a 64-bit test vectors.
-    CHECK(seat_token_hash("") == "cbf29ce484222325");
-    CHECK(seat_token_hash("a") == "af63dc4c8601ec8c");
-    CHECK(seat_token_hash("foobar") == "85944171f73967e8");
+    // FIPS 180-4's own example, and what the file keeps of a token (tests/test_sha256.cpp
+    // checks the rest of the standard's vectors).
+    CHECK(seat_token_hash("abc") ==
+          "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    CHECK(seat_token_hash(a) == sha256_hex(a));
+    CHECK(seat_token_hash(a) != seat_token_hash(b));
     CHECK(valid_seat_token_hash(seat_token_hash(a)));
-    CHECK_FALSE(valid_seat_token_hash("85944171F73967E8"));
-    CHECK_FALSE(valid_seat_token_hash("85944171f73967e"));
+    CHECK(valid_seat_token_hash(seat_token_hash("")));
+    const std::string upper = "BA7816BF8F01CFEA414140DE5DAE2223B00361A396177A9CB410FF61F20015AD";
+    CHECK_FALSE(valid_seat_token_hash(upper));
+    CHECK_FALSE(valid_seat_token_hash(seat_token_hash(a).substr(1)));
+    CHECK_FALSE(valid_seat_token_hash(seat_token_hash(a) + "0"));
+    CHECK_FALSE(valid_seat_token_hash("af63dc4c8601ec8c")); // an older build's FNV-1a 64
     CHECK_FALSE(valid_seat_token_hash(a));
 }
 
@@ -225,8 +209,8 @@ TEST_CASE("tables save and load back with their seat tokens, in number order", "
     // Readable text: the hash is there and the raw token is not.
     const std::string text = contents(table_path(dir, 10));
     CHECK_THAT(text,
-               Catch::StartsWith("termpool-hall-table 1\nnumber 10\nseat1-token-hash fnv1a64 " +
-                                 seat_token_hash(token1) + "\nseat2-token-hash fnv1a64 " +
+               Catch::StartsWith("termpool-hall-table 1\nnumber 10\nseat1-token-hash sha256 " +
+                                 seat_token_hash(token1) + "\nseat2-token-hash sha256 " +
                                  seat_token_hash(token2) + "\ntermpool-record "));
     CHECK(text.find(token1) == std::string::npos);
     CHECK_THAT(contents(table_path(dir, 3)),
@@ -308,7 +292,7 @@ TEST_CASE("a save is atomic: a temporary file in the same folder, synced, rename
         CHECK_THAT(save_table(dir, table_of(0, short_game, "", "")),
                    Catch::Contains("table number 0 out of range"));
         CHECK_THAT(save_table(dir, table_of(1, short_game, "", "raw-token\nend")),
-                   Catch::Contains("seat 2's token hash is not 16 lowercase hex digits"));
+                   Catch::Contains("seat 2's token hash is not 64 lowercase hex digits"));
         CHECK(contents(table_path(dir, 1)) == short_text);
     }
     SECTION("a writer killed at any moment leaves the old file or the new one") {
@@ -349,8 +333,9 @@ TEST_CASE("a damaged table file is moved aside as .bad, never over an older one,
     REQUIRE(save_table(dir, table_of(1, game, "", "")) == "");
     REQUIRE(save_table(dir, table_of(2, game, seat_token_hash("a"), "")) == "");
     const std::string good = contents(table_path(dir, 2));
-    REQUIRE(good.find("termpool-hall-table 1\nnumber 2\nseat1-token-hash fnv1a64 "
-                      "af63dc4c8601ec8c\ntermpool-record 1\n") == 0);
+    REQUIRE(good.find("termpool-hall-table 1\nnumber 2\nseat1-token-hash sha256 "
+                      "ca978112ca1bbdcafac231b39a23dc4da786eff8147c4e72b9807785afee48bb\n"
+                      "termpool-record 1\n") == 0);
     // The line (from 1) that starts with `start`, and the text with that line replaced.
     auto line_of = [](const std::string& text, const std::string& start) {
         const std::size_t at = text.find("\n" + start);
@@ -375,10 +360,13 @@ TEST_CASE("a damaged table file is moved aside as .bad, never over an older one,
         {good.substr(0, good.size() - 4), end_line - 1, "truncated"},
         {replace_line(good, "number 2", "number 5"), 2, "does not match the file's name"},
         {replace_line(good, "termpool-hall-table 1", "termpool-hall-table 9"), 1, "newer"},
-        {replace_line(good, "seat1-token-hash", "seat1-token-hash fnv1a64 secret"), 3,
-         "16 lowercase hex digits"},
+        {replace_line(good, "seat1-token-hash", "seat1-token-hash sha256 secret"), 3,
+         "64 lowercase hex digits"},
         {replace_line(good, "seat1-token-hash", "seat1-token-hash sha256 00"), 3,
-         "unknown token hash 'sha256'"},
+         "64 lowercase hex digits"},
+        // What an older build wrote: a hash anyone could forge a token for.
+        {replace_line(good, "seat1-token-hash", "seat1-token-hash fnv1a64 af63dc4c8601ec8c"), 3,
+         "unknown token hash 'fnv1a64' (sha256 expected)"},
         {replace_line(good, "number 2", "colour blue"), 2, "unknown or malformed line 'colour'"},
         {replace_line(good, "seat1-token-hash", "number 2"), 3, "a second 'number' line"},
         {"", 1, "empty"},

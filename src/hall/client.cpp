@@ -26,6 +26,14 @@ std::string HallClient::connect(const std::string& socket_path) {
     return {};
 }
 
+pid_t HallClient::server_pid() const {
+    ucred peer{};
+    socklen_t size = sizeof peer;
+    if (!fd_ || ::getsockopt(fd_.get(), SOL_SOCKET, SO_PEERCRED, &peer, &size) != 0)
+        return 0;
+    return peer.pid;
+}
+
 bool HallClient::send(const ClientMessage& message) {
     return send_raw(format_client(message));
 }

@@ -13,6 +13,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <sys/types.h>
 #include <termpool/match.hpp>
 
 #include "hall/protocol.hpp"
@@ -41,6 +42,9 @@ public:
                       std::chrono::milliseconds timeout);
     /// Closes the connection.
     void disconnect() { fd_.reset(); }
+    /// The process id of the server at the other end (SO_PEERCRED: the process that made its
+    /// socket listen), 0 when not connected.
+    pid_t server_pid() const;
 
     /// True once the server closed the connection (or it was never open).
     bool closed() const { return !fd_; }

@@ -12,6 +12,7 @@
 
 #include "files/atomic_file.hpp"
 #include "hall/hall_bench.hpp"
+#include "hall/hall_lock.hpp"
 #include "hall/hall_state.hpp"
 #include "hall/server.hpp"
 #include "hall/socket_dir.hpp"
@@ -69,6 +70,11 @@ int serve(const std::vector<std::string>& args) {
                 return usage_error(arg + " takes a whole number from 1 to 100000");
             (arg == "--max-clients" ? options.max_clients : options.max_tables) =
                 static_cast<int>(*n);
+        } else if (arg == "--idle-exit") {
+            const auto n = parse_integer(value);
+            if (!n || *n < 0 || *n > 1000000)
+                return usage_error(arg + " takes a whole number of seconds from 0 to 1000000");
+            options.idle_exit = std::chrono::seconds(*n);
         } else {
             return usage_error("unknown option '" + arg + "'");
         }
@@ -77,6 +83,12 @@ int serve(const std::vector<std::string>& args) {
         options.socket_path = default_socket_path();
     // tmux's rule: the socket's folder is ours alone, or the server does not start.
     if (const std::string problem = prepare_socket_dir(options.socket_path); !problem.empty()) {
+        std::cerr << "termpool hall: " << problem << '\n';
+        return 1;
+    }
+    // One server per socket, even when two start at once (hall/hall_lock.hpp); held until exit.
+    UniqueFd lock;
+    if (const std::string problem = lock_hall(options.socket_path, lock); !problem.empty()) {
         std::cerr << "termpool hall: " << problem << '\n';
         return 1;
     }

@@ -2,12 +2,11 @@
 
 #include "files/atomic_file.hpp"
 #include "files/keep_aside.hpp"
+#include "hall/sha256.hpp"
 
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
-#include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <dirent.h>
@@ -24,7 +23,8 @@ namespace termpool::hall {
 namespace {
 
 constexpr const char* file_magic = "termpool-hall-table";
-constexpr const char* hash_algorithm = "fnv1a64";
+constexpr const char* hash_algorithm = "sha256";
+constexpr std::size_t hash_hex_digits = 64;
 // Table numbers the hall hands out stay far below this; a bigger one is a damaged file.
 constexpr int max_table_number = 1'000'000;
 
@@ -102,7 +102,8 @@ std::variant<SavedTable, RecordError> parse_table(std::string_view text, int num
                 return fail("unknown token hash '" + std::string(f[1]) + "' (" + hash_algorithm +
                             " expected)");
             if (!valid_seat_token_hash(f[2]))
-                return fail("a token hash is 16 lowercase hex digits");
+                return fail("a token hash is " + std::to_string(hash_hex_digits) +
+                            " lowercase hex digits");
             std::string& slot = table.seat_tokens[f[0][4] - '1'];
             if (!slot.empty())
                 return fail("a second " + std::string(f[0]) + " line");
@@ -160,18 +161,11 @@ std::string new_seat_token() {
 }
 
 std::string seat_token_hash(std::string_view token) {
-    std::uint64_t h = 0xcbf29ce484222325ull;
-    for (const char c : token) {
-        h ^= static_cast<unsigned char>(c);
-        h *= 0x100000001b3ull;
-    }
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
-    return text;
+    return sha256_hex(token);
 }
 
 bool valid_seat_token_hash(std::string_view hash) {
-    return hash.size() == 16 && std::all_of(hash.begin(), hash.end(), [](char c) {
+    return hash.size() == hash_hex_digits && std::all_of(hash.begin(), hash.end(), [](char c) {
                return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
            });
 }
@@ -187,8 +181,8 @@ std::string save_table(const std::string& dir, const SavedTable& table) {
                std::to_string(max_table_number) + ")";
     for (int p = 0; p < 2; ++p)
         if (!table.seat_tokens[p].empty() && !valid_seat_token_hash(table.seat_tokens[p]))
-            return path + ": seat " + std::to_string(p + 1) +
-                   "'s token hash is not 16 lowercase hex digits";
+            return path + ": seat " + std::to_string(p + 1) + "'s token hash is not " +
+                   std::to_string(hash_hex_digits) + " lowercase hex digits";
     std::string error;
     write_atomically(path, format_table(table), error);
     return error;

@@ -7,7 +7,7 @@
 //
 //     termpool-hall-table 1
 //     number 3
-//     seat1-token-hash fnv1a64 5d0c2a7e4b1f9386
+//     seat1-token-hash sha256 9f86d081884c7d659a2feaa0c55ad015a3bf4f1b2b0b822cd15d6c15b0f00a08
 //     termpool-record 1
 //     game 8-ball
 //     ...
@@ -16,10 +16,11 @@
 // The first line names the format and its version (hall_table_version; a newer version is
 // refused, not misread). `number` is the table's number and must match the file's name. A
 // `seatP-token-hash` line (P is 1 or 2) is there while that seat has a token: the hash of the
-// token's text, FNV-1a 64-bit, as 16 lowercase hex digits after the algorithm's name. The
-// server hands the raw token to the player once and keeps only this hash, so a casual reader
-// of the state folder cannot take a seat by copying a line. It is NOT a cryptographic secret
-// store: FNV-1a is fast to invert, and the folder (mode 0700) is what keeps others out. Blank
+// token's text, SHA-256 (FIPS 180-4, hall/sha256.hpp), as 64 lowercase hex digits after the
+// algorithm's name. The server hands the raw token to the player once and keeps only this
+// hash, so that whoever reads the state folder still cannot take a seat: a token is 128 random
+// bits, and SHA-256 cannot be turned back into one. The folder's mode 0700 keeps others out
+// besides. Another algorithm's name (an older build wrote fnv1a64) is refused. Blank
 // lines and `#` comments may come before the record; everything from `termpool-record` on is
 // the record, and a line number in a message counts from the top of the file.
 
@@ -47,10 +48,11 @@ struct SavedTable {
 /// the kernel gives none, which the caller must treat as an error.
 std::string new_seat_token();
 
-/// What the state file keeps of `token`: its FNV-1a 64-bit hash as 16 lowercase hex digits.
+/// What the state file keeps of `token`: its SHA-256 as 64 lowercase hex digits. Compare two
+/// of them with same_digest (hall/sha256.hpp), which does not stop at the first difference.
 std::string seat_token_hash(std::string_view token);
 
-/// True for text `seat_token_hash` could have made: 16 lowercase hex digits.
+/// True for text `seat_token_hash` could have made: 64 lowercase hex digits.
 bool valid_seat_token_hash(std::string_view hash);
 
 /// The path of table `number`'s file in `dir`: DIR/table-N.save.

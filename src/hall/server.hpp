@@ -58,6 +58,9 @@ struct ServerOptions {
     /// Actions one table's record may hold (a game of pool takes a few hundred); beyond, an
     /// action is refused, so that a record cannot grow without end.
     std::size_t max_actions = 5000;
+    /// The server saves and exits once it has had no connection and no table for this long
+    /// (0: never). A hall `termpool hall` starts in the background runs with 60 s.
+    std::chrono::seconds idle_exit{0};
     std::ostream* log = nullptr; ///< where to log (nothing when null)
 };
 

@@ -1,0 +1,51 @@
+#pragma once
+/// \file
+/// `termpool hall` finds the hall running, or starts one in the background as tmux starts its
+/// server: the server detaches into a session of its own (no controlling terminal, so that
+/// closing the player's terminal or SSH session does not take it down), its stdin and stdout
+/// on /dev/null and its stderr appended to hall.log in the default state folder, and it runs
+/// with `--idle-exit 60`, so that it goes once nobody has used it for a minute.
+
+#include <chrono>
+#include <string>
+#include <sys/types.h>
+#include <vector>
+
+#include "hall/client.hpp"
+
+namespace termpool::hall {
+
+/// How long connect_or_start waits for a server it started to answer.
+inline constexpr std::chrono::milliseconds hall_start_wait{5000};
+
+/// This program's own path (/proc/self/exe), to start the server with: the same build as the
+/// client, wherever it was started from; "" when the system does not tell.
+std::string own_executable();
+
+/// The log of a hall started in the background: hall.log in default_state_dir().
+std::string started_hall_log_path();
+
+/// Connects `client` to the hall at `socket_path`. When nothing answers there (no socket file,
+/// or a stale one nobody listens on), makes the socket's folder (prepare_socket_dir), starts
+/// `self_exe hall serve --socket SOCKET_PATH --idle-exit 60` detached, and tries to connect
+/// again every 20 ms for up to hall_start_wait; should the server it started exit meanwhile
+/// without anyone answering (another hall was just going away and held the lock), it starts
+/// one again, three times at most. Of two clients doing this at once, both end up on the one
+/// server that took the socket's lock (hall/hall_lock.hpp).
+/// `started_log` is the started server's log file (started_hall_log_path()), or "" when a
+/// running hall answered. Returns "" when connected, else why not: the connection's error
+/// when something other than "nothing there" stopped it, the folder's problem, or, when the
+/// started server never answered, the last line of its log.
+std::string connect_or_start(HallClient& client, const std::string& socket_path,
+                             const std::string& self_exe, std::string& started_log);
+
+/// Starts `args` (args[0] the program's path) detached: fork, setsid, fork again (the first
+/// child exits at once and is reaped, so no zombie stays and the server cannot get a
+/// controlling terminal), stdin and stdout /dev/null, stderr appended to `log_path` (made
+/// 0600), every other descriptor closed, signals as the program would get them from a shell,
+/// the working folder and environment kept. The server's process id, or 0 with `error` set
+/// (an exec that fails is reported here, not left to a timeout).
+pid_t start_detached(const std::vector<std::string>& args, const std::string& log_path,
+                     std::string& error);
+
+} // namespace termpool::hall

@@ -1,0 +1,475 @@
+// `termpool hall` starting the hall when none runs: the reconnect backoff's schedule, the
+// socket's lock, and connect_or_start through the real binary. The servers it starts detach
+// (a session of their own, their first parent gone); while a test runs, this process is their
+// subreaper, so that they are reparented here and can be stopped and reaped by their pid:
+// DetachedServers SIGTERMs, then SIGKILLs, and reaps every one of them whatever way the test
+// ends. Every wait is bounded (kWait).
+#include <algorithm>
+#include <atomic>
+#include <catch2/catch.hpp>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <dirent.h>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+#include "child_process.hpp"
+#include "hall/autostart.hpp"
+#include "hall/client.hpp"
+#include "hall/hall_lock.hpp"
+#include "hall/reconnect_backoff.hpp"
+#include "hall_helpers.hpp"
+#include "scoped_env.hpp"
+#include "temp_dir.hpp"
+#include "tmux_session.hpp"
+
+using namespace termpool;
+using namespace termpool::hall;
+using namespace termpool::test;
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+using tmux_session::file_text;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Fields of /proc/PID/stat after the name: state, parent, group, session, terminal.
+struct ProcStat {
+    char state = '?';
+    pid_t parent = 0;
+    pid_t session = 0;
+    int tty = 0;
+};
+std::optional<ProcStat> proc_stat(pid_t pid) {
+    const std::string text = file_text("/proc/" + std::to_string(pid) + "/stat");
+    const std::size_t paren = text.rfind(')');
+    if (paren == std::string::npos)
+        return std::nullopt;
+    ProcStat s;
+    int group = 0;
+    if (std::sscanf(text.c_str() + paren + 1, " %c %d %d %d %d", &s.state, &s.parent, &group,
+                    &s.session, &s.tty) != 5)
+        return std::nullopt;
+    return s;
+}
+
+// The processes whose parent is this one and that are in a session of their own: the servers
+// connect_or_start detached (ChildProcess children keep the test's session).
+std::vector<pid_t> detached_children() {
+    std::vector<pid_t> found;
+    DIR* proc = ::opendir("/proc");
+    if (!proc)
+        return found; // (no REQUIRE: DetachedServers calls this from its destructor)
+    while (const dirent* entry = ::readdir(proc)) {
+        const pid_t pid = static_cast<pid_t>(std::atoi(entry->d_name));
+        if (pid <= 0)
+            continue;
+        if (const auto s = proc_stat(pid);
+            s && s->parent == ::getpid() && s->session != ::getsid(0))
+            found.push_back(pid);
+    }
+    ::closedir(proc);
+    std::sort(found.begin(), found.end());
+    return found;
+}
+
+// The exit status (or 128 + signal) of child `pid` once it has exited, waiting at most
+// `timeout`; nothing when it still runs.
+std::optional<int> reap(pid_t pid, std::chrono::milliseconds timeout) {
+    for (const auto end = Clock::now() + timeout;;) {
+        int status = 0;
+        const pid_t got = ::waitpid(pid, &status, WNOHANG);
+        if (got == pid)
+            return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        if (got < 0 && errno != EINTR)
+            return std::nullopt;
+        if (Clock::now() >= end)
+            return std::nullopt;
+        std::this_thread::sleep_for(5ms);
+    }
+}
+
+// While it lives this process is a child subreaper (prctl), so the servers connect_or_start
+// detaches become its children when their first parent exits. On its end each one still
+// there is sent SIGTERM, SIGKILLed if it has not gone within kWait, and reaped.
+class DetachedServers {
+public:
+    DetachedServers() {
+        ::prctl(PR_GET_CHILD_SUBREAPER, &was_);
+        REQUIRE(::prctl(PR_SET_CHILD_SUBREAPER, 1) == 0);
+    }
+    ~DetachedServers() {
+        for (const pid_t pid : detached_children())
+            ::kill(pid, SIGTERM);
+        const auto end = Clock::now() + kWait;
+        for (std::vector<pid_t> left = detached_children(); !left.empty();
+             left = detached_children()) {
+            for (const pid_t pid : left) {
+                if (Clock::now() >= end)
+                    ::kill(pid, SIGKILL);
+                reap(pid, 0ms);
+            }
+            std::this_thread::sleep_for(5ms);
+        }
+        ::prctl(PR_SET_CHILD_SUBREAPER, was_);
+    }
+    DetachedServers(const DetachedServers&) = delete;
+    DetachedServers& operator=(const DetachedServers&) = delete;
+
+    /// Stops server `pid` with SIGTERM as a host would, and reaps it; its exit status, or
+    /// nothing when it did not go within kWait.
+    std::optional<int> stop(pid_t pid) {
+        ::kill(pid, SIGTERM);
+        return reap(pid, kWait);
+    }
+    /// Waits (at most kWait) for every other detached child to exit by itself; their statuses.
+    std::vector<int> reap_the_rest() {
+        std::vector<int> statuses;
+        const auto end = Clock::now() + kWait;
+        for (auto left = detached_children(); !left.empty() && Clock::now() < end;
+             left = detached_children())
+            for (const pid_t pid : left)
+                if (const auto status = reap(pid, 10ms))
+                    statuses.push_back(*status);
+        return statuses;
+    }
+
+private:
+    int was_ = 0;
+};
+
+std::string binary() {
+    return fs::absolute(tmux_session::termpool_binary()).string();
+}
+
+mode_t mode_of(const std::string& path) {
+    struct stat st {};
+    REQUIRE(::lstat(path.c_str(), &st) == 0);
+    return st.st_mode & 07777;
+}
+
+std::string link_of(const std::string& path) {
+    std::error_code error;
+    const fs::path target = fs::read_symlink(path, error);
+    return error ? std::string() : target.string();
+}
+
+std::size_t count_of(const std::string& text, const std::string& part) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1))
+        ++n;
+    return n;
+}
+
+// A socket file at `path` that nobody listens on, as a server killed outright leaves it.
+void make_stale_socket(const std::string& path) {
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    REQUIRE(path.size() < sizeof address.sun_path);
+    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+    const UniqueFd fd(::socket(AF_UNIX, SOCK_STREAM, 0));
+    REQUIRE(fd);
+    REQUIRE(::bind(fd.get(), reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0);
+    REQUIRE(fs::is_socket(path));
+}
+
+// The folders of one test, nothing of the user's: the state (and so hall.log) in `dir`.
+struct PrivateEnv {
+    explicit PrivateEnv(const std::string& dir)
+        : state("XDG_STATE_HOME", dir + "/state"), runtime("XDG_RUNTIME_DIR", dir + "/runtime") {}
+    ScopedEnv state;
+    ScopedEnv runtime;
+};
+
+} // namespace
+
+TEST_CASE("reconnect backoff: 0.25, 0.5, 1, 2, 4, then 5 s; reset starts again",
+          "[hall][autostart]") {
+    ReconnectBackoff backoff;
+    CHECK(backoff.tries() == 0);
+    const std::vector<long> expected = {250, 500, 1000, 2000, 4000, 5000, 5000, 5000};
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        INFO("try " << i + 1);
+        CHECK(backoff.next().count() == expected[i]);
+        CHECK(backoff.tries() == static_cast<int>(i + 1));
+    }
+    for (int i = 0; i < 100; ++i)
+        REQUIRE(backoff.next() == 5000ms); // never longer, however long the hall is away
+    backoff.reset();
+    CHECK(backoff.tries() == 0);
+    CHECK(backoff.next() == 250ms);
+    CHECK(backoff.next() == 500ms);
+}
+
+TEST_CASE("own_executable: the running program's own file", "[hall][autostart]") {
+    const std::string self = own_executable();
+    CHECK(fs::path(self).is_absolute());
+    CHECK(fs::path(self).filename() == "termpool_tests");
+    CHECK(fs::equivalent(self, "/proc/self/exe"));
+}
+
+TEST_CASE("hall lock: one holder at a time, the file kept private", "[hall][autostart]") {
+    TempDir dir("termpool-autostart");
+    const std::string socket = dir.path() + "/hall.sock";
+    CHECK(hall_lock_path(socket) == socket + ".lock");
+    UniqueFd first;
+    REQUIRE(lock_hall(socket, first) == "");
+    CHECK(first);
+    CHECK(mode_of(socket + ".lock") == 0600);
+    UniqueFd second;
+    CHECK(lock_hall(socket, second) == "a hall is already starting/running at " + socket);
+    CHECK_FALSE(second);
+    first.reset(); // the holder goes: the next one takes it
+    CHECK(lock_hall(socket, second) == "");
+    CHECK(second);
+    CHECK_THAT(lock_hall(dir.path() + "/missing/hall.sock", first),
+               Catch::Contains("cannot open the hall's lock"));
+}
+
+TEST_CASE("hall serve: a second server on a locked socket says so and exits 1",
+          "[hall][e2e][autostart]") {
+    TempDir dir("termpool-autostart");
+    PrivateEnv env(dir.path());
+    const std::string socket = dir.path() + "/hall.sock";
+    const std::string log = dir.path() + "/serve.log";
+    // Another server holds the lock (and may not have made its socket yet).
+    UniqueFd held;
+    REQUIRE(lock_hall(socket, held) == "");
+    {
+        ChildProcess server({binary(), "hall", "serve", "--socket", socket, "--idle-exit", "60"},
+                            log);
+        REQUIRE(server.pid() > 0);
+        const auto status = server.wait_exit(kWait);
+        INFO(file_text(log));
+        CHECK(status == 1);
+        CHECK(file_text(log) ==
+              "termpool hall: a hall is already starting/running at " + socket + "\n");
+        CHECK_FALSE(fs::exists(socket));
+    }
+    // Once it is free, the server takes it and serves.
+    held.reset();
+    ChildProcess server({binary(), "hall", "serve", "--socket", socket, "--idle-exit", "60"}, log);
+    bool up = false;
+    for (const auto end = Clock::now() + kWait; !up && server.running() && Clock::now() < end;) {
+        HallClient probe;
+        up = probe.connect(socket).empty();
+        if (!up)
+            std::this_thread::sleep_for(10ms);
+    }
+    INFO(file_text(log));
+    REQUIRE(up);
+    CHECK(lock_hall(socket, held) == "a hall is already starting/running at " + socket);
+    server.signal(SIGTERM);
+    CHECK(server.wait_exit(kWait) == 0);
+    CHECK(server.gone());
+}
+
+TEST_CASE("connect_or_start: no hall, one is started detached; the next client joins it; a "
+          "stale socket is replaced",
+          "[hall][e2e][autostart]") {
+    TempDir dir("termpool-autostart");
+    PrivateEnv env(dir.path());
+    DetachedServers servers;
+    const std::string sockets = dir.path() + "/run";
+    const std::string socket = sockets + "/hall.sock";
+    const std::string expected_log = dir.path() + "/state/termpool/hall/hall.log";
+    REQUIRE(started_hall_log_path() == expected_log);
+
+    HallClient ann;
+    std::string log = "unset";
+    const auto start = Clock::now();
+    REQUIRE(connect_or_start(ann, socket, binary(), log) == "");
+    CHECK(Clock::now() - start < hall_start_wait);
+    CHECK(log == expected_log);
+    CHECK(mode_of(sockets) == 0700); // made as the server wants it
+    const pid_t pid = ann.server_pid();
+    REQUIRE(pid > 0);
+    CHECK(pid != ::getpid());
+
+    // Detached as tmux's server: its first parent is gone (reaped: no zombie of it stays), it
+    // leads no session but is in one of its own, with no terminal; stdin and stdout are
+    // /dev/null, stderr the log, and nothing of the client's is open in it.
+    const auto stat = proc_stat(pid);
+    REQUIRE(stat);
+    CHECK(stat->parent == ::getpid()); // reparented to this process, the subreaper
+    CHECK(stat->session != ::getsid(0));
+    CHECK(stat->session != pid);
+    CHECK(stat->tty == 0);
+    CHECK(detached_children() == std::vector<pid_t>{pid});
+    const std::string fds = "/proc/" + std::to_string(pid) + "/fd/";
+    CHECK(link_of(fds + "0") == "/dev/null");
+    CHECK(link_of(fds + "1") == "/dev/null");
+    CHECK(link_of(fds + "2") == expected_log);
+    for (const auto& entry : fs::directory_iterator(fds)) {
+        const std::string target = link_of(entry.path().string());
+        INFO("fd " << entry.path().filename() << " -> " << target);
+        CHECK_FALSE(target.starts_with("/dev/pts"));
+        CHECK_FALSE(target.starts_with("/dev/tty"));
+        // Of the test's folder, only what the server opens itself.
+        const bool ours = target == expected_log || target == socket + ".lock" ||
+                          target.starts_with(dir.path() + "/state/");
+        CHECK((ours || !target.starts_with(dir.path() + "/")));
+    }
+    const std::string command = file_text("/proc/" + std::to_string(pid) + "/cmdline");
+    std::string expected_command;
+    for (const std::string& arg :
+         {binary(), std::string("hall"), std::string("serve"), std::string("--socket"), socket,
+          std::string("--idle-exit"), std::string("60")})
+        expected_command += arg + '\0';
+    CHECK(command == expected_command);
+    // A real hall.
+    REQUIRE(ann.hello("Ann", "", kWait) == "");
+
+    // The next client finds it running: nothing is started.
+    HallClient bob;
+    REQUIRE(connect_or_start(bob, socket, binary(), log) == "");
+    CHECK(log == "");
+    CHECK(bob.server_pid() == pid);
+    REQUIRE(bob.hello("Bob", "", kWait) == "");
+    CHECK(detached_children() == std::vector<pid_t>{pid});
+
+    // Stopped as a host stops it.
+    CHECK(servers.stop(pid) == 0);
+    CHECK_FALSE(fs::exists(socket));
+    INFO(file_text(expected_log));
+
+    // A server killed outright leaves its socket file: nobody answers there, so a new one is
+    // started in its place.
+    HallClient cy;
+    REQUIRE(connect_or_start(cy, socket, binary(), log) == "");
+    const pid_t killed = cy.server_pid();
+    REQUIRE(killed > 0);
+    ::kill(killed, SIGKILL);
+    CHECK(reap(killed, kWait) == 128 + SIGKILL);
+    REQUIRE(fs::is_socket(socket));
+    HallClient dee;
+    REQUIRE(connect_or_start(dee, socket, binary(), log) == "");
+    CHECK(log == expected_log);
+    const pid_t fresh = dee.server_pid();
+    CHECK(fresh > 0);
+    CHECK(fresh != killed);
+    CHECK(servers.stop(fresh) == 0);
+    CHECK(servers.reap_the_rest().empty());
+    CHECK(detached_children().empty());
+}
+
+TEST_CASE("connect_or_start: two clients starting at once end on one server",
+          "[hall][e2e][autostart]") {
+    TempDir dir("termpool-autostart");
+    PrivateEnv env(dir.path());
+    DetachedServers servers;
+    const std::string socket = dir.path() + "/run/hall.sock";
+    int losers = 0;
+    constexpr int rounds = 4;
+    for (int round = 0; round < rounds; ++round) {
+        // No socket file, or a dead server's: then both servers find it stale, and without the
+        // lock the second would unlink the first one's new socket and bind its own.
+        const bool stale = round % 2 == 1;
+        INFO("round " << round << (stale ? ", a stale socket" : ", no socket"));
+        if (stale)
+            make_stale_socket(socket);
+        HallClient clients[2];
+        std::string errors[2], logs[2];
+        std::atomic<int> ready{0};
+        std::vector<std::thread> threads;
+        for (int c = 0; c < 2; ++c)
+            threads.emplace_back([&, c] {
+                // Both wait for each other, then go at the same moment (bounded spin).
+                ++ready;
+                for (const auto end = Clock::now() + kWait; ready < 2 && Clock::now() < end;)
+                    std::this_thread::yield();
+                errors[c] = connect_or_start(clients[c], socket, binary(), logs[c]);
+            });
+        for (std::thread& t : threads)
+            t.join();
+        CHECK(errors[0] == "");
+        CHECK(errors[1] == "");
+        const pid_t pid = clients[0].server_pid();
+        REQUIRE(pid > 0);
+        CHECK(clients[1].server_pid() == pid);
+        CHECK((!logs[0].empty() || !logs[1].empty()));
+        REQUIRE(clients[0].hello("Ann", "", kWait) == "");
+        REQUIRE(clients[1].hello("Bob", "", kWait) == "");
+        CHECK(servers.stop(pid) == 0);
+        // A server that lost the race for the lock said so and exited 1.
+        for (const int status : servers.reap_the_rest()) {
+            CHECK(status == 1);
+            ++losers;
+        }
+    }
+    const std::string log = file_text(started_hall_log_path());
+    INFO(log);
+    CHECK(count_of(log, "a hall is already starting/running at " + socket) ==
+          static_cast<std::size_t>(losers));
+    WARN(losers << " of " << rounds << " rounds started two servers");
+    CHECK(detached_children().empty());
+}
+
+TEST_CASE("connect_or_start: what cannot start says why, soon, and leaves nothing running",
+          "[hall][e2e][autostart]") {
+    TempDir dir("termpool-autostart");
+    PrivateEnv env(dir.path());
+    DetachedServers servers;
+    const std::string socket = dir.path() + "/run/hall.sock";
+    std::string log;
+
+    SECTION("a program that is not there") {
+        HallClient client;
+        const auto start = Clock::now();
+        CHECK_THAT(connect_or_start(client, socket, dir.path() + "/no-such-termpool", log),
+                   Catch::StartsWith("cannot run " + dir.path() + "/no-such-termpool: ") &&
+                       Catch::Contains(std::strerror(ENOENT)));
+        CHECK(Clock::now() - start < 2s);
+        CHECK(client.closed());
+        CHECK(servers.reap_the_rest() == std::vector<int>{127});
+    }
+    SECTION("a program that exits at once: three tries, then its log's last line") {
+        HallClient client;
+        const auto start = Clock::now();
+        // sh takes "hall" for a script to run, finds none and says so on stderr (the log).
+        const std::string error = connect_or_start(client, socket, "/bin/sh", log);
+        CHECK(Clock::now() - start < hall_start_wait);
+        CHECK_THAT(error, Catch::StartsWith(socket +
+                                            ": the hall started in the background does "
+                                            "not answer (" +
+                                            started_hall_log_path() + ": ") &&
+                              Catch::Contains("hall"));
+        CHECK(log == started_hall_log_path());
+        const std::vector<int> statuses = servers.reap_the_rest();
+        CHECK(statuses.size() == 3);
+        for (const int status : statuses)
+            CHECK(status != 0);
+    }
+    SECTION("a socket folder others may write to is refused before anything starts") {
+        const std::string open = dir.path() + "/open";
+        REQUIRE(::mkdir(open.c_str(), 0700) == 0);
+        REQUIRE(::chmod(open.c_str(), 0777) == 0);
+        HallClient client;
+        CHECK_THAT(connect_or_start(client, open + "/hall.sock", binary(), log),
+                   Catch::Contains(open + ": the socket folder is writable by"));
+        CHECK(log == "");
+    }
+    SECTION("a file at the socket's path that is not a socket is not a dead hall") {
+        REQUIRE(::mkdir((dir.path() + "/run").c_str(), 0700) == 0);
+        std::ofstream(socket) << "not a socket\n";
+        HallClient client;
+        CHECK_THAT(connect_or_start(client, socket, binary(), log),
+                   Catch::StartsWith(socket + ": "));
+        CHECK(log == "");
+        CHECK(file_text(socket) == "not a socket\n");
+    }
+    CHECK(detached_children().empty());
+}
