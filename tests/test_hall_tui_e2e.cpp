@@ -1,9 +1,13 @@
-// The hall as its players see it: `termpool hall serve` in a child process and three
-// `termpool hall` terminals in tmux at different sizes (100x32, 80x24, 200x60). One creates a
-// table, one sits, one watches; the break is played on the first and rolls out on the other
-// two, which end with the same balls on the table. Every wait is bounded.
+// The hall as its players see it: `termpool hall serve` in a child process and `termpool
+// hall` terminals in tmux at different sizes (100x32, 80x24, 200x60), all under one account's
+// folders as friends over SSH are. One creates a table, one sits, one watches; the break is
+// played on the first and rolls out on the others. A terminal killed mid-shot comes back to
+// its seat; a server killed mid-game is started again by the terminals and the game goes on.
+// Every wait is bounded; a server a terminal started is stopped by its pid.
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <csignal>
+#include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
@@ -26,12 +30,18 @@ using tmux_session::Tmux;
 
 namespace {
 
-// `termpool hall serve` on `dir`/hall.sock, once it answers.
+// The account's folders: the server and every terminal share them, as the pool account does.
+std::string account_env(const std::string& dir) {
+    return "XDG_STATE_HOME=" + dir + "/xdg-state XDG_RUNTIME_DIR=" + dir + "/runtime";
+}
+
+// `termpool hall serve` on `dir`/hall.sock, its tables in the account's state folder, once it
+// answers.
 std::unique_ptr<ChildProcess> serve(const std::string& dir) {
     const std::string log = dir + "/server.log";
     auto server = std::make_unique<ChildProcess>(
-        std::vector<std::string>{termpool_binary(), "hall", "serve", "--socket", dir + "/hall.sock",
-                                 "--state", dir + "/state"},
+        std::vector<std::string>{termpool_binary(), "hall", "serve", "--socket",
+                                 dir + "/hall.sock"},
         log,
         std::vector<std::string>{"XDG_RUNTIME_DIR=" + dir + "/runtime",
                                  "XDG_STATE_HOME=" + dir + "/xdg-state", "TMPDIR=" + dir});
@@ -45,15 +55,38 @@ std::unique_ptr<ChildProcess> serve(const std::string& dir) {
     }
 }
 
-// `termpool hall` for `name` in `tmux` at `width` x `height`, its state folder its own.
+// `termpool hall` for `name` in `tmux` at `width` x `height`.
 void open_terminal(const Tmux& tmux, const std::string& dir, const std::string& name, int width,
                    int height) {
-    tmux.start("env XDG_STATE_HOME=" + dir + "/state-" + name + " XDG_RUNTIME_DIR=" + dir +
-                   "/runtime " + termpool_binary() + " hall --socket " + dir +
+    tmux.start("env " + account_env(dir) + " " + termpool_binary() + " hall --socket " + dir +
                    "/hall.sock --name " + name,
                width, height);
     REQUIRE(tmux.wait_for_text("Welcome, " + name));
 }
+
+// A server the terminals started themselves: stopped with SIGTERM by the pid its socket
+// gives, and waited for (this machine's init may leave it a zombie, which runs nothing).
+struct StartedServer {
+    std::string socket;
+    ~StartedServer() {
+        HallClient probe;
+        if (!probe.connect(socket).empty())
+            return;
+        const pid_t pid = probe.server_pid();
+        probe.disconnect();
+        if (pid <= 0)
+            return;
+        ::kill(pid, SIGTERM);
+        for (const auto end = Clock::now() + kWait; Clock::now() < end;) {
+            std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+            std::string pid_field, comm, state;
+            if (!(stat >> pid_field >> comm >> state) || state == "Z")
+                return;
+            std::this_thread::sleep_for(20ms);
+        }
+        ::kill(pid, SIGKILL);
+    }
+};
 
 // The balls the panel's legend lists as on the table, as numbers (10 to 15 may show as A-F).
 std::set<int> balls_on_table(const std::string& screen) {
@@ -74,12 +107,61 @@ std::set<int> balls_on_table(const std::string& screen) {
 
 // While the break rolls the message is "Ann shoots"; after it, "Ann shoots again" or another's
 // turn.
-bool shot_rolling(const std::string& screen) {
-    for (std::size_t at = screen.find("Ann shoots"); at != std::string::npos;
-         at = screen.find("Ann shoots", at + 1))
-        if (screen.compare(at, 16, "Ann shoots again") != 0)
+bool shot_rolling(const std::string& screen, const std::string& who = "Ann") {
+    const std::string shoots = who + " shoots";
+    for (std::size_t at = screen.find(shoots); at != std::string::npos;
+         at = screen.find(shoots, at + 1))
+        if (screen.compare(at, shoots.size() + 6, shoots + " again") != 0)
             return true;
     return false;
+}
+
+// Waits until every screen has stopped rolling a shot and their legends agree; false after
+// `seconds`.
+bool same_table(const std::vector<const Tmux*>& terminals, double seconds = 20) {
+    const auto end = Clock::now() + std::chrono::duration<double>(seconds);
+    while (Clock::now() < end) {
+        bool settled = true;
+        std::set<int> first;
+        for (std::size_t i = 0; i < terminals.size() && settled; ++i) {
+            const std::string s = terminals[i]->screen();
+            const std::set<int> left = balls_on_table(s);
+            if (i == 0)
+                first = left;
+            settled = !shot_rolling(s) && !shot_rolling(s, "Bob") && !left.empty() &&
+                      left == first && s.find("The hall is away") == std::string::npos;
+        }
+        if (settled)
+            return true;
+        std::this_thread::sleep_for(100ms);
+    }
+    return false;
+}
+
+// The terminal of `terminals` whose player is to act, and plays its turn: puts the cue ball
+// down where it is offered when it has ball in hand, then shoots. Returns it, or nullptr.
+const Tmux* play_turn(const std::vector<const Tmux*>& terminals) {
+    for (int tries = 0; tries < 100; ++tries) {
+        for (const Tmux* t : terminals) {
+            const std::string s = t->screen();
+            if (s.find("place the cue ball") != std::string::npos &&
+                s.find("waiting for") == std::string::npos) {
+                t->keys("Enter");
+                if (!t->wait_for_text("Space shoots"))
+                    return nullptr;
+                t->keys("Space");
+                return t;
+            }
+            // The aim shows on both screens; the other player's says whom it waits for.
+            if (s.find("[ shoot ]") != std::string::npos &&
+                s.find("waiting for") == std::string::npos) {
+                t->keys("Space");
+                return t;
+            }
+        }
+        std::this_thread::sleep_for(50ms);
+    }
+    return nullptr;
 }
 
 } // namespace
@@ -142,4 +224,61 @@ TEST_CASE("three hall terminals: a table created, a seat taken, a watcher, the b
     cid.keys("y");
     CHECK(cid.wait_for_text("c create"));
     CHECK(server->running());
+}
+
+TEST_CASE("hall faults: a terminal killed mid-shot takes its seat back, a server killed "
+          "mid-game is started again by the terminals and the game goes on",
+          "[hall][tui][e2e]") {
+    TempDir dir("termpool-hall-faults");
+    auto server = serve(dir.path());
+    const StartedServer restarted{dir.path() + "/hall.sock"};
+    Tmux ann, bob;
+    open_terminal(ann, dir.path(), "Ann", 100, 32);
+    open_terminal(bob, dir.path(), "Bob", 80, 24);
+    ann.keys("c");
+    REQUIRE(ann.wait_for_text("A new table"));
+    ann.keys("Enter");
+    REQUIRE(ann.wait_for_text("Waiting for an opponent"));
+    REQUIRE(bob.wait_for_text("waiting"));
+    bob.keys("Enter");
+    REQUIRE(ann.wait_for_text("Ann breaks"));
+    ann.keys("Enter");
+    REQUIRE(ann.wait_for_text("Space shoots"));
+
+    // Ann's terminal goes while her break rolls: her seat waits, shown away.
+    ann.keys("Space");
+    REQUIRE(bob.wait_for([](const std::string& s) { return shot_rolling(s); }));
+    ann.tmux("kill-server");
+    CHECK(bob.wait_for_text("Ann (away)"));
+
+    // She comes back under her name: the lobby offers her seat, and she plays on from where the
+    // game stands.
+    Tmux ann2;
+    open_terminal(ann2, dir.path(), "Ann", 100, 32);
+    REQUIRE(ann2.wait_for_text("waits for you"));
+    ann2.keys("Enter");
+    CHECK(bob.wait_for([](const std::string& s) { return s.find("(away)") == std::string::npos; }));
+    {
+        const bool settled = same_table({&ann2, &bob});
+        INFO("Ann:\n" << ann2.screen() << "\nBob:\n" << bob.screen());
+        REQUIRE(settled);
+    }
+
+    // The server is killed mid-game: both terminals say so, one starts a new server (which
+    // restores the table from its save), both sit back down, and the game goes on.
+    server->kill();
+    CHECK(bob.wait_for_text("The hall is away"));
+    {
+        const bool settled = same_table({&ann2, &bob});
+        INFO("Ann:\n" << ann2.screen() << "\nBob:\n" << bob.screen());
+        REQUIRE(settled);
+    }
+    const Tmux* shooter = play_turn({&ann2, &bob});
+    INFO("Ann:\n" << ann2.screen() << "\nBob:\n" << bob.screen());
+    REQUIRE(shooter != nullptr);
+    CHECK(same_table({&ann2, &bob}));
+    // The new server is the terminals' own: it holds the table saved by the one killed.
+    HallClient probe;
+    REQUIRE(probe.connect(dir.path() + "/hall.sock").empty());
+    CHECK(probe.server_pid() != server->pid());
 }

@@ -3,11 +3,11 @@
 
 #include <cstdio>
 #include <exception>
-#include <limits.h>
-#include <unistd.h>
 
+#include "hall/autostart.hpp"
 #include "hall/hall_main.hpp"
 #include "hall/socket_dir.hpp"
+#include "hall/token_store.hpp"
 #include "tui/hall_session.hpp"
 #include "tui/player_name.hpp"
 
@@ -21,13 +21,6 @@ constexpr const char* usage =
     "  --socket PATH  the hall's socket (default $XDG_RUNTIME_DIR/termpool/hall.sock, or\n"
     "                 /tmp/termpool-UID/hall.sock); a hall that is not running is started\n"
     "  --ascii        plain ASCII, no colour\n";
-
-// This program, to start the hall's server with.
-std::string self_exe(const char* fallback) {
-    char path[PATH_MAX];
-    const ssize_t n = ::readlink("/proc/self/exe", path, sizeof path - 1);
-    return n > 0 ? std::string(path, static_cast<std::size_t>(n)) : std::string(fallback);
-}
 
 } // namespace
 
@@ -70,7 +63,10 @@ int run_hall(const std::vector<std::string>& args) {
     }
     if (options.socket_path.empty())
         options.socket_path = hall::default_socket_path();
-    options.self_exe = self_exe("termpool");
+    options.self_exe = hall::own_executable();
+    if (options.self_exe.empty())
+        options.self_exe = "termpool"; // from PATH
+    options.token_dir = hall::default_token_dir();
     try {
         Terminal terminal(options.ascii, options.ascii);
         HallSession session(terminal, options);

@@ -5,6 +5,8 @@
 #include <termpool/race.hpp>
 #include <variant>
 
+#include "hall/autostart.hpp"
+#include "hall/token_store.hpp"
 #include "tui/ball_style.hpp"
 #include "tui/player_name.hpp"
 
@@ -16,7 +18,6 @@ using namespace std::chrono_literals;
 constexpr auto aim_interval = 50ms;  // the rate for the shooter's cue
 constexpr auto chat_interval = 1s;   // the server refuses more (and counts it as an error)
 constexpr int frame_ms = 16;         // while something moves
-constexpr double max_retry_s = 5.0;  // the longest wait between tries to reach the hall
 constexpr int lines_per_round = 500; // messages read before the screen is drawn again
 
 const char* const levels[] = {"easy", "medium", "hard", "pro"};
@@ -90,13 +91,19 @@ int HallSession::wait_ms() const {
 }
 
 void HallSession::connect() {
-    const std::string why = client_.connect(options_.socket_path);
+    // The hall is started when none answers, at the first try and after a server went away
+    // (it restores its tables): a second terminal doing the same at once finds it locked.
+    std::string started_log;
+    const std::string why =
+        hall::connect_or_start(client_, options_.socket_path, options_.self_exe, started_log);
     if (!why.empty()) {
         lost_connection(why);
         return;
     }
     client_.keep_copies(false); // the App plays every action itself
     welcomed_ = false;
+    if (token_.empty())
+        token_ = hall::load_token(options_.token_dir, name_);
     send(hall::Hello{hall::protocol_version, token_, name_});
 }
 
@@ -107,11 +114,10 @@ void HallSession::lost_connection(const std::string& why) {
         rejoin_table_ = table_;
         rejoin_seat_ = seat_;
     }
-    retry_delay_s_ = retry_delay_s_ == 0 ? 0.25 : std::min(max_retry_s, retry_delay_s_ * 2);
-    retry_at_ = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                   std::chrono::duration<double>(retry_delay_s_));
+    const auto wait = backoff_.next();
+    retry_at_ = Clock::now() + wait;
     char delay[32];
-    std::snprintf(delay, sizeof delay, "%.1f", retry_delay_s_);
+    std::snprintf(delay, sizeof delay, "%.2g", std::chrono::duration<double>(wait).count());
     message_ = "The hall is away (" + why + "); trying again in " + delay + " s";
     if (app_)
         app_->hall_notice(message_ + "; your seat waits");
@@ -137,10 +143,16 @@ void HallSession::send(const hall::ClientMessage& message) {
 
 void HallSession::dispatch(const hall::ServerMessage& message) {
     if (const auto* m = std::get_if<hall::Welcome>(&message)) {
-        token_ = m->token;
         welcomed_ = ever_connected_ = true;
-        retry_delay_s_ = 0;
+        backoff_.reset();
         message_ = "Welcome, " + name_ + ".";
+        if (m->token != token_) {
+            token_ = m->token;
+            // Without it kept, a dropped terminal could not take its seat back.
+            if (const std::string why = hall::save_token(options_.token_dir, name_, token_);
+                !why.empty())
+                message_ += " (Your seat token could not be kept: " + why + ")";
+        }
         if (rejoin_table_ != 0) {
             if (rejoin_seat_ != 0)
                 send(hall::Sit{rejoin_table_, rejoin_seat_});

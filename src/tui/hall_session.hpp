@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hall/client.hpp"
+#include "hall/reconnect_backoff.hpp"
 #include "tui/app.hpp"
 #include "tui/lobby_view.hpp"
 #include "tui/terminal.hpp"
@@ -96,9 +97,9 @@ private:
     std::optional<Strike> aim_waiting_;
     Clock::time_point aim_sent_at_;
 
-    // Reconnecting: when the next try is due and how long the one after waits.
+    // Reconnecting: when the next try is due, and the schedule of the waits.
     Clock::time_point retry_at_;
-    double retry_delay_s_ = 0;
+    hall::ReconnectBackoff backoff_;
 };
 
 /// `termpool hall [--name NAME] [--socket PATH] [--ascii]`; the exit status.
