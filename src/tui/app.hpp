@@ -101,6 +101,7 @@ private:
     bool computers_watched_rack_over() const;
     void seat_computer(int player, Level level);
     void computer_turn();
+    bool show_computer_aim(Clock::time_point now);
     void compose(View& view) const;
     void compose_aiming(View& view) const;
     void compose_prompt(View& view) const;

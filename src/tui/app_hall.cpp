@@ -14,6 +14,9 @@ namespace {
 
 constexpr std::size_t chat_kept = 50; // lines of chat a table keeps on screen
 constexpr std::size_t chat_chars = 200;
+// Actions waiting to be shown beyond which shots are no longer rolled out: the terminal
+// catches up with the table.
+constexpr std::size_t far_behind = 12;
 
 std::size_t code_points(const std::string& text) {
     return static_cast<std::size_t>(
@@ -106,10 +109,26 @@ bool App::send_to_hall(const RecordedAction& action) {
 }
 
 void App::apply_hall_actions() {
-    // One at a time, each once the shot before it has rolled out; a long queue (this terminal
-    // fell behind) skips to the last shot's end.
+    // One at a time, each once the shot before it has rolled out.
     while (!hall_queue_.empty() && mode_ != Mode::animating) {
         const HallAction next = hall_queue_.front();
+        // The server's computer plays at once, a run of shots in a moment; each is shown as at
+        // home, the cue turning to its aim and the bar filling first, unless this terminal
+        // has fallen far behind.
+        if (next.action.kind == RecordedAction::Kind::shot && mode_ == Mode::aiming &&
+            hall_queue_.size() <= far_behind && hall_seats_[match_.to_act() - 1].computer) {
+            const Clock::time_point now = Clock::now();
+            if (!pacing_.showing()) {
+                ComputerMove move;
+                move.kind = Pending::shoot;
+                move.shot.strike = next.action.strike;
+                move.shot.call = next.action.call;
+                pacing_.start(move, aim_.aim_deg, now);
+            }
+            if (!show_computer_aim(now))
+                return;
+            pacing_.stop();
+        }
         hall_queue_.pop_front();
         if (next.seq != match_.record().actions.size() + 1 || !apply_hall_action(next.action) ||
             match_.state_hash() != next.hash) {
@@ -118,7 +137,7 @@ void App::apply_hall_actions() {
             sync_wanted_ = true;
             return;
         }
-        if (mode_ == Mode::animating && hall_queue_.size() > 2)
+        if (mode_ == Mode::animating && hall_queue_.size() > far_behind)
             shot_start_ -= std::chrono::hours(1);
     }
     if (mode_ != Mode::animating)

@@ -115,16 +115,21 @@ void App::computer_turn() {
         }
         return;
     }
+    if (!show_computer_aim(now))
+        return;
+    pacing_.stop();
+    play(move.shot.strike, move.shot.call);
+}
+
+bool App::show_computer_aim(Clock::time_point now) {
+    const ComputerMove& move = pacing_.move();
     const double t = pacing_.elapsed(now);
     aim_.aim_deg = pacing_.aim_at(t);
     aim_.side = move.shot.strike.side;
     aim_.follow = move.shot.strike.follow;
     aim_.power = pacing_.power_at(t, game().is_break());
     update_preview();
-    if (!pacing_.due(now))
-        return;
-    pacing_.stop();
-    play(move.shot.strike, move.shot.call);
+    return pacing_.due(now);
 }
 
 void App::resume(Match match) {

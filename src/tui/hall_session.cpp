@@ -23,7 +23,8 @@ constexpr int lines_per_round = 500; // messages read before the screen is drawn
 const char* const levels[] = {"easy", "medium", "hard", "pro"};
 
 HallSeat hall_seat_of(const hall::SeatView& seat) {
-    return {seat.name, seat.kind == hall::SeatKind::away, seat.kind == hall::SeatKind::empty};
+    return {seat.name, seat.kind == hall::SeatKind::away, seat.kind == hall::SeatKind::empty,
+            seat.kind == hall::SeatKind::computer};
 }
 
 } // namespace

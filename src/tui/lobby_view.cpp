@@ -102,11 +102,11 @@ Grid render_lobby(const LobbyView& v, const Capabilities& caps, int width, int h
         return grid;
     }
     const std::string title =
-        std::string("termpool hall") + (caps.utf8 ? " \u2014 " : " - ") + v.name;
+        "termpool hall" + (v.name.empty() ? "" : (caps.utf8 ? " \u2014 " : " - ") + v.name);
     p.text(1, 0, title, bold, width - 2);
     const std::string people = std::to_string(v.players.size()) +
                                (v.players.size() == 1 ? " person here" : " people here");
-    if (display_width(title) + display_width(people) + 4 <= width)
+    if (v.connected && display_width(title) + display_width(people) + 4 <= width)
         p.text(width - 1 - display_width(people), 0, people, dim);
 
     // Rows: title, blank, header, tables..., blank, people (2), blank, message (2), keys.

@@ -24,9 +24,10 @@ struct TableLink {
 
 /// A seat at a hall table as the panel shows it.
 struct HallSeat {
-    std::string name;   ///< who sits there ("" for an empty seat)
-    bool away = false;  ///< a person whose connection dropped: the table waits for them
-    bool empty = false; ///< nobody yet
+    std::string name;      ///< who sits there ("" for an empty seat)
+    bool away = false;     ///< a person whose connection dropped: the table waits for them
+    bool empty = false;    ///< nobody yet
+    bool computer = false; ///< the server plays it
 };
 
 } // namespace termpool::tui
