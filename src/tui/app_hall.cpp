@@ -232,6 +232,7 @@ void App::compose_hall(View& v) const {
             v.names[p] += " (away)";
     }
     v.chat = chat_;
+    v.hall = true;
     if (chat_entry_) {
         v.message = "Say: " + chat_entry_->text + "_  (Enter sends, Esc cancels)";
     } else if (!link_ || link_->seat == 0) {

@@ -245,7 +245,21 @@ std::vector<Line> chat_tail(const View& v, int width, int rows) {
     return tail;
 }
 
-const char* const hints[] = {"? help  q quit", "? help"};
+// The hint at the panel's foot, longest first; at a hall table q leaves it and Tab chats.
+std::vector<std::string> hints(const View& v) {
+    if (v.hall)
+        return {"? help  Tab chat  q leave", "? help  q leave", "? help"};
+    return {"? help  q quit", "? help"};
+}
+
+// The longest hint that fits `width` (the shortest when none does).
+std::string hint_for(const View& v, int width) {
+    const std::vector<std::string> all = hints(v);
+    for (const std::string& hint : all)
+        if (display_width(hint) <= width)
+            return hint;
+    return all.back();
+}
 
 // The cue ball's face with a '+' where the tip will strike; the outermost cells are the
 // +-0.5 R limit. Corners are left out so that the face reads as round.
@@ -330,14 +344,14 @@ void draw_side_panel(const Frame& f) {
     y = std::min(y, limit);
     draw_legend(f, x, y, width, hint_row - y);
     if (hint_row >= l.panel_y)
-        p.text(x, hint_row, hints[width >= 14 ? 0 : 1], dim, width);
+        p.text(x, hint_row, hint_for(v, width), dim, width);
 }
 
 // The bottom row of the panel below the table: the legend, and the hint at the right end.
 void draw_legend_row(const Frame& f, int x, int y, int width) {
     const std::vector<int> ids = on_table(f.view);
     for (const LegendForm form : legend_forms)
-        for (const char* hint : hints) {
+        for (const std::string& hint : hints(f.view)) {
             const int hint_w = display_width(hint);
             if (ids.empty() || lay_out_legend(f, ids, form, x, y, width - hint_w - 2, false) != 1)
                 continue;
@@ -346,7 +360,7 @@ void draw_legend_row(const Frame& f, int x, int y, int width) {
             return;
         }
     // Nothing on the table, or no room for both: the hint alone.
-    const char* hint = display_width(hints[0]) <= width ? hints[0] : hints[1];
+    const std::string hint = hint_for(f.view, width);
     f.paint.text(x + std::max(0, width - display_width(hint)), y, hint, dim, width);
 }
 

@@ -163,6 +163,7 @@ struct View {
     bool practice = false;          ///< practice: one player, no groups or fouls in the panel
     std::string overlay; ///< a box of text (questions, game over), if any, clear of the balls
     std::vector<std::string> chat; ///< a hall table's chat, oldest first: the last lines show
+    bool hall = false;             ///< a hall table: q leaves it, Tab opens the chat
 };
 
 /// Draws `view` into a grid of `width` x `height` with the given capabilities. When the layout
