@@ -182,7 +182,7 @@ struct Server::State {
     static bool started(const Table& table) { return !table.match.record().actions.empty(); }
     static bool over(const Table& table) { return table.match.pending().kind == Pending::over; }
 
-    TableView table_view(const Table& table) const {
+    TableView table_view(const Table& table, int spectators) const {
         TableView view;
         view.number = table.number;
         view.game = table.match.setup().game;
@@ -193,20 +193,36 @@ struct Server::State {
                                    : TableState::waiting;
         for (int s = 1; s <= 2; ++s)
             view.seats[s - 1] = seat_view(table, s);
-        for (const auto& [id, client] : clients)
-            if (client.table == table.number && client.seat == 0)
-                ++view.spectators;
+        view.spectators = spectators;
         return view;
     }
 
-    void send_lobby(Client& client) {
-        send(client, LobbyBegin{});
-        for (const auto& [number, table] : tables)
-            send(client, table_view(table));
+    // The whole lobby as it goes out, made once for everyone it goes to: with a few hundred
+    // people and a hundred tables, a snapshot made per client (each table counting its
+    // spectators among all clients) stalled the loop for tens of milliseconds.
+    std::string lobby_text() const {
+        std::map<int, int> spectators; // by table
+        for (const auto& [id, client] : clients)
+            if (client.table != 0 && client.seat == 0)
+                ++spectators[client.table];
+        std::string text = format_server(LobbyBegin{});
+        for (const auto& [number, table] : tables) {
+            const auto found = spectators.find(number);
+            text += format_server(table_view(table, found == spectators.end() ? 0 : found->second));
+        }
         for (const auto& [id, other] : clients)
             if (other.welcomed && !other.closing)
-                send(client, PlayerView{other.name, other.table, other.seat});
-        send(client, LobbyEnd{});
+                text += format_server(PlayerView{other.name, other.table, other.seat});
+        return text + format_server(LobbyEnd{});
+    }
+
+    void send_lobby(Client& client, const std::string& text) {
+        if (client.closing)
+            return;
+        if (!client.connection.queue(text, options.output_limit)) {
+            log("client " + std::to_string(client.id) + " stopped reading: disconnected");
+            client.closing = true;
+        }
     }
 
     // The lobby's changes go out as one snapshot at most every lobby_interval; a client whose
@@ -218,11 +234,14 @@ struct Server::State {
             for (auto& [id, client] : clients)
                 client.lobby_owed = client.welcomed;
         }
+        std::optional<std::string> text; // made once, when the first client is due one
         for (auto& [id, client] : clients)
             if (client.lobby_owed && !client.closing &&
                 client.connection.queued() <= options.lobby_queue_limit) {
                 client.lobby_owed = false;
-                send_lobby(client);
+                if (!text)
+                    text = lobby_text();
+                send_lobby(client, *text);
             }
     }
 
@@ -629,7 +648,7 @@ struct Server::State {
                 if (table.seats[s - 1].token_hash == hash && table.seats[s - 1].client == 0)
                     send(client, Yours{number, s});
         lobby_dirty = true;
-        send_lobby(client);
+        send_lobby(client, lobby_text());
     }
 
     void on_create(Client& client, const Create& create) {
