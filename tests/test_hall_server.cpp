@@ -740,6 +740,61 @@ TEST_CASE("hall server: an action that cannot be saved is not taken", "[hall]") 
     CHECK(saved_hash(dir.path(), table) == ann.match(table)->state_hash());
 }
 
+TEST_CASE("hall server: a request sent with an action finds the action taken", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+    // One write: the server reads both lines in one round, the action waiting for its save
+    // when the sync comes; the record sent back must hold it.
+    const RecordedAction move = chosen_move(*ann.match(table));
+    REQUIRE(ann.send_raw(format_client(Act{move}) + format_client(Sync{})));
+    await_action(ann, table, 1);
+    const RecordEnd end = expect<RecordEnd>(ann);
+    CHECK(end.seq == 1);
+    REQUIRE(ann.match(table));
+    CHECK(end.hash == ann.match(table)->state_hash());
+    await_action(bob, table, 1);
+    CHECK(ann.mismatches() + bob.mismatches() == 0);
+    CHECK(saved_hash(dir.path(), table) == end.hash);
+}
+
+TEST_CASE("hall server: actions at several tables at once are each saved and taken", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    constexpr int tables = 4;
+    std::vector<HallClient> players;
+    std::vector<int> numbers;
+    for (int t = 0; t < tables; ++t) {
+        players.push_back(connected(dir.path(), "A" + std::to_string(t)));
+        players.push_back(connected(dir.path(), "B" + std::to_string(t)));
+        numbers.push_back(create_table(players[2 * t]));
+        sit(players[2 * t], numbers.back(), 1);
+        sit(players[2 * t + 1], numbers.back(), 2);
+    }
+    for (int round = 0; round < 3; ++round) {
+        // Every table's move goes out before any answer is read: the server gets them together.
+        std::vector<std::size_t> seqs;
+        for (int t = 0; t < tables; ++t) {
+            const Match& local = *players[2 * t].match(numbers[t]);
+            seqs.push_back(local.record().actions.size() + 1);
+            HallClient& actor = players[2 * t + (local.to_act() == 1 ? 0 : 1)];
+            REQUIRE(actor.send(Act{chosen_move(*actor.match(numbers[t]))}));
+        }
+        for (int t = 0; t < tables; ++t)
+            for (int p = 0; p < 2; ++p)
+                await_action(players[2 * t + p], numbers[t], seqs[t]);
+    }
+    for (int t = 0; t < tables; ++t) {
+        CHECK(players[2 * t].mismatches() + players[2 * t + 1].mismatches() == 0);
+        CHECK(saved_hash(dir.path(), numbers[t]) ==
+              players[2 * t + 1].match(numbers[t])->state_hash());
+    }
+}
+
 TEST_CASE("hall server: a table keeps at most max_actions actions", "[hall]") {
     test::TempDir dir("termpool-hall");
     ServerOptions options;
