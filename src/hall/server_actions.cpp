@@ -2,10 +2,21 @@
 // round's others side by side, then taken and sent; the computer's moves; aims and chat.
 
 #include <algorithm>
+#include <cstdio>
 
 #include "hall/server_state.hpp"
 
 namespace termpool::hall {
+
+namespace {
+
+std::string hex_hash(std::uint64_t hash) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
+
+} // namespace
 
 using serving::default_name;
 
@@ -103,13 +114,49 @@ void Server::State::action_taken(Table& table) {
     changed(table);
     const bool now_over = over(table);
     const auto& actions = table.match.record().actions;
-    send_to_table(
-        table, ActionDone{table.number, actions.size(), table.match.state_hash(), actions.back()});
+    const std::uint64_t hash = table.match.state_hash();
+    table.recent_hashes.emplace_back(actions.size(), hash);
+    if (table.recent_hashes.size() > serving::recent_hashes_kept)
+        table.recent_hashes.pop_front();
+    send_to_table(table, ActionDone{table.number, actions.size(), hash, actions.back()});
     for (SeatSlot& slot : table.seats)
         slot.pending_aim.reset();
     if (now_over)
         lobby_dirty = true;
     think(table);
+}
+
+void Server::State::on_sync(Client& client, const Sync& sync) {
+    Table* table = table_of(client);
+    if (!table)
+        return send_error(client, ErrorCode::no_table, "you are at no table");
+    const std::string at = "table " + std::to_string(table->number) + ": ";
+    if (!sync.seq) {
+        log("client " + std::to_string(client.id) + " resynchronises table " +
+            std::to_string(table->number));
+        return send_record(client, *table);
+    }
+    // The client's copy disagreed: what it came to, against the server's state there.
+    const std::size_t held = table->match.record().actions.size();
+    std::optional<std::uint64_t> ours;
+    if (*sync.seq == held)
+        ours = table->match.state_hash();
+    for (const auto& [seq, hash] : table->recent_hashes)
+        if (seq == *sync.seq)
+            ours = hash;
+    std::string line = at + client.name + "'s copy after action " + std::to_string(*sync.seq) +
+                       " hashed " + hex_hash(sync.hash);
+    if (ours && *ours == sync.hash)
+        line += ", as the server's did (it could not take action " + std::to_string(*sync.seq + 1) +
+                ")";
+    else if (ours)
+        line += ", the server's " + hex_hash(*ours);
+    else if (*sync.seq > held)
+        line += ", but the server holds " + std::to_string(held) + " actions";
+    else
+        line += ", the server's is no longer kept (it holds " + std::to_string(held) + " actions)";
+    log(line + "; record sent again");
+    send_record(client, *table);
 }
 
 MatchError Server::State::play(Match& match, int seat, const RecordedAction& action) {

@@ -54,14 +54,8 @@ void Server::State::on_message(Client& client, const ClientMessage& message) {
         return on_chat(client, *m);
     if (const auto* m = std::get_if<SeatComputer>(&message))
         return on_computer(client, *m);
-    if (std::holds_alternative<Sync>(message)) {
-        Table* table = table_of(client);
-        if (!table)
-            return send_error(client, ErrorCode::no_table, "you are at no table");
-        log("client " + std::to_string(client.id) + " resynchronises table " +
-            std::to_string(table->number));
-        return send_record(client, *table);
-    }
+    if (const auto* m = std::get_if<Sync>(&message))
+        return on_sync(client, *m);
     send(client, Pong{});
 }
 

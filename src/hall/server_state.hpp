@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <map>
 #include <optional>
 #include <random>
@@ -63,6 +64,9 @@ struct SeatSlot {
     TokenBucket actions; // each action is validated, saved (fsync) and broadcast
 };
 
+// How many actions' hashes a table keeps for the log of a sync (Table::recent_hashes).
+inline constexpr std::size_t recent_hashes_kept = 16;
+
 // A table: its match (the authority on the game), its seats, and the bookkeeping of its
 // computer searches and saves.
 struct Table {
@@ -78,6 +82,9 @@ struct Table {
     std::uint64_t search_ticket = 0;
     int refusals = 0;    // the computer's moves refused in a row
     bool saving = false; // an action waits for its save (State::batch)
+    // The state hash after each of the last few actions (SEQ, HASH): a client's copy that
+    // disagreed is logged against the server's hash at the same action.
+    std::deque<std::pair<std::size_t, std::uint64_t>> recent_hashes{};
 };
 
 // An action played on a copy of a table's match, waiting for its save: only once saved is it
@@ -208,6 +215,7 @@ struct Server::State {
     void flush_aims(Clock::time_point now);
     int aim_timeout(Clock::time_point now) const;
     void on_chat(Client& client, const Chat& chat);
+    void on_sync(Client& client, const Sync& sync);
 
     // --- server_persistence.cpp: saving and restoring tables
     static SavedTable saved_form(const Table& table, const Match& match);
