@@ -3,6 +3,7 @@
 // late, and the faults the issue lists. Every wait is bounded (kWait); the server's thread is
 // stopped and joined by RunningServer whatever way a test ends.
 #include <array>
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <condition_variable>
@@ -965,4 +966,53 @@ TEST_CASE("hall client: a copy that disagrees asks sync with what it came to", "
         got.append(buffer, static_cast<std::size_t>(n));
     }
     CHECK(got == format_client(Sync{1, ours.state_hash()}));
+}
+
+TEST_CASE("hall server: idle_exit: a table keeps the hall, and once it goes the hall goes",
+          "[hall]") {
+    test::TempDir dir("termpool-hall");
+    {
+        // A game under way whose players both went: the table stays, its seats away.
+        RunningServer first(dir.path());
+        HallClient ann = connected(dir.path(), "Ann");
+        HallClient bob = connected(dir.path(), "Bob");
+        const int table = create_table(ann);
+        sit(ann, table, 1);
+        sit(bob, table, 2);
+        play_one(ann, bob, table, {&ann, &bob});
+    }
+    ServerOptions options;
+    options.socket_path = dir.path() + "/hall.sock";
+    options.state_dir = dir.path();
+    options.idle_exit = std::chrono::seconds(1);
+    options.away_limit = 2500ms; // the restored seats are freed 2.5 s after the last save
+    Server server(options);
+    REQUIRE(server.open() == "");
+    REQUIRE(server.table_count() == 1);
+    std::atomic<bool> done{false};
+    int status = -1;
+    const auto started = std::chrono::steady_clock::now();
+    std::thread loop([&] {
+        status = server.run();
+        done = true;
+    });
+    // Stopped whatever way the test ends.
+    struct Join {
+        Server& server;
+        std::thread& loop;
+        ~Join() {
+            server.stop();
+            loop.join();
+        }
+    } join{server, loop};
+    // Nobody connects, but the restored table holds the hall past the idle time...
+    std::this_thread::sleep_for(1500ms);
+    CHECK_FALSE(done);
+    // ...until its away seats are freed and it goes; a second later the hall goes too.
+    for (const auto end = started + 10s; !done && std::chrono::steady_clock::now() < end;)
+        std::this_thread::sleep_for(20ms);
+    REQUIRE(done);
+    CHECK(status == 0);
+    CHECK(server.table_count() == 0);
+    CHECK(std::chrono::steady_clock::now() - started >= 2s);
 }

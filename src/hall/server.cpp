@@ -11,9 +11,11 @@
 
 #include "hall/server.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -24,6 +26,32 @@
 namespace termpool::hall {
 
 using serving::Clock;
+
+// With idle_exit set, a hall nobody uses goes: no connection and no table for idle_exit in a
+// row (counted from when it last had one, or from its start).
+bool Server::State::idle_for_good(Clock::time_point now) {
+    if (!clients.empty() || !tables.empty()) {
+        idle_since.reset();
+        return false;
+    }
+    if (!idle_since)
+        idle_since = now;
+    if (options.idle_exit.count() <= 0 || now - *idle_since < options.idle_exit)
+        return false;
+    log("no connection and no table for " + std::to_string(options.idle_exit.count()) +
+        " s: exiting");
+    return true;
+}
+
+// Milliseconds until the hall has been idle for idle_exit, -1 for never.
+int Server::State::idle_timeout(Clock::time_point now) const {
+    if (options.idle_exit.count() <= 0 || !idle_since)
+        return -1;
+    const auto due = *idle_since + options.idle_exit - now;
+    return static_cast<int>(
+        std::clamp<long long>(std::chrono::ceil<std::chrono::milliseconds>(due).count(), 0,
+                              std::numeric_limits<int>::max()));
+}
 
 // How long actions took to handle (`termpool hall bench` reads these two lines).
 void Server::State::log_figures() const {
@@ -83,6 +111,8 @@ int Server::run() {
         fds.push_back({s.stop_pipe.read_end.get(), POLLIN, 0});
         fds.push_back({s.pool.wake_fd(), POLLIN, 0});
         const auto now = Clock::now();
+        if (s.idle_for_good(now))
+            break;
         if (s.accept_paused_until && now >= *s.accept_paused_until)
             s.accept_paused_until.reset();
         // A negative fd is left out by poll.
@@ -105,7 +135,8 @@ int Server::run() {
                                                       *s.accept_paused_until - now)
                                                       .count())
                                : -1;
-        for (const int due : {s.lobby_timeout(now), s.hello_timeout(now), paused})
+        for (const int due :
+             {s.lobby_timeout(now), s.hello_timeout(now), paused, s.idle_timeout(now)})
             if (due >= 0)
                 timeout = timeout < 0 ? due : std::min(timeout, due);
         if (lines_waiting)

@@ -137,7 +137,8 @@ struct Server::State {
     std::vector<Proposal> batch;
     bool settling = false;
     WorkCrew savers;
-    Clock::time_point woke;    // when poll last returned
+    Clock::time_point woke;                      // when poll last returned
+    std::optional<Clock::time_point> idle_since; // no connection and no table since then
     LatencyHistogram handling; // each action, from the loop's wake-up to its broadcast queued
     LatencyHistogram saving;   // each round's saves of actions, side by side
 
@@ -161,7 +162,9 @@ struct Server::State {
 
     void changed(Table& table) { table.ticket = ++last_ticket; }
 
-    // --- server.cpp: the figures (the poll loop itself is Server::run)
+    // --- server.cpp: idleness and the figures (the poll loop itself is Server::run)
+    bool idle_for_good(Clock::time_point now);
+    int idle_timeout(Clock::time_point now) const;
     void log_figures() const;
 
     // --- server_connections.cpp: sockets, sending, connections coming and going
