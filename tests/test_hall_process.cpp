@@ -380,3 +380,46 @@ TEST_CASE("hall process: termpool hall bench plays its tables and checks them", 
     for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
         CHECK(entry.path().filename() == "bench.log");
 }
+
+TEST_CASE("hall process: --idle-exit: a hall nobody uses saves and exits 0", "[hall][e2e]") {
+    TempDir dir("termpool-hall-idle");
+    const std::string log = dir.path() + "/server.log";
+    const auto started = Clock::now();
+    auto server = run_termpool(dir.path(),
+                               {"hall", "serve", "--socket", socket_of(dir.path()), "--state",
+                                dir.path() + "/state", "--idle-exit", "1"},
+                               log);
+    // A connection keeps it: held for longer than the idle time, the hall is still there.
+    HallClient ann;
+    for (const auto end = Clock::now() + kWait; !ann.connect(socket_of(dir.path())).empty();) {
+        REQUIRE(server->running());
+        REQUIRE(Clock::now() < end);
+        std::this_thread::sleep_for(10ms);
+    }
+    REQUIRE(ann.hello("Ann", "", kWait) == "");
+    std::this_thread::sleep_for(1500ms);
+    CHECK(server->running());
+    // Gone, the hall follows a second later: saved, its socket removed, status 0.
+    ann.disconnect();
+    const auto left = Clock::now();
+    const auto status = server->wait_exit(kWait);
+    REQUIRE(status);
+    CHECK(*status == 0);
+    CHECK(Clock::now() - left >= 900ms);
+    CHECK(Clock::now() - started >= 2s);
+    CHECK_FALSE(std::filesystem::exists(socket_of(dir.path())));
+    CHECK(file_text(log).find("no connection and no table for 1 s: exiting") != std::string::npos);
+}
+
+TEST_CASE("hall process: --idle-exit takes whole seconds from 0", "[hall]") {
+    TempDir dir("termpool-hall-idle");
+    const std::string log = dir.path() + "/out.log";
+    for (const std::string bad : {"-1", "x", "1.5", ""}) {
+        auto server = run_termpool(
+            dir.path(), {"hall", "serve", "--socket", socket_of(dir.path()), "--idle-exit", bad},
+            log);
+        const auto status = server->wait_exit(kWait);
+        REQUIRE(status);
+        CHECK(*status == 2);
+    }
+}

@@ -85,6 +85,8 @@ TEST_CASE("hall protocol: every client message reads back", "[hall]") {
     client_round_trip(SeatComputer{2, Level::pro});
     client_round_trip(SeatComputer{1, std::nullopt});
     client_round_trip(Sync{});
+    client_round_trip(Sync{17, 0x0123456789abcdefull});
+    client_round_trip(Sync{0, 0});
     client_round_trip(Ping{});
 }
 
@@ -188,6 +190,13 @@ TEST_CASE("hall protocol: malformed client lines are refused", "[hall]") {
         "computer 1 godlike",
         "next-rack now",
         "sync\r",
+        "sync ",
+        "sync 17",
+        "sync 17 ",
+        "sync -1 0123456789abcdef",
+        "sync 17 0123456789ABCDEF",
+        "sync 17 0123456789abcdef extra",
+        "sync x 0123456789abcdef",
         std::string("ping\0", 5),
         "\xff\xfe garbage",
     };

@@ -3,15 +3,18 @@
 // late, and the faults the issue lists. Every wait is bounded (kWait); the server's thread is
 // stopped and joined by RunningServer whatever way a test ends.
 #include <array>
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
 #include <cstring>
 #include <ctime>
 #include <fcntl.h>
 #include <fstream>
 #include <mutex>
 #include <ostream>
+#include <poll.h>
 #include <streambuf>
 #include <string>
 #include <sys/resource.h>
@@ -740,6 +743,61 @@ TEST_CASE("hall server: an action that cannot be saved is not taken", "[hall]") 
     CHECK(saved_hash(dir.path(), table) == ann.match(table)->state_hash());
 }
 
+TEST_CASE("hall server: a request sent with an action finds the action taken", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+    // One write: the server reads both lines in one round, the action waiting for its save
+    // when the sync comes; the record sent back must hold it.
+    const RecordedAction move = chosen_move(*ann.match(table));
+    REQUIRE(ann.send_raw(format_client(Act{move}) + format_client(Sync{})));
+    await_action(ann, table, 1);
+    const RecordEnd end = expect<RecordEnd>(ann);
+    CHECK(end.seq == 1);
+    REQUIRE(ann.match(table));
+    CHECK(end.hash == ann.match(table)->state_hash());
+    await_action(bob, table, 1);
+    CHECK(ann.mismatches() + bob.mismatches() == 0);
+    CHECK(saved_hash(dir.path(), table) == end.hash);
+}
+
+TEST_CASE("hall server: actions at several tables at once are each saved and taken", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    constexpr int tables = 4;
+    std::vector<HallClient> players;
+    std::vector<int> numbers;
+    for (int t = 0; t < tables; ++t) {
+        players.push_back(connected(dir.path(), "A" + std::to_string(t)));
+        players.push_back(connected(dir.path(), "B" + std::to_string(t)));
+        numbers.push_back(create_table(players[2 * t]));
+        sit(players[2 * t], numbers.back(), 1);
+        sit(players[2 * t + 1], numbers.back(), 2);
+    }
+    for (int round = 0; round < 3; ++round) {
+        // Every table's move goes out before any answer is read: the server gets them together.
+        std::vector<std::size_t> seqs;
+        for (int t = 0; t < tables; ++t) {
+            const Match& local = *players[2 * t].match(numbers[t]);
+            seqs.push_back(local.record().actions.size() + 1);
+            HallClient& actor = players[2 * t + (local.to_act() == 1 ? 0 : 1)];
+            REQUIRE(actor.send(Act{chosen_move(*actor.match(numbers[t]))}));
+        }
+        for (int t = 0; t < tables; ++t)
+            for (int p = 0; p < 2; ++p)
+                await_action(players[2 * t + p], numbers[t], seqs[t]);
+    }
+    for (int t = 0; t < tables; ++t) {
+        CHECK(players[2 * t].mismatches() + players[2 * t + 1].mismatches() == 0);
+        CHECK(saved_hash(dir.path(), numbers[t]) ==
+              players[2 * t + 1].match(numbers[t])->state_hash());
+    }
+}
+
 TEST_CASE("hall server: a table keeps at most max_actions actions", "[hall]") {
     test::TempDir dir("termpool-hall");
     ServerOptions options;
@@ -774,4 +832,187 @@ TEST_CASE("hall server: a file at the socket's path that is not its socket is le
     std::string text;
     std::getline(in, text);
     CHECK(text == "not a socket");
+}
+
+namespace {
+
+// A log the server's thread writes while the test reads it.
+class LockedLog : public std::streambuf {
+public:
+    std::string text() {
+        const std::lock_guard lock(mutex_);
+        return text_;
+    }
+
+protected:
+    int overflow(int c) override {
+        const std::lock_guard lock(mutex_);
+        if (c != EOF)
+            text_ += static_cast<char>(c);
+        return c == EOF ? 0 : c;
+    }
+    std::streamsize xsputn(const char* s, std::streamsize n) override {
+        const std::lock_guard lock(mutex_);
+        text_.append(s, static_cast<std::size_t>(n));
+        return n;
+    }
+
+private:
+    std::mutex mutex_;
+    std::string text_;
+};
+
+std::string hex(std::uint64_t v) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
+    return text;
+}
+
+} // namespace
+
+TEST_CASE("hall server: a sync with the client's copy is logged against the server's", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    LockedLog sink;
+    std::ostream log(&sink);
+    ServerOptions options;
+    options.log = &log;
+    RunningServer running(dir.path(), options);
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    const int table = create_table(ann);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+    play_one(ann, bob, table, {&ann, &bob});
+    const std::uint64_t after_one = ann.match(table)->state_hash();
+    play_one(ann, bob, table, {&ann, &bob});
+    const std::uint64_t after_two = ann.match(table)->state_hash();
+    const std::string at = "table " + std::to_string(table) + ": ";
+
+    // The server logs before it sends the record: once the record is here, so is the line.
+    const auto sync = [&](const Sync& message) {
+        REQUIRE(ann.send(message));
+        expect<RecordEnd>(ann);
+        return sink.text();
+    };
+    CHECK_THAT(sync(Sync{2, 0x0123456789abcdefull}),
+               Catch::Contains(at +
+                               "Ann's copy after action 2 hashed 0123456789abcdef, the "
+                               "server's " +
+                               hex(after_two) + "; record sent again"));
+    // An earlier action's hash is kept too.
+    CHECK_THAT(sync(Sync{1, 0xfedcba9876543210ull}),
+               Catch::Contains(at +
+                               "Ann's copy after action 1 hashed fedcba9876543210, the "
+                               "server's " +
+                               hex(after_one) + "; record sent again"));
+    // A copy that agreed there but could not take the next action.
+    CHECK_THAT(sync(Sync{1, after_one}),
+               Catch::Contains(at + "Ann's copy after action 1 hashed " + hex(after_one) +
+                               ", as the server's did (it could not take action 2)"));
+    CHECK_THAT(sync(Sync{9, 0}), Catch::Contains("but the server holds 2 actions"));
+    // A plain sync says only that it came.
+    CHECK_THAT(sync(Sync{}), Catch::Contains("resynchronises table " + std::to_string(table)));
+}
+
+TEST_CASE("hall client: a copy that disagrees asks sync with what it came to", "[hall]") {
+    // The test is the server: a record, then an action whose hash is wrong.
+    test::TempDir dir("termpool-hall");
+    const std::string path = dir.path() + "/fake.sock";
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    REQUIRE(path.size() < sizeof address.sun_path);
+    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+    const UniqueFd listener(::socket(AF_UNIX, SOCK_STREAM, 0));
+    REQUIRE(::bind(listener.get(), reinterpret_cast<const sockaddr*>(&address), sizeof address) ==
+            0);
+    REQUIRE(::listen(listener.get(), 1) == 0);
+    HallClient client;
+    REQUIRE(client.connect(path) == "");
+    const UniqueFd peer(::accept(listener.get(), nullptr, nullptr));
+    REQUIRE(peer);
+    const auto say = [&](const ServerMessage& m) {
+        const std::string line = format_server(m);
+        REQUIRE(::send(peer.get(), line.data(), line.size(), MSG_NOSIGNAL) ==
+                static_cast<ssize_t>(line.size()));
+    };
+
+    GameRecord header;
+    header.setup.table = TableSize::seven_foot;
+    auto started = Match::start(header, 7);
+    REQUIRE(std::holds_alternative<Match>(started));
+    Match ours = std::get<Match>(started);
+    say(Joined{3, 0});
+    const std::string text = format_record(ours.record());
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t end = text.find('\n', start);
+        say(RecordLine{3, text.substr(start, end - start)});
+        start = end + 1;
+    }
+    say(RecordEnd{3, 0, ours.state_hash()});
+    const RecordedAction move = chosen_move(ours);
+    REQUIRE(ours.apply(move) == MatchError::none);
+    say(ActionDone{3, 1, ours.state_hash() ^ 1, move});
+    REQUIRE(client.wait_for(is<ActionDone>, kWait));
+    CHECK(client.mismatches() == 1);
+
+    // What the client sent back: its copy after action 1, hashed as ours is.
+    std::string got;
+    pollfd p{peer.get(), POLLIN, 0};
+    for (int i = 0; i < 100 && got.find('\n') == std::string::npos; ++i) {
+        REQUIRE(::poll(&p, 1, static_cast<int>(kWait.count())) == 1);
+        char buffer[256];
+        const ssize_t n = ::recv(peer.get(), buffer, sizeof buffer, 0);
+        REQUIRE(n > 0);
+        got.append(buffer, static_cast<std::size_t>(n));
+    }
+    CHECK(got == format_client(Sync{1, ours.state_hash()}));
+}
+
+TEST_CASE("hall server: idle_exit: a table keeps the hall, and once it goes the hall goes",
+          "[hall]") {
+    test::TempDir dir("termpool-hall");
+    {
+        // A game under way whose players both went: the table stays, its seats away.
+        RunningServer first(dir.path());
+        HallClient ann = connected(dir.path(), "Ann");
+        HallClient bob = connected(dir.path(), "Bob");
+        const int table = create_table(ann);
+        sit(ann, table, 1);
+        sit(bob, table, 2);
+        play_one(ann, bob, table, {&ann, &bob});
+    }
+    ServerOptions options;
+    options.socket_path = dir.path() + "/hall.sock";
+    options.state_dir = dir.path();
+    options.idle_exit = std::chrono::seconds(1);
+    options.away_limit = 2500ms; // the restored seats are freed 2.5 s after the last save
+    Server server(options);
+    REQUIRE(server.open() == "");
+    REQUIRE(server.table_count() == 1);
+    std::atomic<bool> done{false};
+    int status = -1;
+    const auto started = std::chrono::steady_clock::now();
+    std::thread loop([&] {
+        status = server.run();
+        done = true;
+    });
+    // Stopped whatever way the test ends.
+    struct Join {
+        Server& server;
+        std::thread& loop;
+        ~Join() {
+            server.stop();
+            loop.join();
+        }
+    } join{server, loop};
+    // Nobody connects, but the restored table holds the hall past the idle time...
+    std::this_thread::sleep_for(1500ms);
+    CHECK_FALSE(done);
+    // ...until its away seats are freed and it goes; a second later the hall goes too.
+    for (const auto end = started + 10s; !done && std::chrono::steady_clock::now() < end;)
+        std::this_thread::sleep_for(20ms);
+    REQUIRE(done);
+    CHECK(status == 0);
+    CHECK(server.table_count() == 0);
+    CHECK(std::chrono::steady_clock::now() - started >= 2s);
 }

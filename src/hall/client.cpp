@@ -131,9 +131,15 @@ const Match* HallClient::match(int number) const {
 
 void HallClient::resync(int number, Followed& followed) {
     ++mismatches_;
+    // What the copy came to goes with the request, for the server's log.
+    Sync sync;
+    if (followed.match) {
+        sync.seq = followed.match->record().actions.size();
+        sync.hash = followed.match->state_hash();
+    }
     followed.match.reset();
     followed.record_text.clear();
-    send(Sync{});
+    send(sync);
     (void)number;
 }
 

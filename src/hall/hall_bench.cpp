@@ -16,6 +16,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <latch>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -177,12 +178,43 @@ std::string both_have(HallClient (&players)[2], HallClient& actor, int table, st
     return {};
 }
 
+// The tables play together: every table's players are seated before any table plays, and
+// stay connected until every table stopped. The hellos, sits and leaves of a hundred tables
+// coming at once (each a lobby change for everyone, each sit or leave a save) are not what an
+// action's round trip measures.
+class Together {
+public:
+    Together(std::latch& seated, std::latch& stopped) : seated_(seated), stopped_(stopped) {}
+    Together(const Together&) = delete;
+    Together& operator=(const Together&) = delete;
+    // Seated: waits for the other tables.
+    void start() {
+        arrived_ = true;
+        seated_.arrive_and_wait();
+    }
+    // Stopped (or failed): waits for the other tables before the players go.
+    ~Together() {
+        if (!arrived_)
+            seated_.count_down();
+        stopped_.arrive_and_wait();
+    }
+
+private:
+    std::latch& seated_;
+    std::latch& stopped_;
+    bool arrived_ = false;
+};
+
 // One table: two clients sit, each plays its seat with its own easy computer, as a person at a
-// terminal would (the hall hears only actions), until `stop`.
+// terminal would (the hall hears only actions), until `stop`. Its first action waits `offset`
+// more than the others': tables that all started at once and paused alike would act in step,
+// which people at a hundred tables do not.
 TableRun drive_table(const std::string& socket, int index, std::uint64_t seed, int think_ms,
-                     const std::atomic<bool>& stop) {
+                     milliseconds offset, const std::atomic<bool>& stop, std::latch& seated,
+                     std::latch& stopped) {
     TableRun run;
     HallClient players[2];
+    Together together(seated, stopped); // destroyed before the players go
     for (int p = 0; p < 2; ++p) {
         // A hall takes so many newcomers at once: a client told "full" tries again, waiting a
         // little longer each time, as a player's terminal would.
@@ -225,6 +257,8 @@ TableRun drive_table(const std::string& socket, int index, std::uint64_t seed, i
     }
     ComputerPlayer computers[2] = {ComputerPlayer(Level::easy, seed * 2 + 1),
                                    ComputerPlayer(Level::easy, seed * 2 + 2)};
+    together.start();
+    std::this_thread::sleep_for(offset);
     while (!stop) {
         const Match* view = players[0].match(table);
         if (!view || view->pending().kind == Pending::over)
@@ -350,15 +384,20 @@ int hall_bench_command(const std::vector<std::string>& args) {
     }
 
     std::atomic<bool> stop{false};
+    std::latch seated(options->tables);
+    std::latch stopped(options->tables);
     std::vector<TableRun> runs(static_cast<std::size_t>(options->tables));
     std::vector<std::thread> drivers;
-    const auto start = Clock::now();
     for (int t = 0; t < options->tables; ++t)
         drivers.emplace_back([&, t] {
+            // The tables' first actions spread evenly over one pause.
+            const milliseconds offset{options->think_ms * t / options->tables};
             runs[static_cast<std::size_t>(t)] =
                 drive_table(socket, t + 1, options->seed * 1000 + static_cast<std::uint64_t>(t),
-                            options->think_ms, stop);
+                            options->think_ms, offset, stop, seated, stopped);
         });
+    seated.wait(); // each driver waits at most a few wait_limits for its hellos and sits
+    const auto start = Clock::now();
     std::this_thread::sleep_for(std::chrono::seconds(options->seconds));
     stop = true;
     for (std::thread& d : drivers)
@@ -393,6 +432,13 @@ int hall_bench_command(const std::vector<std::string>& args) {
     std::printf("round trip         p50 %.2f ms, p99 %.2f ms, max %.2f ms (sent until both "
                 "players had it)\n",
                 percentile(trips, 0.5), percentile(trips, 0.99), percentile(trips, 1.0));
+    // The server's own time for each action, which the round trip includes; its log has it.
+    std::ifstream server_log(log);
+    for (std::string line; std::getline(server_log, line);)
+        for (const std::string figure : {"handling", "saving"})
+            if (const std::string prefix = "termpool hall: " + figure + ": ";
+                line.starts_with(prefix))
+                std::printf("server %-12s%s\n", figure.c_str(), line.c_str() + prefix.size());
     std::printf("server CPU         %.2f s (%.1f%% of one core)\n", cpu, 100 * cpu / wall);
     std::printf("server peak RSS    %.1f MB\n", static_cast<double>(peak_kb) / 1024);
     std::printf("tables checked     %d of %d agree with the server's record%s\n",

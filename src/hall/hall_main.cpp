@@ -23,12 +23,15 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: termpool hall serve [--socket PATH] [--state DIR] [--max-clients N] [--max-tables N]\n"
+    "                           [--idle-exit S]\n"
     "  serve            run the hall's server in the foreground (SIGTERM or SIGINT: save, exit)\n"
     "  --socket PATH    the Unix socket (default $XDG_RUNTIME_DIR/termpool/hall.sock, or\n"
     "                   /tmp/termpool-UID/hall.sock)\n"
     "  --state DIR      where tables are saved (default $XDG_STATE_HOME/termpool/hall)\n"
     "  --max-clients N  people in the hall at once (default 256)\n"
     "  --max-tables N   tables at once (default 100)\n"
+    "  --idle-exit S    save and exit 0 after S seconds with no connection and no table\n"
+    "                   (default 0: never)\n"
     "       termpool hall bench [--tables N] [--seconds S] [--think MS] [--seed S]\n"
     "  bench            play N tables of computers through a private server; print actions a\n"
     "                   second, the action round trip, the server's CPU and memory\n";

@@ -210,6 +210,8 @@ public:
         }
         return std::get<RecordedAction>(parsed);
     }
+    // True while fields are left to read.
+    bool more() const { return !fields_.done(); }
     // The whole line was read.
     void end() {
         if (ok_ && !fields_.done())
@@ -376,7 +378,10 @@ std::string format_client(const ClientMessage& message) {
                            return "computer " + std::to_string(m.seat) + " " +
                                   (m.level ? level_name(*m.level) : "none");
                        },
-                       [](const Sync&) { return std::string("sync"); },
+                       [](const Sync& m) {
+                           return m.seq ? "sync " + std::to_string(*m.seq) + " " + hex64(m.hash)
+                                        : std::string("sync");
+                       },
                        [](const Ping&) { return std::string("ping"); },
                    },
                    message);
@@ -529,8 +534,14 @@ std::variant<ClientMessage, ProtocolError> parse_client(std::string_view line) {
         return wrap(finish(r, Leave{}));
     if (kind == "next-rack")
         return wrap(finish(r, NextRack{}));
-    if (kind == "sync")
-        return wrap(finish(r, Sync{}));
+    if (kind == "sync") {
+        Sync m;
+        if (r.more()) { // what the client's copy came to
+            m.seq = r.count("a sequence number");
+            m.hash = r.hash();
+        }
+        return wrap(finish(r, m));
+    }
     if (kind == "ping")
         return wrap(finish(r, Ping{}));
     return ProtocolError{ErrorCode::syntax, "unknown message"};

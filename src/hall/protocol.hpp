@@ -25,7 +25,9 @@
 ///   chat TEXT                         to the table: 1..200 characters, no control characters
 ///   computer SEAT LEVEL|none          seat (or unseat) the computer in an empty seat (a
 ///                                     player seated at the table only)
-///   sync                              send me my table's record again
+///   sync [SEQ HASH]                   send me my table's record again; after a mismatch,
+///                                     SEQ and HASH say what my copy came to (it holds SEQ
+///                                     actions and hashes HASH), for the server's log
 ///   ping                              answered by pong
 ///
 /// Server to client:
@@ -151,8 +153,13 @@ struct SeatComputer {
     int seat = 1;               ///< 1 or 2
     std::optional<Level> level; ///< none: give the seat back to people
 };
-/// `sync`.
-struct Sync {};
+/// `sync [SEQ HASH]`.
+struct Sync {
+    /// After a mismatch: the actions the client's copy holds (it played action SEQ, or could
+    /// not play the next one); nothing for a plain request.
+    std::optional<std::size_t> seq;
+    std::uint64_t hash = 0; ///< the client's copy's state hash there (with `seq` only)
+};
 /// `ping`.
 struct Ping {};
 

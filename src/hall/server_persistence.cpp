@@ -1,0 +1,86 @@
+// The hall server's state folder: each table saved after every change, all restored when
+// the server starts again.
+
+#include <limits>
+#include <sys/stat.h>
+
+#include "hall/server_state.hpp"
+
+namespace termpool::hall {
+
+// `table` as it is with `match` in place of its own, as it is saved.
+SavedTable Server::State::saved_form(const Table& table, const Match& match) {
+    SavedTable stored{table.number, match.record(), {}};
+    for (int s = 0; s < 2; ++s)
+        stored.seat_tokens[s] = table.seats[s].token_hash;
+    return stored;
+}
+
+bool Server::State::save(const Table& table) {
+    if (options.state_dir.empty())
+        return true;
+    if (const std::string problem = save_table(options.state_dir, saved_form(table, table.match));
+        !problem.empty()) {
+        log("cannot save table " + std::to_string(table.number) + ": " + problem);
+        return false;
+    }
+    return true;
+}
+
+void Server::State::restore() {
+    if (options.state_dir.empty())
+        return;
+    std::vector<std::string> problems;
+    for (SavedTable& stored : load_tables(options.state_dir, problems)) {
+        // A restored computer starts a new stream, as a resumed local game's does.
+        auto replayed =
+            Match::replay(stored.record, std::numeric_limits<std::size_t>::max(), {}, random());
+        if (!std::holds_alternative<Match>(replayed))
+            continue;
+        Table table{stored.number,
+                    std::move(std::get<Match>(replayed)),
+                    {},
+                    ++last_ticket,
+                    false,
+                    {},
+                    0,
+                    0};
+        const auto away_since = file_changed(stored.number);
+        for (int s = 0; s < 2; ++s) {
+            table.seats[s].computer = stored.record.computers[s].has_value();
+            // Nobody is connected yet: a seat of a game not started is nobody's.
+            if (started(table)) {
+                table.seats[s].token_hash = stored.seat_tokens[s];
+                table.seats[s].away_since = away_since;
+            }
+        }
+        tables.emplace(stored.number, std::move(table));
+    }
+    for (const std::string& problem : problems)
+        log("not restored: " + problem);
+    table_count = tables.size();
+    expire_away(Clock::now());
+    std::vector<int> numbers;
+    for (const auto& [number, table] : tables)
+        numbers.push_back(number);
+    for (const int number : numbers)
+        forget_if_idle(tables.at(number));
+    log("restored " + std::to_string(tables.size()) + " tables");
+    for (auto& [number, table] : tables)
+        think(table);
+}
+
+// When table `number`'s file last changed, on the steady clock: a restored away seat went
+// away then at the latest (the file is rewritten on every change of the table).
+Server::State::Clock::time_point Server::State::file_changed(int number) const {
+    struct stat info {};
+    const auto now = Clock::now();
+    if (::stat(table_path(options.state_dir, number).c_str(), &info) != 0)
+        return now;
+    const auto changed = std::chrono::system_clock::from_time_t(info.st_mtim.tv_sec);
+    const auto age = std::chrono::system_clock::now() - changed;
+    return age > Clock::duration::zero() ? now - std::chrono::duration_cast<Clock::duration>(age)
+                                         : now;
+}
+
+} // namespace termpool::hall
