@@ -40,6 +40,7 @@ void print_usage(std::ostream& out) {
            "  hall [--name NAME] [--socket PATH] [--ascii]\n"
            "                        play in the pool hall (its server starts if need be)\n"
            "  hall serve [--socket PATH] [--state DIR] [--max-clients N] [--max-tables N]\n"
+           "             [--idle-exit S]\n"
            "                        run the pool hall's server (friends play over SSH)\n"
            "  hall bench [--tables N] [--seconds S] [--think MS] [--seed S]\n"
            "                        time the hall: tables of computers through its server\n"

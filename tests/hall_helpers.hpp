@@ -35,7 +35,19 @@ inline hall::HallClient connected(const std::string& dir, const std::string& nam
 
 /// The next T `client` receives; the test stops when none comes in time.
 template <class T> T expect(hall::HallClient& client) {
-    const auto m = client.wait_for(is<T>, kWait);
+    // What came instead, for the failure's message: the variant's index of each message, and
+    // the words of any error.
+    std::string seen;
+    const auto m = client.wait_for(
+        [&](const hall::ServerMessage& message) {
+            seen += " " + std::to_string(message.index());
+            if (const auto* e = std::get_if<hall::Error>(&message))
+                seen += "(" + e->text + ")";
+            return is<T>(message);
+        },
+        kWait);
+    INFO("waited for message kind " << hall::ServerMessage(T{}).index() << "; came:" << seen
+                                    << (client.closed() ? "; closed" : ""));
     REQUIRE(m);
     return std::get<T>(*m);
 }

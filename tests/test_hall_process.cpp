@@ -144,6 +144,7 @@ TEST_CASE("hall process: SIGKILL mid-game, a new server on the same state, nothi
     play_one(ann, bob, table, {&ann, &bob});
     play_one(ann, bob, table, {&ann, &bob});
     for (const Kill& way : kills) {
+        INFO("kill " << &way - kills);
         if (ann.match(table)->pending().kind == Pending::over)
             break; // a short game: the rest of it is played below
         play_one(ann, bob, table, {&ann, &bob});

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <csignal>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -88,13 +89,18 @@ struct StartedServer {
     }
 };
 
-// The balls the panel's legend lists as on the table, as numbers (10 to 15 may show as A-F).
+// The balls the panel's legend lists as on the table, as numbers (10 to 15 may show as A-F);
+// none when the legend is missing or a box (a choice, game over) covers part of it.
 std::set<int> balls_on_table(const std::string& screen) {
     std::set<int> balls;
     const std::size_t at = screen.find("on table ");
     if (at == std::string::npos)
         return balls;
-    std::istringstream words(screen.substr(at + 9, screen.find('\n', at) - at - 9));
+    const std::string legend = screen.substr(at + 9, screen.find('\n', at) - at - 9);
+    for (const char* box : {"\u2502", "\u2570", "\u256F", "\u2500"})
+        if (legend.find(box) != std::string::npos)
+            return balls;
+    std::istringstream words(legend);
     for (std::string w; words >> w;) {
         w = w.substr(0, w.find('='));
         if (w.size() == 1 && w[0] >= 'A' && w[0] <= 'F')
@@ -116,34 +122,43 @@ bool shot_rolling(const std::string& screen, const std::string& who = "Ann") {
     return false;
 }
 
-// Waits until every screen has stopped rolling a shot and their legends agree; false after
-// `seconds`.
+// Waits until every screen has stopped rolling a shot and the legends that show agree (a box
+// may cover some, never all); false after `seconds`.
 bool same_table(const std::vector<const Tmux*>& terminals, double seconds = 20) {
     const auto end = Clock::now() + std::chrono::duration<double>(seconds);
     while (Clock::now() < end) {
         bool settled = true;
-        std::set<int> first;
+        std::optional<std::set<int>> shown;
         for (std::size_t i = 0; i < terminals.size() && settled; ++i) {
             const std::string s = terminals[i]->screen();
             const std::set<int> left = balls_on_table(s);
-            if (i == 0)
-                first = left;
-            settled = !shot_rolling(s) && !shot_rolling(s, "Bob") && !left.empty() &&
-                      left == first && s.find("The hall is away") == std::string::npos;
+            if (!left.empty() && !shown)
+                shown = left;
+            settled = !shot_rolling(s) && !shot_rolling(s, "Bob") &&
+                      (left.empty() || left == *shown) &&
+                      s.find("The hall is away") == std::string::npos;
         }
-        if (settled)
+        if (settled && shown)
             return true;
         std::this_thread::sleep_for(100ms);
     }
     return false;
 }
 
-// The terminal of `terminals` whose player is to act, and plays its turn: puts the cue ball
-// down where it is offered when it has ball in hand, then shoots. Returns it, or nullptr.
+// The terminal of `terminals` whose player is to act, and plays its turn: takes the first
+// option of a choice (an 8 on the break, a push-out), puts the cue ball down where it is
+// offered when it has ball in hand, then shoots. Returns it, or nullptr.
 const Tmux* play_turn(const std::vector<const Tmux*>& terminals) {
-    for (int tries = 0; tries < 100; ++tries) {
+    // A terminal that has just sat back down after a restart may take a few seconds under load.
+    for (int tries = 0; tries < 400; ++tries) {
         for (const Tmux* t : terminals) {
             const std::string s = t->screen();
+            if (s.find(", choose:") != std::string::npos &&
+                s.find("waiting for") == std::string::npos) {
+                t->keys("1");
+                std::this_thread::sleep_for(200ms);
+                continue;
+            }
             if (s.find("place the cue ball") != std::string::npos &&
                 s.find("waiting for") == std::string::npos) {
                 t->keys("Enter");

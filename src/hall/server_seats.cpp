@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "hall/server_state.hpp"
+#include "hall/sha256.hpp"
 
 namespace termpool::hall {
 
@@ -159,14 +160,15 @@ void Server::State::on_hello(Client& client, const Hello& hello) {
     // not: their old connection gives way below).
     const auto others = std::count_if(clients.begin(), clients.end(), [&](const auto& entry) {
         const Client& other = entry.second;
-        return other.welcomed && !other.closing && other.token_hash != hash;
+        return other.welcomed && !other.closing && !same_digest(other.token_hash, hash);
     });
     if (others >= options.max_clients)
         return send_and_close(client, ErrorCode::full, "the hall has all the clients it takes");
     // The same person again: the old connection gives way (its seats go away, then the
     // new one may take them back).
     for (auto& [id, other] : clients)
-        if (id != client.id && other.welcomed && other.token_hash == hash && !other.closing) {
+        if (id != client.id && other.welcomed && same_digest(other.token_hash, hash) &&
+            !other.closing) {
             send_and_close(other, ErrorCode::replaced, "you connected again elsewhere");
             leave_table(other);
         }
@@ -177,7 +179,7 @@ void Server::State::on_hello(Client& client, const Hello& hello) {
     send(client, Welcome{protocol_version, client.token});
     for (const auto& [number, table] : tables)
         for (int s = 1; s <= 2; ++s)
-            if (table.seats[s - 1].token_hash == hash && table.seats[s - 1].client == 0)
+            if (same_digest(table.seats[s - 1].token_hash, hash) && table.seats[s - 1].client == 0)
                 send(client, Yours{number, s});
     lobby_dirty = true;
     send_lobby(client, lobby_text());
@@ -187,7 +189,7 @@ void Server::State::on_create(Client& client, const Create& create) {
     if (static_cast<int>(tables.size()) >= options.max_tables)
         return send_error(client, ErrorCode::full, "the hall has all the tables it takes");
     const auto waiting = std::count_if(tables.begin(), tables.end(), [&](const auto& entry) {
-        return entry.second.creator == client.token_hash && !started(entry.second);
+        return same_digest(entry.second.creator, client.token_hash) && !started(entry.second);
     });
     if (waiting >= options.max_waiting_tables)
         return send_error(client, ErrorCode::full,
@@ -225,20 +227,21 @@ void Server::State::on_sit(Client& client, const Sit& sit) {
     // before the first shot): the record comes again, as after a sync.
     if (client.table == sit.table && client.seat == sit.seat)
         return join(client, table, sit.seat);
-    if (slot.computer || (!slot.token_hash.empty() && slot.token_hash != client.token_hash))
+    if (slot.computer ||
+        (!slot.token_hash.empty() && !same_digest(slot.token_hash, client.token_hash)))
         return send_error(client, ErrorCode::seat_taken, "that seat is taken");
-    if (slot.token_hash != client.token_hash && over(table))
+    if (!same_digest(slot.token_hash, client.token_hash) && over(table))
         return send_error(client, ErrorCode::refused, "the match is over");
     // One person holds one seat of a table: the other seat stays theirs unless they sit in
     // it now and a leave frees it (before the first action).
     const SeatSlot& other = table.seats[2 - sit.seat];
     const bool moving_over =
         client.table == sit.table && client.seat == 3 - sit.seat && !started(table) && !over(table);
-    if (other.token_hash == client.token_hash && !moving_over)
+    if (same_digest(other.token_hash, client.token_hash) && !moving_over)
         return send_error(client, ErrorCode::refused, "you hold the other seat of this table");
     if (client.table != 0)
         leave_table(client, sit.table); // never closes this table
-    const bool mine = slot.token_hash == client.token_hash;
+    const bool mine = same_digest(slot.token_hash, client.token_hash);
     slot.client = client.id;
     slot.away_since.reset();
     if (!mine) {
@@ -289,11 +292,11 @@ void Server::State::forget_waiting_tables_of(const std::string& token_hash) {
     if (token_hash.empty())
         return;
     for (const auto& [id, client] : clients)
-        if (client.token_hash == token_hash && !client.closing)
+        if (same_digest(client.token_hash, token_hash) && !client.closing)
             return;
     std::vector<int> numbers;
     for (const auto& [number, table] : tables)
-        if (table.creator == token_hash && !started(table))
+        if (same_digest(table.creator, token_hash) && !started(table))
             numbers.push_back(number);
     for (const int number : numbers)
         forget_if_idle(tables.at(number));

@@ -170,8 +170,9 @@ void App::compose_aiming(View& v) const {
     v.show_marker = aim_.show_marker;
     v.marker = aim_.marker;
     // The panel says what the shot will call: the aimed ball into the chosen pocket.
+    // Another terminal's call is not sent while it aims: this one's guess at it would mislead.
     const bool calling = !aim_.safety && aim_.called_pocket != 0 && aim_.preview_ball > 0 &&
-                         calls_pocket(aim_.preview_ball);
+                         calls_pocket(aim_.preview_ball) && (!in_hall() || hall_seat_to_act());
     v.called_pocket = calling ? aim_.called_pocket : 0;
     v.called_ball = calling ? aim_.preview_ball : 0;
 }

@@ -65,9 +65,9 @@ public:
     void hall_refused(const std::string& why);
     /// A word from the hall for the message line (the connection went or came back).
     void hall_notice(const std::string& text);
-    /// True once (then false) when the local copy disagreed with the server's: ask for the
-    /// record.
-    bool take_sync_request() { return std::exchange(sync_wanted_, false); }
+    /// Once (then nothing) after the local copy disagreed with the server's: where the copy
+    /// stood; ask for the record.
+    std::optional<CopyState> take_sync_request() { return std::exchange(sync_wanted_, {}); }
 
 private:
     enum class Mode { names, placing, aiming, animating, choosing, game_over, replay, moving };
@@ -199,7 +199,7 @@ private:
     std::optional<TableLink> link_;
     std::deque<HallAction> hall_queue_;
     bool awaiting_hall_ = false; // an action of ours is on its way to the server
-    bool sync_wanted_ = false;
+    std::optional<CopyState> sync_wanted_;
     HallSeat hall_seats_[2];
     std::vector<std::string> chat_;
     std::optional<TextEntry> chat_entry_;

@@ -40,9 +40,11 @@ void App::hall_record(Match match) {
     awaiting_hall_ = false;
     trajectory_.reset();
     before_shot_.reset();
+    // Where the table stands, and with ball in hand what the player must do first.
     message_ = match_.record().actions.empty()
                    ? name(match_.to_act()) + " breaks: place the cue ball in the kitchen"
-                   : resumed_words();
+               : match_.pending().kind == Pending::place ? resumed_words() + ": place the cue ball"
+                                                         : resumed_words();
     start_turn();
 }
 
@@ -134,7 +136,7 @@ void App::apply_hall_actions() {
             match_.state_hash() != next.hash) {
             // This copy and the server's parted: the record sets it right.
             hall_queue_.clear();
-            sync_wanted_ = true;
+            sync_wanted_ = CopyState{match_.record().actions.size(), match_.state_hash()};
             return;
         }
         if (mode_ == Mode::animating && hall_queue_.size() > far_behind)
@@ -203,8 +205,11 @@ bool App::handle_hall_key(const Input& in) {
                               }) ||
             in.kind != Input::Kind::key)
             return true;
-        if (in.key == key_enter && !chat_entry_->text.empty() && link_->chat)
-            link_->chat(chat_entry_->text);
+        if (in.key == key_enter && !chat_entry_->text.empty() && link_->chat &&
+            !link_->chat(chat_entry_->text)) {
+            chat_entry_->error = "one line a second: Enter again";
+            return true;
+        }
         if (in.key == key_enter || in.key == key_escape)
             chat_entry_.reset();
         return true;
@@ -233,8 +238,19 @@ void App::compose_hall(View& v) const {
     }
     v.chat = chat_;
     v.hall = true;
+    // Another player's choice shows its box here too, with whom it waits for.
+    if (mode_ == Mode::choosing && !hall_seat_to_act() && !confirm_quit_)
+        v.overlay += "\n\n(" + name(game().chooser()) + " chooses)";
     if (chat_entry_) {
-        v.message = "Say: " + chat_entry_->text + "_  (Enter sends, Esc cancels)";
+        // The end of a long line, where the typing is.
+        const std::string& text = chat_entry_->text;
+        const std::size_t shown = 40;
+        std::size_t from = text.size() > shown ? text.size() - shown : 0;
+        while (from > 0 && (text[from] & 0xC0) == 0x80)
+            --from; // not inside a character
+        v.message =
+            "Say: " + std::string(from > 0 ? "..." : "") + text.substr(from) + "_  " +
+            (chat_entry_->error.empty() ? "(Enter sends, Esc cancels)" : chat_entry_->error);
     } else if (!link_ || link_->seat == 0) {
         v.message = "Watching. " + v.message;
     } else if (mode_ != Mode::animating && mode_ != Mode::game_over &&

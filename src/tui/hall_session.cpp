@@ -42,13 +42,13 @@ int HallSession::run() {
     if (form_ != Form::name)
         connect();
     while (running_) {
-        if (form_ != Form::name && client_.closed() && Clock::now() >= retry_at_)
+        if (form_ != Form::name && !stopped_ && client_.closed() && Clock::now() >= retry_at_)
             connect();
         receive();
         if (app_) {
             app_->step();
-            if (app_->take_sync_request())
-                send(hall::Sync{});
+            if (const auto copy = app_->take_sync_request())
+                send(hall::Sync{copy->actions, copy->hash});
             if (!app_->running())
                 leave_table();
         }
@@ -84,7 +84,7 @@ int HallSession::wait_ms() const {
         return frame_ms;
     if (aim_waiting_)
         return static_cast<int>(aim_interval.count());
-    if (form_ != Form::name && client_.closed()) {
+    if (form_ != Form::name && !stopped_ && client_.closed()) {
         const auto left = std::chrono::ceil<std::chrono::milliseconds>(retry_at_ - Clock::now());
         return static_cast<int>(std::clamp<long long>(left.count(), 0, 1000));
     }
@@ -111,6 +111,8 @@ void HallSession::connect() {
 void HallSession::lost_connection(const std::string& why) {
     client_.disconnect();
     welcomed_ = false;
+    if (stopped_)
+        return; // the message says why, and r tries again
     if (app_ && table_ != 0) {
         rejoin_table_ = table_;
         rejoin_seat_ = seat_;
@@ -119,9 +121,10 @@ void HallSession::lost_connection(const std::string& why) {
     retry_at_ = Clock::now() + wait;
     char delay[32];
     std::snprintf(delay, sizeof delay, "%.2g", std::chrono::duration<double>(wait).count());
-    message_ = "The hall is away (" + why + "); trying again in " + delay + " s";
+    message_ = "The hall is away (" + why + "); trying again in " + delay + " s (r: now)";
     if (app_)
-        app_->hall_notice(message_ + "; your seat waits");
+        app_->hall_notice(std::string("The hall is away: trying again in ") + delay +
+                          " s; your seat waits");
 }
 
 void HallSession::receive() {
@@ -166,13 +169,18 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
             app_->hall_refused(words);
         else
             message_ = "The hall said: " + words;
-        if (!welcomed_ || m->code == hall::ErrorCode::replaced) {
-            // Refused at the door: the server closes; the next try waits its backoff.
+        if (m->code == hall::ErrorCode::replaced || m->code == hall::ErrorCode::version) {
+            // Trying again would only throw the other terminal out (or meet the same
+            // version): this one stops until asked.
+            stopped_ = true;
+            app_.reset();
+            table_ = seat_ = rejoin_table_ = rejoin_seat_ = 0;
             message_ = m->code == hall::ErrorCode::replaced
-                           ? "You came into the hall from another terminal; q quits this one"
-                           : "The hall said: " + words;
-            if (m->code == hall::ErrorCode::replaced || m->code == hall::ErrorCode::version)
-                retry_at_ = Clock::time_point::max();
+                           ? name_ + " came into the hall from another terminal, which plays on; "
+                                     "this one has stopped (r: take over here, q: quit)"
+                           : "The hall said: " + words + " (q: quit)";
+        } else if (!welcomed_) {
+            message_ = "The hall said: " + words; // the server closes; the next try waits
         }
     } else if (std::holds_alternative<hall::LobbyBegin>(message)) {
         next_tables_.clear();
@@ -194,12 +202,19 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
             if (tables_[i].number == marked)
                 selected_ = static_cast<int>(i);
         selected_ = std::clamp(selected_, 0, std::max(0, static_cast<int>(tables_.size()) - 1));
+        if (app_ && table_ != 0 && !table_view(table_)) {
+            // The table closed under us (a game not started is not kept over a restart).
+            message_ = "Table " + std::to_string(table_) + " is gone";
+            app_.reset();
+            table_ = seat_ = rejoin_table_ = rejoin_seat_ = 0;
+        }
         show_seats();
     } else if (const auto* m = std::get_if<hall::Created>(&message)) {
         message_ = "Table " + std::to_string(m->table) + " is yours: waiting for an opponent";
         seat_computer_after_join_ = opponent_.has_value();
         send(hall::Sit{m->table, 1});
     } else if (const auto* m = std::get_if<hall::Joined>(&message)) {
+        message_.clear();
         table_ = m->table;
         seat_ = m->seat;
         record_text_.clear();
@@ -221,7 +236,7 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
             table_ = seat_ = 0;
         }
     } else if (const auto* m = std::get_if<hall::Yours>(&message)) {
-        if (m->table != rejoin_table_ && m->table != table_)
+        if (m->table != rejoin_table_ && m->table != table_ && !declined_.count(m->table))
             offer_ = *m;
     } else if (const auto* m = std::get_if<hall::SeatChange>(&message)) {
         if (app_ && m->table == table_)
@@ -284,20 +299,22 @@ void HallSession::enter_table(Match match) {
     link.aim = [this](const Strike& strike) { aim_waiting_ = strike; };
     link.chat = [this, last = Clock::time_point{}](const std::string& text) mutable {
         const auto now = Clock::now();
-        if (last != Clock::time_point{} && now - last < chat_interval) {
-            app_->hall_notice("One chat line a second");
-            return;
-        }
+        if (last != Clock::time_point{} && now - last < chat_interval)
+            return false;
         last = now;
         send(hall::Chat{text});
+        return true;
     };
     app_->join_hall(std::move(match), std::move(link));
     show_seats();
 }
 
 void HallSession::leave_table() {
-    if (table_ != 0)
+    if (table_ != 0) {
         send(hall::Leave{});
+        message_ = "Back in the lobby from table " + std::to_string(table_) +
+                   (seat_ != 0 ? " (a seat in a game under way waits for you)" : "");
+    }
     app_.reset();
     table_ = seat_ = 0;
     rejoin_table_ = rejoin_seat_ = 0;
@@ -408,10 +425,13 @@ void HallSession::handle_lobby_key(const Input& in) {
         if (key == key_enter || t == "y") {
             send(hall::Sit{offer_->table, offer_->seat});
             offer_.reset();
-        } else if (key == key_escape || t == "n") {
-            offer_.reset();
+            return;
         }
-        return;
+        if (key == key_escape || t == "n") {
+            declined_.insert(offer_->table);
+            offer_.reset();
+            return;
+        }
     }
     if (in.kind == Input::Kind::mouse && in.clicked) {
         // The rows start on the fourth line; a click marks one, a second click sits.
@@ -438,6 +458,7 @@ void HallSession::handle_lobby_key(const Input& in) {
     } else if (t == "w" && selected_ < count) {
         send(hall::Watch{tables_[static_cast<std::size_t>(selected_)].number});
     } else if (t == "r" && client_.closed()) {
+        stopped_ = false;
         retry_at_ = Clock::now(); // try again now
     }
 }

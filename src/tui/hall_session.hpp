@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,7 @@ private:
     bool running_ = true;
     bool welcomed_ = false;
     bool ever_connected_ = false;
+    bool stopped_ = false; // replaced by another terminal, or another version: no more tries
 
     // The hall: the lobby's last snapshot (and the one being read), what is marked.
     std::vector<hall::TableView> tables_, next_tables_;
@@ -76,6 +78,7 @@ private:
     int selected_ = 0;
     std::string message_;
     std::optional<hall::Yours> offer_; // a seat of ours that waits, not taken up yet
+    std::set<int> declined_;           // tables whose offer was turned down: not asked again
 
     // The questions: the name, and a new table's settings.
     Form form_ = Form::none;

@@ -3,6 +3,8 @@
 // this terminal does and plays what the server applied, in the server's order. The hall
 // session fills in where the words go (the socket); the App never sees the protocol.
 
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <termpool/record.hpp>
@@ -18,8 +20,16 @@ struct TableLink {
     std::function<void(const RecordedAction&)> act;
     /// The cue as this seat aims (the session keeps to the server's rate).
     std::function<void(const Strike&)> aim;
-    /// A chat line typed at this terminal (already checked: 1 to 200 characters, printable).
-    std::function<void(const std::string&)> chat;
+    /// A chat line typed at this terminal (already checked: 1 to 200 characters, printable);
+    /// false when it cannot go yet (one line a second), and the line stays to be sent again.
+    std::function<bool(const std::string&)> chat;
+};
+
+/// Where this terminal's copy of a hall table stood when it parted from the server's: for the
+/// server's log.
+struct CopyState {
+    std::size_t actions = 0; ///< actions the copy holds
+    std::uint64_t hash = 0;  ///< its state hash
 };
 
 /// A seat at a hall table as the panel shows it.
