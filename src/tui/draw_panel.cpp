@@ -238,7 +238,7 @@ std::vector<Line> chat_tail(const View& v, int width, int rows) {
     for (auto it = v.chat.rbegin(); it != v.chat.rend() && rows > 0; ++it) {
         std::vector<Line> lines = wrapped(*it, width, dim);
         if (static_cast<int>(lines.size()) > rows)
-            lines.erase(lines.begin(), lines.end() - rows); // its end, which is the news
+            lines.resize(static_cast<std::size_t>(rows)); // its start: who said it
         rows -= static_cast<int>(lines.size());
         tail.insert(tail.begin(), lines.begin(), lines.end());
     }
@@ -449,10 +449,13 @@ void draw_below_panel(const Frame& f) {
                   left[i].drop == 1 || left[i].drop == 2 ? right - x : pw);
 
     if (beside) {
-        // The call is short and about the shot at hand: it keeps its rows, the message the rest.
-        const int call_rows =
-            std::min(static_cast<int>(call.size()), std::max(0, rows - (message.empty() ? 0 : 1)));
-        const int message_rows = std::min(static_cast<int>(message.size()), rows - call_rows);
+        // The call is short and about the shot at hand: it keeps its rows, the message the rest;
+        // at a hall table the newest chat keeps a row when there are three.
+        const int chat_rows = !v.chat.empty() && rows >= 3 ? 1 : 0;
+        const int call_rows = std::min(static_cast<int>(call.size()),
+                                       std::max(0, rows - chat_rows - (message.empty() ? 0 : 1)));
+        const int message_rows =
+            std::min(static_cast<int>(message.size()), rows - call_rows - chat_rows);
         int y = l.panel_y;
         for (int i = 0; i < message_rows; ++i)
             draw_line(p, mid_x, y++, message[static_cast<std::size_t>(i)], mid_w);
