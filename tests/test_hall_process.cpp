@@ -424,3 +424,19 @@ TEST_CASE("hall process: --idle-exit takes whole seconds from 0", "[hall]") {
         CHECK(*status == 2);
     }
 }
+
+TEST_CASE("hall process: a second server on another socket is refused the same state folder",
+          "[hall][e2e]") {
+    TempDir dir("termpool-hall-proc");
+    auto server = start_hall(dir.path());
+    const std::string log = dir.path() + "/second.log";
+    auto second = run_termpool(
+        dir.path(),
+        {"hall", "serve", "--socket", dir.path() + "/other.sock", "--state", dir.path() + "/state"},
+        log);
+    CHECK(second->wait_exit(kWait) == 1);
+    CHECK(file_text(log).find("another hall already keeps its tables in") != std::string::npos);
+    CHECK(server->running());
+    HallClient probe;
+    CHECK(probe.connect(socket_of(dir.path())).empty());
+}

@@ -134,8 +134,10 @@ bool same_table(const std::vector<const Tmux*>& terminals, double seconds = 20) 
             const std::set<int> left = balls_on_table(s);
             if (!left.empty() && !shown)
                 shown = left;
-            settled = !shot_rolling(s) && !shot_rolling(s, "Bob") &&
-                      (left.empty() || left == *shown) &&
+            // At the table (its legend and hint show), not in the lobby.
+            settled = s.find("on table ") != std::string::npos &&
+                      s.find("q leave") != std::string::npos && !shot_rolling(s) &&
+                      !shot_rolling(s, "Bob") && (left.empty() || left == *shown) &&
                       s.find("The hall is away") == std::string::npos;
         }
         if (settled && shown)

@@ -110,3 +110,30 @@ TEST_CASE("the lobby at every size from 0x0 to 120x40 stays inside its grid", "[
                 }
             }
 }
+
+TEST_CASE("a click on the lobby's list picks the table drawn on that row, scrolled or not",
+          "[tui][lobby]") {
+    LobbyView v = two_tables();
+    const Capabilities caps;
+    for (int i = 0; i < 40; ++i) {
+        hall::TableView t;
+        t.number = 100 + i;
+        v.tables.push_back(t);
+    }
+    for (const int selected : {0, 1, 20, 41}) {
+        v.selected = selected;
+        const Grid g = render_lobby(v, caps, 80, 24);
+        for (int y = 0; y < 24; ++y) {
+            INFO("selected " << selected << ", row " << y << ": " << row_text(g, y));
+            const int index = lobby_table_at(v, 24, y);
+            if (index < 0)
+                continue;
+            const std::string number =
+                " " + std::to_string(v.tables[static_cast<std::size_t>(index)].number) + " ";
+            CHECK(row_text(g, y).find(number) == 0);
+        }
+        CHECK(lobby_table_at(v, 24, 0) == -1); // the title
+        CHECK(lobby_table_at(v, 24, 2) == -1); // the header
+    }
+    CHECK(lobby_table_at(v, 5, 3) == -1); // too small to draw a list
+}

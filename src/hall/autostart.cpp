@@ -153,7 +153,12 @@ std::string last_log_line(const std::string& path) {
 std::string own_executable() {
     char path[PATH_MAX];
     const ssize_t n = ::readlink("/proc/self/exe", path, sizeof path - 1);
-    return n > 0 ? std::string(path, static_cast<std::size_t>(n)) : std::string();
+    if (n <= 0)
+        return {};
+    const std::string self(path, static_cast<std::size_t>(n));
+    // Rebuilt or upgraded while this one runs: the file at that path is another program (or
+    // none), but /proc/self/exe still opens this one, in a forked child too.
+    return self.ends_with(" (deleted)") ? "/proc/self/exe" : self;
 }
 
 std::string started_hall_log_path() {

@@ -68,7 +68,14 @@ std::optional<ServerMessage> HallClient::receive(std::chrono::milliseconds timeo
                 follow(message);
             return message;
         }
-        if (!fd_ || in_.size() >= max_line_bytes)
+        if (in_.size() >= max_line_bytes) {
+            // No server of ours sends such a line: what follows cannot be read either.
+            ++bad_lines_;
+            in_.clear();
+            fd_.reset();
+            return std::nullopt;
+        }
+        if (!fd_)
             return std::nullopt;
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
             deadline - std::chrono::steady_clock::now());

@@ -11,8 +11,11 @@ std::string hall_lock_path(const std::string& socket_path) {
     return socket_path + ".lock";
 }
 
-std::string lock_hall(const std::string& socket_path, UniqueFd& held) {
-    const std::string path = hall_lock_path(socket_path);
+namespace {
+
+// Takes the exclusive lock on the file `path` without waiting; `busy` is the answer when
+// another process holds it.
+std::string take_lock(const std::string& path, const std::string& busy, UniqueFd& held) {
     // O_NOFOLLOW: a link put in the lock's place is refused, not followed.
     UniqueFd fd(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NOCTTY, 0600));
     if (!fd)
@@ -21,11 +24,23 @@ std::string lock_hall(const std::string& socket_path, UniqueFd& held) {
         if (errno == EINTR)
             continue;
         if (errno == EWOULDBLOCK)
-            return "a hall is already starting/running at " + socket_path;
+            return busy;
         return path + ": cannot lock: " + std::strerror(errno);
     }
     held = std::move(fd);
     return {};
+}
+
+} // namespace
+
+std::string lock_hall(const std::string& socket_path, UniqueFd& held) {
+    return take_lock(hall_lock_path(socket_path),
+                     "a hall is already starting/running at " + socket_path, held);
+}
+
+std::string lock_state_dir(const std::string& state_dir, UniqueFd& held) {
+    return take_lock(state_dir + "/hall.lock",
+                     "another hall already keeps its tables in " + state_dir, held);
 }
 
 } // namespace termpool::hall

@@ -22,4 +22,9 @@ std::string hall_lock_path(const std::string& socket_path);
 /// taken; "a hall is already starting/running at PATH" when another holds it; else why not.
 std::string lock_hall(const std::string& socket_path, UniqueFd& held);
 
+/// The same for the state folder's hall.lock: two servers on two sockets (a systemd unit and
+/// a terminal whose session has another XDG_RUNTIME_DIR) must not both write one folder's
+/// tables. "" when taken; "another hall already keeps its tables in DIR" when held.
+std::string lock_state_dir(const std::string& state_dir, UniqueFd& held);
+
 } // namespace termpool::hall

@@ -101,6 +101,12 @@ int serve(const std::vector<std::string>& args) {
         std::cerr << "termpool hall: " << problem << '\n';
         return 1;
     }
+    UniqueFd state_lock;
+    if (const std::string problem = lock_state_dir(options.state_dir, state_lock);
+        !problem.empty()) {
+        std::cerr << "termpool hall: " << problem << '\n';
+        return 1;
+    }
 
     // The log goes to stderr, which may be a pipe whose reader is gone: a write there must
     // fail, not kill the hall with every table unsaved.

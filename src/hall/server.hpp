@@ -35,8 +35,9 @@ struct ServerOptions {
     /// Bytes queued for one client beyond which it is disconnected (it stopped reading). A
     /// whole race-to-99 record still fits.
     std::size_t output_limit = 256 * 1024;
-    int max_errors = 10;      ///< error replies before a client is cut
-    int computer_threads = 2; ///< the computer seats' worker pool
+    int max_errors = 10;          ///< error replies in a row before a client is cut
+    double error_rate = 1.0 / 30; ///< errors forgiven a second (one every 30 s)
+    int computer_threads = 2;     ///< the computer seats' worker pool
     /// Threads (the loop's own among them) that save the tables a round's actions changed,
     /// side by side: a save waits for the disk.
     int save_threads = 8;

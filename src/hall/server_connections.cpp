@@ -24,7 +24,10 @@ void Server::State::send(Client& client, const ServerMessage& message) {
 
 void Server::State::send_error(Client& client, ErrorCode code, const std::string& text) {
     send(client, Error{code, text});
-    if (++client.errors >= options.max_errors) {
+    // A budget that refills: a player who now and then sends something stale (a lobby row that
+    // just went, a second Enter) over a long evening is not cut off; a flood is.
+    if (!client.errors.take(options.error_rate, std::max(0, options.max_errors - 1),
+                            Clock::now())) {
         log("client " + std::to_string(client.id) + ": too many errors, disconnected");
         client.closing = true;
     }

@@ -43,9 +43,9 @@ struct Client {
     std::string token;
     std::string token_hash;
     std::string name;
-    int table = 0; // 0: in the lobby
-    int seat = 0;  // 1 or 2 seated, 0 watching
-    int errors = 0;
+    int table = 0;      // 0: in the lobby
+    int seat = 0;       // 1 or 2 seated, 0 watching
+    TokenBucket errors; // error replies: max_errors at once, error_rate a second after
     bool closing = false;
     std::optional<Clock::time_point> last_chat;
     TokenBucket requests;           // sit, watch, leave, create, sync

@@ -200,6 +200,7 @@ private:
     std::deque<HallAction> hall_queue_;
     bool awaiting_hall_ = false; // an action of ours is on its way to the server
     std::optional<CopyState> sync_wanted_;
+    bool resyncing_ = false; // the record was asked for: actions wait for it
     HallSeat hall_seats_[2];
     std::vector<std::string> chat_;
     std::optional<TextEntry> chat_entry_;

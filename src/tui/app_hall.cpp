@@ -38,6 +38,7 @@ void App::hall_record(Match match) {
     params_ = match_.record().setup.physics;
     hall_queue_.clear();
     awaiting_hall_ = false;
+    resyncing_ = false;
     trajectory_.reset();
     before_shot_.reset();
     // Where the table stands, and with ball in hand what the player must do first.
@@ -49,6 +50,10 @@ void App::hall_record(Match match) {
 }
 
 void App::hall_action(std::size_t seq, std::uint64_t hash, const RecordedAction& action) {
+    // After a mismatch the record is on its way: the actions before it would only part again
+    // (and each would ask for another record).
+    if (resyncing_)
+        return;
     hall_queue_.push_back({seq, hash, action});
 }
 
@@ -137,6 +142,7 @@ void App::apply_hall_actions() {
             // This copy and the server's parted: the record sets it right.
             hall_queue_.clear();
             sync_wanted_ = CopyState{match_.record().actions.size(), match_.state_hash()};
+            resyncing_ = true;
             return;
         }
         if (mode_ == Mode::animating && hall_queue_.size() > far_behind)

@@ -20,8 +20,6 @@ constexpr auto chat_interval = 1s;   // the server refuses more (and counts it a
 constexpr int frame_ms = 16;         // while something moves
 constexpr int lines_per_round = 500; // messages read before the screen is drawn again
 
-const char* const levels[] = {"easy", "medium", "hard", "pro"};
-
 HallSeat hall_seat_of(const hall::SeatView& seat) {
     return {seat.name, seat.kind == hall::SeatKind::away, seat.kind == hall::SeatKind::empty,
             seat.kind == hall::SeatKind::computer};
@@ -433,10 +431,14 @@ void HallSession::handle_lobby_key(const Input& in) {
             return;
         }
     }
-    if (in.kind == Input::Kind::mouse && in.clicked) {
-        // The rows start on the fourth line; a click marks one, a second click sits.
-        const int row = in.y - 3;
-        if (row >= 0 && row < count) {
+    if (in.kind == Input::Kind::mouse) {
+        // A click marks a table, a click on the marked one sits (as Enter).
+        if (!in.pressed && !in.clicked)
+            return;
+        LobbyView view;
+        compose_lobby(view);
+        const int row = lobby_table_at(view, term_.height(), in.y);
+        if (row >= 0) {
             if (row == selected_)
                 sit_selected(0);
             selected_ = row;
@@ -484,8 +486,7 @@ void HallSession::sit_selected(int seat) {
 
 std::string HallSession::create_form_text() const {
     const std::string opponent =
-        opponent_ ? std::string("the computer (") + levels[static_cast<int>(*opponent_)] + ")"
-                  : "a person";
+        opponent_ ? std::string("the computer (") + level_name(*opponent_) + ")" : "a person";
     return "A new table\n\n"
            "g  game      " +
            std::string(game_title(create_.game)) +

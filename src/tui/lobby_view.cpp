@@ -90,7 +90,35 @@ void draw_overlay_box(Painter& p, const std::string& text, int width, int height
         p.text(x + 2, y + 1 + i, lines[static_cast<std::size_t>(i)], box, w - 4);
 }
 
+// The table list's place: its first row on screen, how many rows it has, and the index of
+// the table on its first row (it scrolls to keep the marked one in view).
+struct ListWindow {
+    int top = 3;
+    int rows = 1;
+    int first = 0;
+};
+
+ListWindow list_window(const LobbyView& v, int height) {
+    // Rows: title, blank, header, tables..., blank, people (2), blank, message (2), keys.
+    constexpr int message_rows = 2, people_rows = 2;
+    ListWindow w;
+    w.rows = std::max(1, height - 1 - w.top - message_rows - people_rows - 2);
+    const int count = static_cast<int>(v.tables.size());
+    const int selected = std::clamp(v.selected, 0, std::max(0, count - 1));
+    w.first = std::clamp(selected - w.rows / 2, 0, std::max(0, count - w.rows));
+    return w;
+}
+
 } // namespace
+
+int lobby_table_at(const LobbyView& v, int height, int y) {
+    if (height < min_height)
+        return -1;
+    const ListWindow w = list_window(v, height);
+    const int index = w.first + y - w.top;
+    return y >= w.top && y < w.top + w.rows && index < static_cast<int>(v.tables.size()) ? index
+                                                                                         : -1;
+}
 
 Grid render_lobby(const LobbyView& v, const Capabilities& caps, int width, int height) {
     Grid grid(width, height);
@@ -109,20 +137,19 @@ Grid render_lobby(const LobbyView& v, const Capabilities& caps, int width, int h
     if (v.connected && display_width(title) + display_width(people) + 4 <= width)
         p.text(width - 1 - display_width(people), 0, people, dim);
 
-    // Rows: title, blank, header, tables..., blank, people (2), blank, message (2), keys.
     const bool extras = width >= 90;
     const int fixed = 5 + 18 + 2 + 8 + (extras ? 10 + 9 : 0);
     const int seat_w = std::max(8, std::min(24, (width - 2 - fixed) / 2));
-    const int list_top = 3, keys_row = height - 1;
+    const ListWindow window = list_window(v, height);
+    const int list_top = window.top, list_rows = window.rows, keys_row = height - 1;
     const int message_rows = 2, people_rows = 2;
-    const int list_rows = std::max(1, keys_row - list_top - message_rows - people_rows - 2);
     p.text(1, 2, header_row(seat_w, extras), dim, width - 2);
     if (v.tables.empty()) {
         p.text(1, list_top, "No tables yet: c creates one.", {}, width - 2);
     } else {
         const int count = static_cast<int>(v.tables.size());
         const int selected = std::clamp(v.selected, 0, count - 1);
-        const int first = std::clamp(selected - list_rows / 2, 0, std::max(0, count - list_rows));
+        const int first = window.first;
         for (int i = first; i < count && i - first < list_rows; ++i) {
             const bool marked = i == selected;
             const Style style{Colour::normal, Colour::normal, marked, marked};

@@ -22,6 +22,10 @@ struct LobbyView {
     bool connected = true;                 ///< false while the hall is away
 };
 
+/// The index into `view.tables` of the table drawn on row `y` of a `height`-row lobby, or -1
+/// (a click on the list picks it).
+int lobby_table_at(const LobbyView& view, int height, int y);
+
 /// Draws the lobby into a `width` x `height` grid; at any size it writes only inside it, and
 /// below 40x10 shows only "Please enlarge the terminal".
 Grid render_lobby(const LobbyView& view, const Capabilities& caps, int width, int height);
