@@ -1016,3 +1016,31 @@ TEST_CASE("hall server: idle_exit: a table keeps the hall, and once it goes the 
     CHECK(server.table_count() == 0);
     CHECK(std::chrono::steady_clock::now() - started >= 2s);
 }
+
+TEST_CASE("hall client: a server line longer than 4 KiB ends the connection, never a spin",
+          "[hall]") {
+    test::TempDir dir("termpool-hall");
+    const std::string path = dir.path() + "/fake.sock";
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    REQUIRE(path.size() < sizeof address.sun_path);
+    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+    const UniqueFd listener(::socket(AF_UNIX, SOCK_STREAM, 0));
+    REQUIRE(::bind(listener.get(), reinterpret_cast<const sockaddr*>(&address), sizeof address) ==
+            0);
+    REQUIRE(::listen(listener.get(), 1) == 0);
+    HallClient client;
+    REQUIRE(client.connect(path) == "");
+    const UniqueFd peer(::accept(listener.get(), nullptr, nullptr));
+    REQUIRE(peer);
+    const std::string endless(2 * max_line_bytes, 'x'); // no newline, and the peer stays open
+    REQUIRE(::send(peer.get(), endless.data(), endless.size(), MSG_NOSIGNAL) ==
+            static_cast<ssize_t>(endless.size()));
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < 10 && !client.closed(); ++i)
+        CHECK_FALSE(client.receive(std::chrono::milliseconds(200)));
+    CHECK(client.closed());
+    CHECK(client.bad_lines() == 1);
+    CHECK(client.fd() == -1); // nothing left for a loop to wait on
+    CHECK(std::chrono::steady_clock::now() - start < kWait);
+}

@@ -204,12 +204,15 @@ void App::send_hall_aim() {
 
 bool App::handle_hall_key(const Input& in) {
     if (chat_entry_) {
-        if (chat_entry_->edit(in,
-                              [&](const std::string& typed) {
-                                  return code_points(chat_entry_->text) + code_points(typed) <=
-                                         chat_chars;
-                              }) ||
-            in.kind != Input::Kind::key)
+        // The server refuses C1 controls (U+0080 to U+009F, UTF-8 C2 80 to C2 9F) as well.
+        const auto c1 = [](const std::string& t) {
+            return t.size() == 2 && static_cast<unsigned char>(t[0]) == 0xC2 &&
+                   static_cast<unsigned char>(t[1]) < 0xA0;
+        };
+        const auto fits = [&](const std::string& typed) {
+            return !c1(typed) && code_points(chat_entry_->text) + code_points(typed) <= chat_chars;
+        };
+        if (chat_entry_->edit(in, fits) || in.kind != Input::Kind::key)
             return true;
         if (in.key == key_enter && !chat_entry_->text.empty() && link_->chat &&
             !link_->chat(chat_entry_->text)) {

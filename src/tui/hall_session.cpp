@@ -288,6 +288,10 @@ void HallSession::enter_table(Match match) {
     TableLink link;
     link.seat = seat_;
     link.act = [this](const RecordedAction& action) {
+        if (!welcomed_) {
+            app_->hall_refused("the hall is away; play it again once it is back");
+            return;
+        }
         aim_waiting_.reset(); // the shot is on its way: the cue before it is old news
         if (action.kind == RecordedAction::Kind::rack)
             send(hall::NextRack{});
