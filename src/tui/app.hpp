@@ -133,6 +133,8 @@ private:
 
     // The hall (app_hall.cpp).
     bool in_hall() const { return link_.has_value(); }
+    void take_hall_table(Match match);
+    std::string hall_table_words() const;
     bool hall_seat_to_act() const;
     bool hall_waits() const;
     bool send_to_hall(const RecordedAction& action);

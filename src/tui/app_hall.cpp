@@ -29,10 +29,35 @@ void App::join_hall(Match match, TableLink link) {
     link_ = std::move(link);
     entry_.player = 0;
     entry_.clear();
-    hall_record(std::move(match));
+    take_hall_table(std::move(match));
 }
 
 void App::hall_record(Match match) {
+    // Back after a reconnect to the table as this copy has it (the usual case): whatever is on
+    // screen, a shot rolling included, goes on.
+    if (in_hall() && match.record().actions.size() == match_.record().actions.size() &&
+        match.state_hash() == match_.state_hash()) {
+        hall_queue_.clear();
+        awaiting_hall_ = resyncing_ = false;
+        if (mode_ == Mode::animating)
+            message_ = name(shooter_before_) + " shoots";
+        else if (mode_ != Mode::game_over)
+            message_ = hall_table_words();
+        return;
+    }
+    take_hall_table(std::move(match));
+}
+
+std::string App::hall_table_words() const {
+    // Where the table stands, and with ball in hand what the player must do first.
+    if (match_.record().actions.empty())
+        return name(match_.to_act()) + " breaks: place the cue ball in the kitchen";
+    if (match_.pending().kind == Pending::place)
+        return resumed_words() + ": place the cue ball";
+    return resumed_words();
+}
+
+void App::take_hall_table(Match match) {
     match_ = std::move(match);
     table_ = make_table(match_.record().setup);
     params_ = match_.record().setup.physics;
@@ -41,11 +66,7 @@ void App::hall_record(Match match) {
     resyncing_ = false;
     trajectory_.reset();
     before_shot_.reset();
-    // Where the table stands, and with ball in hand what the player must do first.
-    message_ = match_.record().actions.empty()
-                   ? name(match_.to_act()) + " breaks: place the cue ball in the kitchen"
-               : match_.pending().kind == Pending::place ? resumed_words() + ": place the cue ball"
-                                                         : resumed_words();
+    message_ = hall_table_words();
     start_turn();
 }
 
