@@ -3,7 +3,8 @@
 // hall's server (starting one when none runs), shows the lobby, and at a table hands the
 // screen to an App that plays the server's actions. One loop waits on the keyboard and the
 // socket together; a server that goes away is tried again with backoff, and the seat and the
-// table come back where they stood.
+// table come back where they stood. hall_session.cpp has the loop and the connection,
+// hall_session_messages.cpp what the server says, hall_session_lobby.cpp the lobby's keys.
 
 #include <chrono>
 #include <optional>
@@ -34,6 +35,9 @@ class HallSession {
 public:
     /// A session on `terminal`.
     HallSession(Terminal& terminal, HallOptions options);
+    // The table's App holds callbacks into this session: it stays where it was made.
+    HallSession(const HallSession&) = delete;
+    HallSession& operator=(const HallSession&) = delete;
     /// Runs until the player quits or a signal arrives; 0, or 1 when the hall could not be
     /// reached at all.
     int run();
