@@ -148,10 +148,20 @@ TEST_CASE("hall process: SIGKILL mid-game, a new server on the same state, nothi
         if (ann.match(table)->pending().kind == Pending::over)
             break; // a short game: the rest of it is played below
         play_one(ann, bob, table, {&ann, &bob});
+        if (ann.match(table)->pending().kind == Pending::over)
+            break; // the rest is checked below; an over table may close once its players go
         std::optional<RecordedAction> in_flight;
-        if (way.in_flight && ann.match(table)->pending().kind != Pending::over) {
+        if (way.in_flight) {
             HallClient& actor = ann.match(table)->to_act() == 1 ? ann : bob;
             in_flight = chosen_move(*actor.match(table));
+            // A move that would end the game is played below, not killed in flight: the server
+            // may close a finished table, and then there is no seat to offer back.
+            Match after = *actor.match(table);
+            if (after.apply(*in_flight) != MatchError::none ||
+                after.pending().kind == Pending::over) {
+                in_flight.reset();
+                break;
+            }
             const std::size_t seq = actor.match(table)->record().actions.size() + 1;
             REQUIRE(actor.send(Act{*in_flight}));
             if (way.acknowledged)
@@ -169,6 +179,7 @@ TEST_CASE("hall process: SIGKILL mid-game, a new server on the same state, nothi
         // The dead server's socket file is still there; the new one replaces it.
         server = start_hall(dir.path());
         for (int s = 0; s < 2; ++s) {
+            INFO("the servers' log:\n" << file_text(dir.path() + "/server.log"));
             const std::string token = players[s]->token();
             REQUIRE(players[s]->connect(socket_of(dir.path())) == "");
             REQUIRE(players[s]->hello(names[s], token, kWait) == "");

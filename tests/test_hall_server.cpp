@@ -914,10 +914,9 @@ TEST_CASE("hall server: a sync with the client's copy is logged against the serv
     CHECK_THAT(sync(Sync{}), Catch::Contains("resynchronises table " + std::to_string(table)));
 }
 
-TEST_CASE("hall client: a copy that disagrees asks sync with what it came to", "[hall]") {
-    // The test is the server: a record, then an action whose hash is wrong.
-    test::TempDir dir("termpool-hall");
-    const std::string path = dir.path() + "/fake.sock";
+namespace {
+// The test as the server: a socket at `path` that `client` connects to; the server's end.
+UniqueFd fake_server_for(HallClient& client, const std::string& path) {
     sockaddr_un address{};
     address.sun_family = AF_UNIX;
     REQUIRE(path.size() < sizeof address.sun_path);
@@ -926,10 +925,19 @@ TEST_CASE("hall client: a copy that disagrees asks sync with what it came to", "
     REQUIRE(::bind(listener.get(), reinterpret_cast<const sockaddr*>(&address), sizeof address) ==
             0);
     REQUIRE(::listen(listener.get(), 1) == 0);
-    HallClient client;
     REQUIRE(client.connect(path) == "");
-    const UniqueFd peer(::accept(listener.get(), nullptr, nullptr));
+    UniqueFd peer(::accept(listener.get(), nullptr, nullptr));
     REQUIRE(peer);
+    return peer;
+}
+
+} // namespace
+
+TEST_CASE("hall client: a copy that disagrees asks sync with what it came to", "[hall]") {
+    // The test is the server: a record, then an action whose hash is wrong.
+    test::TempDir dir("termpool-hall");
+    HallClient client;
+    const UniqueFd peer = fake_server_for(client, dir.path() + "/fake.sock");
     const auto say = [&](const ServerMessage& m) {
         const std::string line = format_server(m);
         REQUIRE(::send(peer.get(), line.data(), line.size(), MSG_NOSIGNAL) ==
@@ -1020,19 +1028,8 @@ TEST_CASE("hall server: idle_exit: a table keeps the hall, and once it goes the 
 TEST_CASE("hall client: a server line longer than 4 KiB ends the connection, never a spin",
           "[hall]") {
     test::TempDir dir("termpool-hall");
-    const std::string path = dir.path() + "/fake.sock";
-    sockaddr_un address{};
-    address.sun_family = AF_UNIX;
-    REQUIRE(path.size() < sizeof address.sun_path);
-    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
-    const UniqueFd listener(::socket(AF_UNIX, SOCK_STREAM, 0));
-    REQUIRE(::bind(listener.get(), reinterpret_cast<const sockaddr*>(&address), sizeof address) ==
-            0);
-    REQUIRE(::listen(listener.get(), 1) == 0);
     HallClient client;
-    REQUIRE(client.connect(path) == "");
-    const UniqueFd peer(::accept(listener.get(), nullptr, nullptr));
-    REQUIRE(peer);
+    const UniqueFd peer = fake_server_for(client, dir.path() + "/fake.sock");
     const std::string endless(2 * max_line_bytes, 'x'); // no newline, and the peer stays open
     REQUIRE(::send(peer.get(), endless.data(), endless.size(), MSG_NOSIGNAL) ==
             static_cast<ssize_t>(endless.size()));

@@ -65,6 +65,14 @@ void open_terminal(const Tmux& tmux, const std::string& dir, const std::string& 
     REQUIRE(tmux.wait_for_text("Welcome, " + name));
 }
 
+// The player at `tmux` creates a table with the form's first settings and sits at it.
+void create_table(const Tmux& tmux) {
+    tmux.keys("c");
+    REQUIRE(tmux.wait_for_text("A new table"));
+    tmux.keys("Enter");
+    REQUIRE(tmux.wait_for_text("Waiting for an opponent"));
+}
+
 // A server the terminals started themselves: stopped with SIGTERM by the pid its socket
 // gives, and waited for (this machine's init may leave it a zombie, which runs nothing).
 struct StartedServer {
@@ -193,10 +201,7 @@ TEST_CASE("three hall terminals: a table created, a seat taken, a watcher, the b
     open_terminal(bob, dir.path(), "Bob", 80, 24);
     open_terminal(cid, dir.path(), "Cid", 200, 60);
 
-    ann.keys("c");
-    REQUIRE(ann.wait_for_text("A new table"));
-    ann.keys("Enter");
-    REQUIRE(ann.wait_for_text("Waiting for an opponent"));
+    create_table(ann);
     // The lobby is live: the new table shows on the others' screens by itself.
     REQUIRE(bob.wait_for_text("waiting"));
     REQUIRE(bob.screen().find("Ann") != std::string::npos);
@@ -252,10 +257,7 @@ TEST_CASE("hall faults: a terminal killed mid-shot takes its seat back, a server
     Tmux ann, bob;
     open_terminal(ann, dir.path(), "Ann", 100, 32);
     open_terminal(bob, dir.path(), "Bob", 80, 24);
-    ann.keys("c");
-    REQUIRE(ann.wait_for_text("A new table"));
-    ann.keys("Enter");
-    REQUIRE(ann.wait_for_text("Waiting for an opponent"));
+    create_table(ann);
     REQUIRE(bob.wait_for_text("waiting"));
     bob.keys("Enter");
     REQUIRE(ann.wait_for_text("Ann breaks"));
