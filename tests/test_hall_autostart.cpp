@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "file_helpers.hpp"
 #include "hall/autostart.hpp"
 #include "hall/client.hpp"
 #include "hall/hall_lock.hpp"
@@ -153,12 +154,6 @@ private:
 
 std::string binary() {
     return fs::absolute(tmux_session::termpool_binary()).string();
-}
-
-mode_t mode_of(const std::string& path) {
-    struct stat st {};
-    REQUIRE(::lstat(path.c_str(), &st) == 0);
-    return st.st_mode & 07777;
 }
 
 std::string link_of(const std::string& path) {

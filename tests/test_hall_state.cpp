@@ -21,6 +21,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "file_helpers.hpp"
 #include "hall/hall_state.hpp"
 #include "hall/sha256.hpp"
 #include "hall/socket_dir.hpp"
@@ -30,34 +31,15 @@
 
 using namespace termpool;
 using namespace termpool::hall;
+using termpool::test::contents;
+using termpool::test::mode_of;
+using termpool::test::names_in;
 using termpool::test::ScopedEnv;
 using termpool::test::TempDir;
 
 namespace {
 
 namespace fs = std::filesystem;
-
-mode_t mode_of(const std::string& path) {
-    struct stat st {};
-    REQUIRE(::lstat(path.c_str(), &st) == 0);
-    return st.st_mode & 07777;
-}
-
-std::string contents(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-// The names in `dir`, sorted.
-std::vector<std::string> names_in(const std::string& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir))
-        names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 // A match of two computers, `moves` actions in (fewer if it ends first).
 Match played(GameType game, TableSize size, std::uint64_t seed, int race_to, int moves) {

@@ -10,39 +10,22 @@
 #include <sys/stat.h>
 #include <vector>
 
+#include "file_helpers.hpp"
 #include "hall/hall_state.hpp"
 #include "hall/token_store.hpp"
 #include "scoped_env.hpp"
 #include "temp_dir.hpp"
 
 using namespace termpool::hall;
+using termpool::test::contents;
+using termpool::test::mode_of;
+using termpool::test::names_in;
 using termpool::test::ScopedEnv;
 using termpool::test::TempDir;
 
 namespace {
 
 namespace fs = std::filesystem;
-
-mode_t mode_of(const std::string& path) {
-    struct stat st {};
-    REQUIRE(::lstat(path.c_str(), &st) == 0);
-    return st.st_mode & 07777;
-}
-
-std::string contents(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-std::vector<std::string> names_in(const std::string& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir))
-        names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 } // namespace
 
