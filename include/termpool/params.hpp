@@ -16,6 +16,12 @@ enum class CushionModel {
     ideal,    ///< the seed report's mirror reflection: normal velocity flips, the rest is kept
 };
 
+/// Effective end mass of a standard cue shaft, kg: about 2.5 degrees of squirt at half a tip of
+/// side.
+inline constexpr double standard_shaft_end_mass = 0.0078;
+/// Effective end mass of a low-deflection shaft, kg: about 1.5 degrees at half a tip.
+inline constexpr double low_deflection_end_mass = 0.0044;
+
 /// How a ball slows down on the cloth. Decay, constant and combined are the classic models (the
 /// seed report's): they move balls on straight lines, without spin.
 enum class FrictionKind {
@@ -51,6 +57,8 @@ struct PhysicsParams {
     double cushion_friction = 0.2;       ///< f_c
     double cushion_height_ratio = 0.635; ///< cushion nose height as a fraction of 2R
     double gravity = 9.81;               ///< g
+    /// The cue's effective end mass, kg: the lighter, the less squirt; 0 turns squirt off.
+    double cue_end_mass = standard_shaft_end_mass;
     /// Below this approach speed (m/s) collisions are elastic. Real restitution tends to 1 at low
     /// speed, and it keeps balls pressed together by friction from bouncing ever more often.
     double elastic_below_speed = 0.005;

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <string>
 #include <termpool/ball.hpp>
 #include <termpool/event.hpp>
 #include <termpool/params.hpp>
@@ -20,14 +21,31 @@ struct Strike {
     double angle_deg = 0; ///< direction phi, degrees counter-clockwise from +x
     double side = 0;      ///< tip offset a as a fraction of R, + = right english, |a| <= 0.5
     double follow = 0;    ///< tip offset b as a fraction of R, + = follow, - = draw, |b| <= 0.5
+    /// Cue elevation above the cloth, degrees (0..max_cue_elevation_deg): a raised cue with
+    /// side spin tilts the spin axis, and the ball curves while it slides (swerve, masse).
+    double elevation_deg = 0;
 };
+
+/// Largest cue elevation the simulator accepts, degrees.
+inline constexpr double max_cue_elevation_deg = 80.0;
 
 /// Largest cue-ball speed the simulator accepts, m/s.
 inline constexpr double max_strike_speed = 20.0;
 
 /// The cue ball's state right after the tip leaves it (point-impact model: spin magnitude
-/// 5 v offset / (2 R)).
+/// 5 v offset / (2 R)), squirt and elevation included.
 Ball strike_cue_ball(const Ball& cue, const Strike& strike, const PhysicsParams& params);
+
+/// Why `strike` cannot be played under `params`, in words for a player or a scenario's author
+/// (speed, tip offset or elevation out of range, or a strike that would need a jump shot);
+/// nothing when it can be.
+std::optional<std::string> strike_problem(const Strike& strike, const PhysicsParams& params);
+
+/// Squirt: the angle, degrees, by which side spin turns the cue ball off the cue's line, away
+/// from the side struck (positive for right english, which sends the ball left). `side` is the
+/// tip offset as a fraction of R, `end_mass` the cue's effective end mass (kg); zero end mass
+/// means no squirt.
+double squirt_angle_deg(double side, double ball_mass, double end_mass);
 
 /// The recorded motion of a shot, from which the state at any time can be sampled.
 class Trajectory {
