@@ -7,6 +7,7 @@
 #include <limits>
 #include <termpool/simulator.hpp>
 
+#include "classic_motion.hpp"
 #include "cloth_model.hpp"
 #include "pair_contacts.hpp"
 #include "table_contacts.hpp"
@@ -23,17 +24,17 @@ struct Step {
 };
 
 Step exponential_step(double v, double t, double K) {
-    const double decay = std::exp(-K * t);
-    return {v * decay, v * (1 - decay) / K};
+    return {v * std::exp(-K * t), v * -std::expm1(-K * t) / K};
 }
 
 Step linear_step(double v0, double a, double t) {
     return {v0 - a * t, v0 * t - 0.5 * a * t * t};
 }
 
-// The laws: a ball's step over dt from speed v, and its time from speed v to the rest speed
-// (v above the rest speed).
+// The laws: a ball's step over dt from speed v, its time from speed v to the rest speed (v above
+// the rest speed), and its constants for the contact searches.
 struct Decay {
+    static ClassicLaw law(const FrictionModel& f) { return {f.decay_rate, 0}; }
     static Step step(double v, double dt, const FrictionModel& f) {
         return exponential_step(v, dt, f.decay_rate);
     }
@@ -43,6 +44,7 @@ struct Decay {
 };
 
 struct Constant {
+    static ClassicLaw law(const FrictionModel& f) { return {0, f.deceleration}; }
     static Step step(double v, double dt, const FrictionModel& f) {
         return linear_step(v, f.deceleration, dt);
     }
@@ -53,6 +55,7 @@ struct Constant {
 
 // Exponential decay slows more than A while K v > A.
 struct Combined {
+    static ClassicLaw law(const FrictionModel& f) { return {f.decay_rate, f.deceleration}; }
     static Step step(double v, double dt, const FrictionModel& f) {
         const double K = f.decay_rate, A = f.deceleration;
         const double switch_speed = A / K;
@@ -116,7 +119,11 @@ void settle_motion_state(Ball& b, const PhysicsParams& p) {
     }
 }
 
-// The contact searches along straight lines, moved by the law's own advance.
+// The contact searches along straight lines: exact solves in each phase of the law.
+template <class Law> ClassicMotion motion(const PhysicsParams& p) {
+    return {Law::law(p.friction), advance<Law>, &p};
+}
+
 template <class Law> Box reach(const MotionPiece& piece, double duration, const PhysicsParams& p) {
     return classic_reach(piece, duration, p, advance<Law>);
 }
@@ -124,7 +131,7 @@ template <class Law> Box reach(const MotionPiece& piece, double duration, const 
 template <class Law>
 ContactEstimate pair_contact(const MotionPiece& a, const MotionPiece& b, double now, double horizon,
                              const PhysicsParams& p) {
-    return classic_pair_contact(a, b, now, horizon, p, advance<Law>);
+    return classic_pair_contact(a, b, now, horizon, motion<Law>(p));
 }
 
 template <class Law>
@@ -136,7 +143,7 @@ double pair_contact_time(const MotionPiece& a, const MotionPiece& b, double now,
 template <class Law>
 TableEvent table_event(const MotionPiece& piece, const Box& reach, double now, const Table& table,
                        const PhysicsParams& p) {
-    return classic_table_event(piece, reach, now, table, p, advance<Law>);
+    return classic_table_event(piece, reach, now, table, motion<Law>(p));
 }
 
 template <class Law> ClothModel classic_cloth() {
@@ -152,7 +159,7 @@ template <class Law> ClothModel classic_cloth() {
         .tip_spin = [](const Strike&, Vec2, const PhysicsParams&) { return Vec3{}; },
         .slow_pair_contact = [](Ball&, Ball&, Vec2, const PhysicsParams&) {},
         .slow_cushion_contact = [](Ball&, Vec2, const PhysicsParams&) {},
-        .towards_cushion = classic_towards_cushion,
+        .towards_cushion = physical_towards_cushion,
         .reach = reach<Law>,
         .pair_contact = pair_contact<Law>,
         .pair_contact_time = pair_contact_time<Law>,

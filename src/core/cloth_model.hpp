@@ -5,7 +5,7 @@
 // The physical model moves a ball's centre on parabolas (constant acceleration while it slides
 // or rolls) and keeps its spin; contacts are roots of polynomials. The classic models, the seed
 // report's decay, constant and combined, move it on straight lines without spin at a speed that
-// follows their law; contacts are found by conservative advancement.
+// follows their law; contacts are solved exactly in each phase of the law (classic_contacts.hpp).
 
 #include <termpool/ball.hpp>
 #include <termpool/params.hpp>
@@ -48,7 +48,7 @@ struct ClothModel {
     /// ball back into the cushion is taken out.
     void (*slow_cushion_contact)(Ball& ball, Vec2 towards_cushion, const PhysicsParams& params);
     /// The unit vector from the centre of a ball touching the rail or jaw line `seg` to the
-    /// contact, as the model's search (table_event) finds contacts.
+    /// contact, as the model's search (table_event) finds contacts: across the line.
     Vec2 (*towards_cushion)(const Ball& ball, const CushionSegment& seg);
 
     // ---- where the next contacts are

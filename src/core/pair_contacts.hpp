@@ -4,6 +4,7 @@
 
 #include <termpool/params.hpp>
 
+#include "classic_contacts.hpp"
 #include "motion_piece.hpp"
 #include "polynomial.hpp"
 
@@ -18,10 +19,8 @@ ContactEstimate physical_pair_contact(const MotionPiece& a, const MotionPiece& b
 double physical_pair_contact_time(const MotionPiece& a, const MotionPiece& b, double now,
                                   double horizon, const PhysicsParams& params);
 
-/// A classic model's contact, by conservative advancement along straight lines with `advance`;
-/// always exact.
+/// A classic model's contact (classic_pair_contact_time on the balls' states now); always exact.
 ContactEstimate classic_pair_contact(const MotionPiece& a, const MotionPiece& b, double now,
-                                     double horizon, const PhysicsParams& params,
-                                     AdvanceFn advance);
+                                     double horizon, const ClassicMotion& motion);
 
 } // namespace termpool::core

@@ -7,6 +7,7 @@
 #include <termpool/params.hpp>
 #include <termpool/table.hpp>
 
+#include "classic_contacts.hpp"
 #include "motion_piece.hpp"
 #include "reach_box.hpp"
 
@@ -29,18 +30,13 @@ struct TableEvent {
 TableEvent physical_table_event(const MotionPiece& piece, const Box& reach, double now,
                                 const Table& table, const PhysicsParams& params);
 
-/// A classic model's next event of a moving ball, the contacts found by conservative advancement
-/// along its straight line with `advance`. Each cushion segment is met as a whole, ends included,
-/// so there are no jaw-point events.
+/// A classic model's next event of a moving ball: the same search along its straight line, the
+/// contacts solved exactly in each phase of its law (classic_contacts.hpp).
 TableEvent classic_table_event(const MotionPiece& piece, const Box& reach, double now,
-                               const Table& table, const PhysicsParams& params, AdvanceFn advance);
+                               const Table& table, const ClassicMotion& motion);
 
 /// The unit vector from the centre of a ball touching the rail or jaw line `seg` to the contact,
-/// as the physical search finds it: across the line.
+/// as the search finds it (every model's): across the line.
 Vec2 physical_towards_cushion(const Ball& ball, const CushionSegment& seg);
-
-/// The same as the classic search finds it: towards the segment's closest point, which may be an
-/// end.
-Vec2 classic_towards_cushion(const Ball& ball, const CushionSegment& seg);
 
 } // namespace termpool::core
