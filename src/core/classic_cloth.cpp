@@ -9,6 +9,7 @@
 
 #include "classic_motion.hpp"
 #include "cloth_model.hpp"
+#include "collision.hpp"
 #include "pair_contacts.hpp"
 #include "table_contacts.hpp"
 
@@ -146,6 +147,10 @@ TableEvent table_event(const MotionPiece& piece, const Box& reach, double now, c
     return classic_table_event(piece, reach, now, table, motion<Law>(p));
 }
 
+template <class Law> void slow_pair_contact(Ball& a, Ball& b, Vec2 n, const PhysicsParams& p) {
+    resolve_classic_push(a, b, n, p, Law::law(p.friction));
+}
+
 template <class Law> ClothModel classic_cloth() {
     return {
         .time_to_transition = time_to_stop<Law>,
@@ -154,10 +159,11 @@ template <class Law> ClothModel classic_cloth() {
         .settle_motion_state = settle_motion_state,
         // A straight line: the world's parabola is not used.
         .acceleration = [](const Ball&, const PhysicsParams&) { return Vec2{}; },
-        // No spin, so the tip gives none and the cloth never presses a ball into another or
-        // into a cushion.
+        // No spin, so the tip gives none. A ball's deceleration points straight back along its
+        // way, so it never drives it back into a cushion it leaves; two moving balls it can
+        // drive into each other (slow_pair_contact).
         .tip_spin = [](const Strike&, Vec2, const PhysicsParams&) { return Vec3{}; },
-        .slow_pair_contact = [](Ball&, Ball&, Vec2, const PhysicsParams&) {},
+        .slow_pair_contact = slow_pair_contact<Law>,
         .slow_cushion_contact = [](Ball&, Vec2, const PhysicsParams&) {},
         .towards_cushion = physical_towards_cushion,
         .reach = reach<Law>,

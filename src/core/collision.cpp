@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "classic_motion.hpp"
 #include "physical_cloth.hpp"
 
 namespace termpool::core {
@@ -194,6 +195,33 @@ void resolve_physical_slow_cushion(Ball& ball, Vec2 towards, const PhysicsParams
     const double still_approaching = dot(ball.velocity, towards);
     if (still_approaching > 0)
         ball.velocity -= towards * (2 * still_approaching);
+}
+
+// A classic cloth slows each ball straight back along its way, so two moving balls that touch
+// slowly while heading different ways (or one decaying faster than the other's constant A) can be
+// driven into each other again at once, and again, ever more often: a cluster that never ends.
+// As in the physical model they are pushed instead: first to one speed along the line of centres
+// (momentum kept, energy only lost), then, if the cloth still presses them together, parted by
+// turning their motion (which costs no energy).
+void resolve_classic_push(Ball& a, Ball& b, Vec2 n, const PhysicsParams& p, const ClassicLaw& law) {
+    for (Ball* ball : {&a, &b}) {
+        if (length(ball->velocity) <= p.friction.rest_speed)
+            ball->velocity = {}; // it stops here (settle_motion_state): it presses nothing
+    }
+    // A ball that stands is never driven back into one that leaves it along a straight line.
+    auto pressed = [&] {
+        return length(a.velocity) > 0 && length(b.velocity) > 0 &&
+               dot(classic_acceleration(a.velocity, law) - classic_acceleration(b.velocity, law),
+                   n) > 0;
+    };
+    if (!pressed())
+        return;
+    const double common =
+        (a.mass * dot(a.velocity, n) + b.mass * dot(b.velocity, n)) / (a.mass + b.mass);
+    a.velocity += n * (common - dot(a.velocity, n));
+    b.velocity += n * (common - dot(b.velocity, n));
+    if (pressed())
+        part_pushed_balls(a, b, n);
 }
 
 } // namespace termpool::core

@@ -4,6 +4,7 @@
 #include <termpool/ball.hpp>
 #include <termpool/params.hpp>
 
+#include "classic_motion.hpp"
 #include "cloth_model.hpp"
 
 namespace termpool::core {
@@ -27,6 +28,12 @@ void resolve_cushion(Ball& ball, Vec2 towards_cushion, const PhysicsParams& para
 /// The physical cloth's part in a slow ball-ball contact (ClothModel::slow_pair_contact): two
 /// balls it presses together are resolved as a push.
 void resolve_physical_push(Ball& a, Ball& b, Vec2 n, const PhysicsParams& params);
+
+/// A classic cloth's part in a slow ball-ball contact (ClothModel::slow_pair_contact) under
+/// `law`: two moving balls it drives into each other are pushed to one speed along `n` and, if
+/// still pressed together, parted.
+void resolve_classic_push(Ball& a, Ball& b, Vec2 n, const PhysicsParams& params,
+                          const ClassicLaw& law);
 
 /// The physical cloth's part in a slow cushion contact (ClothModel::slow_cushion_contact).
 void resolve_physical_slow_cushion(Ball& ball, Vec2 towards_cushion, const PhysicsParams& params);

@@ -1,0 +1,400 @@
+// The classic cloth models' exact contact solves (src/core/classic_contacts.cpp), against
+// brute-force scans, and whole classic shots: the reproducers that used to end overlapped, inside
+// a rail or in an endless cluster, and random shots checked after every event.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <termpool/rack.hpp>
+#include <termpool/random.hpp>
+
+#include "cli/scenario.hpp"
+#include "core/classic_contacts.hpp"
+#include "core/cloth_model.hpp"
+#include "physics_helpers.hpp"
+
+using namespace termpool;
+using namespace termpool::core;
+using termpool::test::ball_at;
+using termpool::test::total_energy;
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr double R = 0.028575;
+
+// ---- brute force
+
+// The first sample of `gap` (m, as a function of t) that is <= 0 while closing, on `n` steps
+// over [0, horizon]: the contact lies between the sample before it and it. `closest` gets the
+// smallest gap seen, so that near-grazing cases can be told apart.
+struct Scan {
+    double before = -1, at = infinity;
+    double closest = infinity;
+};
+
+template <class Gap> Scan scan(Gap gap, double horizon, int n = 20000) {
+    Scan s;
+    double previous = gap(0);
+    s.closest = previous;
+    if (previous <= 0 && gap(1e-9 * horizon) < previous) {
+        s.before = 0;
+        s.at = 0;
+        return s;
+    }
+    for (int k = 1; k <= n; ++k) {
+        const double t = horizon * k / n;
+        const double g = gap(t);
+        s.closest = std::min(s.closest, g);
+        if (g <= 0 && g < previous && s.at == infinity) {
+            s.before = horizon * (k - 1) / n;
+            s.at = t;
+        }
+        previous = g;
+    }
+    return s;
+}
+
+// The centre of a decaying ball, as the closed form gives it.
+Vec2 decaying_at(const DecayingPath& a, double K, double t) {
+    return a.position + a.velocity * ((1 - std::exp(-K * t)) / K);
+}
+
+Vec2 path_at(const Path& p, double t) {
+    return p.position + p.velocity * t + p.acceleration * (0.5 * t * t);
+}
+
+// Either the scan and the solve agree on a contact (the solve between the scan's samples,
+// touching there), or neither finds one; a case that only grazes (the scan's closest gap within
+// `grazing` of zero) may go either way.
+template <class Gap> void check_against_scan(Gap gap, double solved, double horizon) {
+    const Scan s = scan(gap, horizon);
+    INFO("solved " << solved << " scan " << s.before << ".." << s.at << " closest " << s.closest);
+    const double grazing = 1e-6; // m
+    if (std::abs(s.closest) < grazing)
+        return;
+    if (s.at == infinity) {
+        CHECK(solved == infinity);
+        return;
+    }
+    REQUIRE(solved < infinity);
+    CHECK(solved >= s.before - 1e-12);
+    CHECK(solved <= s.at + 1e-12);
+    CHECK(std::abs(gap(solved)) < 1e-10);
+}
+
+Vec2 random_vec(Random& rng, double size) {
+    return {rng.uniform(-size, size), rng.uniform(-size, size)};
+}
+
+// A decelerating centre: at most `speed` m/s, its parabola valid until it stops.
+Path random_decelerating(Random& rng, double A, double* stop) {
+    const Vec2 v = random_vec(rng, 2);
+    const double speed = length(v);
+    *stop = speed / A;
+    return {random_vec(rng, 0.5), v, v * (-A / speed), *stop};
+}
+
+// ---- whole shots
+
+// The law's motion as the world moves its balls.
+ClassicMotion motion_of(const ClothModel& cloth, const PhysicsParams& p) {
+    const FrictionModel& f = p.friction;
+    ClassicLaw law;
+    if (f.kind != FrictionKind::constant)
+        law.decay_rate = f.decay_rate;
+    if (f.kind != FrictionKind::decay)
+        law.deceleration = f.deceleration;
+    return {law, cloth.advance, &p};
+}
+
+// How far a ball on the table is into a cushion's rubber or a jaw point (positive when it is).
+double deepest_in_cushion(const Table& table, const Ball& b) {
+    double deepest = -infinity;
+    for (const CushionSegment& seg : table.cushions) {
+        const Vec2 along = seg.end - seg.start;
+        const double u = dot(b.position - seg.start, along) / length_squared(along);
+        const double in_front = dot(b.position - seg.start, seg.normal);
+        if (u >= 0 && u <= 1 && in_front > -3 * R)
+            deepest = std::max(deepest, R - in_front);
+    }
+    for (const Vec2 jaw : table.jaw_points)
+        deepest = std::max(deepest, R - length(b.position - jaw));
+    return deepest;
+}
+
+double deepest_overlap(const std::vector<Ball>& balls) {
+    double deepest = -infinity;
+    for (std::size_t i = 0; i < balls.size(); ++i)
+        for (std::size_t j = i + 1; j < balls.size(); ++j) {
+            if (balls[i].state == MotionState::pocketed || balls[j].state == MotionState::pocketed)
+                continue;
+            deepest = std::max(deepest, 2 * R - length(balls[i].position - balls[j].position));
+        }
+    return deepest;
+}
+
+// Runs the shot, checking after every event that no ball overlaps another or a cushion by more
+// than 1e-9 m and that no energy appears; returns the number of events.
+std::size_t run_checked(const Table& table, const PhysicsParams& p, const std::vector<Ball>& balls,
+                        const Strike& strike) {
+    World world(table, p, balls);
+    world.strike(strike);
+    double energy = total_energy(world.balls(), R);
+    std::size_t events = 0;
+    while (const auto e = world.step()) {
+        ++events;
+        const std::vector<Ball> now = world.balls();
+        INFO("event " << events << " at " << e->time << " " << event_kind_name(e->kind) << " "
+                      << e->ball << " " << e->other);
+        REQUIRE(deepest_overlap(now) < 1e-9);
+        for (const Ball& b : now)
+            if (b.state != MotionState::pocketed)
+                REQUIRE(deepest_in_cushion(table, b) < 1e-9);
+        const double e_now = total_energy(now, R);
+        REQUIRE(e_now <= energy + 1e-12);
+        energy = e_now;
+    }
+    REQUIRE(world.at_rest());
+    return events;
+}
+
+std::size_t run_scenario(const std::string& text) {
+    const auto parsed = cli::parse_scenario(text);
+    REQUIRE(std::holds_alternative<cli::Scenario>(parsed));
+    const cli::Scenario& s = std::get<cli::Scenario>(parsed);
+    REQUIRE(s.strike);
+    return run_checked(s.table, s.setup.physics, s.balls, *s.strike);
+}
+
+} // namespace
+
+TEST_CASE("two decaying centres touch where a scan finds them", "[physics][classic][contact]") {
+    Random rng(11);
+    int hits = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const double K = rng.uniform(0.3, 3);
+        const DecayingPath a{random_vec(rng, 0.3), random_vec(rng, 3)};
+        const DecayingPath b{random_vec(rng, 0.3), random_vec(rng, 1)};
+        const double horizon = rng.uniform(0.1, 3);
+        const double D = 2 * R;
+        if (length(a.position - b.position) < D)
+            continue;
+        const double solved = decaying_pair_contact_time(a, b, K, D, horizon);
+        hits += solved < infinity;
+        check_against_scan(
+            [&](double t) { return length(decaying_at(a, K, t) - decaying_at(b, K, t)) - D; },
+            solved, horizon);
+    }
+    CHECK(hits > 20);
+}
+
+TEST_CASE("a decaying centre meets a line where a scan finds it", "[physics][classic][contact]") {
+    Random rng(12);
+    int hits = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const double K = rng.uniform(0.3, 3);
+        const DecayingPath a{{rng.uniform(0.1, 1), rng.uniform(0.1, 1)}, random_vec(rng, 3)};
+        const Vec2 normal = normalized(random_vec(rng, 1));
+        const Vec2 point{0, 0};
+        if (dot(a.position - point, normal) < R)
+            continue;
+        const double horizon = rng.uniform(0.1, 3);
+        const double solved = decaying_line_contact_time(a, K, point, normal, R, horizon);
+        hits += solved < infinity;
+        check_against_scan([&](double t) { return dot(decaying_at(a, K, t) - point, normal) - R; },
+                           solved, horizon);
+    }
+    CHECK(hits > 20);
+}
+
+TEST_CASE("a decaying and a decelerating centre touch where a scan finds them, in few steps",
+          "[physics][classic][contact]") {
+    Random rng(13);
+    int hits = 0, most_steps = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        const double K = rng.uniform(0.3, 3), A = rng.uniform(0.1, 2);
+        const DecayingPath a{random_vec(rng, 0.3), random_vec(rng, 3)};
+        double stop = 0;
+        const Path b = random_decelerating(rng, A, &stop);
+        const double horizon = std::min(stop, rng.uniform(0.1, 3));
+        const double D = 2 * R;
+        if (length(a.position - b.position) < D)
+            continue;
+        int steps = 0;
+        const double solved = mixed_pair_contact_time(a, K, b, D, horizon, &steps);
+        most_steps = std::max(most_steps, steps);
+        hits += solved < infinity;
+        check_against_scan(
+            [&](double t) { return length(decaying_at(a, K, t) - path_at(b, t)) - D; }, solved,
+            horizon);
+    }
+    CHECK(hits > 20);
+    CHECK(most_steps < 200);
+}
+
+TEST_CASE("a near-tangent mixed pair is settled in few steps", "[physics][classic][contact]") {
+    // a overtakes b on a parallel line 2R + miss beside it: the closest approach is 2R + miss.
+    const double K = 1.5, A = 0.8;
+    for (int k = -10; k <= 10; ++k) {
+        const double miss = 1e-7 * k;
+        const DecayingPath a{{-0.2, 0}, {2, 0}};
+        const Path b{{0, 2 * R + miss}, {0.5, 0}, {-A, 0}, 0.5 / A};
+        int steps = 0;
+        const double solved = mixed_pair_contact_time(a, K, b, 2 * R, b.duration, &steps);
+        INFO("miss " << miss << " steps " << steps << " solved " << solved);
+        CHECK(steps < 200);
+        if (k < 0) {
+            REQUIRE(solved < infinity);
+            CHECK(std::abs(length(decaying_at(a, K, solved) - path_at(b, solved)) - 2 * R) < 1e-12);
+        } else if (k > 0) {
+            CHECK(solved == infinity);
+        }
+    }
+}
+
+TEST_CASE("classic balls of every law meet where a scan of their own motion finds them",
+          "[physics][classic][contact]") {
+    Random rng(14);
+    for (const FrictionKind kind :
+         {FrictionKind::decay, FrictionKind::constant, FrictionKind::combined}) {
+        PhysicsParams p;
+        p.friction = {kind, 1.6, 1.2, 0.005};
+        const ClothModel cloth = cloth_model(p.friction);
+        const ClassicMotion motion = motion_of(cloth, p);
+        int hits = 0;
+        for (int trial = 0; trial < 200; ++trial) {
+            Ball a = ball_at(1, rng.uniform(0, 1), rng.uniform(0, 1));
+            Ball b = ball_at(2, rng.uniform(0, 1), rng.uniform(0, 1));
+            if (length(a.position - b.position) < 2 * R)
+                continue;
+            // Half of them aimed at b (give or take a ball), to meet more often.
+            a.velocity = trial % 2 ? random_vec(rng, 4)
+                                   : normalized(b.position - a.position + random_vec(rng, 0.06)) *
+                                         rng.uniform(0.5, 4);
+            a.state = MotionState::rolling;
+            if (trial % 3 != 0) { // else b stands
+                b.velocity = random_vec(rng, 2);
+                b.state = MotionState::rolling;
+            }
+            const double horizon =
+                std::min(cloth.time_to_transition(a, p), cloth.time_to_transition(b, p));
+            const double solved = classic_pair_contact_time(a, b, 2 * R, horizon, motion);
+            hits += solved < infinity;
+            INFO("law " << static_cast<int>(kind) << " trial " << trial);
+            check_against_scan(
+                [&](double t) {
+                    return length(cloth.advance(a, t, p).position -
+                                  cloth.advance(b, t, p).position) -
+                           2 * R;
+                },
+                solved, horizon);
+            const Vec2 point{0.5, 0.5};
+            if (length(a.position - point) > R)
+                check_against_scan(
+                    [&](double t) { return length(cloth.advance(a, t, p).position - point) - R; },
+                    classic_point_contact_time(a, point, R, horizon, motion), horizon);
+        }
+        CHECK(hits > 40);
+    }
+}
+
+TEST_CASE("the classic reproducers end with no overlap, nothing in a rail, and few events",
+          "[physics][classic][regression]") {
+    SECTION("r1: constant law, ideal collisions, a break") {
+        run_scenario(
+            "table 9ft\nfriction constant 1.1200\ncollision ideal\ncushion physical\n"
+            "rack 8ball 8451133229269434514\nstrike 18.989906 75.6025943 0.2298 -0.2188\n");
+    }
+    SECTION("r2: a ball 1 um off a rail pushed along it") {
+        run_scenario("table 8ft\nfriction combined 1.0972 0.2092\ncollision physical\n"
+                     "cushion ideal\n"
+                     "ball 0 0.028576000 0.839706411\nball 10 1.064409924 0.526279173 mass=0.2123\n"
+                     "ball 15 1.750553301 0.723931221\nball 4 1.213345958 0.683450261\n"
+                     "ball 6 0.393000368 0.156219236\nball 12 1.006102427 0.955070366\n"
+                     "ball 13 1.689470009 1.063048376\nball 5 1.684021671 0.251832698\n"
+                     "ball 9 0.038575000 0.233931163\nball 14 0.028575001 0.458038354\n"
+                     "strike 0.548353 270.0000001 0.0000 0.2142\n");
+    }
+    SECTION("r3: a ball wedged between a standing one and one the cloth drives into it") {
+        const std::size_t events =
+            run_scenario("table 9ft\nfriction combined 1.6612 1.5345\ncollision physical\n"
+                         "cushion ideal\nrack 8ball 9217187264908196596\n"
+                         "strike 8.144664 35.6319234 0.3526 0.4000\n");
+        CHECK(events < 1000); // 11,824 before the cluster was resolved as a push
+    }
+}
+
+TEST_CASE("random classic shots keep every ball apart and out of the rubber after every event",
+          "[physics][classic][property]") {
+    const TableSize sizes[] = {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot};
+    std::size_t most_events = 0;
+    for (std::uint64_t seed = 1; seed <= 300; ++seed) {
+        Random rng(seed);
+        PhysicsParams p;
+        switch (seed % 3) {
+        case 0:
+            p.friction = {FrictionKind::decay, rng.uniform(0.3, 3), 0, 0.005};
+            break;
+        case 1:
+            p.friction = {FrictionKind::constant, 0, rng.uniform(0.1, 2), 0.005};
+            break;
+        default:
+            p.friction = {FrictionKind::combined, rng.uniform(0.3, 3), rng.uniform(0.1, 2), 0.005};
+            break;
+        }
+        if (rng.below(2) == 0)
+            p.collision = CollisionModel::ideal;
+        if (rng.below(2) == 0)
+            p.cushion = CushionModel::ideal;
+        const Table table = make_table(sizes[rng.below(3)]);
+        std::vector<Ball> balls;
+        if (rng.below(3) == 0) {
+            balls = make_rack(table, p, rng.below(2) ? RackType::eight_ball : RackType::nine_ball,
+                              seed);
+        } else {
+            // Balls anywhere, some frozen to another ball or to a rail (touching, or 1 nm off).
+            const int count = 2 + static_cast<int>(rng.below(10));
+            for (int id = 0; id < count; ++id) {
+                for (int attempt = 0; attempt < 100; ++attempt) {
+                    Ball b = ball_at(id, rng.uniform(R, table.length - R),
+                                     rng.uniform(R, table.width - R));
+                    const double off = rng.below(2) ? 0 : 1e-9;
+                    switch (rng.below(4)) {
+                    case 0:
+                        b.position.y = rng.below(2) ? R + off : table.width - R - off;
+                        break;
+                    case 1:
+                        b.position.x = rng.below(2) ? R + off : table.length - R - off;
+                        break;
+                    case 2:
+                        if (!balls.empty()) {
+                            const Ball& other = balls[rng.below(balls.size())];
+                            const double angle = rng.uniform(0, 2 * 3.141592653589793);
+                            b.position = other.position +
+                                         Vec2{std::cos(angle), std::sin(angle)} * (2 * R + off);
+                        }
+                        break;
+                    default:
+                        break;
+                    }
+                    if (deepest_in_cushion(table, b) > 0 || b.position.x < R ||
+                        b.position.x > table.length - R || b.position.y < R ||
+                        b.position.y > table.width - R)
+                        continue;
+                    auto all = balls;
+                    all.push_back(b);
+                    if (deepest_overlap(all) <= 0) {
+                        balls.push_back(b);
+                        break;
+                    }
+                }
+            }
+        }
+        const Strike strike{rng.uniform(0, 20), rng.uniform(0, 360), rng.uniform(-0.5, 0.5),
+                            rng.uniform(-0.5, 0.5)};
+        INFO("seed " << seed);
+        most_events = std::max(most_events, run_checked(table, p, balls, strike));
+    }
+    CHECK(most_events < 3000);
+}
