@@ -225,7 +225,23 @@ double convex_minimum(const Work& w, Sample lo, Sample hi) noexcept {
             return kInf;
         x = next;
     }
-    return kInf;
+    // Not settled in kMaxIterations (a very flat minimum close to t = 0 in a long piece): rather
+    // than give up with "no contact", bisect on f'. Each step halves the bracket, so this ends
+    // once it is down to adjacent doubles, with f > 0 at both: then no double has f <= 0.
+    for (;;) {
+        const double mid = lo.t + 0.5 * (hi.t - lo.t);
+        if (!(mid > lo.t && mid < hi.t))
+            return kInf;
+        const Sample s = sample_at(w, mid);
+        if (s.f <= 0.0)
+            return find_root(w, lo, s);
+        if (s.g < 0.0)
+            lo = s;
+        else if (s.g > 0.0)
+            hi = s;
+        else
+            return kInf; // exactly at the minimum, and it is positive
+    }
 }
 
 // End of a piece, sampled only when a decision needs it: a hit is usually settled from inside
