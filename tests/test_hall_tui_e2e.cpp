@@ -172,7 +172,11 @@ const Tmux* play_turn(const std::vector<const Tmux*>& terminals) {
             if (s.find("place the cue ball") != std::string::npos &&
                 s.find("waiting for") == std::string::npos) {
                 t->keys("Enter");
-                if (!t->wait_for_text("Space shoots"))
+                // Not "Space shoots": an 80-column panel wraps the hint between those words.
+                if (!t->wait_for([](const std::string& now) {
+                        return now.find("aim (mouse") != std::string::npos &&
+                               now.find("place the cue ball") == std::string::npos;
+                    }))
                     return nullptr;
                 t->keys("Space");
                 return t;
@@ -260,7 +264,11 @@ TEST_CASE("hall faults: a terminal killed mid-shot takes its seat back, a server
     create_table(ann);
     REQUIRE(bob.wait_for_text("waiting"));
     bob.keys("Enter");
-    REQUIRE(ann.wait_for_text("Ann breaks"));
+    {
+        const bool seated = ann.wait_for_text("Ann breaks");
+        INFO("Ann:\n" << ann.screen() << "\nBob:\n" << bob.screen());
+        REQUIRE(seated);
+    }
     ann.keys("Enter");
     REQUIRE(ann.wait_for_text("Space shoots"));
 
