@@ -73,6 +73,18 @@ void create_table(const Tmux& tmux) {
     REQUIRE(tmux.wait_for_text("Waiting for an opponent"));
 }
 
+// The lobby on `tmux` shows a table whose creator `name` has sat down: between the create and
+// the creator's sit the row shows both seats empty, and Enter then would pick seat 1.
+bool lobby_shows_seated(const Tmux& tmux, const std::string& name) {
+    return tmux.wait_for([&](const std::string& s) {
+        std::istringstream lines(s);
+        for (std::string line; std::getline(lines, line);)
+            if (line.find("waiting") != std::string::npos && line.find(name) != std::string::npos)
+                return true;
+        return false;
+    });
+}
+
 // A server the terminals started themselves: stopped with SIGTERM by the pid its socket
 // gives, and waited for (this machine's init may leave it a zombie, which runs nothing).
 struct StartedServer {
@@ -207,7 +219,7 @@ TEST_CASE("three hall terminals: a table created, a seat taken, a watcher, the b
 
     create_table(ann);
     // The lobby is live: the new table shows on the others' screens by itself.
-    REQUIRE(bob.wait_for_text("waiting"));
+    REQUIRE(lobby_shows_seated(bob, "Ann"));
     REQUIRE(bob.screen().find("Ann") != std::string::npos);
     bob.keys("Enter");
     REQUIRE(bob.wait_for_text("Ann breaks"));
@@ -262,7 +274,7 @@ TEST_CASE("hall faults: a terminal killed mid-shot takes its seat back, a server
     open_terminal(ann, dir.path(), "Ann", 100, 32);
     open_terminal(bob, dir.path(), "Bob", 80, 24);
     create_table(ann);
-    REQUIRE(bob.wait_for_text("waiting"));
+    REQUIRE(lobby_shows_seated(bob, "Ann"));
     bob.keys("Enter");
     {
         const bool seated = ann.wait_for_text("Ann breaks");
