@@ -5,16 +5,10 @@
 #include <termpool/random.hpp>
 #include <termpool/record.hpp>
 #include <termpool/text_lines.hpp>
+#include <termpool/text_numbers.hpp>
 
 namespace termpool {
 namespace {
-
-std::string number(double v) {
-    // Shortest text that reads back to the same double.
-    char buffer[64];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return ec == std::errc{} ? std::string(buffer, end) : "nan";
-}
 
 std::optional<double> to_double(std::string_view s) {
     double v = 0;
@@ -128,12 +122,13 @@ read_action(const std::vector<std::string_view>& f) {
 std::string format_action(const RecordedAction& a) {
     switch (a.kind) {
     case RecordedAction::Kind::place:
-        return "place " + number(a.place.x) + " " + number(a.place.y);
+        return "place " + format_double(a.place.x) + " " + format_double(a.place.y);
     case RecordedAction::Kind::choose:
         return std::string("choose ") + choice_name(a.choice);
     case RecordedAction::Kind::shot: {
-        std::string out = "shot " + number(a.strike.speed) + " " + number(a.strike.angle_deg) +
-                          " " + number(a.strike.side) + " " + number(a.strike.follow);
+        std::string out = "shot " + format_double(a.strike.speed) + " " +
+                          format_double(a.strike.angle_deg) + " " + format_double(a.strike.side) +
+                          " " + format_double(a.strike.follow);
         if (a.call.call.safety)
             out += " safety";
         else if (a.call.call.ball != 0)
@@ -164,7 +159,7 @@ std::string format_record(const GameRecord& r) {
     if (r.setup.physics.friction.kind != FrictionKind::physical)
         out += "friction " + format_friction(r.setup.physics.friction) + "\n";
     if (r.setup.physics.cue_ball_mass > 0)
-        out += "cue-ball-mass " + number(r.setup.physics.cue_ball_mass) + "\n";
+        out += "cue-ball-mass " + format_double(r.setup.physics.cue_ball_mass) + "\n";
     if (r.race_to > 1) {
         out += "race " + std::to_string(r.race_to) + "\n";
         out += std::string("breaks ") + break_rule_name(r.break_rule) + "\n";

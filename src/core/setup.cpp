@@ -38,12 +38,6 @@ std::variant<double, FrictionProblem::Kind> read_constant(std::string_view text)
     return *value;
 }
 
-std::string shortest(double v) {
-    char buffer[64];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return ec == std::errc{} ? std::string(buffer, end) : "nan";
-}
-
 } // namespace
 
 Table make_table(const GameSetup& setup) {
@@ -99,11 +93,12 @@ std::string format_friction(const FrictionModel& model) {
     case FrictionKind::physical:
         break;
     case FrictionKind::decay:
-        return "decay " + shortest(model.decay_rate);
+        return "decay " + format_double(model.decay_rate);
     case FrictionKind::constant:
-        return "constant " + shortest(model.deceleration);
+        return "constant " + format_double(model.deceleration);
     case FrictionKind::combined:
-        return "combined " + shortest(model.decay_rate) + " " + shortest(model.deceleration);
+        return "combined " + format_double(model.decay_rate) + " " +
+               format_double(model.deceleration);
     }
     return "physical";
 }

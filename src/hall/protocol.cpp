@@ -34,12 +34,6 @@ bool has_control(std::string_view text) {
     return false;
 }
 
-std::string number(double v) {
-    char buffer[64];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return ec == std::errc{} ? std::string(buffer, end) : "nan";
-}
-
 std::string hex64(std::uint64_t v) {
     static constexpr char digits[] = "0123456789abcdef";
     std::string out(16, '0');
@@ -125,8 +119,8 @@ public:
         if (!ok_)
             return 0;
         if (!v || !std::isfinite(*v) || *v < low || *v > high) {
-            fail(std::string(what) + " must be a number from " + number(low) + " to " +
-                 number(high));
+            fail(std::string(what) + " must be a number from " + format_double(low) + " to " +
+                 format_double(high));
             return 0;
         }
         return *v;
@@ -252,8 +246,8 @@ template <class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };
 template <class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
 
 std::string strike_words(const Strike& s) {
-    return number(s.angle_deg) + " " + number(s.speed) + " " + number(s.side) + " " +
-           number(s.follow);
+    return format_double(s.angle_deg) + " " + format_double(s.speed) + " " + format_double(s.side) +
+           " " + format_double(s.follow);
 }
 
 } // namespace
