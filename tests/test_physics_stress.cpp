@@ -30,8 +30,9 @@ void print(const StressTally& t, double seconds) {
     std::printf("failures %zu:", t.failed());
     for (std::size_t k = 1; k < 7; ++k)
         std::printf(" %s %zu", stress_failure_name(static_cast<StressFailure>(k)), t.failures[k]);
-    std::printf("\nlargest energy rise over one event %s J\n",
-                format_double(t.worst_energy_rise).c_str());
+    std::printf("\nlargest energy rise over one event %s J, %s of its shot's energy\n",
+                format_double(t.worst_energy_rise).c_str(),
+                format_double(t.worst_relative_rise).c_str());
     for (const std::string& e : t.examples)
         std::printf("%s\n", e.c_str());
     std::fflush(stdout);
