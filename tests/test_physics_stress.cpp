@@ -30,7 +30,7 @@ void print(const StressTally& t, double seconds) {
     std::printf("failures %zu:", t.failed());
     for (std::size_t k = 1; k < 7; ++k)
         std::printf(" %s %zu", stress_failure_name(static_cast<StressFailure>(k)), t.failures[k]);
-    std::printf("\nlargest energy rise over one event %s J, %s of its shot's energy\n",
+    std::printf("\nlargest energy rise over one event %s J; largest over its shot's energy %s\n",
                 format_double(t.worst_energy_rise).c_str(),
                 format_double(t.worst_relative_rise).c_str());
     for (const std::string& e : t.examples)
