@@ -10,6 +10,10 @@
 namespace termpool {
 namespace {
 
+std::string number(double v) {
+    return format_double(v); // the one text of state that reads back exactly
+}
+
 std::optional<double> to_double(std::string_view s) {
     double v = 0;
     const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
@@ -122,13 +126,12 @@ read_action(const std::vector<std::string_view>& f) {
 std::string format_action(const RecordedAction& a) {
     switch (a.kind) {
     case RecordedAction::Kind::place:
-        return "place " + format_double(a.place.x) + " " + format_double(a.place.y);
+        return "place " + number(a.place.x) + " " + number(a.place.y);
     case RecordedAction::Kind::choose:
         return std::string("choose ") + choice_name(a.choice);
     case RecordedAction::Kind::shot: {
-        std::string out = "shot " + format_double(a.strike.speed) + " " +
-                          format_double(a.strike.angle_deg) + " " + format_double(a.strike.side) +
-                          " " + format_double(a.strike.follow);
+        std::string out = "shot " + number(a.strike.speed) + " " + number(a.strike.angle_deg) +
+                          " " + number(a.strike.side) + " " + number(a.strike.follow);
         if (a.call.call.safety)
             out += " safety";
         else if (a.call.call.ball != 0)
@@ -159,7 +162,7 @@ std::string format_record(const GameRecord& r) {
     if (r.setup.physics.friction.kind != FrictionKind::physical)
         out += "friction " + format_friction(r.setup.physics.friction) + "\n";
     if (r.setup.physics.cue_ball_mass > 0)
-        out += "cue-ball-mass " + format_double(r.setup.physics.cue_ball_mass) + "\n";
+        out += "cue-ball-mass " + number(r.setup.physics.cue_ball_mass) + "\n";
     if (r.race_to > 1) {
         out += "race " + std::to_string(r.race_to) + "\n";
         out += std::string("breaks ") + break_rule_name(r.break_rule) + "\n";

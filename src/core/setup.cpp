@@ -1,5 +1,4 @@
 // The game's setup and the one text form of the cloth model.
-#include <charconv>
 #include <cmath>
 #include <termpool/setup.hpp>
 #include <termpool/text_numbers.hpp>
@@ -36,6 +35,10 @@ std::variant<double, FrictionProblem::Kind> read_constant(std::string_view text)
     if (!(*value > 0))
         return FrictionProblem::Kind::not_positive;
     return *value;
+}
+
+std::string shortest(double v) {
+    return format_double(v); // the one text of state that reads back exactly
 }
 
 } // namespace
@@ -93,12 +96,11 @@ std::string format_friction(const FrictionModel& model) {
     case FrictionKind::physical:
         break;
     case FrictionKind::decay:
-        return "decay " + format_double(model.decay_rate);
+        return "decay " + shortest(model.decay_rate);
     case FrictionKind::constant:
-        return "constant " + format_double(model.deceleration);
+        return "constant " + shortest(model.deceleration);
     case FrictionKind::combined:
-        return "combined " + format_double(model.decay_rate) + " " +
-               format_double(model.deceleration);
+        return "combined " + shortest(model.decay_rate) + " " + shortest(model.deceleration);
     }
     return "physical";
 }

@@ -34,6 +34,10 @@ bool has_control(std::string_view text) {
     return false;
 }
 
+std::string number(double v) {
+    return format_double(v); // the one text of state that reads back exactly
+}
+
 std::string hex64(std::uint64_t v) {
     static constexpr char digits[] = "0123456789abcdef";
     std::string out(16, '0');
@@ -119,8 +123,8 @@ public:
         if (!ok_)
             return 0;
         if (!v || !std::isfinite(*v) || *v < low || *v > high) {
-            fail(std::string(what) + " must be a number from " + format_double(low) + " to " +
-                 format_double(high));
+            fail(std::string(what) + " must be a number from " + number(low) + " to " +
+                 number(high));
             return 0;
         }
         return *v;
@@ -246,8 +250,8 @@ template <class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };
 template <class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
 
 std::string strike_words(const Strike& s) {
-    return format_double(s.angle_deg) + " " + format_double(s.speed) + " " + format_double(s.side) +
-           " " + format_double(s.follow);
+    return number(s.angle_deg) + " " + number(s.speed) + " " + number(s.side) + " " +
+           number(s.follow);
 }
 
 } // namespace
