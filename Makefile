@@ -17,6 +17,8 @@ DESTDIR ?=
 TEST_ARGS  ?=
 # Arguments appended to `termpool bench`, e.g. BENCH_ARGS='--breaks 100'.
 BENCH_ARGS ?=
+# Shots of `make soak` (the stress test's checks, on two threads).
+SOAK_SHOTS ?= 1000000
 
 SANFLAGS := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 
@@ -88,7 +90,7 @@ endif
 # ---------------------------------------------------------------------------
 
 .DEFAULT_GOAL := all
-.PHONY: all run test check bench deps ensure-deps install uninstall clean format format-check help \
+.PHONY: all run test check bench soak deps ensure-deps install uninstall clean format format-check help \
         fuzz fuzz-deps fuzz-run layers
 .DELETE_ON_ERROR:
 
@@ -140,6 +142,11 @@ check:
 
 bench: $(BIN)
 	./$(BIN) bench $(BENCH_ARGS)
+
+# The stress test's checks over many more shots, not part of test or CI: 10^5 shots take about
+# 40 s on two cores, 10^6 some 7 minutes.
+soak: $(TEST_BIN)
+	SOAK_SHOTS=$(SOAK_SHOTS) ./$(TEST_BIN) '[soak]'
 
 # Which folder includes which, read from the sources (tests/test_layers.cpp checks the rules).
 layers:
@@ -237,6 +244,7 @@ help:
 	@echo "  test          build binary and tests, run tests (TEST_ARGS='[tag]' to filter)"
 	@echo "  check         like test, in build/san with ASan+UBSan"
 	@echo "  bench         build, then run 'build/termpool bench' (BENCH_ARGS=...)"
+	@echo "  soak          the stress test's checks over SOAK_SHOTS shots (10^6), two threads"
 	@echo "  layers        print the include graph: which folder includes which, how often"
 	@echo "  deps          install $(DEB_PACKAGES) with apt-get if missing"
 	@echo "  install       install binary and man page under \$$(DESTDIR)\$$(PREFIX) ($(PREFIX))"

@@ -38,21 +38,4 @@ inline double total_energy(const std::vector<Ball>& balls, double radius) {
     return e;
 }
 
-/// True when a ball centre is where the cushions and jaws allow it: on the playing surface or in
-/// a pocket's mouth (in front of its capture line).
-inline bool within_cushions(const Table& table, Vec2 p) {
-    const double margin = 1e-9;
-    if (p.x >= -margin && p.x <= table.length + margin && p.y >= -margin &&
-        p.y <= table.width + margin)
-        return true;
-    for (const Pocket& pocket : table.pockets) {
-        const bool in_box =
-            p.x >= pocket.region_min.x - margin && p.x <= pocket.region_max.x + margin &&
-            p.y >= pocket.region_min.y - margin && p.y <= pocket.region_max.y + margin;
-        if (in_box && dot(p - pocket.capture_point, pocket.capture_normal) >= -margin)
-            return true;
-    }
-    return false;
-}
-
 } // namespace termpool::test

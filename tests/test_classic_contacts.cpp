@@ -108,21 +108,6 @@ ClassicMotion motion_of(const ClothModel& cloth, const PhysicsParams& p) {
     return {law, cloth.advance, &p};
 }
 
-// How far a ball on the table is into a cushion's rubber or a jaw point (positive when it is).
-double deepest_in_cushion(const Table& table, const Ball& b) {
-    double deepest = -infinity;
-    for (const CushionSegment& seg : table.cushions) {
-        const Vec2 along = seg.end - seg.start;
-        const double u = dot(b.position - seg.start, along) / length_squared(along);
-        const double in_front = dot(b.position - seg.start, seg.normal);
-        if (u >= 0 && u <= 1 && in_front > -3 * R)
-            deepest = std::max(deepest, R - in_front);
-    }
-    for (const Vec2 jaw : table.jaw_points)
-        deepest = std::max(deepest, R - length(b.position - jaw));
-    return deepest;
-}
-
 double deepest_overlap(const std::vector<Ball>& balls) {
     double deepest = -infinity;
     for (std::size_t i = 0; i < balls.size(); ++i)
@@ -134,8 +119,9 @@ double deepest_overlap(const std::vector<Ball>& balls) {
     return deepest;
 }
 
-// Runs the shot, checking after every event that no ball overlaps another or a cushion by more
-// than 1e-9 m and that no energy appears; returns the number of events.
+// Runs the shot, checking after every event that no ball overlaps another by more than 1e-9 m,
+// every ball not pocketed is on the table (on_playing_surface), and no energy appears; returns
+// the number of events.
 std::size_t run_checked(const Table& table, const PhysicsParams& p, const std::vector<Ball>& balls,
                         const Strike& strike) {
     World world(table, p, balls);
@@ -150,7 +136,7 @@ std::size_t run_checked(const Table& table, const PhysicsParams& p, const std::v
         REQUIRE(deepest_overlap(now) < 1e-9);
         for (const Ball& b : now)
             if (b.state != MotionState::pocketed)
-                REQUIRE(deepest_in_cushion(table, b) < 1e-9);
+                REQUIRE(on_playing_surface(table, b.position, R));
         const double e_now = total_energy(now, R);
         REQUIRE(e_now <= energy + 1e-12);
         energy = e_now;
@@ -378,7 +364,7 @@ TEST_CASE("random classic shots keep every ball apart and out of the rubber afte
                     default:
                         break;
                     }
-                    if (deepest_in_cushion(table, b) > 0 || b.position.x < R ||
+                    if (rubber_depth(table, b.position, R) > 0 || b.position.x < R ||
                         b.position.x > table.length - R || b.position.y < R ||
                         b.position.y > table.width - R)
                         continue;

@@ -321,3 +321,21 @@ TEST_CASE("a rematch keeps the seats, and the computers play on with their own s
     CHECK(second_break.angle_deg == continuing.angle_deg);
     CHECK(second_break.angle_deg != fresh_break.angle_deg);
 }
+
+TEST_CASE("a strike with a negative zero is played as the record writes it", "[match][record]") {
+    // The record writes -0 as "0"; the match plays the strike as written, so that the replay,
+    // which reads +0, passes through the same bits.
+    Match match = started(header_for(GameType::nine_ball, 5), 2);
+    REQUIRE(play_computer_move(match) == MatchError::none); // the placement
+    const double negative_zero = -0.0;
+    const Strike strike{9, 1.5, negative_zero, negative_zero};
+    REQUIRE(std::holds_alternative<PlayedShot>(match.shoot(match.to_act(), strike, {})));
+    const Strike recorded = match.record().actions.back().strike;
+    CHECK_FALSE(std::signbit(recorded.side));
+    CHECK_FALSE(std::signbit(recorded.follow));
+    const auto parsed = parse_record(format_record(match.record()));
+    REQUIRE(std::holds_alternative<GameRecord>(parsed));
+    const auto again = Match::replay(std::get<GameRecord>(parsed));
+    REQUIRE(std::holds_alternative<Match>(again));
+    CHECK(seen(std::get<Match>(again)) == seen(match));
+}

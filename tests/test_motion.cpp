@@ -139,6 +139,6 @@ TEST_CASE("a trajectory samples the same states the world stepped through",
     // Between events too: halfway through the shot every ball is somewhere on the table.
     for (const Ball& b : world.trajectory().sample(snapshots.back().first / 2)) {
         if (b.state != MotionState::pocketed)
-            CHECK(test::within_cushions(table, b.position));
+            CHECK(on_playing_surface(table, b.position, p.ball_radius));
     }
 }

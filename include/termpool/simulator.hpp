@@ -83,7 +83,8 @@ public:
     /// Safety limit on events per shot; a shot that reaches it is stopped and flagged.
     static constexpr std::size_t max_events = 200000;
 
-    /// A world at time 0. Ball ids must be unique; balls must not overlap.
+    /// A world at time 0. Ball ids must be unique; balls must be on the table
+    /// (on_playing_surface, the rule every position the world reaches keeps) and not overlap.
     World(const Table& table, const PhysicsParams& params, std::vector<Ball> balls);
     ~World();
     /// Worlds are values: copying one copies its state.

@@ -81,7 +81,27 @@ const char* table_size_name(TableSize size);
 /// Parses "7ft", "8ft" or "9ft"; nothing for anything else.
 std::optional<TableSize> parse_table_size(std::string_view name);
 
-/// True when a ball of radius `radius` centred at `p` lies on the playing surface.
+/// How far a ball of radius `radius` centred at `p` presses into the cushion rubber, m: the
+/// largest overlap with the face of any rail or jaw, their ends included; zero or less when it
+/// touches none. A centre gone right through a face is refused by on_playing_surface's other
+/// rules (the rectangle, the mouths), not by this.
+double rubber_depth(const Table& table, Vec2 p, double radius);
+
+/// Rubber depth, m, up to which a ball still counts as touching a cushion rather than in it:
+/// round-off in a position of a few metres.
+inline constexpr double rubber_tolerance = 1e-9;
+
+/// True when a ball of radius `radius` centred at `p` is on the table: in no rubber (depth at
+/// most `rubber_tolerance` against every rail and jaw), its centre strictly in front of every
+/// pocket's capture line, and inside the rectangle of the cushion noses or in a pocket's mouth
+/// between its jaws. The one rule of the world, the scenario parser, ball in hand and the game,
+/// so that wherever the simulator leaves a ball may be given back to it.
 bool on_playing_surface(const Table& table, Vec2 p, double radius);
+
+/// Where a cursor at `from` moved by `step` puts a ball of radius `radius`: `from + step` if
+/// the ball is on the table there; else that point drawn back into the band where the ball
+/// clears every rail (so the cursor slides along a cushion), if it is on the table there;
+/// else `from`.
+Vec2 step_on_table(const Table& table, Vec2 from, Vec2 step, double radius);
 
 } // namespace termpool

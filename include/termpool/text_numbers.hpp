@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace termpool {
@@ -14,6 +15,12 @@ namespace termpool {
 /// "inf", "nan" and values too large for a double come back as infinity or NaN for the caller
 /// to refuse with a message of its own. Nothing when `text` is not a number.
 std::optional<double> parse_double(std::string_view text);
+
+/// The shortest text that `parse_double` reads back to the same double (std::to_chars), for
+/// every number of state that is written: simulate's output, records, setups, the hall's
+/// messages. Negative zero prints as "0", so that outputs compare as text (it reads back as
+/// +0); infinity and NaN print as "inf", "-inf" and "nan".
+std::string format_double(double value);
 
 /// The whole of `text` read as a decimal integer; nothing when it is not one or out of range.
 std::optional<long long> parse_integer(std::string_view text);

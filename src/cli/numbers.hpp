@@ -11,7 +11,8 @@
 
 namespace termpool::cli {
 
-/// `value` printed with `%.9g`; negative zero prints as "0" so that outputs compare as text.
+/// `value` printed with `%.9g`, for figures people read (bench, experiment, messages); state
+/// is written with format_double, which reads back exactly. Negative zero prints as "0".
 std::string format_number(double value);
 
 } // namespace termpool::cli

@@ -5,7 +5,7 @@
 namespace termpool::cli {
 
 std::string format_event(const Event& event) {
-    std::string line = "event " + format_number(event.time) + " " + event_kind_name(event.kind) +
+    std::string line = "event " + format_double(event.time) + " " + event_kind_name(event.kind) +
                        " " + std::to_string(event.ball);
     // The format names the other party only where it is a ball or a pocket, not for rails.
     if (event.kind == EventKind::ball_ball || event.kind == EventKind::pocket)
@@ -14,8 +14,8 @@ std::string format_event(const Event& event) {
 }
 
 std::string format_ball(const Ball& ball) {
-    std::string line = "ball " + std::to_string(ball.id) + " " + format_number(ball.position.x) +
-                       " " + format_number(ball.position.y);
+    std::string line = "ball " + std::to_string(ball.id) + " " + format_double(ball.position.x) +
+                       " " + format_double(ball.position.y);
     if (ball.state == MotionState::pocketed)
         line += " pocket " + std::to_string(ball.pocket);
     else
@@ -30,7 +30,7 @@ std::string format_shot(const std::vector<Event>& events, const std::vector<Ball
         out += format_event(e);
     for (const Ball& b : balls)
         out += format_ball(b);
-    out += "rest " + format_number(rest_time) + "\n";
+    out += "rest " + format_double(rest_time) + "\n";
     return out;
 }
 

@@ -289,8 +289,22 @@ MatchError Match::place(int player, Vec2 spot) {
     return MatchError::none;
 }
 
-std::variant<PlayedShot, MatchError> Match::shoot(int player, const Strike& strike,
+namespace {
+
+// The record writes -0 as "0" (format_double), and a replay must play what was played: the
+// sign of a zero can reach the spin through copysign.
+Strike as_recorded(const Strike& s) {
+    Strike out = s;
+    for (double* v : {&out.speed, &out.angle_deg, &out.side, &out.follow, &out.elevation_deg})
+        *v = *v == 0 ? 0.0 : *v;
+    return out;
+}
+
+} // namespace
+
+std::variant<PlayedShot, MatchError> Match::shoot(int player, const Strike& asked,
                                                   const ShotCall& call, Trajectory* trajectory) {
+    const Strike strike = as_recorded(asked);
     if (const MatchError e = check_player(player); e != MatchError::none)
         return e;
     const Pending kind = pending().kind;

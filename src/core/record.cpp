@@ -5,15 +5,13 @@
 #include <termpool/random.hpp>
 #include <termpool/record.hpp>
 #include <termpool/text_lines.hpp>
+#include <termpool/text_numbers.hpp>
 
 namespace termpool {
 namespace {
 
 std::string number(double v) {
-    // Shortest text that reads back to the same double.
-    char buffer[64];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return ec == std::errc{} ? std::string(buffer, end) : "nan";
+    return format_double(v); // the one text of state that reads back exactly
 }
 
 std::optional<double> to_double(std::string_view s) {

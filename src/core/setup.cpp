@@ -1,5 +1,4 @@
 // The game's setup and the one text form of the cloth model.
-#include <charconv>
 #include <cmath>
 #include <termpool/setup.hpp>
 #include <termpool/text_numbers.hpp>
@@ -39,9 +38,7 @@ std::variant<double, FrictionProblem::Kind> read_constant(std::string_view text)
 }
 
 std::string shortest(double v) {
-    char buffer[64];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return ec == std::errc{} ? std::string(buffer, end) : "nan";
+    return format_double(v); // the one text of state that reads back exactly
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <termpool/table.hpp>
 
@@ -109,10 +110,55 @@ Table make_table(TableSize size, double ball_radius, const PocketSpec& spec) {
     return table;
 }
 
+double rubber_depth(const Table& table, Vec2 p, double radius) {
+    double deepest = -std::numeric_limits<double>::infinity();
+    for (const CushionSegment& seg : table.cushions) {
+        const Vec2 along = seg.end - seg.start;
+        const double u = std::clamp(dot(p - seg.start, along) / length_squared(along), 0.0, 1.0);
+        deepest = std::max(deepest, radius - length(p - (seg.start + along * u)));
+    }
+    return deepest;
+}
+
+namespace {
+
+bool before_capture_line(const Pocket& pocket, Vec2 p) {
+    return dot(p - pocket.capture_point, pocket.capture_normal) > 0;
+}
+
+// Between the pocket's jaws: inside its box and on the table's side of both jaw lines. The
+// jaws reach past the capture line, so the box and the two lines hold the whole mouth.
+bool in_mouth(const Table& table, const Pocket& pocket, Vec2 p) {
+    if (p.x < pocket.region_min.x || p.x > pocket.region_max.x || p.y < pocket.region_min.y ||
+        p.y > pocket.region_max.y)
+        return false;
+    for (const CushionSegment& jaw : table.cushions)
+        if (jaw.pocket == pocket.number && dot(p - jaw.start, jaw.normal) < 0)
+            return false;
+    return true;
+}
+
+} // namespace
+
 bool on_playing_surface(const Table& table, Vec2 p, double radius) {
-    constexpr double tolerance = 1e-9;
-    return p.x >= radius - tolerance && p.x <= table.length - radius + tolerance &&
-           p.y >= radius - tolerance && p.y <= table.width - radius + tolerance;
+    if (!(rubber_depth(table, p, radius) <= rubber_tolerance))
+        return false; // also refuses NaN
+    for (const Pocket& pocket : table.pockets)
+        if (!before_capture_line(pocket, p))
+            return false;
+    if (p.x >= 0 && p.x <= table.length && p.y >= 0 && p.y <= table.width)
+        return true;
+    return std::ranges::any_of(table.pockets,
+                               [&](const Pocket& pocket) { return in_mouth(table, pocket, p); });
+}
+
+Vec2 step_on_table(const Table& table, Vec2 from, Vec2 step, double radius) {
+    const Vec2 to = from + step;
+    if (on_playing_surface(table, to, radius))
+        return to;
+    const Vec2 clear{std::clamp(to.x, radius, table.length - radius),
+                     std::clamp(to.y, radius, table.width - radius)};
+    return on_playing_surface(table, clear, radius) ? clear : from;
 }
 
 } // namespace termpool

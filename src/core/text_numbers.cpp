@@ -79,6 +79,15 @@ std::optional<double> parse_double(std::string_view text) {
     return value;
 }
 
+std::string format_double(double value) {
+    if (value == 0)
+        value = 0; // turns -0 into +0
+    // The longest shortest form of a double, "-2.2250738585072014e-308", has 24 characters.
+    char buffer[32];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return ec == std::errc{} ? std::string(buffer, end) : "nan";
+}
+
 std::optional<long long> parse_integer(std::string_view text) {
     return parse_whole_integer<long long>(text);
 }

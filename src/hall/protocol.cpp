@@ -35,9 +35,7 @@ bool has_control(std::string_view text) {
 }
 
 std::string number(double v) {
-    char buffer[64];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
-    return ec == std::errc{} ? std::string(buffer, end) : "nan";
+    return format_double(v); // the one text of state that reads back exactly
 }
 
 std::string hex64(std::uint64_t v) {

@@ -203,23 +203,23 @@ Grid App::frame(int width, int height) {
 }
 
 bool App::nudge(Vec2& spot, int key, const std::string& text) const {
-    // One cell a key; a row is as tall as two columns are wide. The keys keep the ball on
-    // the cloth, where the player can see it.
+    // One cell a key; a row is as tall as two columns are wide. The keys keep the ball where
+    // it may be put down (on_playing_surface), a pocket's mouth included.
     if (!layout_.fits)
         return false; // no cells to step by while "please enlarge" shows
-    const double step = 1.0 / layout_.cells_per_metre, R = params_.ball_radius;
+    const double step = 1.0 / layout_.cells_per_metre;
+    Vec2 by;
     if (key == key_left || text == "h")
-        spot.x -= step;
+        by = {-step, 0};
     else if (key == key_right || text == "l")
-        spot.x += step;
+        by = {step, 0};
     else if (key == key_up || text == "k")
-        spot.y += 2 * step;
+        by = {0, 2 * step};
     else if (key == key_down || text == "j")
-        spot.y -= 2 * step;
+        by = {0, -2 * step};
     else
         return false;
-    spot.x = std::clamp(spot.x, R, table_.length - R);
-    spot.y = std::clamp(spot.y, R, table_.width - R);
+    spot = step_on_table(table_, spot, by, params_.ball_radius);
     return true;
 }
 

@@ -1,0 +1,371 @@
+#pragma once
+// Random shots across every model, checked after every event: the stress test in `make test`
+// and the longer `make soak` share them. Nothing here uses Catch2, so that shots can be run on
+// several threads and their failures counted.
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <string>
+#include <termpool/rack.hpp>
+#include <termpool/random.hpp>
+#include <termpool/simulator.hpp>
+#include <termpool/table.hpp>
+#include <termpool/text_numbers.hpp>
+#include <thread>
+#include <vector>
+
+#include "core/collision.hpp"
+#include "physics_helpers.hpp"
+
+namespace termpool::test {
+
+/// One random shot: the setting, the balls at rest and the strike.
+struct StressShot {
+    std::uint64_t seed = 0;
+    Table table;
+    PhysicsParams params;
+    std::vector<Ball> balls;
+    Strike strike;
+};
+
+/// What went wrong in a shot, if anything: the first broken promise.
+enum class StressFailure {
+    none,
+    overlap,          ///< two balls overlap by more than 1e-9 m
+    off_table,        ///< a ball not pocketed is not on the table (rubber, capture line, outside)
+    energy,           ///< the energy rose beyond round-off
+    not_finite,       ///< a position or velocity is not a number
+    event_limit,      ///< the shot reached World::max_events
+    nondeterministic, ///< the same shot twice gave different bits
+};
+
+inline const char* stress_failure_name(StressFailure f) {
+    switch (f) {
+    case StressFailure::none:
+        return "none";
+    case StressFailure::overlap:
+        return "overlap";
+    case StressFailure::off_table:
+        return "off-table";
+    case StressFailure::energy:
+        return "energy";
+    case StressFailure::not_finite:
+        return "not-finite";
+    case StressFailure::event_limit:
+        return "event-limit";
+    case StressFailure::nondeterministic:
+        return "nondeterministic";
+    }
+    return "?";
+}
+
+/// How a checked shot went.
+struct StressReport {
+    std::size_t events = 0;
+    StressFailure failure = StressFailure::none;
+    std::size_t failed_event = 0;   ///< 1-based event after which the check failed
+    std::string detail;             ///< what was measured there
+    double worst_energy_rise = 0;   ///< largest rise over one event, J (0 when none)
+    double worst_relative_rise = 0; ///< the largest rise over the shot's energy
+};
+
+/// The shot for `seed`; one shot in `classic_one_in` uses a classic cloth model.
+inline StressShot make_stress_shot(std::uint64_t seed, std::uint64_t classic_one_in = 5) {
+    Random rng(seed * 0x9e3779b97f4a7c15ULL + 1);
+    StressShot shot;
+    shot.seed = seed;
+    const TableSize sizes[] = {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot};
+    PhysicsParams& p = shot.params;
+    if (rng.below(classic_one_in) == 0) {
+        switch (rng.below(3)) {
+        case 0:
+            p.friction = {FrictionKind::decay, rng.uniform(0.3, 3), 0, 0.005};
+            break;
+        case 1:
+            p.friction = {FrictionKind::constant, 0, rng.uniform(0.1, 2), 0.005};
+            break;
+        default:
+            p.friction = {FrictionKind::combined, rng.uniform(0.3, 3), rng.uniform(0.1, 2), 0.005};
+            break;
+        }
+    }
+    if (rng.below(2) == 0)
+        p.collision = CollisionModel::ideal;
+    if (rng.below(2) == 0)
+        p.cushion = CushionModel::ideal;
+    shot.table = make_table(sizes[rng.below(3)], p.ball_radius);
+    const Table& table = shot.table;
+    const double R = p.ball_radius;
+
+    if (rng.below(3) == 0) {
+        shot.balls = make_rack(table, p, rng.below(2) ? RackType::eight_ball : RackType::nine_ball,
+                               rng.next());
+    } else {
+        // Balls anywhere the table holds them, pocket mouths included; some frozen to another
+        // ball or to a rail (touching, or 1 nm off), some heavier or lighter.
+        const int count = 1 + static_cast<int>(rng.below(16));
+        for (int id = 0; id < count; ++id) {
+            for (int attempt = 0; attempt < 100; ++attempt) {
+                Ball b = ball_at(id, rng.uniform(-0.05, table.length + 0.05),
+                                 rng.uniform(-0.05, table.width + 0.05),
+                                 rng.below(4) == 0 ? rng.uniform(0.12, 0.25) : p.ball_mass);
+                const double off = rng.below(2) ? 0 : 1e-9;
+                switch (rng.below(5)) {
+                case 0:
+                    b.position.y = rng.below(2) ? R + off : table.width - R - off;
+                    break;
+                case 1:
+                    b.position.x = rng.below(2) ? R + off : table.length - R - off;
+                    break;
+                case 2:
+                case 3:
+                    if (!shot.balls.empty()) {
+                        const Ball& other = shot.balls[rng.below(shot.balls.size())];
+                        const double angle = rng.uniform(0, 2 * std::numbers::pi);
+                        b.position =
+                            other.position + Vec2{std::cos(angle), std::sin(angle)} * (2 * R + off);
+                    }
+                    break;
+                default:
+                    break;
+                }
+                if (!on_playing_surface(table, b.position, R))
+                    continue;
+                const bool clear = std::ranges::none_of(shot.balls, [&](const Ball& o) {
+                    return length(o.position - b.position) < 2 * R;
+                });
+                if (clear) {
+                    shot.balls.push_back(b);
+                    break;
+                }
+            }
+        }
+        if (shot.balls.empty() || shot.balls.front().id != 0)
+            shot.balls.insert(shot.balls.begin(),
+                              ball_at(0, table.head_string_x(), table.width / 2));
+        // The cue ball put in by hand may touch one already there: drop those it overlaps.
+        const Vec2 cue = shot.balls.front().position;
+        std::erase_if(shot.balls,
+                      [&](const Ball& b) { return b.id != 0 && length(b.position - cue) < 2 * R; });
+    }
+    const double speed = rng.below(5) == 0 ? max_strike_speed : rng.uniform(0, max_strike_speed);
+    shot.strike = {speed, rng.uniform(0, 360), rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5)};
+    return shot;
+}
+
+/// A shot's scenario text for `termpool simulate`, to reproduce a failure.
+inline std::string stress_scenario(const StressShot& shot) {
+    const auto number = [](double v) { return format_double(v); };
+    const PhysicsParams& p = shot.params;
+    std::string text = std::string("table ") + table_size_name(shot.table.size) + "\n";
+    switch (p.friction.kind) {
+    case FrictionKind::physical:
+        text += "friction physical\n";
+        break;
+    case FrictionKind::decay:
+        text += "friction decay " + number(p.friction.decay_rate) + "\n";
+        break;
+    case FrictionKind::constant:
+        text += "friction constant " + number(p.friction.deceleration) + "\n";
+        break;
+    case FrictionKind::combined:
+        text += "friction combined " + number(p.friction.decay_rate) + " " +
+                number(p.friction.deceleration) + "\n";
+        break;
+    }
+    text += p.collision == CollisionModel::ideal ? "collision ideal\n" : "collision physical\n";
+    text += p.cushion == CushionModel::ideal ? "cushion ideal\n" : "cushion physical\n";
+    for (const Ball& b : shot.balls)
+        text += "ball " + std::to_string(b.id) + " " + number(b.position.x) + " " +
+                number(b.position.y) + " mass=" + number(b.mass) + "\n";
+    text += "strike " + number(shot.strike.speed) + " " + number(shot.strike.angle_deg) + " " +
+            number(shot.strike.side) + " " + number(shot.strike.follow) + "\n";
+    return text;
+}
+
+namespace stress_detail {
+
+inline std::uint64_t mix(std::uint64_t h, double v) {
+    return (h ^ std::bit_cast<std::uint64_t>(v)) * 0x100000001b3ULL;
+}
+
+// Every bit of every ball, folded into one number.
+inline std::uint64_t state_hash(std::uint64_t h, const std::vector<Ball>& balls) {
+    for (const Ball& b : balls) {
+        for (const double v : {b.position.x, b.position.y, b.velocity.x, b.velocity.y,
+                               b.angular_velocity.x, b.angular_velocity.y, b.angular_velocity.z})
+            h = mix(h, v);
+        h = (h ^ static_cast<std::uint64_t>(b.state) ^
+             (static_cast<std::uint64_t>(b.pocket) << 8)) *
+            0x100000001b3ULL;
+    }
+    return h;
+}
+
+struct Run {
+    StressReport report;
+    std::uint64_t hash = 0xcbf29ce484222325ULL;
+};
+
+inline Run run_once(const StressShot& shot) {
+    Run run;
+    StressReport& r = run.report;
+    const double R = shot.params.ball_radius;
+    World world(shot.table, shot.params, shot.balls);
+    world.strike(shot.strike);
+    const std::vector<Ball> start = world.balls();
+    const double shot_energy = total_energy(start, R);
+    double heaviest = 0;
+    for (const Ball& b : start)
+        heaviest = std::max(heaviest, b.mass);
+    // How much energy one event may add, honestly two things. Every contact leaves its pair (or
+    // its ball and the cushion) parting at min_separation_speed at least (collision.cpp), so
+    // that round-off cannot find them in contact again at once. That kick raises the energy of
+    // the relative normal motion by up to (1/2) mu min_separation_speed^2, mu the pair's reduced
+    // mass, or the ball's own mass against a cushion: at most 1.25e-13 J for a 0.25 kg ball.
+    // Balls the classic cloths left touching at rest get it (about 2e-14 J was seen for two
+    // 0.17 kg balls parted at 5e-7 m/s). The rest is round-off in the sums of energies and
+    // impulses: a few ulp of the shot's energy (4 at most in 25,000 shots), bounded by 1e-14 of
+    // it, which is some 45 ulp.
+    const double allowed_rise =
+        0.5 * heaviest * core::min_separation_speed * core::min_separation_speed +
+        1e-14 * shot_energy;
+    double energy = shot_energy;
+    const auto fail = [&](StressFailure f, std::string detail) {
+        if (r.failure == StressFailure::none) {
+            r.failure = f;
+            r.failed_event = r.events;
+            r.detail = std::move(detail);
+        }
+    };
+    while (const auto e = world.step()) {
+        ++r.events;
+        const std::vector<Ball> now = world.balls();
+        run.hash = state_hash(mix(run.hash, e->time), now);
+        for (std::size_t i = 0; i < now.size(); ++i) {
+            const Ball& a = now[i];
+            if (a.state == MotionState::pocketed)
+                continue;
+            if (!std::isfinite(a.position.x) || !std::isfinite(a.position.y) ||
+                !std::isfinite(a.velocity.x) || !std::isfinite(a.velocity.y))
+                fail(StressFailure::not_finite, "ball " + std::to_string(a.id));
+            if (!on_playing_surface(shot.table, a.position, R))
+                fail(StressFailure::off_table,
+                     "ball " + std::to_string(a.id) + " at " + format_double(a.position.x) + " " +
+                         format_double(a.position.y) + ", rubber depth " +
+                         format_double(rubber_depth(shot.table, a.position, R)));
+            for (std::size_t j = i + 1; j < now.size(); ++j) {
+                const Ball& b = now[j];
+                if (b.state == MotionState::pocketed)
+                    continue;
+                const double overlap = 2 * R - length(a.position - b.position);
+                if (overlap > 1e-9)
+                    fail(StressFailure::overlap, "balls " + std::to_string(a.id) + " and " +
+                                                     std::to_string(b.id) + " by " +
+                                                     format_double(overlap) + " m");
+            }
+        }
+        const double e_now = total_energy(now, R);
+        const double rise = e_now - energy;
+        r.worst_energy_rise = std::max(r.worst_energy_rise, rise);
+        if (shot_energy > 0)
+            r.worst_relative_rise = std::max(r.worst_relative_rise, rise / shot_energy);
+        if (rise > allowed_rise)
+            fail(StressFailure::energy,
+                 "rose " + format_double(rise) + " J at " + event_kind_name(e->kind) + " " +
+                     std::to_string(e->ball) + " " + std::to_string(e->other) + " (allowed " +
+                     format_double(allowed_rise) + " J)");
+        energy = e_now;
+    }
+    if (r.events >= World::max_events)
+        fail(StressFailure::event_limit, std::to_string(r.events) + " events");
+    return run;
+}
+
+} // namespace stress_detail
+
+/// Runs the shot twice, checking after every event that no two balls overlap by more than
+/// 1e-9 m, every ball not pocketed is on the table (on_playing_surface), the energy does not
+/// rise beyond round-off, and both runs pass through the same bits.
+inline StressReport check_stress_shot(const StressShot& shot) {
+    const stress_detail::Run first = stress_detail::run_once(shot);
+    const stress_detail::Run second = stress_detail::run_once(shot);
+    StressReport report = first.report;
+    if (report.failure == StressFailure::none &&
+        (first.hash != second.hash || first.report.events != second.report.events)) {
+        report.failure = StressFailure::nondeterministic;
+        report.detail = std::to_string(first.report.events) + " and " +
+                        std::to_string(second.report.events) + " events";
+    }
+    return report;
+}
+
+/// Counts over many shots.
+struct StressTally {
+    std::size_t shots = 0, classic_shots = 0, events = 0, most_events = 0;
+    std::size_t failures[7] = {};   ///< by StressFailure
+    double worst_energy_rise = 0;   ///< J
+    double worst_relative_rise = 0; ///< of the shot's energy
+    /// The first failures met (seed, kind, detail, scenario), a few at most.
+    std::vector<std::string> examples;
+
+    std::size_t failed() const {
+        std::size_t n = 0;
+        for (std::size_t k = 1; k < 7; ++k)
+            n += failures[k];
+        return n;
+    }
+};
+
+/// Checks the shots of seeds first .. first + count - 1 on `threads` threads.
+inline StressTally run_stress(std::uint64_t first, std::uint64_t count, unsigned threads,
+                              std::uint64_t classic_one_in = 5) {
+    std::vector<StressTally> tallies(std::max(1u, threads));
+    std::vector<std::thread> crew;
+    for (std::size_t t = 0; t < tallies.size(); ++t) {
+        crew.emplace_back([&, t] {
+            StressTally& tally = tallies[t];
+            for (std::uint64_t k = t; k < count; k += tallies.size()) {
+                const StressShot shot = make_stress_shot(first + k, classic_one_in);
+                const StressReport r = check_stress_shot(shot);
+                ++tally.shots;
+                tally.classic_shots += shot.params.friction.kind != FrictionKind::physical;
+                tally.events += r.events;
+                tally.most_events = std::max(tally.most_events, r.events);
+                tally.worst_energy_rise = std::max(tally.worst_energy_rise, r.worst_energy_rise);
+                tally.worst_relative_rise =
+                    std::max(tally.worst_relative_rise, r.worst_relative_rise);
+                if (r.failure == StressFailure::none)
+                    continue;
+                ++tally.failures[static_cast<std::size_t>(r.failure)];
+                if (tally.examples.size() < 5)
+                    tally.examples.push_back("seed " + std::to_string(first + k) + ": " +
+                                             stress_failure_name(r.failure) + " after event " +
+                                             std::to_string(r.failed_event) + ": " + r.detail +
+                                             "\n" + stress_scenario(shot));
+            }
+        });
+    }
+    for (std::thread& t : crew)
+        t.join();
+    StressTally all;
+    for (const StressTally& t : tallies) {
+        all.shots += t.shots;
+        all.classic_shots += t.classic_shots;
+        all.events += t.events;
+        all.most_events = std::max(all.most_events, t.most_events);
+        all.worst_energy_rise = std::max(all.worst_energy_rise, t.worst_energy_rise);
+        all.worst_relative_rise = std::max(all.worst_relative_rise, t.worst_relative_rise);
+        for (std::size_t k = 0; k < 7; ++k)
+            all.failures[k] += t.failures[k];
+        for (const std::string& e : t.examples)
+            if (all.examples.size() < 5)
+                all.examples.push_back(e);
+    }
+    return all;
+}
+
+} // namespace termpool::test
