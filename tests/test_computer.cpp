@@ -1,8 +1,11 @@
 // The computer player: its search finds pots, its placements are legal, a seed replays it.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
 #include <termpool/computer.hpp>
 
+#include "physics_helpers.hpp"
 #include "rules_helpers.hpp"
 
 using namespace termpool;
@@ -129,4 +132,40 @@ TEST_CASE("hard and pro see a combination that wins the rack", "[computer]") {
         Game check = game;
         CHECK(check.play(shot.planned, shot.call).winner == 1);
     }
+}
+
+TEST_CASE("pro aims off the ghost ball to take out throw", "[computer]") {
+    // A long 35-degree cut into corner pocket 3: at the ghost-ball aim the object ball is thrown
+    // off the line of centres, towards the cue ball's way, by a degree or two.
+    const Vec2 out = out_of_pocket(3);
+    const Vec2 object = pocket_at(3) + out * 1.1;
+    const double cut = 35 * std::numbers::pi / 180;
+    const Vec2 along{-out.x * std::cos(cut) + out.y * std::sin(cut),
+                     -out.x * std::sin(cut) - out.y * std::cos(cut)};
+    const Vec2 cue = object - along * 0.6 - normalized(-out) * (2 * ball_radius);
+    const std::vector<Ball> balls =
+        with_extra({ball_at(0, cue.x, cue.y), ball_at(3, object.x, object.y)}, {9, 10});
+    Game game = position(GameType::eight_ball, balls, 1, Group::solids);
+    const double ghost = ghost_aim_deg(cue, object, pocket_at(3));
+    // How far off the pocket's line the object ball leaves the cue ball, degrees.
+    const auto miss_deg = [&](const Strike& strike) {
+        World world(game.table(), game.params(), balls);
+        world.strike(strike);
+        REQUIRE(step_until(world, EventKind::ball_ball).other == 3);
+        const Vec2 v = find_ball(world.balls(), 3).velocity;
+        const Vec2 want = -out;
+        return std::abs(std::atan2(cross(v, want), dot(v, want))) * 180 / std::numbers::pi;
+    };
+    ComputerPlayer computer(Level::pro, 11);
+    const ComputerShot shot = computer.shot(game);
+    INFO("aim " << shot.planned.angle_deg << ", ghost " << ghost);
+    REQUIRE(shot.call.call.ball == 3);
+    Strike plain = shot.planned;
+    plain.angle_deg = ghost;
+    const double thrown = miss_deg(plain);
+    INFO("thrown " << thrown << " degrees at the ghost-ball aim");
+    CHECK(thrown > 0.5);
+    CHECK(miss_deg(shot.planned) < thrown / 10);
+    Game check = game;
+    CHECK(std::ranges::count(check.play(shot.planned, shot.call).pocketed, 3) == 1);
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <termpool/computer.hpp>
+#include <termpool/simulator.hpp>
 
 namespace termpool {
 namespace {
@@ -114,6 +115,43 @@ double next_shot_quality(const Game& game) {
     return best;
 }
 
+// The ghost-ball aim sends the object ball along the line of centres, but it leaves a little
+// off it (throw, from the balls' friction) and the cue ball a little off the cue (squirt, from
+// side). Plays the strike once without noise up to the first contact and, when that is with
+// `object`, turns the ghost ball by the object ball's error: the aim that sends it at
+// `aim_point`, to first order. Otherwise the strike's own aim.
+double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue,
+                         const Ball& object, Vec2 aim_point) {
+    World world(game.table(), game.params(), game.balls());
+    if (!world.strike(strike))
+        return strike.angle_deg;
+    // A direct shot's first contact comes within a few events (motion transitions, spin).
+    for (int i = 0; i < 16; ++i) {
+        const std::optional<Event> e = world.step();
+        if (!e)
+            break;
+        if (e->kind == EventKind::cushion || e->kind == EventKind::jaw ||
+            e->kind == EventKind::pocket)
+            break;
+        if (e->kind != EventKind::ball_ball)
+            continue;
+        if (e->ball != 0 || e->other != object.id)
+            break;
+        const std::vector<Ball> after = world.balls();
+        const Ball* hit = find(after, object.id);
+        if (!hit || length(hit->velocity) == 0)
+            break;
+        const Vec2 want = normalized(aim_point - object.position);
+        const Vec2 got = normalized(hit->velocity);
+        const double error = std::atan2(cross(got, want), dot(got, want));
+        const Vec2 turned{want.x * std::cos(error) - want.y * std::sin(error),
+                          want.x * std::sin(error) + want.y * std::cos(error)};
+        const Vec2 ghost = object.position - turned * (2 * game.params().ball_radius);
+        return degrees(ghost - cue.position);
+    }
+    return strike.angle_deg;
+}
+
 } // namespace
 
 ComputerPlayer::ComputerPlayer(Level level, std::uint64_t seed) : level_(level), rng_(seed) {}
@@ -153,9 +191,13 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             blocked(game.balls(), object.position, aim_point, {0, object.id}, R))
             return;
         for (const double speed : at)
-            for (const double follow : spins)
-                candidates.push_back(
-                    {{speed, degrees(line), 0, follow}, {{object.id, pocket, false}}});
+            for (const double follow : spins) {
+                Strike strike{speed, degrees(line), 0, follow};
+                // Only the best player allows for throw: it is what sets pro above hard.
+                if (level_ == Level::pro)
+                    strike.angle_deg = corrected_aim_deg(game, strike, *cue, object, aim_point);
+                candidates.push_back({strike, {{object.id, pocket, false}}});
+            }
     };
     const Table& table = game.table();
     // Combinations: the legal ball driven into another, which drops. Only fairly full cuts on
@@ -242,20 +284,26 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     };
     for (Candidate& c : candidates)
         sample(c);
-    std::ranges::sort(candidates,
-                      [](const Candidate& x, const Candidate& y) { return x.mean() > y.mean(); });
+    // On equal means a called pot goes before a safety: a safety that happens to win the rack
+    // (the object ball driven on into the money ball) scores like the planned winning pot, but
+    // only the pot was aimed at it.
+    const auto better = [](const Candidate& x, const Candidate& y) {
+        if (x.mean() != y.mean())
+            return x.mean() > y.mean();
+        return !x.call.call.safety && y.call.call.safety;
+    };
+    std::ranges::sort(candidates, better);
     const std::size_t keep = std::max<std::size_t>(1, (candidates.size() + 2) / 3);
     if (candidates.size() > keep)
         candidates.resize(keep);
     for (Candidate& c : candidates)
         while (c.samples < samples_per_candidate(level_))
             sample(c);
-    for (const Candidate& c : candidates) {
-        if (c.mean() > best.score) {
-            best.score = c.mean();
-            best.planned = c.strike;
-            best.call = c.call;
-        }
+    if (!candidates.empty()) {
+        const Candidate& chosen = *std::ranges::min_element(candidates, better);
+        best.score = chosen.mean();
+        best.planned = chosen.strike;
+        best.call = chosen.call;
     }
     if (best.score == -1e9 && !game.legal_targets().empty()) {
         // Nothing pottable: hit the first legal ball softly.

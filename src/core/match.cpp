@@ -22,7 +22,7 @@ const char* match_error_text(MatchError error) {
     case MatchError::illegal_spot:
         return "the cue ball cannot go there";
     case MatchError::bad_strike:
-        return "the strike is out of range";
+        return "the strike is out of range or would need a jump shot";
     case MatchError::bad_call:
         return "no such ball or pocket to call";
     case MatchError::not_offered:
@@ -42,13 +42,15 @@ const char* match_error_text(MatchError error) {
 
 bool strike_in_range(const Strike& s) {
     return std::isfinite(s.speed) && std::isfinite(s.angle_deg) && std::isfinite(s.side) &&
-           std::isfinite(s.follow) && s.speed >= 0 && s.speed <= max_strike_speed &&
-           std::abs(s.side) <= 0.5 && std::abs(s.follow) <= 0.5;
+           std::isfinite(s.follow) && std::isfinite(s.elevation_deg) && s.speed >= 0 &&
+           s.speed <= max_strike_speed && std::abs(s.side) <= 0.5 && std::abs(s.follow) <= 0.5 &&
+           s.elevation_deg >= 0 && s.elevation_deg <= max_cue_elevation_deg;
 }
 
 namespace {
 
-// A record keeps the cloth model and the cue ball's mass: any other constant would be lost.
+// A record keeps the cloth model, the cue ball's mass and the cue: any other constant would be
+// lost.
 bool recordable(const PhysicsParams& p) {
     const PhysicsParams d;
     const FrictionModel& f = p.friction;
@@ -58,10 +60,11 @@ bool recordable(const PhysicsParams& p) {
          (f.kind == FrictionKind::decay || (std::isfinite(f.deceleration) && f.deceleration > 0)));
     return classic_constants_ok && f.rest_speed == d.friction.rest_speed &&
            std::isfinite(p.cue_ball_mass) && p.cue_ball_mass >= 0 &&
-           p.ball_radius == d.ball_radius && p.ball_mass == d.ball_mass &&
-           p.sliding_friction == d.sliding_friction && p.rolling_friction == d.rolling_friction &&
-           p.spin_friction == d.spin_friction && p.ball_restitution == d.ball_restitution &&
-           p.ball_friction == d.ball_friction && p.cushion_restitution == d.cushion_restitution &&
+           std::isfinite(p.cue_end_mass) && p.cue_end_mass >= 0 && p.ball_radius == d.ball_radius &&
+           p.ball_mass == d.ball_mass && p.sliding_friction == d.sliding_friction &&
+           p.rolling_friction == d.rolling_friction && p.spin_friction == d.spin_friction &&
+           p.ball_restitution == d.ball_restitution && p.ball_friction == d.ball_friction &&
+           p.cushion_restitution == d.cushion_restitution &&
            p.cushion_friction == d.cushion_friction &&
            p.cushion_height_ratio == d.cushion_height_ratio && p.gravity == d.gravity &&
            p.elastic_below_speed == d.elastic_below_speed && p.collision == d.collision &&
@@ -310,7 +313,7 @@ std::variant<PlayedShot, MatchError> Match::shoot(int player, const Strike& aske
     const Pending kind = pending().kind;
     if ((kind != Pending::place && kind != Pending::shoot) || !game_.ready_to_shoot())
         return MatchError::not_now;
-    if (!strike_in_range(strike))
+    if (strike_problem(strike, game_.params()))
         return MatchError::bad_strike;
     // What the record can say: no call, a safety, or a ball 1-15 into a pocket 1-6.
     ShotCall taken = call;
