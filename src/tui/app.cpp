@@ -159,6 +159,7 @@ void App::compose_aiming(View& v) const {
     v.time_power = aim_.time_power;
     v.side = aim_.side;
     v.follow = aim_.follow;
+    v.elevation_deg = aim_.elevation_deg;
     v.show_aid = aim_.show_aid;
     if (aim_.show_aid) {
         v.cue_path = aim_.preview.cue_path;

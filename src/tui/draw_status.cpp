@@ -1,6 +1,6 @@
 // The status rows under the table while aiming:
 //   power [██████▌     ] 3.4 m/s                 [ shoot ]
-//   spin: side +0.2 follow -0.3                  distance
+//   spin: side +0.2 follow -0.3 elev 30°         distance
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +43,16 @@ std::string format_offset(double value) {
     return s;
 }
 
+std::string format_elevation(double deg, bool utf8) {
+    const double tenths = std::isfinite(deg) ? std::round(std::clamp(deg, -999.0, 999.0) * 10) : 0;
+    char buffer[32];
+    if (std::fmod(tenths, 10) == 0)
+        std::snprintf(buffer, sizeof buffer, "%.0f", tenths / 10 + 0.0); // + 0.0: no "-0"
+    else
+        std::snprintf(buffer, sizeof buffer, "%.1f", tenths / 10);
+    return std::string("elev ") + buffer + (utf8 ? "\u00B0" : "deg");
+}
+
 void draw_status(const Frame& f) {
     const View& v = f.view;
     const Layout& l = f.layout;
@@ -69,8 +79,9 @@ void draw_status(const Frame& f) {
         p.text(l.button_x, l.button_y, "[ shoot ]",
                {Colour::black, Colour::highlight, true, !p.colour()}, l.button_width);
 
-    const std::string spin =
-        "spin: side " + format_offset(v.side) + " follow " + format_offset(v.follow);
+    const std::string spin = "spin: side " + format_offset(v.side) + " follow " +
+                             format_offset(v.follow) + " " +
+                             format_elevation(v.elevation_deg, p.utf8());
     const int used = p.text(x0, y + 1, spin, {}, width);
     const std::string mode = v.time_power ? "timed" : "distance";
     const int mode_w = display_width(mode);
