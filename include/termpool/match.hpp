@@ -58,7 +58,7 @@ enum class MatchError {
     wrong_player, ///< it is the other seat's turn (or no such seat)
     not_now,      ///< the match waits for another kind of action
     illegal_spot, ///< the cue ball may not go there
-    bad_strike,   ///< speed, tip offset or angle out of range, or not finite
+    bad_strike,   ///< a strike the simulator refuses (strike_problem says why)
     bad_call,     ///< a call of a ball or pocket that does not exist
     not_offered,  ///< the choice is not among those on offer
     bad_name,     ///< blank, too long, spaces at an end, or control characters
@@ -91,8 +91,9 @@ struct ComputerMove {
     Choice choice = Choice::play_on; ///< choose: the option taken
 };
 
-/// True when `strike` is one the simulator accepts: finite, speed 0 to max_strike_speed, tip
-/// offsets within half a radius.
+/// True when `strike`'s numbers are in the simulator's ranges: finite, speed 0 to
+/// max_strike_speed, tip offsets within half a radius, elevation 0 to max_cue_elevation_deg.
+/// The jump-shot limit depends on the physics as well: `strike_problem` checks both.
 bool strike_in_range(const Strike& strike);
 
 /// One game, or a race of games, between seats 1 and 2.

@@ -162,7 +162,7 @@ template <class Law> ClothModel classic_cloth() {
         // No spin, so the tip gives none. A ball's deceleration points straight back along its
         // way, so it never drives it back into a cushion it leaves; two moving balls it can
         // drive into each other (slow_pair_contact).
-        .tip_spin = [](const Strike&, Vec2, const PhysicsParams&) { return Vec3{}; },
+        .keeps_spin = false,
         .slow_pair_contact = slow_pair_contact<Law>,
         .slow_cushion_contact = [](Ball&, Vec2, const PhysicsParams&) {},
         .towards_cushion = physical_towards_cushion,

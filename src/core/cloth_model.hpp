@@ -39,8 +39,8 @@ struct ClothModel {
 
     // ---- what contacts leave
 
-    /// The spin the cue tip gives a ball it sends off in `direction`.
-    Vec3 (*tip_spin)(const Strike& strike, Vec2 direction, const PhysicsParams& params);
+    /// Whether the model keeps a ball's spin (the classic ones do not: the tip gives none).
+    bool keeps_spin;
     /// The cloth's part in a slow contact of two balls (`n` from a to b), after the impulse:
     /// balls the cloth drives into each other are pushed rather than bounced.
     void (*slow_pair_contact)(Ball& a, Ball& b, Vec2 n, const PhysicsParams& params);

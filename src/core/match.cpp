@@ -22,7 +22,7 @@ const char* match_error_text(MatchError error) {
     case MatchError::illegal_spot:
         return "the cue ball cannot go there";
     case MatchError::bad_strike:
-        return "the strike is out of range";
+        return "the strike is out of range or would need a jump shot";
     case MatchError::bad_call:
         return "no such ball or pocket to call";
     case MatchError::not_offered:
@@ -42,8 +42,9 @@ const char* match_error_text(MatchError error) {
 
 bool strike_in_range(const Strike& s) {
     return std::isfinite(s.speed) && std::isfinite(s.angle_deg) && std::isfinite(s.side) &&
-           std::isfinite(s.follow) && s.speed >= 0 && s.speed <= max_strike_speed &&
-           std::abs(s.side) <= 0.5 && std::abs(s.follow) <= 0.5;
+           std::isfinite(s.follow) && std::isfinite(s.elevation_deg) && s.speed >= 0 &&
+           s.speed <= max_strike_speed && std::abs(s.side) <= 0.5 && std::abs(s.follow) <= 0.5 &&
+           s.elevation_deg >= 0 && s.elevation_deg <= max_cue_elevation_deg;
 }
 
 namespace {
@@ -296,7 +297,7 @@ std::variant<PlayedShot, MatchError> Match::shoot(int player, const Strike& stri
     const Pending kind = pending().kind;
     if ((kind != Pending::place && kind != Pending::shoot) || !game_.ready_to_shoot())
         return MatchError::not_now;
-    if (!strike_in_range(strike))
+    if (strike_problem(strike, game_.params()))
         return MatchError::bad_strike;
     // What the record can say: no call, a safety, or a ball 1-15 into a pocket 1-6.
     ShotCall taken = call;

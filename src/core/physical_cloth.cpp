@@ -107,14 +107,6 @@ Ball apply_transition(const Ball& b, const PhysicsParams& p) {
     }
 }
 
-// Point impact: a tip offset of `o` R gives spin 5 v o / (2 R). Follow turns the ball forward
-// about the horizontal axis across the shot, right english clockwise from above.
-Vec3 tip_spin(const Strike& strike, Vec2 direction, const PhysicsParams& p) {
-    const double spin_per_offset = 5.0 * strike.speed / (2.0 * p.ball_radius);
-    const Vec2 follow_axis = perpendicular(direction);
-    return lift(follow_axis * (strike.follow * spin_per_offset), -strike.side * spin_per_offset);
-}
-
 } // namespace
 
 Vec2 slip_velocity(const Ball& b, double radius) {
@@ -159,7 +151,7 @@ ClothModel physical_cloth() {
         .apply_transition = apply_transition,
         .settle_motion_state = physical_settle_motion_state,
         .acceleration = physical_acceleration,
-        .tip_spin = tip_spin,
+        .keeps_spin = true,
         .slow_pair_contact = resolve_physical_push,
         .slow_cushion_contact = resolve_physical_slow_cushion,
         .towards_cushion = physical_towards_cushion,
