@@ -47,6 +47,22 @@ void add_point(std::vector<Vec2>& path, Vec2 p) {
         path.push_back(p);
 }
 
+// `path` without the points that lie on the line between their neighbours (to a micrometre): a
+// straight stretch is drawn as one line, dot for dot as the straight aid draws it.
+std::vector<Vec2> without_straight_points(const std::vector<Vec2>& path) {
+    constexpr double on_line = 1e-6; // m
+    if (path.size() <= 2)
+        return path;
+    std::vector<Vec2> out{path.front()};
+    for (std::size_t i = 1; i + 1 < path.size(); ++i) {
+        const Vec2 d = normalized(path[i + 1] - out.back());
+        if (std::fabs(cross(d, path[i] - out.back())) > on_line)
+            out.push_back(path[i]);
+    }
+    out.push_back(path.back());
+    return out;
+}
+
 } // namespace
 
 AimPreview preview_strike(const Table& table, const PhysicsParams& params,
@@ -88,6 +104,7 @@ AimPreview preview_strike(const Table& table, const PhysicsParams& params,
     }
     const Vec2 contact = cue_at(end_time).position;
     add_point(out.cue_path, contact);
+    out.cue_path = without_straight_points(out.cue_path);
     if (out.cue_path.size() < 2) // a frozen hit: no path to draw, but its direction
         out.cue_path = {cue->position, contact};
     if (!end)

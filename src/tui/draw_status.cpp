@@ -1,6 +1,7 @@
 // The status rows under the table while aiming:
 //   power [██████▌     ] 3.4 m/s                 [ shoot ]
 //   spin: side +0.2 follow -0.3 elev 30°         distance
+// (the spin line shorter where the rows are narrow: "spin +0.2 -0.3 elev 30°")
 
 #include <algorithm>
 #include <cmath>
@@ -79,9 +80,18 @@ void draw_status(const Frame& f) {
         p.text(l.button_x, l.button_y, "[ shoot ]",
                {Colour::black, Colour::highlight, true, !p.colour()}, l.button_width);
 
-    const std::string spin = "spin: side " + format_offset(v.side) + " follow " +
-                             format_offset(v.follow) + " " +
-                             format_elevation(v.elevation_deg, p.utf8());
+    // The longest form that fits: the narrowest status rows (28 columns) take the last whole.
+    const std::string side = format_offset(v.side), follow = format_offset(v.follow),
+                      elev = format_elevation(v.elevation_deg, p.utf8());
+    const std::string forms[] = {"spin: side " + side + " follow " + follow + " " + elev,
+                                 "side " + side + " follow " + follow + " " + elev,
+                                 "spin " + side + " " + follow + " " + elev};
+    std::string spin = forms[2];
+    for (const std::string& form : forms)
+        if (display_width(form) <= width) {
+            spin = form;
+            break;
+        }
     const int used = p.text(x0, y + 1, spin, {}, width);
     const std::string mode = v.time_power ? "timed" : "distance";
     const int mode_w = display_width(mode);
