@@ -78,9 +78,11 @@ TEST_CASE("hall protocol: every client message reads back", "[hall]") {
     client_round_trip(Act{action_of("place 0.6 0.5")});
     client_round_trip(Act{action_of("shot 12 0 0 0 call 1 3")});
     client_round_trip(Act{action_of("shot 3.25 181.5 -0.25 0.5 safety")});
+    client_round_trip(Act{action_of("shot 1.5 10 0.3 0 elevation 30 call 1 3")});
     client_round_trip(Act{action_of("choose play-on")});
     client_round_trip(NextRack{});
     client_round_trip(Aim{Strike{7.5, 123.456, 0.1, -0.2}});
+    client_round_trip(Aim{Strike{1.25, -30, -0.35, 0.1, 42.5}});
     client_round_trip(Chat{"good shot, 100% — ünïcödé"});
     client_round_trip(SeatComputer{2, Level::pro});
     client_round_trip(SeatComputer{1, std::nullopt});
@@ -123,6 +125,7 @@ TEST_CASE("hall protocol: every server message reads back", "[hall]") {
     server_round_trip(ActionDone{2, 7, 1, action_of("rack 2 1234")});
     server_round_trip(ActionDone{2, 8, 0, action_of("shot 12 0 0 0 call 1 3 push-out")});
     server_round_trip(AimShown{2, 1, Strike{1, 2, 0.5, -0.5}});
+    server_round_trip(AimShown{2, 2, Strike{1, 2, 0.5, -0.5, max_cue_elevation_deg}});
     server_round_trip(ChatShown{2, "Ann", "hi there"});
     server_round_trip(Pong{});
 }
@@ -153,12 +156,12 @@ TEST_CASE("hall protocol: malformed client lines are refused", "[hall]") {
         "ping ",
         "ping extra",
         "PING",
-        "hello 1 - ",
-        "hello 1 -",
-        "hello 1 abc Ann",
-        "hello 1 0123456789ABCDEF0123456789ABCDEF Ann",
-        "hello 1 - %20Ann",
-        "hello 1 - Ann%",
+        "hello 2 - ",
+        "hello 2 -",
+        "hello 2 abc Ann",
+        "hello 2 0123456789ABCDEF0123456789ABCDEF Ann",
+        "hello 2 - %20Ann",
+        "hello 2 - Ann%",
         "hello one - Ann",
         "create 10ball 9ft 1",
         "create 8ball 10ft 1",
@@ -178,10 +181,14 @@ TEST_CASE("hall protocol: malformed client lines are refused", "[hall]") {
         "act shot 12 0 0.9 0",
         "act place x y",
         "act choose dance",
-        "aim 0 21 0 0",
-        "aim 0 1 0.6 0",
-        "aim inf 1 0 0",
-        "aim 0 1 0",
+        "aim 0 21 0 0 0",
+        "aim 0 1 0.6 0 0",
+        "aim inf 1 0 0 0",
+        "aim 0 1 0 0",
+        "aim 0 1 0 0 -1",
+        "aim 0 1 0 0 81",
+        "aim 0 1 0 0 nan",
+        "act shot 1 0 0 0 elevation 90",
         "chat",
         "chat a b",
         "chat %09",
@@ -213,15 +220,18 @@ TEST_CASE("hall protocol: oversized lines and other versions", "[hall]") {
     const std::string fits = "record 1 " + std::string(max_line_bytes - 1 - 9, 'x');
     CHECK(std::holds_alternative<ServerMessage>(parse_server(fits)));
 
-    CHECK(client_refusal("hello 2 - Ann") == ErrorCode::version);
+    // Version 1 had no elevation in `aim`: its clients are turned away.
+    CHECK(client_refusal("hello 1 - Ann") == ErrorCode::version);
+    CHECK(client_refusal("hello 3 - Ann") == ErrorCode::version);
     CHECK(client_refusal("hello 0 - Ann") == ErrorCode::version);
-    CHECK(client_refusal("hello 2 some future format") == ErrorCode::version);
-    CHECK(server_refusal("welcome 2 " + kToken) == ErrorCode::version);
+    CHECK(client_refusal("hello 3 some future format") == ErrorCode::version);
+    CHECK(server_refusal("welcome 1 " + kToken) == ErrorCode::version);
+    CHECK(server_refusal("welcome 3 " + kToken) == ErrorCode::version);
 }
 
 TEST_CASE("hall protocol: malformed server lines are refused", "[hall]") {
     const std::vector<std::string> bad = {
-        "welcome 1 xyz",
+        "welcome 2 xyz",
         "error nonsense oops",
         "error refused tab\there",
         "table 1 8ball 9ft 1 waiting empty Ann empty - 0",
@@ -235,7 +245,8 @@ TEST_CASE("hall protocol: malformed server lines are refused", "[hall]") {
         "action 1 1 fedcba9876543210 fly away",
         "seat 1 0 empty -",
         "chat 1 Ann",
-        "aim 1 1 0 1 0",
+        "aim 1 1 0 1 0 0",
+        "aim 1 1 0 1 0 0 95",
         "record 1",
     };
     for (const std::string& line : bad)

@@ -190,6 +190,38 @@ TEST_CASE("strike with and without tip offsets", "[scenario]") {
     CHECK(parsed("ball 0 0.5 0.5\nstrike 0 0").strike->speed == 0);
 }
 
+TEST_CASE("strike takes the cue's elevation as a fifth field; cue sets the end mass",
+          "[scenario][cue]") {
+    const Scenario level = parsed("ball 0 0.5 0.5\nstrike 1 0 0.2 0\n");
+    CHECK(level.strike->elevation_deg == 0);
+    CHECK(level.setup.physics.cue_end_mass == termpool::standard_shaft_end_mass);
+    const Scenario raised = parsed("ball 0 0.5 0.5\nstrike 1 0 0.2 0 35.5\ncue low-deflection\n");
+    CHECK(raised.strike->elevation_deg == 35.5);
+    CHECK(raised.setup.physics.cue_end_mass == termpool::low_deflection_end_mass);
+    CHECK(parsed("cue none\n").setup.physics.cue_end_mass == 0);
+    CHECK(parsed("cue standard\n").setup.physics.cue_end_mass == termpool::standard_shaft_end_mass);
+    CHECK(parsed("cue 0.006\n").setup.physics.cue_end_mass == 0.006);
+    CHECK(parsed("cue 0\n").setup.physics.cue_end_mass == 0);
+}
+
+TEST_CASE("a strike out of the cue's range or needing a jump shot is refused at its line",
+          "[scenario][cue]") {
+    check_refusals({
+        {"ball 0 1 1\nstrike 1 0 0 0 80.5\n", 2, "elevation 80.5 is outside 0..80 degrees"},
+        {"ball 0 1 1\nstrike 1 0 0 0 -1\n", 2, "elevation -1 is outside"},
+        {"ball 0 1 1\nstrike 1 0 0 0 x\n", 2, "elevation 'x' is not a number"},
+        {"ball 0 1 1\nstrike 1 0 0 0 nan\n", 2, "not finite"},
+        {"cue -0.001\n", 1, "cue end mass must be >= 0"},
+        {"cue inf\n", 1, "not finite"},
+        {"cue none\ncue none\n", 2, "more than one 'cue' line"},
+        // 1.73 m/s at 60 degrees is the most before the ball would jump off the slate.
+        {"ball 0 1 1\n\nstrike 3 0 0 0 60\n", 3, "at most 1.73 m/s"},
+        // Gravity comes after the strike, and still counts: a weaker pull lets the ball fly.
+        {"ball 0 1 1\nstrike 1.5 0 0 0 60\nparam g 5\n", 2, "jump"},
+    });
+    CHECK(parsed("ball 0 1 1\nstrike 1.7 0 0 0 60\n").strike->elevation_deg == 60);
+}
+
 TEST_CASE("balls that touch exactly are allowed", "[scenario]") {
     CHECK(parsed("param R 0.025\nball 1 1 0.5\nball 2 1.05 0.5\n").balls.size() == 2);
     // On the cushion line is still on the table.
@@ -227,7 +259,10 @@ TEST_CASE("unknown directives and wrong field counts name the line", "[scenario]
         {"strike\n", 1, "missing field"},
         {"ball 0 1 1\nstrike 1\n", 2, "missing field"},
         {"ball 0 1 1\nstrike 1 0 0.1\n", 2, "missing field"},
-        {"ball 0 1 1\nstrike 1 0 0.1 0.1 0\n", 2, "extra field"},
+        {"ball 0 1 1\nstrike 1 0 0.1 0.1 0 0\n", 2, "extra field"},
+        {"cue\n", 1, "missing field"},
+        {"cue standard 1\n", 1, "extra field"},
+        {"cue carbon\n", 1, "unknown cue 'carbon'"},
     });
 }
 

@@ -102,9 +102,9 @@ public:
     /// A new match set up as `header` says (its setup, seed, breaker, seats, race and break
     /// rule; its actions are not played, see `replay`), or why not: a breaker other than 1 or
     /// 2 (wrong_player), a bad name, a race outside 0 to max_race_to, or physics the record
-    /// cannot keep (bad_setup: a record keeps the cloth model and the cue ball's mass, the other
-    /// constants must be the defaults). A computer seat's decisions come from `computer_seed` +
-    /// the seat's number.
+    /// cannot keep (bad_setup: a record keeps the cloth model, the cue ball's mass and the cue, the
+    /// other constants must be the defaults). A computer seat's decisions come from `computer_seed`
+    /// + the seat's number.
     static std::variant<Match, MatchError> start(const GameRecord& header,
                                                  std::uint64_t computer_seed = 0);
 

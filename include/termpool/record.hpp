@@ -17,9 +17,11 @@
 
 namespace termpool {
 
-/// Newest version of the text form, read and written by this build. Version 2 added races;
-/// a single game is still written as version 1, so that older builds read it.
-inline constexpr int record_version = 2;
+/// Newest version of the text form, read and written by this build. Version 2 added races,
+/// version 3 the cue (a `cue` line for a shaft other than the standard one, a shot's
+/// `elevation`). A record is written in the oldest version that holds it, so that older builds
+/// read it.
+inline constexpr int record_version = 3;
 
 /// One thing a player did, or the start of a match's next rack.
 struct RecordedAction {

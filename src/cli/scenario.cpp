@@ -280,8 +280,8 @@ Problem tip_offset(std::string_view text, std::string_view what, double& out) {
 }
 
 Problem parse_strike(const Line& line, Draft& draft) {
-    constexpr const char* usage = "strike V PHI [A B]";
-    if (Problem p = arity(line, 2, 4, usage))
+    constexpr const char* usage = "strike V PHI [A B [E]]";
+    if (Problem p = arity(line, 2, 5, usage))
         return p;
     if (line.arguments() == 3)
         return arity(line, 4, 4, usage);
@@ -295,13 +295,45 @@ Problem parse_strike(const Line& line, Draft& draft) {
                format_number(max_strike_speed) + " m/s";
     if (Problem p = number(line.arg(1), "angle", s.angle_deg))
         return p;
-    if (line.arguments() == 4) {
+    if (line.arguments() >= 4) {
         if (Problem p = tip_offset(line.arg(2), "side offset", s.side))
             return p;
         if (Problem p = tip_offset(line.arg(3), "follow offset", s.follow))
             return p;
     }
+    if (line.arguments() == 5) {
+        if (Problem p = number(line.arg(4), "elevation", s.elevation_deg))
+            return p;
+        if (s.elevation_deg < 0 || s.elevation_deg > max_cue_elevation_deg)
+            return "elevation " + std::string(line.arg(4)) + " is outside 0.." +
+                   format_number(max_cue_elevation_deg) + " degrees";
+    }
     draft.strike_line = line.number;
+    return {};
+}
+
+Problem parse_cue(const Line& line, Draft& draft) {
+    if (Problem p = arity(line, 1, 1, "cue standard|low-deflection|none|KG"))
+        return p;
+    if (Problem p = once(draft, "cue", line))
+        return p;
+    double& end_mass = draft.setup.physics.cue_end_mass;
+    const std::string_view word = line.arg(0);
+    if (word == "standard") {
+        end_mass = standard_shaft_end_mass;
+    } else if (word == "low-deflection") {
+        end_mass = low_deflection_end_mass;
+    } else if (word == "none") {
+        end_mass = 0;
+    } else {
+        if (!parse_double(word))
+            return "unknown cue " + quoted(word) +
+                   " (expected standard, low-deflection, none or an end mass in kg)";
+        if (Problem p = number(word, "cue end mass", end_mass))
+            return p;
+        if (end_mass < 0)
+            return "cue end mass must be >= 0 (got " + std::string(word) + ")";
+    }
     return {};
 }
 
@@ -412,7 +444,7 @@ constexpr Directive directives[] = {
     {"friction", parse_friction}, {"param", parse_param},         {"ball", parse_ball},
     {"rack", parse_rack},         {"strike", parse_strike},       {"game", parse_game},
     {"shooter", parse_shooter},   {"groups", parse_groups},       {"break", parse_break},
-    {"call", parse_call},         {"push-out", parse_push_out},
+    {"call", parse_call},         {"push-out", parse_push_out},   {"cue", parse_cue},
 };
 
 /// The directives that give a scenario a game context, in the order they are documented.
@@ -594,6 +626,11 @@ ScenarioResult build(const Draft& draft) {
         std::any_of(placed.begin(), placed.end(), [](const Placed& p) { return p.ball.id == 0; });
     if (draft.strike_line && !has_cue)
         return ScenarioError{*draft.strike_line, "strike without a cue ball (no ball 0)"};
+    // Only now are the ball's size, gravity and the cue final, on which the jump limit depends.
+    if (draft.strike_line) {
+        if (const auto problem = strike_problem(draft.strike, scenario.setup.physics))
+            return ScenarioError{*draft.strike_line, *problem};
+    }
 
     if (auto error = check_game(draft, placed))
         return *error;

@@ -49,7 +49,8 @@ bool strike_in_range(const Strike& s) {
 
 namespace {
 
-// A record keeps the cloth model and the cue ball's mass: any other constant would be lost.
+// A record keeps the cloth model, the cue ball's mass and the cue: any other constant would be
+// lost.
 bool recordable(const PhysicsParams& p) {
     const PhysicsParams d;
     const FrictionModel& f = p.friction;
@@ -59,10 +60,11 @@ bool recordable(const PhysicsParams& p) {
          (f.kind == FrictionKind::decay || (std::isfinite(f.deceleration) && f.deceleration > 0)));
     return classic_constants_ok && f.rest_speed == d.friction.rest_speed &&
            std::isfinite(p.cue_ball_mass) && p.cue_ball_mass >= 0 &&
-           p.ball_radius == d.ball_radius && p.ball_mass == d.ball_mass &&
-           p.sliding_friction == d.sliding_friction && p.rolling_friction == d.rolling_friction &&
-           p.spin_friction == d.spin_friction && p.ball_restitution == d.ball_restitution &&
-           p.ball_friction == d.ball_friction && p.cushion_restitution == d.cushion_restitution &&
+           std::isfinite(p.cue_end_mass) && p.cue_end_mass >= 0 && p.ball_radius == d.ball_radius &&
+           p.ball_mass == d.ball_mass && p.sliding_friction == d.sliding_friction &&
+           p.rolling_friction == d.rolling_friction && p.spin_friction == d.spin_friction &&
+           p.ball_restitution == d.ball_restitution && p.ball_friction == d.ball_friction &&
+           p.cushion_restitution == d.cushion_restitution &&
            p.cushion_friction == d.cushion_friction &&
            p.cushion_height_ratio == d.cushion_height_ratio && p.gravity == d.gravity &&
            p.elastic_below_speed == d.elastic_below_speed && p.collision == d.collision &&

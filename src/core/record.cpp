@@ -57,6 +57,39 @@ bool needs_version_2(const GameRecord& r) {
            });
 }
 
+// What version 2 did not have: a cue other than the standard shaft, a raised cue.
+bool needs_version_3(const GameRecord& r) {
+    return r.setup.physics.cue_end_mass != standard_shaft_end_mass ||
+           std::any_of(r.actions.begin(), r.actions.end(), [](const auto& a) {
+               return a.kind == RecordedAction::Kind::shot && a.strike.elevation_deg != 0;
+           });
+}
+
+int version_needed(const GameRecord& r) {
+    return needs_version_3(r) ? 3 : needs_version_2(r) ? 2 : 1;
+}
+
+std::string cue_text(double end_mass) {
+    if (end_mass == standard_shaft_end_mass)
+        return "standard";
+    if (end_mass == low_deflection_end_mass)
+        return "low-deflection";
+    return end_mass == 0 ? "none" : number(end_mass);
+}
+
+std::optional<double> to_cue_end_mass(std::string_view s) {
+    if (s == "standard")
+        return standard_shaft_end_mass;
+    if (s == "low-deflection")
+        return low_deflection_end_mass;
+    if (s == "none")
+        return 0.0;
+    const auto m = to_double(s);
+    if (!m || *m < 0)
+        return std::nullopt;
+    return m;
+}
+
 // An action line's fields: the action, or what is wrong with it; nothing when the fields are
 // not an action line (another key, or the wrong number of fields).
 std::optional<std::variant<RecordedAction, std::string>>
@@ -103,7 +136,13 @@ read_action(const std::vector<std::string_view>& f) {
     a.strike = {*v, *phi, *side, *follow};
     std::size_t i = 5;
     while (i < f.size()) {
-        if (f[i] == "safety") {
+        if (f[i] == "elevation" && i + 1 < f.size()) {
+            const auto e = to_double(f[i + 1]);
+            if (!e || *e < 0 || *e > max_cue_elevation_deg)
+                return "bad elevation";
+            a.strike.elevation_deg = *e;
+            i += 2;
+        } else if (f[i] == "safety") {
             a.call.call.safety = true;
             ++i;
         } else if (f[i] == "push-out") {
@@ -134,6 +173,8 @@ std::string format_action(const RecordedAction& a) {
     case RecordedAction::Kind::shot: {
         std::string out = "shot " + number(a.strike.speed) + " " + number(a.strike.angle_deg) +
                           " " + number(a.strike.side) + " " + number(a.strike.follow);
+        if (a.strike.elevation_deg != 0)
+            out += " elevation " + number(a.strike.elevation_deg);
         if (a.call.call.safety)
             out += " safety";
         else if (a.call.call.ball != 0)
@@ -150,8 +191,7 @@ std::string format_action(const RecordedAction& a) {
 }
 
 std::string format_record(const GameRecord& r) {
-    std::string out =
-        "termpool-record " + std::to_string(needs_version_2(r) ? record_version : 1) + "\n";
+    std::string out = "termpool-record " + std::to_string(version_needed(r)) + "\n";
     out += std::string("game ") + game_type_name(r.setup.game) + "\n";
     out += std::string("table ") + table_size_name(r.setup.table) + "\n";
     out += "seed " + std::to_string(r.seed) + "\n";
@@ -165,6 +205,8 @@ std::string format_record(const GameRecord& r) {
         out += "friction " + format_friction(r.setup.physics.friction) + "\n";
     if (r.setup.physics.cue_ball_mass > 0)
         out += "cue-ball-mass " + number(r.setup.physics.cue_ball_mass) + "\n";
+    if (r.setup.physics.cue_end_mass != standard_shaft_end_mass)
+        out += "cue " + cue_text(r.setup.physics.cue_end_mass) + "\n";
     if (r.race_to > 1) {
         out += "race " + std::to_string(r.race_to) + "\n";
         out += std::string("breaks ") + break_rule_name(r.break_rule) + "\n";
@@ -218,6 +260,8 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
         auto want = [&](std::size_t n) { return f.size() == n; };
         if (version < 2 && (key == "race" || key == "breaks" || key == "rack"))
             return fail("'" + std::string(key) + "' lines need record version 2");
+        if (version < 3 && key == "cue")
+            return fail("'cue' lines need record version 3");
         if (key == "game" && want(2)) {
             const auto g = parse_game_type(std::string(f[1]));
             if (!g)
@@ -271,6 +315,11 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
             if (!m || *m <= 0)
                 return fail("cue-ball-mass must be a positive number");
             r.setup.physics.cue_ball_mass = *m;
+        } else if (key == "cue" && want(2)) {
+            const auto m = to_cue_end_mass(f[1]);
+            if (!m)
+                return fail("cue must be standard, low-deflection, none or an end mass in kg");
+            r.setup.physics.cue_end_mass = *m;
         } else if (key == "race" && want(2)) {
             const auto n = to_u64(f[1]);
             if (!n || *n < 1 || *n > static_cast<std::uint64_t>(max_race_to))
@@ -285,6 +334,8 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
         } else if (auto action = read_action(f)) {
             if (const std::string* problem = std::get_if<std::string>(&*action))
                 return fail(*problem);
+            if (version < 3 && std::get<RecordedAction>(*action).strike.elevation_deg != 0)
+                return fail("a shot's elevation needs record version 3");
             std::get<RecordedAction>(*action).line = line_number;
             r.actions.push_back(std::get<RecordedAction>(*action));
         } else if (key == "end" && want(1)) {

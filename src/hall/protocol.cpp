@@ -191,6 +191,7 @@ public:
         s.speed = real(0, max_strike_speed, "a speed");
         s.side = real(-0.5, 0.5, "a side offset");
         s.follow = real(-0.5, 0.5, "a follow offset");
+        s.elevation_deg = real(0, max_cue_elevation_deg, "an elevation");
         return s;
     }
     std::optional<std::string_view> rest() {
@@ -253,7 +254,7 @@ template <class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
 
 std::string strike_words(const Strike& s) {
     return number(s.angle_deg) + " " + number(s.speed) + " " + number(s.side) + " " +
-           number(s.follow);
+           number(s.follow) + " " + number(s.elevation_deg);
 }
 
 } // namespace

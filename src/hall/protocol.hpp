@@ -21,7 +21,7 @@
 ///   leave                             leave the table (a seat in a started game stays, away)
 ///   act ACTION                        place / shot / choose, as `format_action` writes it
 ///   next-rack                         rack the next rack of a race
-///   aim DEG SPEED SIDE FOLLOW         the shooter's cue as it aims (a Strike, not played)
+///   aim DEG SPEED SIDE FOLLOW ELEV    the shooter's cue as it aims (a Strike, not played)
 ///   chat TEXT                         to the table: 1..200 characters, no control characters
 ///   computer SEAT LEVEL|none          seat (or unseat) the computer in an empty seat (a
 ///                                     player seated at the table only)
@@ -51,7 +51,7 @@
 ///   seat TABLE SEAT KIND NAME         a seat changed (sat, away, back, computer, freed)
 ///   action TABLE SEQ HASH ACTION      the server applied ACTION as the table's action SEQ
 ///                                     (from 1); HASH is the state after it
-///   aim TABLE SEAT DEG SPEED SIDE FOLLOW
+///   aim TABLE SEAT DEG SPEED SIDE FOLLOW ELEV
 ///                                     the shooter's cue, at most every 50 ms
 ///   chat TABLE NAME TEXT              a chat line at the table
 ///   pong                              the answer to ping
@@ -70,8 +70,9 @@
 
 namespace termpool::hall {
 
-/// The protocol version this build speaks; `hello` and `welcome` carry it.
-inline constexpr int protocol_version = 1;
+/// The protocol version this build speaks; `hello` and `welcome` carry it. Version 2 added the
+/// cue's elevation to `aim` (and shots' `elevation` field, from the record's version 3).
+inline constexpr int protocol_version = 2;
 /// The longest line, in bytes, including its '\n'.
 inline constexpr std::size_t max_line_bytes = 4096;
 /// The longest chat line, in characters (UTF-8 code points).
@@ -139,7 +140,7 @@ struct Act {
 };
 /// `next-rack`.
 struct NextRack {};
-/// `aim DEG SPEED SIDE FOLLOW`: the strike as the shooter aims it; each value in the
+/// `aim DEG SPEED SIDE FOLLOW ELEV`: the strike as the shooter aims it; each value in the
 /// simulator's range (`strike_in_range`).
 struct Aim {
     Strike strike; ///< not played, only shown
@@ -268,7 +269,7 @@ struct ActionDone {
     std::uint64_t hash = 0; ///< Match::state_hash after it
     RecordedAction action;  ///< what was applied (a rack action included)
 };
-/// `aim TABLE SEAT DEG SPEED SIDE FOLLOW`.
+/// `aim TABLE SEAT DEG SPEED SIDE FOLLOW ELEV`.
 struct AimShown {
     int table = 1; ///< the table
     int seat = 1;  ///< the shooter

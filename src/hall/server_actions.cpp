@@ -253,8 +253,14 @@ void Server::State::on_act(Client& client, const RecordedAction& action) {
                           "this game has had " + std::to_string(options.max_actions) +
                               " actions, the most a table keeps: no more are taken");
     Match next = table->match;
-    if (const MatchError error = play(next, client.seat, action); error != MatchError::none)
-        return send_error(client, ErrorCode::refused, match_error_text(error));
+    if (const MatchError error = play(next, client.seat, action); error != MatchError::none) {
+        // A refused strike is told in the simulator's words (which limit, how far off).
+        const auto why =
+            action.kind == RecordedAction::Kind::shot && error == MatchError::bad_strike
+                ? strike_problem(action.strike, table->match.setup().physics)
+                : std::nullopt;
+        return send_error(client, ErrorCode::refused, why ? *why : match_error_text(error));
+    }
     propose(*table, std::move(next), Proposal::From::person, client.id, client.seat);
 }
 
