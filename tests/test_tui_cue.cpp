@@ -327,3 +327,28 @@ TEST_CASE("the drawn aid turns with squirt: right english sends the line up the 
     CHECK(right < centre - 2); // squirt to the left of the cue: up, seen from the head
     CHECK(left > centre + 2);
 }
+
+TEST_CASE("the aid ends where a soft shot stops, and starts at once at a frozen ball",
+          "[tui][cue]") {
+    // Too soft to reach the far rail: the path ends where the simulated ball comes to rest.
+    const std::vector<Ball> alone = {ball_at(0, 0.4, 0.635)};
+    const Strike soft{0.3, 0.0, 0.2, 0.0, 0.0};
+    const AimPreview short_of = preview_strike(table, params, alone, soft);
+    const ShotResult rest = simulate_shot(table, params, alone, soft);
+    REQUIRE(short_of.cue_path.size() >= 2);
+    CHECK(short_of.cue_path.back() == rest.balls[0].position);
+    CHECK_FALSE(short_of.has_ghost);
+    CHECK(short_of.cushion == -1);
+    // A cue ball touching the object ball: the contact is at once, where the cue ball lies.
+    const double R = params.ball_radius;
+    const std::vector<Ball> frozen = {ball_at(0, 1.0, 0.6), ball_at(5, 1.0 + 2 * R, 0.6)};
+    const AimPreview at_once = preview_strike(table, params, frozen, {1.0, 10.0});
+    REQUIRE(at_once.has_ghost);
+    CHECK(at_once.object_ball == 5);
+    CHECK(length(at_once.ghost - frozen[0].position) < 1e-9);
+    REQUIRE(at_once.object_path.size() == 2);
+    CHECK(direction_deg(at_once.object_path[0], at_once.object_path[1]) == Approx(0).margin(1e-6));
+    // Aimed 10 degrees above the line of centres: the cue ball leaves along the tangent, upwards.
+    REQUIRE(at_once.deflect_path.size() == 2);
+    CHECK(at_once.deflect_path[1].y > at_once.deflect_path[0].y);
+}
