@@ -105,7 +105,7 @@ AimPreview preview_strike(const Table& table, const PhysicsParams& params,
     const Vec2 contact = cue_at(end_time).position;
     add_point(out.cue_path, contact);
     out.cue_path = without_straight_points(out.cue_path);
-    if (out.cue_path.size() < 2) // a frozen hit: no path to draw, but its direction
+    if (out.cue_path.size() < 2) // a contact at once: one point twice, as the straight aid has
         out.cue_path = {cue->position, contact};
     if (!end)
         return out;
