@@ -13,6 +13,7 @@
 #include "tui/aid_path.hpp"
 #include "tui/aim_state.hpp"
 #include "tui/draw.hpp"
+#include "tui/text_width.hpp"
 #include "tui/view.hpp"
 #include "tui_frames.hpp"
 
@@ -351,4 +352,36 @@ TEST_CASE("the aid ends where a soft shot stops, and starts at once at a frozen 
     // Aimed 10 degrees above the line of centres: the cue ball leaves along the tangent, upwards.
     REQUIRE(at_once.deflect_path.size() == 2);
     CHECK(at_once.deflect_path[1].y > at_once.deflect_path[0].y);
+}
+
+TEST_CASE("a strike that would jump marks the elevation before Space is pressed", "[tui][cue]") {
+    View v = rack_view(table);
+    v.elevation_deg = 60;
+    for (const Capabilities caps : {Capabilities{256, true}, {0, true}, {0, false}})
+        for (const auto& [w, h] : {std::pair{100, 32}, {200, 60}})
+            for (const bool refused : {false, true}) {
+                CAPTURE(caps.colours, caps.utf8, w, h, refused);
+                v.strike_refused = refused;
+                const Layout l = make_layout(table, w, h);
+                const Grid g = render(v, l, caps, w, h);
+                const std::string label = caps.utf8 ? "elev 60\u00B0" : "elev 60deg";
+                std::vector<std::pair<int, int>> found;
+                for (int y = 0; y < h; ++y) {
+                    const auto at = find_in(g, label, 0, y, w, y + 1);
+                    if (at.first >= 0)
+                        found.push_back(at);
+                }
+                REQUIRE(found.size() == (l.panel_below ? 1u : 2u));
+                for (const auto& [x, y] : found)
+                    for (int k = 0; k < display_width(label) && x + k < w; ++k) {
+                        const Style s = g.at(x + k, y).style;
+                        CHECK(s.bold == refused);
+                        if (caps.colours > 0)
+                            CHECK((s.fg == Colour::highlight) == refused);
+                        else
+                            CHECK(s.reverse == refused);
+                    }
+                // The rest of the spin line stays plain.
+                CHECK_FALSE(g.at(l.status_x, l.status_y + 1).style.bold);
+            }
 }

@@ -66,5 +66,8 @@ void draw_help(Painter& paint, int page);
 std::string format_offset(double value);
 /// "elev 30°" ("elev 30deg" without UTF-8): the cue's elevation, to a tenth of a degree.
 std::string format_elevation(double deg, bool utf8);
+/// How the elevation is written: marked (as a warning is) while the strike as set cannot be
+/// played, plain otherwise.
+Style elevation_style(const View& v, const Painter& p);
 
 } // namespace termpool::tui

@@ -335,7 +335,8 @@ void draw_side_panel(const Frame& f) {
             p.text(tx, y + top, "spin", dim, tw);
             p.text(tx, y + top + 1, "side " + format_offset(v.side), {}, tw);
             p.text(tx, y + top + 2, "follow " + format_offset(v.follow), {}, tw);
-            p.text(tx, y + top + 3, format_elevation(v.elevation_deg, p.utf8()), {}, tw);
+            p.text(tx, y + top + 3, format_elevation(v.elevation_deg, p.utf8()),
+                   elevation_style(v, p), tw);
             y += room(rows + 1) ? rows + 1 : rows;
         }
     }

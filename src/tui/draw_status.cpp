@@ -44,6 +44,10 @@ std::string format_offset(double value) {
     return s;
 }
 
+Style elevation_style(const View& v, const Painter& p) {
+    return v.strike_refused ? Style{Colour::highlight, Colour::normal, true, !p.colour()} : Style{};
+}
+
 std::string format_elevation(double deg, bool utf8) {
     const double tenths = std::isfinite(deg) ? std::round(std::clamp(deg, -999.0, 999.0) * 10) : 0;
     char buffer[32];
@@ -83,16 +87,17 @@ void draw_status(const Frame& f) {
     // The longest form that fits: the narrowest status rows (28 columns) take the last whole.
     const std::string side = format_offset(v.side), follow = format_offset(v.follow),
                       elev = format_elevation(v.elevation_deg, p.utf8());
-    const std::string forms[] = {"spin: side " + side + " follow " + follow + " " + elev,
-                                 "side " + side + " follow " + follow + " " + elev,
-                                 "spin " + side + " " + follow + " " + elev};
+    const std::string forms[] = {"spin: side " + side + " follow " + follow + " ",
+                                 "side " + side + " follow " + follow + " ",
+                                 "spin " + side + " " + follow + " "};
     std::string spin = forms[2];
     for (const std::string& form : forms)
-        if (display_width(form) <= width) {
+        if (display_width(form + elev) <= width) {
             spin = form;
             break;
         }
-    const int used = p.text(x0, y + 1, spin, {}, width);
+    int used = p.text(x0, y + 1, spin, {}, width);
+    used += p.text(x0 + used, y + 1, elev, elevation_style(v, p), width - used);
     const std::string mode = v.time_power ? "timed" : "distance";
     const int mode_w = display_width(mode);
     if (used + 2 + mode_w <= width)
