@@ -68,6 +68,7 @@ TEST_CASE("the usage names every option of the game and every command", "[cli][u
                              "--watch [LEVEL]",
                              "--friction physical | decay K | constant A | combined K A",
                              "--cue-ball-mass KG",
+                             "--cue standard|low-deflection|none",
                              "--ascii",
                              "--resume [N | FILE]",
                              "--version",

@@ -282,3 +282,55 @@ TEST_CASE("bad race records are refused at their line", "[record][race]") {
             CHECK(error_of(b.text) == b.says);
     }
 }
+
+TEST_CASE("records keep the cue: a 'cue' line and a shot's elevation, in version 3 only",
+          "[record][cue]") {
+    GameRecord record = two_players(GameType::eight_ball, 5);
+    RecordedAction shot;
+    shot.kind = RecordedAction::Kind::shot;
+    shot.strike = {1.5, 10, 0.25, -0.1, 30};
+    record.actions.push_back(shot);
+    SECTION("a level cue and the standard shaft write what version 1 did") {
+        record.actions[0].strike.elevation_deg = 0;
+        const std::string text = format_record(record);
+        CHECK(text.starts_with("termpool-record 1\n"));
+        CHECK(text.find("\ncue ") == std::string::npos);
+        CHECK(text.find("elevation") == std::string::npos);
+    }
+    SECTION("an elevation makes it version 3, and reads back") {
+        const std::string text = format_record(record);
+        CHECK(text.starts_with("termpool-record 3\n"));
+        CHECK(text.find("\nshot 1.5 10 0.25 -0.1 elevation 30\n") != std::string::npos);
+        const auto back = parse_record(text);
+        REQUIRE(std::holds_alternative<GameRecord>(back));
+        CHECK(std::get<GameRecord>(back).actions[0].strike.elevation_deg == 30);
+        CHECK(format_record(std::get<GameRecord>(back)) == text);
+    }
+    for (const double end_mass : {low_deflection_end_mass, 0.0, 0.0061}) {
+        record.actions[0].strike.elevation_deg = 0;
+        record.setup.physics.cue_end_mass = end_mass;
+        const std::string text = format_record(record);
+        INFO(text);
+        CHECK(text.starts_with("termpool-record 3\n"));
+        const auto back = parse_record(text);
+        REQUIRE(std::holds_alternative<GameRecord>(back));
+        CHECK(std::get<GameRecord>(back).setup.physics.cue_end_mass == end_mass);
+        CHECK(format_record(std::get<GameRecord>(back)) == text);
+    }
+    CHECK(format_record(record).find("\ncue 0.0061\n") != std::string::npos);
+    record.setup.physics.cue_end_mass = low_deflection_end_mass;
+    CHECK(format_record(record).find("\ncue low-deflection\n") != std::string::npos);
+}
+
+TEST_CASE("a record's cue lines are checked, and need version 3", "[record][cue]") {
+    CHECK(error_of("termpool-record 2\ncue none\nend\n") == "2: 'cue' lines need record version 3");
+    CHECK(error_of("termpool-record 1\nshot 1 0 0 0 elevation 20\nend\n") ==
+          "2: a shot's elevation needs record version 3");
+    CHECK(error_of("termpool-record 3\ncue oak\nend\n") ==
+          "2: cue must be standard, low-deflection, none or an end mass in kg");
+    CHECK(error_of("termpool-record 3\ncue -1\nend\n").find("2: cue must be") == 0);
+    CHECK(error_of("termpool-record 3\nshot 1 0 0 0 elevation 81\nend\n") == "2: bad elevation");
+    // In range but a jump shot: the match refuses it when the record is replayed.
+    CHECK(error_of("termpool-record 3\nshot 3 0 0 0 elevation 60\nend\n").find("2: ") == 0);
+    CHECK(error_of("termpool-record 3\ncue low-deflection\nend\n").empty());
+}

@@ -88,6 +88,21 @@ TEST_CASE("the game's options carry the setup, with their own wording for bad mo
     CHECK(error == "unknown friction model 'slow' (physical, decay K, constant A or combined K A)");
 }
 
+TEST_CASE("--cue sets the shaft's end mass", "[setup][cue]") {
+    std::string error;
+    CHECK(tui::parse_game_options({}, error)->setup.physics.cue_end_mass ==
+          standard_shaft_end_mass);
+    CHECK(tui::parse_game_options({"--cue", "low-deflection"}, error)->setup.physics.cue_end_mass ==
+          low_deflection_end_mass);
+    CHECK(tui::parse_game_options({"--cue", "none"}, error)->setup.physics.cue_end_mass == 0);
+    CHECK(tui::parse_game_options({"--cue", "standard"}, error)->setup.physics.cue_end_mass ==
+          standard_shaft_end_mass);
+    CHECK_FALSE(tui::parse_game_options({"--cue", "ash"}, error));
+    CHECK(error == "--cue takes standard, low-deflection or none");
+    CHECK_FALSE(tui::parse_game_options({"--cue"}, error));
+    CHECK(error == "--cue needs a value");
+}
+
 TEST_CASE("a save's friction and name lines keep the save's own wording", "[setup][record]") {
     const auto problem = [](const std::string& line) -> std::string {
         const auto parsed = parse_record("termpool-record 1\ngame 8ball\n" + line + "\nend\n");

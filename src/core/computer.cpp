@@ -242,20 +242,26 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     };
     for (Candidate& c : candidates)
         sample(c);
-    std::ranges::sort(candidates,
-                      [](const Candidate& x, const Candidate& y) { return x.mean() > y.mean(); });
+    // On equal means a called pot goes before a safety: a safety that happens to win the rack
+    // (the object ball driven on into the money ball) scores like the planned winning pot, but
+    // only the pot was aimed at it.
+    const auto better = [](const Candidate& x, const Candidate& y) {
+        if (x.mean() != y.mean())
+            return x.mean() > y.mean();
+        return !x.call.call.safety && y.call.call.safety;
+    };
+    std::ranges::sort(candidates, better);
     const std::size_t keep = std::max<std::size_t>(1, (candidates.size() + 2) / 3);
     if (candidates.size() > keep)
         candidates.resize(keep);
     for (Candidate& c : candidates)
         while (c.samples < samples_per_candidate(level_))
             sample(c);
-    for (const Candidate& c : candidates) {
-        if (c.mean() > best.score) {
-            best.score = c.mean();
-            best.planned = c.strike;
-            best.call = c.call;
-        }
+    if (!candidates.empty()) {
+        const Candidate& chosen = *std::ranges::min_element(candidates, better);
+        best.score = chosen.mean();
+        best.planned = chosen.strike;
+        best.call = chosen.call;
     }
     if (best.score == -1e9 && !game.legal_targets().empty()) {
         // Nothing pottable: hit the first legal ball softly.

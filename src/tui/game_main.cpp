@@ -40,6 +40,9 @@ constexpr const char* options_usage =
     "  --friction physical | decay K | constant A | combined K A\n"
     "                        the cloth model (default physical)\n"
     "  --cue-ball-mass KG    the cue ball's mass, 0.05 to 1 (default: as the others)\n"
+    "  --cue standard|low-deflection|none\n"
+    "                        the cue's shaft: how much side spin squirts the cue ball\n"
+    "                        (default standard; none: no squirt)\n"
     "  --ascii               plain ASCII, no colour\n"
     "  --resume [N | FILE]   continue a saved game: the only one, save N (1 is game.save,\n"
     "                        N is game-N.save) or FILE; with several, list them\n"
@@ -386,7 +389,7 @@ int run_practice(const std::vector<std::string>& args) {
     constexpr const char* usage =
         "usage: termpool practice [--game 8ball|8ball-bar|9ball] [--table 7ft|8ft|9ft]\n"
         "                         [--player1 NAME] [--seed S] [--friction MODEL]\n"
-        "                         [--cue-ball-mass KG] [--ascii]\n"
+        "                         [--cue-ball-mass KG] [--cue SHAFT] [--ascii]\n"
         "One player at the table, no referee: m moves a ball, r takes the last shot again,\n"
         "t racks again.\n";
     if (options && options->help) {

@@ -79,6 +79,20 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
                 return std::nullopt;
             }
             o.setup.physics.cue_ball_mass = kg;
+        } else if (a == "--cue") {
+            const std::string* v = value();
+            if (!v)
+                return std::nullopt;
+            if (*v == "standard") {
+                o.setup.physics.cue_end_mass = standard_shaft_end_mass;
+            } else if (*v == "low-deflection") {
+                o.setup.physics.cue_end_mass = low_deflection_end_mass;
+            } else if (*v == "none") {
+                o.setup.physics.cue_end_mass = 0;
+            } else {
+                error = "--cue takes standard, low-deflection or none";
+                return std::nullopt;
+            }
         } else if (a == "--vs-computer" || a == "--watch") {
             // The level is optional: take the next word only when it names one.
             std::optional<Level>& seat = a == "--watch" ? o.watch : o.computer;

@@ -17,7 +17,8 @@ namespace termpool::tui {
 /// What the command line presets.
 struct GameOptions {
     std::optional<std::string> names[2]; ///< --player1, --player2 (cleaned)
-    /// --game, --table, --friction MODEL [K] [A], --cue-ball-mass KG (0: like the others)
+    /// --game, --table, --friction MODEL [K] [A], --cue-ball-mass KG (0: like the others),
+    /// --cue standard|low-deflection|none (the shaft's end mass, hence the squirt)
     GameSetup setup;
     bool timed_power = false;            ///< config power-mode: start in timed power mode
     bool aim_aid = true;                 ///< config aim-aid: show the aiming aid
