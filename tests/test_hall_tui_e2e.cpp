@@ -207,8 +207,8 @@ const Tmux* play_turn(const std::vector<const Tmux*>& terminals) {
 
 } // namespace
 
-TEST_CASE("three hall terminals: a table created, a seat taken, a watcher, the break on all "
-          "three",
+TEST_CASE("three hall terminals: a table created, a seat taken, a watcher, the raised cue's "
+          "break on all three",
           "[hall][tui][e2e]") {
     TempDir dir("termpool-hall-tui");
     auto server = serve(dir.path());
@@ -231,6 +231,11 @@ TEST_CASE("three hall terminals: a table created, a seat taken, a watcher, the b
 
     ann.keys("Enter"); // the cue ball where it is offered
     REQUIRE(ann.wait_for_text("Space shoots"));
+    // The cue raised a little: the aim the others watch carries it, and so does the shot.
+    ann.keys("e");
+    REQUIRE(ann.wait_for_text("elev 5\u00B0"));
+    CHECK(bob.wait_for_text("elev 5\u00B0"));
+    CHECK(cid.wait_for_text("elev 5\u00B0"));
     ann.keys("Space");
     // The shot reaches the other two screens and rolls out there too.
     CHECK(bob.wait_for([](const std::string& s) { return shot_rolling(s); }));

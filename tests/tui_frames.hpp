@@ -1,10 +1,12 @@
 #pragma once
 // Views shared by the terminal-game tests: the 8-ball rack with the cue ball in the kitchen,
-// aimed at the apex ball with the aiming aid, and a crowded table in the middle of a match.
+// aimed at the apex ball with the aiming aid, and a crowded table in the middle of a match. The
+// aid is the game's: the simulator's path for the strike the view shows.
 
 #include <cmath>
 #include <termpool/rack.hpp>
 
+#include "tui/aid_path.hpp"
 #include "tui/aim.hpp"
 #include "tui/view.hpp"
 
@@ -29,7 +31,7 @@ inline tui::View rack_view(const Table& table, double aim_deg = 1.5) {
     v.side = 0.1;
     v.follow = -0.2;
     const tui::AimPreview p =
-        tui::preview_shot(table, v.balls, params.ball_radius, table.head_spot(), aim_deg);
+        tui::preview_strike(table, params, v.balls, {v.speed, aim_deg, v.side, v.follow});
     v.cue_path = p.cue_path;
     v.has_ghost = p.has_ghost;
     v.ghost = p.ghost;
@@ -92,7 +94,7 @@ inline tui::View crowded_view(const Table& table) {
     v.speed = tui::speed_from_power(v.power, false);
     v.called_pocket = 4;
     v.called_ball = 3;
-    const tui::AimPreview p = tui::preview_shot(table, v.balls, params.ball_radius, cue, v.aim_deg);
+    const tui::AimPreview p = tui::preview_strike(table, params, v.balls, {v.speed, v.aim_deg});
     v.cue_path = p.cue_path;
     v.has_ghost = p.has_ghost;
     v.ghost = p.ghost;

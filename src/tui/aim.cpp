@@ -175,20 +175,29 @@ AimPreview preview_shot(const Table& table, const std::vector<Ball>& balls, doub
         out.cushion = hit.cushion < static_cast<int>(table.cushions.size()) ? hit.cushion : -1;
         return out;
     }
-    const Ball& object = balls[static_cast<std::size_t>(hit.ball)];
-    out.object_ball = object.id;
+    add_contact_lines(out, table, balls, R, contact, d,
+                      balls[static_cast<std::size_t>(hit.ball)].id, aid_length);
+    return out;
+}
+
+void add_contact_lines(AimPreview& out, const Table& table, const std::vector<Ball>& balls,
+                       double R, Vec2 contact, Vec2 d, int object_id, double aid_length) {
+    const auto object =
+        std::find_if(balls.begin(), balls.end(), [&](const Ball& b) { return b.id == object_id; });
+    if (object == balls.end())
+        return;
+    out.object_ball = object_id;
     out.has_ghost = true;
     out.ghost = contact;
     // The object ball leaves along the line of centres; the cue ball keeps the rest of its
     // velocity, which is at right angles to it (the tangent line).
-    const Vec2 n = normalized(object.position - contact);
-    out.object_path = short_path(table, balls, R, object.position, n, 0, object.id, aid_length);
+    const Vec2 n = normalized(object->position - contact);
+    out.object_path = short_path(table, balls, R, object->position, n, 0, object_id, aid_length);
     const Vec2 tangent = d - n * dot(d, n);
     if (length(tangent) > 1e-6) {
         out.deflect_path =
-            short_path(table, balls, R, contact, normalized(tangent), 0, object.id, aid_length);
+            short_path(table, balls, R, contact, normalized(tangent), 0, object_id, aid_length);
     }
-    return out;
 }
 
 namespace {

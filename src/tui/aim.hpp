@@ -57,6 +57,14 @@ struct AimPreview {
                                     ///< the hit is full, as the cue ball then stops or rolls on)
 };
 
+/// Fills the aid's lines after the cue ball's centre, moving along the unit vector `d`,
+/// reaches `contact` touching ball `object_id`: the object ball and the ghost ball, the object
+/// ball's path along the line of centres and the cue ball's along the tangent line on the side
+/// away from the object ball (none for a full hit), each up to its own first contact and at
+/// most `aid_length` metres.
+void add_contact_lines(AimPreview& out, const Table& table, const std::vector<Ball>& balls,
+                       double R, Vec2 contact, Vec2 d, int object_id, double aid_length);
+
 /// Casts the cue ball from `cue` at `aim_deg` against the balls on the table (circles of radius
 /// 2R around their centres; the cue ball, id 0, and pocketed balls are ignored) and against the
 /// cushions and jaws moved R towards the table (and the jaw points as circles of radius R).

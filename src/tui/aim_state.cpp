@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tui/aid_path.hpp"
+
 namespace termpool::tui {
 namespace {
 
@@ -16,6 +18,7 @@ void AimState::new_turn() {
     pocket_chosen = false;
     target_index = -1;
     side = follow = 0;
+    elevation_deg = 0;
     show_marker = false; // the pointer's mark belongs to the last aim
     dragging = false;
 }
@@ -52,6 +55,26 @@ bool AimState::spin_key(const std::string& text) {
     return true;
 }
 
+bool AimState::elevation_key(const std::string& text) {
+    if (text == "e")
+        elevation_deg = std::min(max_cue_elevation_deg, elevation_deg + elevation_step_deg);
+    else if (text == "E")
+        elevation_deg = std::max(0.0, elevation_deg - elevation_step_deg);
+    else if (text == "v")
+        elevation_deg = 0;
+    else
+        return false;
+    return true;
+}
+
+Strike AimState::strike(bool is_break, Clock::time_point now) const {
+    return {speed_from_power(current_power(now), is_break), aim_deg, side, follow, elevation_deg};
+}
+
+Strike AimState::set_strike(bool is_break) const {
+    return {speed_from_power(power, is_break), aim_deg, side, follow, elevation_deg};
+}
+
 void AimState::aim_at_target(const std::vector<TargetChoice>& order) {
     target_line = TargetLine::straight;
     if (order.empty())
@@ -61,9 +84,10 @@ void AimState::aim_at_target(const std::vector<TargetChoice>& order) {
     target_line = order[static_cast<std::size_t>(target_index)].line;
 }
 
-void AimState::update_preview(const Table& table, const std::vector<Ball>& balls, double R,
-                              Vec2 cue, const std::function<bool(int ball)>& calls_pocket) {
-    preview = preview_shot(table, balls, R, cue, aim_deg);
+void AimState::update_preview(const Table& table, const PhysicsParams& params,
+                              const std::vector<Ball>& balls, bool is_break,
+                              const std::function<bool(int ball)>& calls_pocket) {
+    preview = preview_strike(table, params, balls, set_strike(is_break));
     if (preview.object_ball != preview_ball)
         pocket_chosen = false;
     preview_ball = preview.object_ball;

@@ -1,6 +1,6 @@
 #pragma once
-// The cue as the player at the table sets it: direction, power, spin, the call and the aiming
-// aid's paths. Plain data with the few rules that belong to it; the App feeds it input.
+// The cue as the player at the table sets it: direction, power, spin, elevation, the call and
+// the aiming aid's paths. Plain data with the few rules that belong to it; the App feeds it input.
 
 #include <chrono>
 #include <functional>
@@ -13,6 +13,9 @@
 
 namespace termpool::tui {
 
+/// How far one press of e or E raises or lowers the cue, degrees.
+inline constexpr double elevation_step_deg = 5.0;
+
 /// The aim, the power bar, the spin and the call of the shot being set up.
 struct AimState {
     using Clock = std::chrono::steady_clock;
@@ -23,6 +26,7 @@ struct AimState {
     bool time_power = false;        ///< the bar swings and Space stops it
     Clock::time_point power_start;  ///< when the swinging bar started
     double side = 0, follow = 0;    ///< tip offsets, fractions of R
+    double elevation_deg = 0;       ///< the cue's elevation above the cloth, degrees
     bool show_aid = true;           ///< draw the aiming aid
     bool show_marker = false;       ///< draw the pointer's mark
     Vec2 marker;                    ///< where the pointer aimed
@@ -37,7 +41,7 @@ struct AimState {
     int preview_ball = -1;                         ///< the ball the aid shows the cue ball hitting
     AimPreview preview;                            ///< the aid's paths
 
-    /// A new turn: no call, no spin, no pointer mark, the easiest target first.
+    /// A new turn: no call, no spin, a level cue, no pointer mark, the easiest target first.
     void new_turn();
     /// A break wants a hard hit: the bar starts full for it, and the player's own setting
     /// comes back for the shots after.
@@ -46,11 +50,20 @@ struct AimState {
     double current_power(Clock::time_point now) const;
     /// Applies a spin key (w/s/d/a and W/S/D/A finely, c centres); false for another text.
     bool spin_key(const std::string& text);
+    /// Applies an elevation key (e raises the cue, E lowers it, by `elevation_step_deg` within
+    /// 0..max_cue_elevation_deg; v levels it); false for another text.
+    bool elevation_key(const std::string& text);
+    /// The strike the cue as set gives at `now` (the swinging bar's position in timed mode).
+    Strike strike(bool is_break, Clock::time_point now) const;
+    /// The strike the cue as set gives at the bar's set power.
+    Strike set_strike(bool is_break) const;
     /// Turns the cue to the proposed target `target_index` of `order` (kept in range).
     void aim_at_target(const std::vector<TargetChoice>& order);
-    /// Recomputes the aid for the cue at `cue`, and proposes the pocket the object ball heads
+    /// Recomputes the aid from the simulator for the strike as set (at the bar's set power: in
+    /// timed mode the last one it stopped at), and proposes the pocket the object ball heads
     /// for most directly when `calls_pocket` says the shot at it names one.
-    void update_preview(const Table& table, const std::vector<Ball>& balls, double R, Vec2 cue,
+    void update_preview(const Table& table, const PhysicsParams& params,
+                        const std::vector<Ball>& balls, bool is_break,
                         const std::function<bool(int ball)>& calls_pocket);
     /// The call of the shot as set: a safety, or the aimed ball into the chosen pocket when the
     /// shot names one.

@@ -159,6 +159,11 @@ void App::compose_aiming(View& v) const {
     v.time_power = aim_.time_power;
     v.side = aim_.side;
     v.follow = aim_.follow;
+    v.elevation_deg = aim_.elevation_deg;
+    // Marked before Space is pressed: the power bar swings or the keys change the power, and
+    // the same elevation turns from playable to a jump.
+    v.strike_refused =
+        strike_problem(aim_.strike(game().is_break(), Clock::now()), params_).has_value();
     v.show_aid = aim_.show_aid;
     if (aim_.show_aid) {
         v.cue_path = aim_.preview.cue_path;

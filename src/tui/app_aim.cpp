@@ -1,5 +1,5 @@
-// Aiming at the table: the keys and the pointer turn the cue, set the power, spin and call,
-// and the aiming aid follows.
+// Aiming at the table: the keys and the pointer turn the cue, set the power, spin, elevation
+// and call, and the aiming aid follows.
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +42,7 @@ void App::aim_at_easiest() {
 }
 
 void App::update_preview() {
-    aim_.update_preview(table_, game().balls(), params_.ball_radius, cue_position(),
+    aim_.update_preview(table_, params_, game().balls(), game().is_break(),
                         [this](int ball) { return calls_pocket(ball); });
 }
 
@@ -93,7 +93,7 @@ void App::handle_aiming_key(int key, const std::string& text) {
         aim_.called_pocket = text[0] - '0';
         aim_.pocket_chosen = true;
         aim_.safety = false;
-    } else {
+    } else if (!aim_.elevation_key(text)) {
         aim_.spin_key(text);
     }
     aim_.side = std::round(aim_.side * 100) / 100;

@@ -87,6 +87,7 @@ void App::hall_aim(int seat, const Strike& strike) {
     aim_.power = power_from_speed(strike.speed, game().is_break());
     aim_.side = strike.side;
     aim_.follow = strike.follow;
+    aim_.elevation_deg = strike.elevation_deg;
     aim_.show_marker = false;
     update_preview();
 }
@@ -214,10 +215,10 @@ void App::send_hall_aim() {
     // The cue as it is now, each time it changes; the session keeps to the server's rate.
     if (mode_ != Mode::aiming || hall_waits() || !link_->aim)
         return;
-    const Strike strike{speed_from_power(aim_.current_power(Clock::now()), game().is_break()),
-                        aim_.aim_deg, aim_.side, aim_.follow};
+    const Strike strike = aim_.strike(game().is_break(), Clock::now());
     if (aim_sent_ && aim_sent_->speed == strike.speed && aim_sent_->angle_deg == strike.angle_deg &&
-        aim_sent_->side == strike.side && aim_sent_->follow == strike.follow)
+        aim_sent_->side == strike.side && aim_sent_->follow == strike.follow &&
+        aim_sent_->elevation_deg == strike.elevation_deg)
         return;
     aim_sent_ = strike;
     link_->aim(strike);

@@ -127,6 +127,7 @@ bool App::show_computer_aim(Clock::time_point now) {
     aim_.aim_deg = pacing_.aim_at(t);
     aim_.side = move.shot.strike.side;
     aim_.follow = move.shot.strike.follow;
+    aim_.elevation_deg = move.shot.strike.elevation_deg;
     aim_.power = pacing_.power_at(t, game().is_break());
     update_preview();
     return pacing_.due(now);

@@ -52,13 +52,14 @@ bool App::handle_practice_key(const std::string& text) {
     } else if (text == "r") {
         if (practice_->retake()) {
             sync_practice();
-            // The same aim and spin (the power bar kept its setting, and a break taken again
-            // has the break's full bar back), ready to adjust.
+            // The same aim, spin and elevation (the power bar kept its setting, and a break taken
+            // again has the break's full bar back), ready to adjust.
             mode_ = Mode::aiming;
             aim_.set_break(game().is_break());
             aim_.aim_deg = last_strike_.angle_deg;
             aim_.side = last_strike_.side;
             aim_.follow = last_strike_.follow;
+            aim_.elevation_deg = last_strike_.elevation_deg;
             aim_.show_marker = false;
             message_ = "The balls are back: take the shot again";
             update_preview();

@@ -3,6 +3,8 @@
 // shot is shown rolling before its verdict.
 
 #include <algorithm>
+#include <optional>
+#include <string>
 
 #include "tui/app.hpp"
 #include "tui/messages.hpp"
@@ -107,9 +109,15 @@ bool App::try_place(Vec2 spot) {
 }
 
 void App::shoot() {
-    const double power = aim_.current_power(Clock::now());
-    const Strike strike{speed_from_power(power, game().is_break()), aim_.aim_deg, aim_.side,
-                        aim_.follow};
+    const auto now = Clock::now();
+    const Strike strike = aim_.strike(game().is_break(), now);
+    // A cue the simulator cannot play (a jump shot, which it does not model) is not shot: the
+    // player adjusts it.
+    if (const std::optional<std::string> problem = strike_problem(strike, params_)) {
+        message_ = "Not played: " + *problem;
+        return;
+    }
+    const double power = aim_.current_power(now);
     const ShotCall call =
         game().call_as_taken(aim_.call([this](int ball) { return calls_pocket(ball); }));
     aim_.power = power;

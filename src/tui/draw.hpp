@@ -48,11 +48,11 @@ void draw_aim(const Frame& f);
 bool labels_wide(const Frame& f);
 /// The balls on the table; returns the cells their labels took.
 std::vector<std::pair<int, int>> draw_balls(const Frame& f);
-/// The power bar, speed, power mode, spin line and shoot button.
+/// The power bar, speed, power mode, spin and elevation line and shoot button.
 void draw_status(const Frame& f);
 /// The game and the race, players with racks won, groups and their pocketed balls (9-ball:
-/// fouls), other pocketed balls, the message, the called pocket in words, the spin diagram,
-/// the legend and the help hint.
+/// fouls), other pocketed balls, the message, the called pocket in words, the spin diagram with
+/// the cue's elevation, the legend and the help hint.
 void draw_panel(const Frame& f);
 /// A box with `text` ('\n' between lines), placed where it covers none of the `keep` cells
 /// (the balls): centred if it can, else over the panel, else wherever it covers the fewest,
@@ -64,5 +64,10 @@ void draw_help(Painter& paint, int page);
 
 /// "+0.2", "-0.25", "0.0": a tip offset with one or two decimals.
 std::string format_offset(double value);
+/// "elev 30°" ("elev 30deg" without UTF-8): the cue's elevation, to a tenth of a degree.
+std::string format_elevation(double deg, bool utf8);
+/// How the elevation is written: marked (as a warning is) while the strike as set cannot be
+/// played, plain otherwise.
+Style elevation_style(const View& v, const Painter& p);
 
 } // namespace termpool::tui

@@ -1,9 +1,9 @@
 // The panel: the game and the match's race, both players (the one to shoot marked) with the
 // racks they have won and, in 8-ball, their group with its balls pocketed so far (9-ball: their
 // consecutive fouls), the balls pocketed outside any group, the message, the called pocket in
-// words, the spin diagram, a legend of the balls on the table and the help hint. Beside the
-// table it is a column; below it (narrow terminals) players, message and spin diagram sit side
-// by side above a row holding the legend and the hint.
+// words, the spin diagram with the cue's elevation, a legend of the balls on the table and the help
+// hint. Beside the table it is a column; below it (narrow terminals) players, message and spin
+// diagram sit side by side above a row holding the legend and the hint.
 
 #include <algorithm>
 #include <climits>
@@ -326,13 +326,18 @@ void draw_side_panel(const Frame& f) {
     }
     if (v.aiming && !v.placing) {
         const int h = room(6) && limit - y >= 12 ? 5 : 3, w = h == 5 ? 9 : 5;
-        if (room(h + 1)) {
+        // Four lines beside the face: "spin", side, follow and the cue's elevation; the small
+        // face's elevation line is one row below it.
+        const int top = h / 2 - 1, rows = std::max(h, top + 4);
+        if (room(rows)) {
             draw_spin_face(f, x + 1, y, w, h);
-            p.text(x + w + 3, y + h / 2 - 1, "spin", dim, width - w - 3);
-            p.text(x + w + 3, y + h / 2, "side " + format_offset(v.side), {}, width - w - 3);
-            p.text(x + w + 3, y + h / 2 + 1, "follow " + format_offset(v.follow), {},
-                   width - w - 3);
-            y += h + 1;
+            const int tx = x + w + 3, tw = width - w - 3;
+            p.text(tx, y + top, "spin", dim, tw);
+            p.text(tx, y + top + 1, "side " + format_offset(v.side), {}, tw);
+            p.text(tx, y + top + 2, "follow " + format_offset(v.follow), {}, tw);
+            p.text(tx, y + top + 3, format_elevation(v.elevation_deg, p.utf8()),
+                   elevation_style(v, p), tw);
+            y += room(rows + 1) ? rows + 1 : rows;
         }
     }
     y = std::min(y, limit);

@@ -1,6 +1,7 @@
 // The status rows under the table while aiming:
 //   power [██████▌     ] 3.4 m/s                 [ shoot ]
-//   spin: side +0.2 follow -0.3                  distance
+//   spin: side +0.2 follow -0.3 elev 30°         distance
+// (the spin line shorter where the rows are narrow: "spin +0.2 -0.3 elev 30°")
 
 #include <algorithm>
 #include <cmath>
@@ -43,6 +44,20 @@ std::string format_offset(double value) {
     return s;
 }
 
+Style elevation_style(const View& v, const Painter& p) {
+    return v.strike_refused ? Style{Colour::highlight, Colour::normal, true, !p.colour()} : Style{};
+}
+
+std::string format_elevation(double deg, bool utf8) {
+    const double tenths = std::isfinite(deg) ? std::round(std::clamp(deg, -999.0, 999.0) * 10) : 0;
+    char buffer[32];
+    if (std::fmod(tenths, 10) == 0)
+        std::snprintf(buffer, sizeof buffer, "%.0f", tenths / 10 + 0.0); // + 0.0: no "-0"
+    else
+        std::snprintf(buffer, sizeof buffer, "%.1f", tenths / 10);
+    return std::string("elev ") + buffer + (utf8 ? "\u00B0" : "deg");
+}
+
 void draw_status(const Frame& f) {
     const View& v = f.view;
     const Layout& l = f.layout;
@@ -69,9 +84,20 @@ void draw_status(const Frame& f) {
         p.text(l.button_x, l.button_y, "[ shoot ]",
                {Colour::black, Colour::highlight, true, !p.colour()}, l.button_width);
 
-    const std::string spin =
-        "spin: side " + format_offset(v.side) + " follow " + format_offset(v.follow);
-    const int used = p.text(x0, y + 1, spin, {}, width);
+    // The longest form that fits: the narrowest status rows (28 columns) take the last whole.
+    const std::string side = format_offset(v.side), follow = format_offset(v.follow),
+                      elev = format_elevation(v.elevation_deg, p.utf8());
+    const std::string forms[] = {"spin: side " + side + " follow " + follow + " ",
+                                 "side " + side + " follow " + follow + " ",
+                                 "spin " + side + " " + follow + " "};
+    std::string spin = forms[2];
+    for (const std::string& form : forms)
+        if (display_width(form + elev) <= width) {
+            spin = form;
+            break;
+        }
+    int used = p.text(x0, y + 1, spin, {}, width);
+    used += p.text(x0 + used, y + 1, elev, elevation_style(v, p), width - used);
     const std::string mode = v.time_power ? "timed" : "distance";
     const int mode_w = display_width(mode);
     if (used + 2 + mode_w <= width)

@@ -18,6 +18,8 @@ const std::string& help_text() {
                                     "w a s d           spin: follow, left, draw, right\n"
                                     "W A S D           the same in finer steps\n"
                                     "c                 centre the spin\n"
+                                    "e E               raise / lower the cue 5 degrees\n"
+                                    "v                 level the cue\n"
                                     "p                 power mode: distance / timed\n"
                                     "g                 aiming aid on / off\n"
                                     "1-6               call a pocket\n"

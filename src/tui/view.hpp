@@ -143,6 +143,8 @@ struct View {
     double speed = 0;               ///< the cue-ball speed that power gives, m/s
     bool time_power = false;        ///< power mode: false = distance, true = oscillating bar
     double side = 0, follow = 0;    ///< tip offsets, fractions of R (-0.5..0.5)
+    double elevation_deg = 0;       ///< the cue's elevation above the cloth, degrees (0..80)
+    bool strike_refused = false;    ///< the strike as set would jump: Space will not shoot it
     bool show_aid = true;           ///< draw the aiming aid below
     std::vector<Vec2> cue_path;     ///< predicted path of the cue ball up to its first contact
     bool has_ghost = false;         ///< draw a ghost ball
