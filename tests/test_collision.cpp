@@ -195,7 +195,8 @@ TEST_CASE("a slow push leaves both balls rolling at the speed their cloth moment
     const double before = cloth_momentum(a) + cloth_momentum(b);
     const double energy = kinetic_energy(a, R) + kinetic_energy(b, R);
     core::resolve_ball_ball(a, b, p, core::cloth_model(p.friction));
-    // Rolling (but for the tiny parting kick) at one speed, the one their cloth momentum gives.
+    // Rolling at one speed (but for the parting at min_separation_speed), the one their cloth
+    // momentum gives.
     CHECK(cloth_momentum(a) + cloth_momentum(b) == Approx(before).epsilon(1e-9));
     CHECK(a.velocity.x == Approx(before / (1.4 * (a.mass + b.mass))).epsilon(1e-5));
     CHECK(length(core::slip_velocity(a, R)) < 1e-5);

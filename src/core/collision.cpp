@@ -29,6 +29,31 @@ Vec3 friction_impulse(Vec3 slip, double normal_impulse, double friction,
     return slip * (-magnitude / slip_speed);
 }
 
+// The relative velocity `w` of two things in contact, turned so that they part along `n` at
+// min_separation_speed at least, with its length kept where its sideways part allows: rounding
+// (or a push's end state) can leave a pair touching with no speed to part, and found in contact
+// again at once. `deficit` gets what |w|^2 had to grow by when turning was not enough, m^2/s^2.
+Vec2 turned_to_part(Vec2 w, Vec2 n, double& deficit) {
+    const double normal = dot(w, n);
+    const Vec2 sideways = w - n * normal;
+    const double sideways_squared = dot(sideways, sideways);
+    const double target = min_separation_speed;
+    const double left = sideways_squared + normal * normal - target * target;
+    deficit = left < 0 ? -left : 0;
+    const double keep = sideways_squared > 0 && left > 0 ? std::sqrt(left / sideways_squared) : 0;
+    return n * target + sideways * keep;
+}
+
+// The energy `energy` (J) that parting needed and turning could not give, taken from the
+// common motion (velocity `common`, mass `mass`) where it has that much: parting never adds
+// energy unless the two were at rest together, and then at most 1/2 mu min_separation_speed^2.
+Vec2 paid_from(Vec2 common, double mass, double energy) {
+    const double have = 0.5 * mass * dot(common, common);
+    if (energy <= 0 || have <= 0)
+        return common;
+    return common * std::sqrt(std::max(0.0, 1 - energy / have));
+}
+
 // Two balls that meet slower than `elastic_below_speed` while the cloth drives one into the other
 // (a ball with top spin catching up with the one ahead) would bounce ever more often, each
 // slide-to-roll transition taking a little more of their relative speed. In reality they stay
@@ -124,11 +149,15 @@ void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& p, const ClothMode
     }
     if (approach < p.elastic_below_speed)
         cloth.slow_pair_contact(a, b, n, p);
-    const double separation = dot(b.velocity - a.velocity, n);
-    if (separation < min_separation_speed) {
-        const double extra = (min_separation_speed - separation) / (inv_a + inv_b);
-        a.velocity -= n * (extra * inv_a);
-        b.velocity += n * (extra * inv_b);
+    if (dot(b.velocity - a.velocity, n) < min_separation_speed) {
+        const double mass = a.mass + b.mass;
+        const double reduced = a.mass * b.mass / mass;
+        double deficit = 0;
+        const Vec2 w = turned_to_part(b.velocity - a.velocity, n, deficit);
+        const Vec2 common = paid_from((a.velocity * a.mass + b.velocity * b.mass) * (1 / mass),
+                                      mass, 0.5 * reduced * deficit);
+        a.velocity = common - w * (b.mass / mass);
+        b.velocity = common + w * (a.mass / mass);
     }
     cloth.settle_motion_state(a, p);
     cloth.settle_motion_state(b, p);
@@ -161,9 +190,10 @@ void resolve_cushion(Ball& ball, Vec2 towards, const PhysicsParams& p, const Clo
     if (slow)
         cloth.slow_cushion_contact(ball, towards, p);
 
-    const double separation = -dot(ball.velocity, towards);
-    if (separation < min_separation_speed)
-        ball.velocity -= towards * (min_separation_speed - separation);
+    if (-dot(ball.velocity, towards) < min_separation_speed) {
+        double deficit = 0; // a cushion has no motion to pay from: at most 1/2 m s_min^2 added
+        ball.velocity = turned_to_part(ball.velocity, towards * -1.0, deficit);
+    }
     cloth.settle_motion_state(ball, p);
 }
 
