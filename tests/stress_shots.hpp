@@ -227,9 +227,9 @@ inline Run run_once(const StressShot& shot) {
     const double shot_energy = total_energy(start, R);
     // How much energy one event may add: round-off only. A pair that a contact leaves touching
     // is parted at min_separation_speed by turning its relative velocity and paying from its
-    // common motion (collision.cpp), never by a kick, so what remains is round-off in the sums
-    // of energies and impulses: a few ulp of the shot's energy (4 at most in 10^5 shots),
-    // bounded by 1e-14 of it, some 45 ulp.
+    // common motion (collision.cpp); only what is at rest there would need energy added, which
+    // no contact of 10^5 shots did. What remains is round-off in the sums of energies and
+    // impulses: a few ulp of the shot's energy (4 at most), bounded by 1e-14 of it, some 45 ulp.
     const double allowed_rise = 1e-14 * shot_energy;
     double energy = shot_energy;
     const auto fail = [&](StressFailure f, std::string detail) {
