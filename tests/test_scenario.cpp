@@ -105,7 +105,8 @@ TEST_CASE("every param sets its field", "[scenario]") {
     CHECK(p.rolling_friction == 0.011);
     CHECK(p.spin_friction == 0.013);
     CHECK(p.ball_restitution == 0.9);
-    CHECK(p.ball_friction == 0.06);
+    CHECK(p.ball_friction.model == termpool::BallFrictionModel::constant);
+    CHECK(p.ball_friction.constant == 0.06);
     CHECK(p.cushion_restitution == 0.8);
     CHECK(p.cushion_friction == 0.25);
     CHECK(p.gravity == 9.8);
