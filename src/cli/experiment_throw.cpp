@@ -118,9 +118,9 @@ int throw_study(BallFrictionModel model, bool csv) {
                     format_number(f.c).c_str());
     else
         std::printf("\nu_b = %s at every sliding speed.\n", format_number(f.constant).c_str());
-    std::printf("A stun shot throws tan(throw) = min(u_b, v_rel / (3.5 (1 + e_b) v cos(cut))) "
-                "v sin(cut) / v_rel;\nsmall cuts are limited by the surfaces ceasing to slide, "
-                "large ones by u_b.\n");
+    std::printf("A cut throws tan(throw) = min(u_b, v_rel / (3.5 (1 + e_b) v cos(cut))) "
+                "v sin(cut) / v_rel,\nv_rel = v sin(cut) stunned and v rolling: small stun cuts "
+                "are limited by the surfaces\nceasing to slide, the rest by u_b.\n");
     return 0;
 }
 
