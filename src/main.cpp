@@ -35,6 +35,8 @@ void print_usage(std::ostream& out) {
            "  bench --render        time the terminal front end: frames and bytes sent\n"
            "  experiment friction [--table T] [--csv] | mass [--csv]\n"
            "                        the seed report's friction and mass study\n"
+           "  experiment throw [--model fit|constant] [--csv]\n"
+           "                        throw against cut angle at several speeds\n"
            "  selfplay --games N --p1 LEVEL --p2 LEVEL [--game G] [--seed S] [--jobs J]\n"
            "                        computer against computer\n"
            "  hall [--name NAME] [--socket PATH] [--ascii]\n"

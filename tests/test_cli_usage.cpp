@@ -79,6 +79,7 @@ TEST_CASE("the usage names every option of the game and every command", "[cli][u
                              "bench [--breaks N] [--shots N] [--seed S]",
                              "bench --render",
                              "experiment friction",
+                             "experiment throw [--model fit|constant]",
                              "selfplay --games N"}) {
         INFO(item);
         CHECK(o.out.find(item) != std::string::npos);

@@ -180,7 +180,8 @@ TEST_CASE("physical cushion: a rolling ball comes off slower and at a steeper an
 TEST_CASE("a slow push leaves both balls rolling at the speed their cloth momentum allows",
           "[physics][collision]") {
     PhysicsParams p;
-    p.ball_friction = 0; // ball-ball friction would turn the balls too: keep to the cloth
+    // Ball-ball friction would turn the balls too: keep to the cloth.
+    p.ball_friction = {.model = BallFrictionModel::constant, .constant = 0};
     // The rear ball has twice the top spin rolling needs and barely catches the one ahead.
     Ball a = ball_at(0, 1.0, 0.6), b = ball_at(1, 1.0 + 2 * R, 0.6);
     a.velocity = {1.0, 0};

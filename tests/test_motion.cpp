@@ -130,7 +130,13 @@ TEST_CASE("a trajectory samples the same states the world stepped through",
     while (world.step())
         snapshots.emplace_back(world.time(), world.balls());
     REQUIRE(snapshots.size() > 20);
-    for (const auto& [t, balls] : snapshots) {
+    for (std::size_t k = 0; k < snapshots.size(); ++k) {
+        const auto& [t, balls] = snapshots[k];
+        // Events at one instant (two balls that a contact left with slips of one length start
+        // rolling together) are stepped one by one, but the state at that time is the one after
+        // all of them: compare the last snapshot of each instant.
+        if (k + 1 < snapshots.size() && snapshots[k + 1].first == t)
+            continue;
         const std::vector<Ball> sampled = world.trajectory().sample(t);
         REQUIRE(sampled.size() == balls.size());
         for (std::size_t i = 0; i < balls.size(); ++i) {

@@ -105,7 +105,8 @@ TEST_CASE("every param sets its field", "[scenario]") {
     CHECK(p.rolling_friction == 0.011);
     CHECK(p.spin_friction == 0.013);
     CHECK(p.ball_restitution == 0.9);
-    CHECK(p.ball_friction == 0.06);
+    CHECK(p.ball_friction.model == termpool::BallFrictionModel::constant);
+    CHECK(p.ball_friction.constant == 0.06);
     CHECK(p.cushion_restitution == 0.8);
     CHECK(p.cushion_friction == 0.25);
     CHECK(p.gravity == 9.8);
@@ -550,4 +551,45 @@ TEST_CASE("a game context does not hide the other errors", "[scenario]") {
     CHECK(refused("game 9ball\ncall 1 3\nball 0 1 1\nball 1 1.01 1\nstrike 1 0\n").line == 4);
     CHECK(refused("game 8ball\nstrike 1 0\n").message.find("strike without a cue ball") !=
           std::string::npos);
+}
+
+TEST_CASE("throw chooses the ball-ball friction law; param u_b sets the constant", "[scenario]") {
+    using termpool::BallFrictionModel;
+    CHECK(parsed("").setup.physics.ball_friction == termpool::BallFriction{});
+    const termpool::BallFriction fit = parsed("throw fit").setup.physics.ball_friction;
+    CHECK(fit == termpool::BallFriction{});
+    const termpool::BallFriction own = parsed("throw fit 0.02 0.1 1.5").setup.physics.ball_friction;
+    CHECK(own.model == BallFrictionModel::fit);
+    CHECK(own.a == 0.02);
+    CHECK(own.b == 0.1);
+    CHECK(own.c == 1.5);
+    const termpool::BallFriction constant =
+        parsed("throw constant 0.06").setup.physics.ball_friction;
+    CHECK(constant.model == BallFrictionModel::constant);
+    CHECK(constant.constant == 0.06);
+    CHECK(parsed("throw constant 0").setup.physics.ball_friction.constant == 0);
+    CHECK(parsed("throw fit 0 0 0").setup.physics.ball_friction.a == 0);
+}
+
+TEST_CASE("bad throw lines are refused with their line", "[scenario]") {
+    check_refusals({
+        {"throw\n", 1, "missing field (usage: throw fit [A B C] | throw constant U)"},
+        {"throw cubic\n", 1, "unknown throw model 'cubic' (expected fit or constant)"},
+        {"throw constant\n", 1, "missing field"},
+        {"throw constant 0.05 1\n", 1, "extra field '1'"},
+        {"throw fit 0.01\n", 1, "missing field"},
+        {"throw fit 0.01 0.1\n", 1, "missing field"},
+        {"throw fit 0.01 0.1 1 2\n", 1, "extra field '2'"},
+        {"throw constant -0.01\n", 1, "u_b must be >= 0 (got -0.01)"},
+        {"throw constant x\n", 1, "u_b 'x' is not a number"},
+        {"throw constant nan\n", 1, "not finite"},
+        {"throw fit -1 0.1 1\n", 1, "fit constant A must be >= 0"},
+        {"throw fit 0.01 -0.1 1\n", 1, "fit constant B must be >= 0"},
+        {"throw fit 0.01 0.1 -1\n", 1, "fit constant C must be >= 0"},
+        {"throw fit 0.01 0.1 inf\n", 1, "not finite"},
+        {"\nthrow fit\nthrow fit\n", 3, "more than one 'throw' line (the first is line 2)"},
+        {"throw fit\nparam u_b 0.05\n", 2, "'param u_b' cannot go with 'throw' (line 1)"},
+        {"param u_b 0.05\n\nthrow constant 0.05\n", 3,
+         "'throw' cannot go with 'param u_b' (line 1)"},
+    });
 }

@@ -493,6 +493,35 @@ TEST_CASE("experiment friction prints its table, charts and CSV", "[cli][experim
     CHECK(run(dir, "experiment").status == 2);
 }
 
+TEST_CASE("experiment throw prints throw against cut, stun and rolling, and CSV",
+          "[cli][experiment]") {
+    TempDir dir;
+    const Run table = run(dir, "experiment throw");
+    REQUIRE(table.status == 0);
+    CHECK(table.out.find("ball-ball friction fit") != std::string::npos);
+    CHECK(table.out.find("Stun cue ball") != std::string::npos);
+    CHECK(table.out.find("Rolling cue ball") != std::string::npos);
+    CHECK(table.out.find("stun: throw against cut angle") != std::string::npos);
+    const Run constant = run(dir, "experiment throw --model constant");
+    REQUIRE(constant.status == 0);
+    CHECK(constant.out.find("ball-ball friction constant") != std::string::npos);
+    // The old constant 0.05: a stun cut of 45 degrees throws 2.86 degrees at every speed.
+    CHECK(constant.out.find("      45       2.86       2.86       2.86       2.86") !=
+          std::string::npos);
+
+    const Run csv = run(dir, "experiment throw --csv");
+    REQUIRE(csv.status == 0);
+    const std::vector<std::string> lines = lines_of(csv.out);
+    REQUIRE(lines.size() == 1 + 2 * 4 * 61);
+    CHECK(lines[0] == "cue,speed_m_s,cut_deg,throw_deg");
+    CHECK(lines[1] == "stun,0.3,0,0");
+    for (std::size_t i = 1; i < lines.size(); ++i)
+        CHECK(std::count(lines[i].begin(), lines[i].end(), ',') == 3);
+    CHECK(lines.back().starts_with("rolling,5,60,0.5"));
+    CHECK(run(dir, "experiment throw --model cubic").status == 2);
+    CHECK(run(dir, "experiment friction --model fit").status == 2);
+}
+
 TEST_CASE("experiment mass prints both studies, as a table and as CSV", "[cli][experiment]") {
     TempDir dir;
     const Run table = run(dir, "experiment mass");

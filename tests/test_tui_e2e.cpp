@@ -166,7 +166,7 @@ TEST_CASE("a saved game plays back with replay", "[tui][e2e]") {
     const std::string& dir = scratch.path;
     {
         std::ofstream out(dir + "/game.save");
-        out << "termpool-record 1\ngame 8ball\ntable 9ft\nseed 5\nbreaker 1\nplayer1 Ann\n"
+        out << "termpool-record 1\ngame 8ball\ntable 9ft\nseed 3\nbreaker 1\nplayer1 Ann\n"
                "player2 Bob\nshot 12 0 0 0\nshot 2 90 0 0\nend\n";
     }
     const std::string status_file = dir + "/status";

@@ -105,7 +105,7 @@ TEST_CASE("replay without a file shows the save; --resume FILE; a config warning
     const ScratchDir dir("termpool-replay-save");
     std::system(("mkdir -p " + dir.path + "/termpool").c_str());
     std::ofstream(dir.path + "/termpool/game.save")
-        << "termpool-record 1\ngame 8ball\ntable 9ft\nseed 5\nbreaker 1\nplayer1 Ann\n"
+        << "termpool-record 1\ngame 8ball\ntable 9ft\nseed 3\nbreaker 1\nplayer1 Ann\n"
            "player2 Bob\nshot 12 0 0 0\nshot 2 90 0 0\nend\n";
     std::ofstream(dir.path + "/termpool/config") << "flavour = mint\n";
     const std::string env = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +

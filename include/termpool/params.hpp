@@ -10,6 +10,29 @@ enum class CollisionModel {
     ideal,    ///< the seed report's elastic, frictionless impulse along the line of centres
 };
 
+/// Which law gives the ball-ball friction u_b of a contact.
+enum class BallFrictionModel {
+    fit,      ///< u_b = a + b e^(-c v_rel): measured throw, large when slow, small when fast
+    constant, ///< u_b the same at every sliding speed
+};
+
+/// Ball-ball friction against the relative sliding speed v_rel (m/s) of the two surfaces where
+/// they touch. The defaults are Alciatore's fit to measured throw (as pooltool uses it): u_b is
+/// about 0.118 for surfaces barely sliding and tends to 0.00995 for fast ones, which is why slow
+/// cuts throw several degrees and fast ones well under one.
+struct BallFriction {
+    BallFrictionModel model = BallFrictionModel::fit; ///< which law
+    double a = 9.951e-3;                              ///< fit: u_b of very fast slides
+    double b = 0.108;                                 ///< fit: what a slow slide adds to a
+    double c = 1.088;                                 ///< fit: s/m, how soon the excess fades
+    double constant = 0.05;                           ///< constant model: u_b
+    /// Same law and same numbers.
+    bool operator==(const BallFriction&) const = default;
+};
+
+/// u_b of `friction` for surfaces sliding over each other at `sliding_speed` m/s (>= 0).
+double ball_friction_at(const BallFriction& friction, double sliding_speed);
+
 /// How a ball leaves a cushion or a pocket jaw.
 enum class CushionModel {
     physical, ///< impulse at the cushion nose with restitution e_c and friction f_c, spin-aware
@@ -52,7 +75,7 @@ struct PhysicsParams {
     double rolling_friction = 0.01;      ///< u_r, rolling resistance
     double spin_friction = 0.0127;       ///< u_sp, z-spin decays at 5 g u_sp / (2 R)
     double ball_restitution = 0.95;      ///< e_b
-    double ball_friction = 0.05;         ///< u_b, ball-ball
+    BallFriction ball_friction;          ///< u_b, ball-ball, against the sliding speed
     double cushion_restitution = 0.85;   ///< e_c
     double cushion_friction = 0.2;       ///< f_c
     double cushion_height_ratio = 0.635; ///< cushion nose height as a fraction of 2R

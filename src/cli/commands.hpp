@@ -26,7 +26,8 @@ int bench_command(const std::vector<std::string>& args, RenderBench render);
 /// @return 0 ok, 2 bad usage, 3 an invariant of the game was broken.
 int selfplay_command(const std::vector<std::string>& args);
 
-/// `termpool experiment friction|mass [--table T] [--csv]`: the seed report's study.
+/// `termpool experiment friction|mass|throw [--table T] [--model M] [--csv]`: the seed report's
+/// study, and throw against cut angle.
 /// @param args the command-line arguments after `experiment`.
 /// @return 0 ok, 2 bad usage.
 int experiment_command(const std::vector<std::string>& args);

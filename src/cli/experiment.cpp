@@ -1,5 +1,5 @@
 // `termpool experiment`: the seed report's simulation study (section 4), reproduced and
-// extended on the exact simulator: friction models, and the masses of the balls.
+// extended on the exact simulator: friction models, the masses of the balls, and throw.
 #include <algorithm>
 #include <clocale>
 #include <cmath>
@@ -17,13 +17,15 @@
 
 #include "cli/chart.hpp"
 #include "cli/commands.hpp"
+#include "cli/experiment_throw.hpp"
 #include "cli/numbers.hpp"
 
 namespace termpool::cli {
 namespace {
 
 constexpr const char* usage = "usage: termpool experiment friction [--table 7ft|8ft|9ft] [--csv]\n"
-                              "       termpool experiment mass [--csv]\n";
+                              "       termpool experiment mass [--csv]\n"
+                              "       termpool experiment throw [--model fit|constant] [--csv]\n";
 
 constexpr double break_speed = 12.0; // m/s, full power
 constexpr int racks = 51;            // seeded breaks per model (odd: a true median)
@@ -253,12 +255,13 @@ int experiment_command(const std::vector<std::string>& args) {
         std::fputs(usage, stdout);
         return 0;
     }
-    if (args.empty() || (args[0] != "friction" && args[0] != "mass")) {
+    if (args.empty() || (args[0] != "friction" && args[0] != "mass" && args[0] != "throw")) {
         std::fputs(usage, stderr);
         return 2;
     }
     bool csv = false;
     TableSize size = TableSize::nine_foot;
+    BallFrictionModel throw_model = BallFrictionModel::fit;
     for (std::size_t i = 1; i < args.size(); ++i) {
         if (args[i] == "--csv") {
             csv = true;
@@ -272,12 +275,23 @@ int experiment_command(const std::vector<std::string>& args) {
                              usage);
                 return 2;
             }
+        } else if (args[i] == "--model" && args[0] == "throw" && i + 1 < args.size()) {
+            const std::string& v = args[++i];
+            if (v == "fit" || v == "constant") {
+                throw_model = v == "fit" ? BallFrictionModel::fit : BallFrictionModel::constant;
+            } else {
+                std::fprintf(stderr, "termpool experiment: unknown throw model '%s'\n%s", v.c_str(),
+                             usage);
+                return 2;
+            }
         } else {
             std::fprintf(stderr, "termpool experiment: unknown option '%s'\n%s", args[i].c_str(),
                          usage);
             return 2;
         }
     }
+    if (args[0] == "throw")
+        return throw_study(throw_model, csv);
     return args[0] == "friction" ? friction_study(size, csv) : mass_study(csv);
 }
 

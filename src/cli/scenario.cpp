@@ -160,12 +160,20 @@ Problem parse_friction(const Line& line, Draft& draft) {
     return what + " must be > 0 (got " + std::string(text) + ")";
 }
 
+/// The line of a directive that may appear once, if it was given.
+std::optional<int> line_of(const Draft& draft, std::string_view key) {
+    const auto it = draft.given.find(key);
+    if (it == draft.given.end())
+        return std::nullopt;
+    return it->second;
+}
+
 /// What values of a parameter make physical sense.
 enum class Range { non_negative, unit_interval, positive };
 
 struct ParamSpec {
     std::string_view name;
-    double PhysicsParams::*field;
+    double PhysicsParams::*field; ///< null for u_b, which lives in PhysicsParams::ball_friction
     Range range;
 };
 
@@ -174,7 +182,7 @@ constexpr ParamSpec param_specs[] = {
     {"u_r", &PhysicsParams::rolling_friction, Range::non_negative},
     {"u_sp", &PhysicsParams::spin_friction, Range::non_negative},
     {"e_b", &PhysicsParams::ball_restitution, Range::unit_interval},
-    {"u_b", &PhysicsParams::ball_friction, Range::non_negative},
+    {"u_b", nullptr, Range::non_negative}, // the constant ball-ball friction: see parse_param
     {"e_c", &PhysicsParams::cushion_restitution, Range::unit_interval},
     {"f_c", &PhysicsParams::cushion_friction, Range::non_negative},
     {"g", &PhysicsParams::gravity, Range::positive},
@@ -211,8 +219,55 @@ Problem parse_param(const Line& line, Draft& draft) {
             return std::string(name) + " must be > 0" + got;
         break;
     }
-    draft.setup.physics.*spec->field = value;
+    if (spec->field) {
+        draft.setup.physics.*spec->field = value;
+        return {};
+    }
+    if (const std::optional<int> throw_line = line_of(draft, "throw"))
+        return "'param u_b' cannot go with 'throw' (line " + std::to_string(*throw_line) +
+               "): both set the ball-ball friction";
+    draft.setup.physics.ball_friction.model = BallFrictionModel::constant;
+    draft.setup.physics.ball_friction.constant = value;
     return {};
+}
+
+/// Reads a non-negative ball-friction constant of a `throw` line.
+Problem friction_constant(std::string_view text, std::string_view what, double& out) {
+    if (Problem p = number(text, what, out))
+        return p;
+    if (out < 0)
+        return std::string(what) + " must be >= 0 (got " + std::string(text) + ")";
+    return {};
+}
+
+Problem parse_throw(const Line& line, Draft& draft) {
+    constexpr const char* usage = "throw fit [A B C] | throw constant U";
+    if (Problem p = arity(line, 1, 4, usage))
+        return p;
+    if (Problem p = once(draft, "throw", line))
+        return p;
+    if (const std::optional<int> param_line = line_of(draft, "param u_b"))
+        return "'throw' cannot go with 'param u_b' (line " + std::to_string(*param_line) +
+               "): both set the ball-ball friction";
+    BallFriction& friction = draft.setup.physics.ball_friction;
+    if (line.arg(0) == "constant") {
+        if (Problem p = arity(line, 2, 2, usage))
+            return p;
+        friction.model = BallFrictionModel::constant;
+        return friction_constant(line.arg(1), "u_b", friction.constant);
+    }
+    if (line.arg(0) != "fit")
+        return "unknown throw model " + quoted(line.arg(0)) + " (expected fit or constant)";
+    if (line.arguments() == 2 || line.arguments() == 3)
+        return arity(line, 4, 4, usage);
+    friction.model = BallFrictionModel::fit;
+    if (line.arguments() == 1)
+        return {};
+    if (Problem p = friction_constant(line.arg(1), "fit constant A", friction.a))
+        return p;
+    if (Problem p = friction_constant(line.arg(2), "fit constant B", friction.b))
+        return p;
+    return friction_constant(line.arg(3), "fit constant C", friction.c);
 }
 
 Problem parse_ball(const Line& line, Draft& draft) {
@@ -445,6 +500,7 @@ constexpr Directive directives[] = {
     {"rack", parse_rack},         {"strike", parse_strike},       {"game", parse_game},
     {"shooter", parse_shooter},   {"groups", parse_groups},       {"break", parse_break},
     {"call", parse_call},         {"push-out", parse_push_out},   {"cue", parse_cue},
+    {"throw", parse_throw},
 };
 
 /// The directives that give a scenario a game context, in the order they are documented.
@@ -525,14 +581,6 @@ std::optional<ScenarioError> check_positions(std::vector<Placed>& placed,
         }
     }
     return std::nullopt;
-}
-
-/// The line of a directive that may appear once, if it was given.
-std::optional<int> line_of(const Draft& draft, std::string_view key) {
-    const auto it = draft.given.find(key);
-    if (it == draft.given.end())
-        return std::nullopt;
-    return it->second;
 }
 
 /// One side of a conflict between two directives: how to quote it and where it is.

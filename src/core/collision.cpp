@@ -54,6 +54,32 @@ Vec2 paid_from(Vec2 common, double mass, double energy) {
     return common * std::sqrt(std::max(0.0, 1 - energy / have));
 }
 
+// The friction impulse of a ball-ball contact with normal impulse `normal_impulse`. Its
+// horizontal part throws the object ball (from cut and from side spin).
+void apply_ball_friction(Ball& a, Ball& b, Vec2 n, double normal_impulse, const PhysicsParams& p) {
+    const double R = p.ball_radius;
+    // Slip of the two surfaces at the contact, including the vertical part that top and bottom
+    // spin make; only the tangential part matters. The normal impulse leaves it unchanged, so
+    // its length is the sliding speed at impact, which sets the friction.
+    const Vec3 n3 = lift(n);
+    const Vec3 va = lift(a.velocity) + cross(a.angular_velocity, n3 * R);
+    const Vec3 vb = lift(b.velocity) + cross(b.angular_velocity, n3 * -R);
+    Vec3 slip = va - vb;
+    slip = slip - n3 * dot(slip, n3);
+    const double friction = ball_friction_at(p.ball_friction, std::sqrt(dot(slip, slip)));
+    if (!(friction > 0))
+        return;
+    const double inv_a = 1.0 / a.mass, inv_b = 1.0 / b.mass;
+    const double inverse_tangent = 3.5 * (inv_a + inv_b);
+    const Vec3 impulse = friction_impulse(slip, normal_impulse, friction, inverse_tangent);
+    // The vertical part of the impulse would lift or press the balls; the cloth takes it.
+    a.velocity += planar(impulse) * inv_a;
+    b.velocity -= planar(impulse) * inv_b;
+    const Vec3 torque = cross(n3 * R, impulse);
+    a.angular_velocity += torque * (1.0 / moment_of_inertia(a.mass, R));
+    b.angular_velocity += torque * (1.0 / moment_of_inertia(b.mass, R));
+}
+
 // Two balls that meet slower than `elastic_below_speed` while the cloth drives one into the other
 // (a ball with top spin catching up with the one ahead) would bounce ever more often, each
 // slide-to-roll transition taking a little more of their relative speed. In reality they stay
@@ -116,7 +142,6 @@ bool pressed_together(const Ball& a, const Ball& b, Vec2 n, const PhysicsParams&
 } // namespace
 
 void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& p, const ClothModel& cloth) {
-    const double R = p.ball_radius;
     const Vec2 n = normalized(b.position - a.position);
     const double approach = dot(a.velocity - b.velocity, n);
     const double inv_a = 1.0 / a.mass, inv_b = 1.0 / b.mass;
@@ -128,24 +153,8 @@ void resolve_ball_ball(Ball& a, Ball& b, const PhysicsParams& p, const ClothMode
         a.velocity -= n * (normal_impulse * inv_a);
         b.velocity += n * (normal_impulse * inv_b);
 
-        if (!ideal && p.ball_friction > 0) {
-            // Slip of the two surfaces at the contact, including the vertical part that top and
-            // bottom spin make; only the tangential part matters.
-            const Vec3 n3 = lift(n);
-            const Vec3 va = lift(a.velocity) + cross(a.angular_velocity, n3 * R);
-            const Vec3 vb = lift(b.velocity) + cross(b.angular_velocity, n3 * -R);
-            Vec3 slip = va - vb;
-            slip = slip - n3 * dot(slip, n3);
-            const double inverse_tangent = 3.5 * (inv_a + inv_b);
-            const Vec3 impulse =
-                friction_impulse(slip, normal_impulse, p.ball_friction, inverse_tangent);
-            // The vertical part of the impulse would lift or press the balls; the cloth takes it.
-            a.velocity += planar(impulse) * inv_a;
-            b.velocity -= planar(impulse) * inv_b;
-            const Vec3 torque = cross(n3 * R, impulse);
-            a.angular_velocity += torque * (1.0 / moment_of_inertia(a.mass, R));
-            b.angular_velocity += torque * (1.0 / moment_of_inertia(b.mass, R));
-        }
+        if (!ideal)
+            apply_ball_friction(a, b, n, normal_impulse, p);
     }
     if (approach < p.elastic_below_speed)
         cloth.slow_pair_contact(a, b, n, p);
