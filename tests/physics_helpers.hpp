@@ -2,6 +2,7 @@
 // Small builders shared by the physics tests.
 
 #include <termpool/rack.hpp>
+#include <termpool/random.hpp>
 #include <termpool/simulator.hpp>
 #include <vector>
 
@@ -36,6 +37,19 @@ inline double total_energy(const std::vector<Ball>& balls, double radius) {
     for (const Ball& b : balls)
         e += kinetic_energy(b, radius);
     return e;
+}
+
+/// A classic cloth model with random constants: `kind` 0 decay, 1 constant, else combined, with
+/// K in 0.3..3 /s and A in 0.1..2 m/s^2 drawn from `rng` (the ranges the random-shot tests use).
+inline FrictionModel random_classic_friction(Random& rng, std::uint64_t kind) {
+    switch (kind) {
+    case 0:
+        return {FrictionKind::decay, rng.uniform(0.3, 3), 0, 0.005};
+    case 1:
+        return {FrictionKind::constant, 0, rng.uniform(0.1, 2), 0.005};
+    default:
+        return {FrictionKind::combined, rng.uniform(0.3, 3), rng.uniform(0.1, 2), 0.005};
+    }
 }
 
 } // namespace termpool::test

@@ -80,17 +80,7 @@ inline StressShot make_stress_shot(std::uint64_t seed, std::uint64_t classic_one
     const TableSize sizes[] = {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot};
     PhysicsParams& p = shot.params;
     if (rng.below(classic_one_in) == 0) {
-        switch (rng.below(3)) {
-        case 0:
-            p.friction = {FrictionKind::decay, rng.uniform(0.3, 3), 0, 0.005};
-            break;
-        case 1:
-            p.friction = {FrictionKind::constant, 0, rng.uniform(0.1, 2), 0.005};
-            break;
-        default:
-            p.friction = {FrictionKind::combined, rng.uniform(0.3, 3), rng.uniform(0.1, 2), 0.005};
-            break;
-        }
+        p.friction = random_classic_friction(rng, rng.below(3));
     }
     if (rng.below(2) == 0)
         p.collision = CollisionModel::ideal;

@@ -318,17 +318,7 @@ TEST_CASE("random classic shots keep every ball apart and out of the rubber afte
     for (std::uint64_t seed = 1; seed <= 300; ++seed) {
         Random rng(seed);
         PhysicsParams p;
-        switch (seed % 3) {
-        case 0:
-            p.friction = {FrictionKind::decay, rng.uniform(0.3, 3), 0, 0.005};
-            break;
-        case 1:
-            p.friction = {FrictionKind::constant, 0, rng.uniform(0.1, 2), 0.005};
-            break;
-        default:
-            p.friction = {FrictionKind::combined, rng.uniform(0.3, 3), rng.uniform(0.1, 2), 0.005};
-            break;
-        }
+        p.friction = test::random_classic_friction(rng, seed % 3);
         if (rng.below(2) == 0)
             p.collision = CollisionModel::ideal;
         if (rng.below(2) == 0)

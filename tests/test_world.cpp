@@ -141,19 +141,9 @@ namespace {
 void check_random_shot(std::uint64_t seed, bool sample_between) {
     Random rng(seed);
     PhysicsParams p;
-    switch (rng.below(6)) {
-    case 0:
-        p.friction = {FrictionKind::decay, rng.uniform(0.3, 3), 0, 0.005};
-        break;
-    case 1:
-        p.friction = {FrictionKind::constant, 0, rng.uniform(0.1, 2), 0.005};
-        break;
-    case 2:
-        p.friction = {FrictionKind::combined, rng.uniform(0.3, 3), rng.uniform(0.1, 2), 0.005};
-        break;
-    default:
-        break;
-    }
+    // Half the shots on a classic cloth, the others on the physical one.
+    if (const std::uint64_t kind = rng.below(6); kind < 3)
+        p.friction = test::random_classic_friction(rng, kind);
     if (rng.below(4) == 0)
         p.collision = CollisionModel::ideal;
     if (rng.below(4) == 0)
