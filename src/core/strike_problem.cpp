@@ -61,9 +61,9 @@ std::optional<std::string> strike_problem(const Strike& s, const PhysicsParams& 
         slate_restitution;
     if (s.speed * down_per_speed > max_down)
         return "a cue raised " + decimal(s.elevation_deg, 1) + " degrees at " +
-               decimal(s.speed, 2) + " m/s drives the ball into the slate hard enough to jump " +
-               "(jump shots are not modelled): at most " + decimal(max_down / down_per_speed, 2) +
-               " m/s at that elevation";
+               decimal(s.speed, 2) + " m/s would make the ball jump: at most " +
+               decimal(max_down / down_per_speed, 2) +
+               " m/s at that elevation (jump shots are not modelled)";
     return std::nullopt;
 }
 
