@@ -37,8 +37,8 @@ public:
 
 private:
     ComputerShot search(const Game& game);
-    Strike with_noise(const Strike& planned);
-    Strike noisy(const Strike& planned, Random& rng) const;
+    Strike with_noise(const Strike& planned, const PhysicsParams& params);
+    Strike noisy(const Strike& planned, const PhysicsParams& params, Random& rng) const;
     Strike break_strike(const Game& game, const Ball& cue) const;
     Vec2 place_break(const Game& game);
 

@@ -30,6 +30,16 @@ double noise_scale(Level level) {
     return 1;
 }
 
+// The aim's part of the direction error, degrees at noise scale 1. The tournaments measured the
+// direction error as a whole (sigma_aim_deg); now that an error in side turns the ball as well
+// (squirt, to first order in the offset), the aim's own part is what is left of it.
+double aim_sigma_deg(const PhysicsParams& params) {
+    constexpr double small_side = 1e-3;
+    const double from_tip = squirt_angle_deg(small_side, params.ball_mass, params.cue_end_mass) /
+                            small_side * sigma_tip;
+    return std::sqrt(std::max(0.0, sigma_aim_deg * sigma_aim_deg - from_tip * from_tip));
+}
+
 double degrees(Vec2 v) {
     return std::atan2(v.y, v.x) * 180 / std::numbers::pi;
 }
@@ -193,8 +203,9 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         for (const double speed : at)
             for (const double follow : spins) {
                 Strike strike{speed, degrees(line), 0, follow};
-                // Only the best player allows for throw: it is what sets pro above hard.
-                if (level_ == Level::pro)
+                // The players who plan position allow for throw and squirt as well; pro stays
+                // above hard by its steadier stroke and its deeper search.
+                if (level_ == Level::pro || level_ == Level::hard)
                     strike.angle_deg = corrected_aim_deg(game, strike, *cue, object, aim_point);
                 candidates.push_back({strike, {{object.id, pocket, false}}});
             }
@@ -268,7 +279,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     const int shooter = game.shooter();
     auto sample = [&](Candidate& c) {
         Game trial = game;
-        const Verdict v = trial.play(noisy(c.strike, noise), c.call);
+        const Verdict v = trial.play(noisy(c.strike, game.params(), noise), c.call);
         ++simulations_;
         double s = score(v, shooter);
         // Position: a kept table is worth more with a good shot to follow, and a table handed
@@ -315,11 +326,12 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     return best;
 }
 
-Strike ComputerPlayer::with_noise(const Strike& planned) {
-    return noisy(planned, rng_);
+Strike ComputerPlayer::with_noise(const Strike& planned, const PhysicsParams& params) {
+    return noisy(planned, params, rng_);
 }
 
-Strike ComputerPlayer::noisy(const Strike& planned, Random& rng) const {
+Strike ComputerPlayer::noisy(const Strike& planned, const PhysicsParams& params,
+                             Random& rng) const {
     const double k = noise_scale(level_);
     // Box-Muller from the given stream, so that a seed replays the same game.
     auto gaussian = [&] {
@@ -327,7 +339,7 @@ Strike ComputerPlayer::noisy(const Strike& planned, Random& rng) const {
         return std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
     };
     Strike s = planned;
-    s.angle_deg += k * sigma_aim_deg * gaussian();
+    s.angle_deg += k * aim_sigma_deg(params) * gaussian();
     s.speed = std::clamp(s.speed + k * sigma_speed * gaussian(), 0.05, max_strike_speed);
     s.side = std::clamp(s.side + k * sigma_tip * gaussian(), -0.5, 0.5);
     s.follow = std::clamp(s.follow + k * sigma_tip * gaussian(), -0.5, 0.5);
@@ -336,7 +348,7 @@ Strike ComputerPlayer::noisy(const Strike& planned, Random& rng) const {
 
 ComputerShot ComputerPlayer::shot(const Game& game) {
     ComputerShot s = search(game);
-    s.strike = with_noise(s.planned);
+    s.strike = with_noise(s.planned, game.params());
     return s;
 }
 
@@ -373,7 +385,7 @@ Vec2 ComputerPlayer::place_break(const Game& game) {
         for (int t = 0; t < tries; ++t) {
             Game play = trial;
             const int shooter = play.shooter();
-            total += score(play.play(noisy(strike, noise), {}), shooter);
+            total += score(play.play(noisy(strike, game.params(), noise), {}), shooter);
             ++simulations_;
         }
         if (total / tries > best) {
