@@ -291,12 +291,17 @@ inline StressReport check_stress_shot(const StressShot& shot) {
     return report;
 }
 
+/// A shot of more events than this is counted as long: the "a few thousand" at most.
+inline constexpr std::size_t long_shot_events = 5000;
+
 /// Counts over many shots.
 struct StressTally {
     std::size_t shots = 0, classic_shots = 0, events = 0, most_events = 0;
-    std::size_t failures[7] = {};   ///< by StressFailure
-    double worst_energy_rise = 0;   ///< J
-    double worst_relative_rise = 0; ///< of the shot's energy
+    std::uint64_t most_events_seed = 0; ///< the shot that had them
+    std::size_t long_shots = 0;         ///< shots of more than long_shot_events events
+    std::size_t failures[7] = {};       ///< by StressFailure
+    double worst_energy_rise = 0;       ///< J
+    double worst_relative_rise = 0;     ///< of the shot's energy
     /// The first failures met (seed, kind, detail, scenario), a few at most.
     std::vector<std::string> examples;
 
@@ -322,7 +327,11 @@ inline StressTally run_stress(std::uint64_t first, std::uint64_t count, unsigned
                 ++tally.shots;
                 tally.classic_shots += shot.params.friction.kind != FrictionKind::physical;
                 tally.events += r.events;
-                tally.most_events = std::max(tally.most_events, r.events);
+                tally.long_shots += r.events > long_shot_events;
+                if (r.events > tally.most_events) {
+                    tally.most_events = r.events;
+                    tally.most_events_seed = first + k;
+                }
                 tally.worst_energy_rise = std::max(tally.worst_energy_rise, r.worst_energy_rise);
                 tally.worst_relative_rise =
                     std::max(tally.worst_relative_rise, r.worst_relative_rise);
@@ -344,7 +353,11 @@ inline StressTally run_stress(std::uint64_t first, std::uint64_t count, unsigned
         all.shots += t.shots;
         all.classic_shots += t.classic_shots;
         all.events += t.events;
-        all.most_events = std::max(all.most_events, t.most_events);
+        all.long_shots += t.long_shots;
+        if (t.most_events > all.most_events) {
+            all.most_events = t.most_events;
+            all.most_events_seed = t.most_events_seed;
+        }
         all.worst_energy_rise = std::max(all.worst_energy_rise, t.worst_energy_rise);
         all.worst_relative_rise = std::max(all.worst_relative_rise, t.worst_relative_rise);
         for (std::size_t k = 0; k < 7; ++k)
