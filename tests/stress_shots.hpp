@@ -297,11 +297,12 @@ inline constexpr std::size_t long_shot_events = 5000;
 /// Counts over many shots.
 struct StressTally {
     std::size_t shots = 0, classic_shots = 0, events = 0, most_events = 0;
-    std::uint64_t most_events_seed = 0; ///< the shot that had them
-    std::size_t long_shots = 0;         ///< shots of more than long_shot_events events
-    std::size_t failures[7] = {};       ///< by StressFailure
-    double worst_energy_rise = 0;       ///< J
-    double worst_relative_rise = 0;     ///< of the shot's energy
+    std::uint64_t most_events_seed = 0;         ///< the shot that had them
+    std::size_t long_shots = 0;                 ///< shots of more than long_shot_events events
+    std::vector<std::uint64_t> long_shot_seeds; ///< the first few of them
+    std::size_t failures[7] = {};               ///< by StressFailure
+    double worst_energy_rise = 0;               ///< J
+    double worst_relative_rise = 0;             ///< of the shot's energy
     /// The first failures met (seed, kind, detail, scenario), a few at most.
     std::vector<std::string> examples;
 
@@ -327,7 +328,11 @@ inline StressTally run_stress(std::uint64_t first, std::uint64_t count, unsigned
                 ++tally.shots;
                 tally.classic_shots += shot.params.friction.kind != FrictionKind::physical;
                 tally.events += r.events;
-                tally.long_shots += r.events > long_shot_events;
+                if (r.events > long_shot_events) {
+                    ++tally.long_shots;
+                    if (tally.long_shot_seeds.size() < 5)
+                        tally.long_shot_seeds.push_back(first + k);
+                }
                 if (r.events > tally.most_events) {
                     tally.most_events = r.events;
                     tally.most_events_seed = first + k;
@@ -354,6 +359,8 @@ inline StressTally run_stress(std::uint64_t first, std::uint64_t count, unsigned
         all.classic_shots += t.classic_shots;
         all.events += t.events;
         all.long_shots += t.long_shots;
+        all.long_shot_seeds.insert(all.long_shot_seeds.end(), t.long_shot_seeds.begin(),
+                                   t.long_shot_seeds.end());
         if (t.most_events > all.most_events) {
             all.most_events = t.most_events;
             all.most_events_seed = t.most_events_seed;

@@ -28,7 +28,10 @@ void print(const StressTally& t, double seconds) {
     std::printf("shots %zu (%zu classic), events %zu (most in one shot %zu, seed %llu), %.1f s\n",
                 t.shots, t.classic_shots, t.events, t.most_events,
                 static_cast<unsigned long long>(t.most_events_seed), seconds);
-    std::printf("shots of more than %zu events: %zu\n", long_shot_events, t.long_shots);
+    std::printf("shots of more than %zu events: %zu", long_shot_events, t.long_shots);
+    for (const std::uint64_t seed : t.long_shot_seeds)
+        std::printf(" (seed %llu)", static_cast<unsigned long long>(seed));
+    std::printf("\n");
     std::printf("failures %zu:", t.failed());
     for (std::size_t k = 1; k < 7; ++k)
         std::printf(" %s %zu", stress_failure_name(static_cast<StressFailure>(k)), t.failures[k]);
