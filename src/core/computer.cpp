@@ -35,7 +35,7 @@ double noise_scale(Level level) {
 // (squirt, to first order in the offset), the aim's own part is what is left of it.
 double aim_sigma_deg(const PhysicsParams& params) {
     constexpr double small_side = 1e-3;
-    const double from_tip = squirt_angle_deg(small_side, params.ball_mass, params.cue_end_mass) /
+    const double from_tip = squirt_angle_deg(small_side, params.cue_mass(), params.cue_end_mass) /
                             small_side * sigma_tip;
     return std::sqrt(std::max(0.0, sigma_aim_deg * sigma_aim_deg - from_tip * from_tip));
 }

@@ -141,8 +141,10 @@ bool in_mouth(const Table& table, const Pocket& pocket, Vec2 p) {
 } // namespace
 
 bool on_playing_surface(const Table& table, Vec2 p, double radius) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        return false;
     if (!(rubber_depth(table, p, radius) <= rubber_tolerance))
-        return false; // also refuses NaN
+        return false;
     for (const Pocket& pocket : table.pockets)
         if (!before_capture_line(pocket, p))
             return false;
