@@ -24,8 +24,11 @@ Vec2 snooker_d_centre(const Table& table) {
 
 bool in_snooker_d(const Table& table, Vec2 p) {
     const Vec2 c = snooker_d_centre(table);
-    const double r = snooker_d_radius_on(table);
-    return p.x <= c.x && length_squared(p - c) <= r * r;
+    // A nanometre of slack: the yellow and green spots lie on the D's arc, and their round-off
+    // must not put them out of it.
+    const double slack = 1e-9;
+    const double r = snooker_d_radius_on(table) + slack;
+    return p.x <= c.x + slack && length_squared(p - c) <= r * r;
 }
 
 Vec2 snooker_spot(const Table& table, int colour) {
