@@ -311,6 +311,84 @@ TEST_CASE("the classic reproducers end with no overlap, nothing in a rail, and f
     }
 }
 
+TEST_CASE("a ball driven into the wedge between a rail and a ball the cloth holds leaves it in "
+          "one event",
+          "[physics][classic][regression][wedge]") {
+    // The soak's three shots of more than 5000 events: a ball pushed along a rail into a ball
+    // at rest beside it, which a push slower than the rest speed cannot move, bounced between
+    // the two every 1e-14 s (5,787, 7,176 and 62,532 events).
+    SECTION("soak seed 1852272: frozen to a rail and a ball, driven along the rail") {
+        const std::size_t events =
+            run_scenario("table 8ft\n"
+                         "friction decay 2.3878304650096287\n"
+                         "collision physical\n"
+                         "cushion ideal\n"
+                         "ball 0 2.311425 0.4831547587663409 mass=0.17\n"
+                         "ball 1 2.254275020395798 0.4831064758567747 mass=0.17\n"
+                         "ball 2 1.019375311186035 1.141425 mass=0.22533371746172398\n"
+                         "ball 3 0.028575 0.45971571904448766 mass=0.13072591763530797\n"
+                         "ball 4 0.25365115058707144 1.0974683309616957 mass=0.17\n"
+                         "ball 5 2.328208641857644 1.1414249989999998 mass=0.17\n"
+                         "ball 6 1.863492138794338 0.8577404402430674 mass=0.1531531763146404\n"
+                         "ball 7 0.3057239028151445 0.079823369616517 mass=0.17\n"
+                         "ball 8 1.0947120157209642 0.8877156560192402 mass=0.17\n"
+                         "ball 9 1.3281878426260512 1.141425 mass=0.222815321382199\n"
+                         "ball 10 2.1336724841335726 1.1414249989999998 mass=0.24738413598391068\n"
+                         "ball 11 0.25658057356751496 0.10899623037371875 mass=0.17\n"
+                         "strike 1.3138994485762878 272.58454198786086 -0.37309409558222495 "
+                         "-0.31878144516749307 45.46907484250184\n");
+        CHECK(events < 50);
+    }
+    SECTION("soak seed 1406983") {
+        const std::size_t events =
+            run_scenario("table 8ft\n"
+                         "friction combined 2.949034451651609 0.7940122016718368\n"
+                         "collision physical\n"
+                         "cushion ideal\n"
+                         "ball 0 0.60451670929032 0.3814810658403636 mass=0.17\n"
+                         "ball 1 0.028575 0.035785366674465316 mass=0.17\n"
+                         "ball 2 0.609888558907997 0.4383780415595094 mass=0.16305714671724675\n"
+                         "ball 3 0.5996645615208736 0.3245374168351984 mass=0.17\n"
+                         "ball 4 0.07264249459034056 0.07217463067953014 mass=0.17\n"
+                         "ball 5 0.22949836585451389 0.028575001 mass=0.17\n"
+                         "ball 6 0.028575001 0.5668197610978934 mass=0.16364925354538667\n"
+                         "strike 0.7876089063808713 345.616456416866 0.41812973763112526 "
+                         "0.1378779632810334 74.61825314023108\n");
+        CHECK(events < 200);
+    }
+    SECTION("soak seed 1271510") {
+        const std::size_t events =
+            run_scenario("table 9ft\n"
+                         "friction combined 1.0397477301696771 0.6442295144376209\n"
+                         "collision ideal\n"
+                         "cushion ideal\n"
+                         "ball 0 0.028575001 0.6590948987097035 mass=0.21653345246225528\n"
+                         "ball 1 0.08507241606754844 0.6504830054808513 mass=0.17\n"
+                         "ball 2 0.4018890100961796 1.1305972995122118 mass=0.17\n"
+                         "ball 3 2.068856950084554 0.13133540462282772 mass=0.17\n"
+                         "ball 4 0.9966010451763023 0.8534393648805438 mass=0.17\n"
+                         "ball 5 0.1391806626757955 0.6688792078955106 mass=0.17\n"
+                         "ball 6 0.028575 0.4759545725370679 mass=0.17\n"
+                         "ball 7 0.514179842108637 0.028575001 mass=0.17\n"
+                         "ball 8 0.9792844754077383 1.241424999 mass=0.1428091648467034\n"
+                         "ball 9 0.399416545668052 0.8592147912965753 mass=0.17\n"
+                         "ball 10 2.114721506230759 0.16543181358054043 mass=0.17\n"
+                         "ball 11 2.1662596080296956 1.0110658296001207 mass=0.17\n"
+                         "strike 0.5294165700755937 265.62859946562554 0.02074248751396801 "
+                         "-0.1975705188376673 77.68473059078804\n");
+        CHECK(events < 200);
+    }
+    SECTION("elastic contacts, a ball frozen to the rail and to a ball just below it") {
+        // The wedge is 1.75e-3 rad wide. Each turn the held ball takes the mover's speed
+        // towards it and the cloth stops it, so the mover is jammed; before, the shot never
+        // ended (200,000 events, the world's limit).
+        const std::size_t events = run_scenario(
+            "table 9ft\nfriction decay 0.5\ncollision ideal\ncushion ideal\n"
+            "ball 0 2.511425 0.6\nball 1 2.454275087489131 0.5999\nstrike 1 270 0 0\n");
+        CHECK(events < 20);
+    }
+}
+
 TEST_CASE("random classic shots keep every ball apart and out of the rubber after every event",
           "[physics][classic][property]") {
     const TableSize sizes[] = {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot};

@@ -163,6 +163,7 @@ template <class Law> ClothModel classic_cloth() {
         // way, so it never drives it back into a cushion it leaves; two moving balls it can
         // drive into each other (slow_pair_contact).
         .keeps_spin = false,
+        .holds_slow_balls = true,
         .slow_pair_contact = slow_pair_contact<Law>,
         .slow_cushion_contact = [](Ball&, Vec2, const PhysicsParams&) {},
         .towards_cushion = physical_towards_cushion,

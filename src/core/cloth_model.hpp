@@ -41,6 +41,10 @@ struct ClothModel {
 
     /// Whether the model keeps a ball's spin (the classic ones do not: the tip gives none).
     bool keeps_spin;
+    /// Whether a ball pushed slower than the rest speed stops at once (the classic models): a
+    /// ball at rest is then a wall to a slow push, and a ball can be caught in the wedge between
+    /// it and a cushion (wedge.hpp).
+    bool holds_slow_balls;
     /// The cloth's part in a slow contact of two balls (`n` from a to b), after the impulse:
     /// balls the cloth drives into each other are pushed rather than bounced.
     void (*slow_pair_contact)(Ball& a, Ball& b, Vec2 n, const PhysicsParams& params);

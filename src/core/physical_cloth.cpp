@@ -152,6 +152,7 @@ ClothModel physical_cloth() {
         .settle_motion_state = physical_settle_motion_state,
         .acceleration = physical_acceleration,
         .keeps_spin = true,
+        .holds_slow_balls = false,
         .slow_pair_contact = resolve_physical_push,
         .slow_cushion_contact = resolve_physical_slow_cushion,
         .towards_cushion = physical_towards_cushion,

@@ -12,6 +12,7 @@
 #include "pair_cache.hpp"
 #include "reach_box.hpp"
 #include "table_contacts.hpp"
+#include "wedge.hpp"
 
 namespace termpool {
 
@@ -166,11 +167,62 @@ struct World::Impl {
         core::resolve_ball_ball(a, b, params, cloth);
         set_piece(i, a);
         set_piece(j, b);
-        refresh_table_event(i);
-        refresh_table_event(j);
-        refresh_pairs(i, i);
-        refresh_pairs(j, i);
+        std::vector<std::size_t> changed = {i, j};
+        escape_wedge(i, j, changed);
+        escape_wedge(j, i, changed);
+        refresh_changed(changed);
         return {now, EventKind::ball_ball, std::min(a.id, b.id), std::max(a.id, b.id)};
+    }
+
+    // Table events first, then pairs, so that each pair search sees both balls' horizons.
+    void refresh_changed(const std::vector<std::size_t>& changed) {
+        for (const std::size_t k : changed)
+            refresh_table_event(k);
+        for (const std::size_t k : changed)
+            refresh_pairs(k, changed.front() == k ? k : changed.front());
+    }
+
+    // Ball i, just resolved, may be in a wedge between held balls and cushions (wedge.hpp) on a
+    // cloth that holds slow balls: then its contacts are resolved at once, the ones not reported
+    // yet (other than with `reported`) become pending events, and the balls changed are added
+    // to `changed`.
+    void escape_wedge(std::size_t i, std::size_t reported, std::vector<std::size_t>& changed) {
+        Ball mover = pieces[i].ball;
+        if (!cloth.holds_slow_balls || !is_moving(mover))
+            return;
+        const double apart = 2 * params.ball_radius + core::wedge_touch_gap;
+        std::vector<std::size_t> near;
+        std::vector<Ball> held;
+        for (std::size_t k = 0; k < count(); ++k) {
+            const Ball& other = pieces[k].ball;
+            if (k != i && other.state == MotionState::stationary &&
+                length(other.position - mover.position) <= apart) {
+                near.push_back(k);
+                held.push_back(other);
+            }
+        }
+        if (held.empty())
+            return;
+        const std::vector<core::CushionTouch> cushions =
+            core::touching_cushions(table, mover.position, params.ball_radius);
+        if (held.size() + cushions.size() < 2)
+            return; // one contact, already resolved: no wedge
+        const core::WedgeContacts touched =
+            core::escape_wedge(mover, cushions, held, params, cloth);
+        set_piece(i, mover);
+        for (const Event& c : touched.cushions)
+            pending.push_back({now, c.kind, mover.id, c.other});
+        for (const std::size_t index : touched.balls) {
+            const std::size_t k = near[index];
+            if (!(held[index] == pieces[k].ball)) {
+                set_piece(k, held[index]);
+                if (std::find(changed.begin(), changed.end(), k) == changed.end())
+                    changed.push_back(k);
+            }
+            if (k != reported)
+                pending.push_back({now, EventKind::ball_ball, std::min(mover.id, held[index].id),
+                                   std::max(mover.id, held[index].id)});
+        }
     }
 
     Event resolve_table_event(std::size_t i) {
@@ -211,8 +263,11 @@ struct World::Impl {
             break;
         }
         set_piece(i, b);
-        refresh_table_event(i);
-        refresh_pairs(i, i);
+        std::vector<std::size_t> changed = {i};
+        if (te.kind == TableEventKind::rail || te.kind == TableEventKind::jaw_line ||
+            te.kind == TableEventKind::jaw_point)
+            escape_wedge(i, i, changed);
+        refresh_changed(changed);
         return event;
     }
 
