@@ -15,6 +15,12 @@
 
 namespace termpool {
 
+/// Version of the physics: what a list of strikes plays into. Raised whenever a change moves
+/// an outcome by a single bit (tests/test_determinism.cpp keeps the hashes), so that a record
+/// names the physics it was made with. Version 1 is every build before versions were kept;
+/// version 2 has -ffp-contract=off and the project's own transcendental functions.
+inline constexpr int physics_version = 2;
+
 /// A cue strike: how the cue ball leaves the tip.
 struct Strike {
     double speed = 0;     ///< cue-ball speed v, m/s (0..20)

@@ -3,6 +3,7 @@
 /// Small value types for 2D and 3D vectors. All quantities are SI unless a name says otherwise.
 
 #include <cmath>
+#include <termpool/portable_math.hpp>
 
 namespace termpool {
 
@@ -58,9 +59,15 @@ inline Vec2 normalized(Vec2 v) {
     const double len = length(v);
     return len > 0 ? v / len : Vec2{};
 }
-/// Unit vector at angle `radians` counter-clockwise from +x.
+/// Unit vector at angle `radians` counter-clockwise from +x (the same bits on every machine).
 inline Vec2 unit_from_angle(double radians) {
-    return {std::cos(radians), std::sin(radians)};
+    const portable::SinCos sc{portable::sin(radians), portable::cos(radians)};
+    return {sc.cos, sc.sin};
+}
+/// Unit vector at angle `degrees` counter-clockwise from +x; exact along the axes.
+inline Vec2 unit_from_degrees(double degrees) {
+    const portable::SinCos sc = portable::sin_cos_degrees(degrees);
+    return {sc.cos, sc.sin};
 }
 
 /// A vector in space: x and y in the table plane, z up. Used for angular velocity.

@@ -9,9 +9,11 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <termpool/portable_math.hpp>
 #include <termpool/rack.hpp>
 #include <termpool/random.hpp>
 #include <termpool/simulator.hpp>
+#include <termpool/state_digest.hpp>
 #include <termpool/table.hpp>
 
 #include "cli/commands.hpp"
@@ -92,15 +94,19 @@ struct Sample {
     std::uint64_t cut_short = 0; ///< runs that hit World::max_events
 };
 
-/// Runs one shot and adds its time and events to `sample`.
+/// Runs one shot, adds its time and events to `sample` and its outcome to `digest`.
 ShotResult timed_shot(const Table& table, const PhysicsParams& params,
-                      const std::vector<Ball>& balls, const Strike& strike, Sample& sample) {
+                      const std::vector<Ball>& balls, const Strike& strike, Sample& sample,
+                      StateDigest& digest) {
     const auto start = std::chrono::steady_clock::now();
     ShotResult result = simulate_shot(table, params, balls, strike);
     const auto stop = std::chrono::steady_clock::now();
     sample.micros.push_back(std::chrono::duration<double, std::micro>(stop - start).count());
     sample.events += result.events.size();
     sample.cut_short += result.event_limit_hit ? 1 : 0;
+    digest.add(static_cast<std::uint64_t>(result.events.size()));
+    digest.add(result.rest_time);
+    digest.add(result.balls);
     return result;
 }
 
@@ -189,7 +195,9 @@ int bench_command(const std::vector<std::string>& args, RenderBench render) {
 
     // Breaks: the cue ball on the head spot aimed at the apex ball on the foot spot.
     const Vec2 aim = table.foot_spot() - table.head_spot();
-    const double aim_deg = std::atan2(aim.y, aim.x) * 180.0 / std::numbers::pi;
+    const double aim_deg = portable::atan2(aim.y, aim.x) * 180.0 / std::numbers::pi;
+    // Every outcome to the bit, so that two machines or builds can compare runs at a glance.
+    StateDigest digest;
     Sample breaks;
     std::vector<std::vector<Ball>> layouts;
     std::uint64_t unusable = 0;
@@ -197,7 +205,7 @@ int bench_command(const std::vector<std::string>& args, RenderBench render) {
         const std::vector<Ball> rack = make_rack(table, params, RackType::eight_ball, seed);
         const double angle = aim_deg + rng.uniform(-break_angle_jitter, break_angle_jitter);
         const ShotResult result =
-            timed_shot(table, params, rack, Strike{break_speed, angle, 0, 0}, breaks);
+            timed_shot(table, params, rack, Strike{break_speed, angle, 0, 0}, breaks, digest);
         auto layout = result.event_limit_hit ? std::nullopt : next_layout(result, table, params);
         if (layout)
             layouts.push_back(std::move(*layout));
@@ -213,7 +221,7 @@ int bench_command(const std::vector<std::string>& args, RenderBench render) {
         strike.angle_deg = rng.uniform(0, 360);
         strike.side = rng.uniform(-shot_max_tip_offset, shot_max_tip_offset);
         strike.follow = rng.uniform(-shot_max_tip_offset, shot_max_tip_offset);
-        timed_shot(table, params, layouts[k % layouts.size()], strike, shots);
+        timed_shot(table, params, layouts[k % layouts.size()], strike, shots, digest);
     }
 
     std::printf("termpool bench: 9ft table, default physics, seed %llu\n",
@@ -234,6 +242,8 @@ int bench_command(const std::vector<std::string>& args, RenderBench render) {
         std::printf("        (%llu layouts left out: cut short, or the cue ball pocketed and the "
                     "head spot taken)\n",
                     static_cast<unsigned long long>(unusable));
+    std::printf("hash of every outcome (positions, velocities, spins, events): %s\n",
+                digest_hex(digest.value()).c_str());
     if (breaks.cut_short + shots.cut_short > 0)
         std::printf("warning: %llu runs stopped at the limit of %zu events\n",
                     static_cast<unsigned long long>(breaks.cut_short + shots.cut_short),

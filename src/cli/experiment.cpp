@@ -10,6 +10,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <termpool/portable_math.hpp>
 #include <termpool/rack.hpp>
 #include <termpool/random.hpp>
 #include <termpool/simulator.hpp>
@@ -64,7 +65,8 @@ ShotResult break_shot(const Table& table, const PhysicsParams& params, std::vect
                       std::uint64_t seed, Trajectory* trajectory) {
     Random rng(seed);
     const Vec2 aim = table.foot_spot() - table.head_spot();
-    const double angle = std::atan2(aim.y, aim.x) * 180 / std::numbers::pi + rng.uniform(-0.5, 0.5);
+    const double angle =
+        portable::atan2(aim.y, aim.x) * 180 / std::numbers::pi + rng.uniform(-0.5, 0.5);
     return simulate_shot(table, params, std::move(rack), {break_speed, angle, 0, 0}, trajectory);
 }
 

@@ -7,6 +7,7 @@
 #include <langinfo.h>
 #include <numbers>
 #include <string>
+#include <termpool/portable_math.hpp>
 #include <termpool/simulator.hpp>
 #include <termpool/table.hpp>
 #include <vector>
@@ -48,8 +49,8 @@ double measured_throw_deg(const PhysicsParams& params, double speed, double cut_
     cue.position = {1.0, table.width / 2};
     object.id = 1;
     object.mass = params.ball_mass;
-    object.position = {cue.position.x + approach_gap + 2 * R * std::cos(cut),
-                       cue.position.y + 2 * R * std::sin(cut)};
+    object.position = {cue.position.x + approach_gap + 2 * R * portable::cos(cut),
+                       cue.position.y + 2 * R * portable::sin(cut)};
     World world(table, params, {cue, object});
     // Follow 0.4 of R is natural roll; a centre hit leaves the ball sliding without spin.
     world.strike({speed, 0, 0, rolling ? 0.4 : 0.0});
@@ -59,7 +60,7 @@ double measured_throw_deg(const PhysicsParams& params, double speed, double cut_
         const std::vector<Ball> balls = world.balls();
         const Vec2 centres = balls[1].position - balls[0].position;
         const Vec2 v = balls[1].velocity;
-        return (std::atan2(centres.y, centres.x) - std::atan2(v.y, v.x)) * degrees;
+        return (portable::atan2(centres.y, centres.x) - portable::atan2(v.y, v.x)) * degrees;
     }
     return 0; // no contact: a full miss cannot happen here, but it would throw nothing
 }

@@ -1,12 +1,13 @@
 #include <cmath>
 #include <termpool/params.hpp>
+#include <termpool/portable_math.hpp>
 
 namespace termpool {
 
 double ball_friction_at(const BallFriction& friction, double sliding_speed) {
     if (friction.model == BallFrictionModel::constant)
         return friction.constant;
-    return friction.a + friction.b * std::exp(-friction.c * sliding_speed);
+    return friction.a + friction.b * portable::exp(-friction.c * sliding_speed);
 }
 
 } // namespace termpool

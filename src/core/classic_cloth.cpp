@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <termpool/portable_math.hpp>
 #include <termpool/simulator.hpp>
 
 #include "classic_motion.hpp"
@@ -25,7 +26,7 @@ struct Step {
 };
 
 Step exponential_step(double v, double t, double K) {
-    return {v * std::exp(-K * t), v * -std::expm1(-K * t) / K};
+    return {v * portable::exp(-K * t), v * -portable::expm1(-K * t) / K};
 }
 
 Step linear_step(double v0, double a, double t) {
@@ -40,7 +41,7 @@ struct Decay {
         return exponential_step(v, dt, f.decay_rate);
     }
     static double stop_time(double v, const FrictionModel& f) {
-        return std::log(v / f.rest_speed) / f.decay_rate;
+        return portable::log(v / f.rest_speed) / f.decay_rate;
     }
 };
 
@@ -62,7 +63,7 @@ struct Combined {
         const double switch_speed = A / K;
         if (v <= switch_speed)
             return linear_step(v, A, dt);
-        const double t_switch = std::log(v / switch_speed) / K;
+        const double t_switch = portable::log(v / switch_speed) / K;
         if (dt <= t_switch)
             return exponential_step(v, dt, K);
         const Step first = exponential_step(v, t_switch, K);
@@ -73,8 +74,8 @@ struct Combined {
         const double K = f.decay_rate, A = f.deceleration, rest = f.rest_speed;
         const double switch_speed = A / K;
         if (v <= switch_speed || switch_speed <= rest)
-            return v <= switch_speed ? (v - rest) / A : std::log(v / rest) / K;
-        return std::log(v / switch_speed) / K + (switch_speed - rest) / A;
+            return v <= switch_speed ? (v - rest) / A : portable::log(v / rest) / K;
+        return portable::log(v / switch_speed) / K + (switch_speed - rest) / A;
     }
 };
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <termpool/portable_math.hpp>
 
 #include "contact_time.hpp"
 #include "polynomial.hpp"
@@ -18,14 +19,14 @@ constexpr double epsilon = std::numeric_limits<double>::epsilon();
 
 // The u a horizon of `horizon` seconds reaches (1 for an endless one).
 double u_at(double K, double horizon) {
-    return -std::expm1(-K * horizon);
+    return -portable::expm1(-K * horizon);
 }
 
 // Seconds until u: log1p keeps the precision of small u, where most contacts are.
 double time_of_u(double u, double K, double horizon) {
     if (!(u < infinity))
         return infinity;
-    return std::min(-std::log1p(-u) / K, horizon);
+    return std::min(-portable::log1p(-u) / K, horizon);
 }
 
 // |dr + dw u|^2 - distance^2: the squared gap of two decaying centres, or of one and a fixed
@@ -56,8 +57,8 @@ struct MixedGap {
     double distance;
 
     MixedSample at(double t) const {
-        const double decay = std::exp(-K * t);
-        const Vec2 d = (a.position - b.position) + a.velocity * (-std::expm1(-K * t) / K) -
+        const double decay = portable::exp(-K * t);
+        const Vec2 d = (a.position - b.position) + a.velocity * (-portable::expm1(-K * t) / K) -
                        (b.velocity * t + b.acceleration * (0.5 * t * t));
         const Vec2 va = a.velocity * decay;
         const Vec2 vb = b.velocity + b.acceleration * t;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <termpool/portable_math.hpp>
 #include <termpool/vec.hpp>
 
 namespace termpool::core {
@@ -37,7 +38,7 @@ inline double classic_switch_time(double speed, const ClassicLaw& law) {
     if (law.deceleration <= 0)
         return std::numeric_limits<double>::infinity();
     const double K = law.decay_rate;
-    return std::log(speed / (law.deceleration / K)) / K;
+    return portable::log(speed / (law.deceleration / K)) / K;
 }
 
 /// The centre's acceleration of a ball moving at `velocity` under `law`, m/s^2.

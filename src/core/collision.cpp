@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <termpool/portable_math.hpp>
 
 #include "classic_motion.hpp"
 #include "physical_cloth.hpp"
@@ -111,8 +112,8 @@ void turn_towards(Ball& ball, Vec2 n, double target) {
     const Vec2 t = perpendicular(n);
     const double sideways = std::sqrt(std::max(0.0, speed * speed - target * target));
     const Vec2 turned = n * target + t * std::copysign(sideways, dot(ball.velocity, t));
-    const double angle = std::atan2(cross(ball.velocity, turned), dot(ball.velocity, turned));
-    const double c = std::cos(angle), s = std::sin(angle);
+    const double angle = portable::atan2(cross(ball.velocity, turned), dot(ball.velocity, turned));
+    const double c = portable::cos(angle), s = portable::sin(angle);
     const Vec2 w = planar(ball.angular_velocity);
     ball.velocity = turned;
     ball.angular_velocity.x = c * w.x - s * w.y;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <termpool/computer.hpp>
+#include <termpool/portable_math.hpp>
 #include <termpool/simulator.hpp>
 
 namespace termpool {
@@ -41,7 +42,7 @@ double aim_sigma_deg(const PhysicsParams& params) {
 }
 
 double degrees(Vec2 v) {
-    return std::atan2(v.y, v.x) * 180 / std::numbers::pi;
+    return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
 }
 
 const Ball* find(const std::vector<Ball>& balls, int id) {
@@ -116,7 +117,8 @@ double next_shot_quality(const Game& game) {
             const double cut = dot(normalized(line), normalized(to_pocket));
             if (cut < 0.34)
                 continue;
-            const double quality = cut * cut * std::exp(-(length(line) + length(to_pocket)) / 2.5);
+            const double quality =
+                cut * cut * portable::exp(-(length(line) + length(to_pocket)) / 2.5);
             if (quality > best && !blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
                 !blocked(game.balls(), object->position, pocket.position, {0, target}, R))
                 best = quality;
@@ -153,9 +155,9 @@ double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue
             break;
         const Vec2 want = normalized(aim_point - object.position);
         const Vec2 got = normalized(hit->velocity);
-        const double error = std::atan2(cross(got, want), dot(got, want));
-        const Vec2 turned{want.x * std::cos(error) - want.y * std::sin(error),
-                          want.x * std::sin(error) + want.y * std::cos(error)};
+        const double error = portable::atan2(cross(got, want), dot(got, want));
+        const Vec2 turned{want.x * portable::cos(error) - want.y * portable::sin(error),
+                          want.x * portable::sin(error) + want.y * portable::cos(error)};
         const Vec2 ghost = object.position - turned * (2 * game.params().ball_radius);
         return degrees(ghost - cue.position);
     }
@@ -336,7 +338,7 @@ Strike ComputerPlayer::noisy(const Strike& planned, const PhysicsParams& params,
     // Box-Muller from the given stream, so that a seed replays the same game.
     auto gaussian = [&] {
         const double u1 = std::max(rng.uniform(), 1e-300), u2 = rng.uniform();
-        return std::sqrt(-2 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2);
+        return std::sqrt(-2 * portable::log(u1)) * portable::cos(2 * std::numbers::pi * u2);
     };
     Strike s = planned;
     s.angle_deg += k * aim_sigma_deg(params) * gaussian();

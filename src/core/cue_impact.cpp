@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <termpool/portable_math.hpp>
 
 namespace termpool::core {
 namespace {
@@ -16,9 +17,10 @@ struct CueFrame {
     Vec3 up;    // across the cue, upwards (tilted forwards when the cue is raised)
 };
 
-CueFrame cue_frame(Vec2 aim, double elevation) {
-    const double c = std::cos(elevation);
-    const double s = std::sin(elevation);
+CueFrame cue_frame(Vec2 aim, double elevation_deg) {
+    const portable::SinCos e = portable::sin_cos_degrees(elevation_deg);
+    const double c = e.cos;
+    const double s = e.sin;
     const Vec3 along{aim.x * c, aim.y * c, -s};
     const Vec3 right{aim.y, -aim.x, 0};
     return {along, right, cross(right, along)};
@@ -47,9 +49,7 @@ double squirt_ratio(double side, double follow, double ball_mass, double end_mas
 }
 
 CueImpact cue_impact(const Strike& strike, double ball_mass, const PhysicsParams& params) {
-    constexpr double degree = std::numbers::pi / 180.0;
-    const CueFrame cue =
-        cue_frame(unit_from_angle(strike.angle_deg * degree), strike.elevation_deg * degree);
+    const CueFrame cue = cue_frame(unit_from_degrees(strike.angle_deg), strike.elevation_deg);
     const double a = strike.side;
     const double b = strike.follow;
     const double s = std::sqrt(std::max(0.0, 1.0 - a * a - b * b));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 #include <termpool/match.hpp>
+#include <termpool/state_digest.hpp>
 
 namespace termpool {
 
@@ -154,30 +155,8 @@ std::variant<Match, RecordError> Match::replay(const GameRecord& record, std::si
     return m;
 }
 
-namespace {
-
-// FNV-1a, fed whole values: integers widened to 64 bits, doubles by their bits.
-class Digest {
-public:
-    void add(std::uint64_t v) {
-        for (int i = 0; i < 8; ++i) {
-            hash_ ^= (v >> (8 * i)) & 0xFF;
-            hash_ *= 0x100000001b3ULL;
-        }
-    }
-    void add(int v) { add(static_cast<std::uint64_t>(static_cast<std::int64_t>(v))); }
-    void add(bool v) { add(static_cast<std::uint64_t>(v)); }
-    void add(double v) { add(std::bit_cast<std::uint64_t>(v)); }
-    std::uint64_t value() const { return hash_; }
-
-private:
-    std::uint64_t hash_ = 0xcbf29ce484222325ULL;
-};
-
-} // namespace
-
 std::uint64_t Match::state_hash() const {
-    Digest d;
+    StateDigest d;
     d.add(static_cast<std::uint64_t>(record_.actions.size()));
     d.add(rack_);
     d.add(rack_breaker_);

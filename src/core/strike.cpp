@@ -1,5 +1,6 @@
 #include <cmath>
 #include <numbers>
+#include <termpool/portable_math.hpp>
 #include <termpool/simulator.hpp>
 
 #include "cloth_model.hpp"
@@ -23,7 +24,8 @@ Ball strike_cue_ball(const Ball& cue, const Strike& strike, const PhysicsParams&
 }
 
 double squirt_angle_deg(double side, double ball_mass, double end_mass) {
-    return -std::atan(core::squirt_ratio(side, 0, ball_mass, end_mass)) * 180.0 / std::numbers::pi;
+    return -portable::atan(core::squirt_ratio(side, 0, ball_mass, end_mass)) * 180.0 /
+           std::numbers::pi;
 }
 
 } // namespace termpool

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <termpool/portable_math.hpp>
 #include <termpool/table.hpp>
 
 namespace termpool {
@@ -89,7 +90,8 @@ Table make_table(TableSize size, double ball_radius, const PocketSpec& spec) {
         for (int side = 0; side < 2; ++side) {
             const MouthSide& m = layout.sides[side];
             // Turn the rail direction through the rubber (away from the table) by the jaw angle.
-            const Vec2 jaw = m.rail_direction * std::cos(angle) - m.rail_normal * std::sin(angle);
+            const Vec2 jaw =
+                m.rail_direction * portable::cos(angle) - m.rail_normal * portable::sin(angle);
             // Long enough that a ball is captured before it could reach the jaw's far end.
             const double jaw_length = (depth + 2.5 * ball_radius) / dot(jaw, layout.axis_in);
             const Vec2 end = m.point + jaw * jaw_length;

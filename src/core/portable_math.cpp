@@ -1,0 +1,275 @@
+// Range reduction to a small interval, then a Taylor or arctanh series evaluated by Horner's
+// rule. Series rather than minimax polynomials: their coefficients are plain reciprocals that
+// anyone can check, at the cost of a few more terms. Every constant is a double literal or a
+// quotient of two that the compiler folds with correct rounding.
+
+#include <cmath>
+#include <limits>
+#include <termpool/portable_math.hpp>
+
+namespace termpool::portable {
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+// ln 2 as a 32-bit head (k * ln2_hi is exact for |k| < 2^21) and the rest.
+constexpr double ln2_hi = 0.6931471803691238;
+constexpr double ln2_lo = 1.9082149292705877e-10;
+constexpr double inv_ln2 = 1.4426950408889634;
+
+// pi/2 in three 33-bit parts (Cody and Waite): k * part is exact for |k| < 2^20.
+constexpr double pio2_1 = 1.5707963267341256;
+constexpr double pio2_2 = 6.077100506303966e-11;
+constexpr double pio2_3 = 2.0222662487959506e-21;
+constexpr double two_over_pi = 0.6366197723675814;
+
+// pi, pi/2 and pi/6 as the nearest double and the rest.
+constexpr double pi_hi = 3.141592653589793;
+constexpr double pi_lo = 1.2246467991473532e-16;
+constexpr double pio2_hi = 1.5707963267948966;
+constexpr double pio2_lo = 6.123233995736766e-17;
+// atan(1/2) and atan(1) = pi/4, head and tail.
+constexpr double atan_half_hi = 0.4636476090008061;
+constexpr double atan_half_lo = 2.2698777452961687e-17;
+constexpr double atan_one_hi = 0.7853981633974483;
+constexpr double atan_one_lo = 3.061616997868383e-17;
+constexpr double pi_over_180 = 0.017453292519943295;
+
+// The nearest integer of x (halves away from zero), as a double; |x| < 2^52.
+double nearest_integer(double x) {
+    return x >= 0 ? std::floor(x + 0.5) : -std::floor(0.5 - x);
+}
+
+// e^r - 1 for |r| <= ln2/2: sum of r^n/n! for n = 1..15 (the next term is below 2^-60 r).
+double expm1_kernel(double r) {
+    double p = 1.0 / 1307674368000; // 1/15!
+    p = 1.0 / 87178291200 + r * p;
+    p = 1.0 / 6227020800 + r * p;
+    p = 1.0 / 479001600 + r * p;
+    p = 1.0 / 39916800 + r * p;
+    p = 1.0 / 3628800 + r * p;
+    p = 1.0 / 362880 + r * p;
+    p = 1.0 / 40320 + r * p;
+    p = 1.0 / 5040 + r * p;
+    p = 1.0 / 720 + r * p;
+    p = 1.0 / 120 + r * p;
+    p = 1.0 / 24 + r * p;
+    p = 1.0 / 6 + r * p;
+    p = 0.5 + r * p;
+    return r + (r * r) * p;
+}
+
+// x = k ln2 + r with |r| <= ln2/2 (slightly more after rounding).
+struct Reduced {
+    double r;
+    int k;
+};
+Reduced reduce_ln2(double x) {
+    const double k = nearest_integer(x * inv_ln2);
+    return {(x - k * ln2_hi) - k * ln2_lo, static_cast<int>(k)};
+}
+
+// sin r and cos r for |r| <= pi/4 (a little more after rounding): Taylor series to r^19 and
+// r^20, whose next terms are below 2^-60.
+double sin_kernel(double r) {
+    const double z = r * r;
+    double p = -1.0 / 121645100408832000; // -1/19!
+    p = 1.0 / 355687428096000 + z * p;
+    p = -1.0 / 1307674368000 + z * p;
+    p = 1.0 / 6227020800 + z * p;
+    p = -1.0 / 39916800 + z * p;
+    p = 1.0 / 362880 + z * p;
+    p = -1.0 / 5040 + z * p;
+    p = 1.0 / 120 + z * p;
+    p = -1.0 / 6 + z * p;
+    return r + (r * z) * p;
+}
+double cos_kernel(double r) {
+    const double z = r * r;
+    double p = 1.0 / 2432902008176640000; // 1/20!
+    p = -1.0 / 6402373705728000 + z * p;
+    p = 1.0 / 20922789888000 + z * p;
+    p = -1.0 / 87178291200 + z * p;
+    p = 1.0 / 479001600 + z * p;
+    p = -1.0 / 3628800 + z * p;
+    p = 1.0 / 40320 + z * p;
+    p = -1.0 / 720 + z * p;
+    p = 1.0 / 24 + z * p;
+    // 1 - z/2 loses the most; written so that its rounding is the last but one.
+    return (1.0 - 0.5 * z) + (z * z) * p;
+}
+
+// sin and cos of r + k pi/2.
+SinCos by_quadrant(double r, long long k) {
+    const double s = sin_kernel(r), c = cos_kernel(r);
+    switch (k & 3) {
+    case 0:
+        return {s, c};
+    case 1:
+        return {c, -s};
+    case 2:
+        return {-s, -c};
+    default:
+        return {-c, s};
+    }
+}
+
+SinCos sin_cos(double x) {
+    if (!std::isfinite(x))
+        return {nan, nan};
+    const double k = nearest_integer(x * two_over_pi);
+    const double r = ((x - k * pio2_1) - k * pio2_2) - k * pio2_3;
+    return by_quadrant(r, static_cast<long long>(std::fmod(k, 4.0)));
+}
+
+// atan t for |t| <= 7/16: t - t^3/3 + t^5/5 - ... to t^61 (t^2 <= 0.19, so the next term is
+// below 2^-60 t).
+double atan_kernel(double t) {
+    const double z = t * t;
+    double p = -1.0 / 61;
+    for (int n = 59; n >= 3; n -= 2)
+        p = (n % 4 == 1 ? 1.0 : -1.0) / n + z * p;
+    return t + (t * z) * p;
+}
+
+} // namespace
+
+double exp(double x) {
+    if (std::isnan(x))
+        return x;
+    if (x > 709.782712893384)
+        return infinity;
+    if (x < -745.1332191019412)
+        return 0;
+    const Reduced red = reduce_ln2(x);
+    return std::scalbn(1.0 + expm1_kernel(red.r), red.k);
+}
+
+double expm1(double x) {
+    if (std::isnan(x))
+        return x;
+    if (x > 709.782712893384)
+        return infinity;
+    if (x < -40)
+        return -1;                           // e^x is below 2^-57: -1 is the nearest double
+    if (std::fabs(x) <= 0.34657359027997264) // ln2 / 2
+        return expm1_kernel(x);
+    const Reduced red = reduce_ln2(x);
+    if (red.k > 56)
+        return std::scalbn(1.0 + expm1_kernel(red.r), red.k);
+    // 2^k (e^r - 1) + (2^k - 1): both terms exact, one rounding in the sum.
+    const double two_k = std::scalbn(1.0, red.k);
+    return two_k * expm1_kernel(red.r) + (two_k - 1.0);
+}
+
+double log(double x) {
+    if (std::isnan(x) || x < 0)
+        return nan;
+    if (x == 0)
+        return -infinity;
+    if (x == infinity)
+        return x;
+    // x = 2^e m with m in [sqrt(1/2), sqrt(2)); then log m = 2 atanh(s), s = (m-1)/(m+1).
+    int e = std::ilogb(x);
+    double m = std::scalbn(x, -e);
+    if (m > 1.4142135623730951) {
+        m *= 0.5;
+        ++e;
+    }
+    const double f = m - 1.0; // exact (Sterbenz)
+    const double s = f / (2.0 + f);
+    const double z = s * s;
+    // log m = 2 atanh(s) = 2s + s R with R = 2z/3 + 2z^2/5 + ... (z <= 0.0295, so the terms
+    // past z^12 are below 2^-60), and 2s = f - s f, so log m = f - s (f - R): f is exact and the
+    // rounded part is the small one.
+    double p = 2.0 / 25;
+    for (int n = 23; n >= 3; n -= 2)
+        p = 2.0 / n + z * p;
+    const double R = z * p;
+    const double log_m = f - s * (f - R);
+    const double k = e;
+    return k * ln2_hi + (log_m + k * ln2_lo);
+}
+
+double log1p(double x) {
+    if (std::isnan(x) || x < -1)
+        return nan;
+    if (x == -1)
+        return -infinity;
+    const double u = 1.0 + x;
+    if (u == 1.0)
+        return x; // |x| below half an ulp of 1: log(1 + x) = x to round-off
+    if (u == infinity)
+        return u;
+    // log(u) (x / (u - 1)) corrects for the rounding of 1 + x (Goldberg 1991).
+    return log(u) * (x / (u - 1.0));
+}
+
+double sin(double x) {
+    return sin_cos(x).sin;
+}
+
+double cos(double x) {
+    return sin_cos(x).cos;
+}
+
+SinCos sin_cos_degrees(double degrees) {
+    if (!std::isfinite(degrees))
+        return {nan, nan};
+    const double k = nearest_integer(degrees / 90);
+    const double r = (degrees - 90 * k) * pi_over_180;
+    return by_quadrant(r, static_cast<long long>(std::fmod(k, 4.0)));
+}
+
+namespace {
+
+// atan a for 0 <= a <= 1: atan a = atan c + atan((a - c) / (1 + a c)) around c = 1/2 and 1,
+// where a - c is exact, and atan c is kept as head and tail.
+double atan_unit(double a) {
+    if (a <= 7.0 / 16)
+        return atan_kernel(a);
+    if (a <= 11.0 / 16)
+        return atan_half_hi + (atan_kernel((a - 0.5) / (1.0 + 0.5 * a)) + atan_half_lo);
+    return atan_one_hi + (atan_kernel((a - 1.0) / (a + 1.0)) + atan_one_lo);
+}
+
+// atan(num / den) for num, den >= 0, not both 0 or infinite, with one rounded division:
+// beyond 1 it is pi/2 - atan(den / num).
+double atan_of_ratio(double num, double den) {
+    if (num > den)
+        return pio2_hi - (atan_unit(den / num) - pio2_lo);
+    return atan_unit(num / den);
+}
+
+} // namespace
+
+double atan(double x) {
+    if (std::isnan(x))
+        return x;
+    const double angle = atan_of_ratio(std::fabs(x), 1.0);
+    return x < 0 ? -angle : angle;
+}
+
+double atan2(double y, double x) {
+    if (std::isnan(x) || std::isnan(y))
+        return nan;
+    const bool y_negative = std::signbit(y);
+    const double pi_signed = y_negative ? -pi_hi : pi_hi;
+    if (y == 0) {
+        if (std::signbit(x))
+            return pi_signed;
+        return y; // +-0
+    }
+    if (x == 0)
+        return y_negative ? -pio2_hi : pio2_hi;
+    if (std::isinf(x) && std::isinf(y)) {
+        const double angle = x > 0 ? atan_one_hi : 3 * atan_one_hi;
+        return y_negative ? -angle : angle;
+    }
+    const double t = atan_of_ratio(std::fabs(y), std::fabs(x));
+    const double angle = x > 0 ? t : pi_hi - (t - pi_lo);
+    return y_negative ? -angle : angle;
+}
+
+} // namespace termpool::portable

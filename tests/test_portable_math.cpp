@@ -1,0 +1,135 @@
+// The project's own transcendental functions (src/core/portable_math.cpp) against the C
+// library's, in units in the last place, over the ranges termpool uses and beyond; and the
+// values that must be exact.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <termpool/portable_math.hpp>
+#include <termpool/random.hpp>
+
+namespace portable = termpool::portable;
+
+namespace {
+
+// Distance of a from b in units in the last place of b (b's ulp; 0 when both are equal).
+double ulps(double a, double b) {
+    if (a == b)
+        return 0;
+    const double ulp =
+        std::nextafter(std::fabs(b), std::numeric_limits<double>::infinity()) - std::fabs(b);
+    return std::fabs(a - b) / ulp;
+}
+
+// Largest error over `n` arguments drawn uniformly from [lo, hi].
+template <class Ours, class Theirs>
+double worst_ulps(Ours ours, Theirs theirs, double lo, double hi, int n = 200000) {
+    termpool::Random rng(7);
+    double worst = 0;
+    for (int i = 0; i < n; ++i) {
+        const double x = lo + (hi - lo) * rng.uniform();
+        worst = std::max(worst, ulps(ours(x), theirs(x)));
+    }
+    return worst;
+}
+
+constexpr double bound = 2.0; // ulps; the C library's own error is part of what is measured
+
+} // namespace
+
+TEST_CASE("portable exp, expm1, log and log1p are within 2 ulp of the C library",
+          "[portable-math]") {
+    auto e = [](double x) { return portable::exp(x); };
+    auto em1 = [](double x) { return portable::expm1(x); };
+    auto l = [](double x) { return portable::log(x); };
+    auto l1p = [](double x) { return portable::log1p(x); };
+    auto std_exp = [](double x) { return std::exp(x); };
+    auto std_expm1 = [](double x) { return std::expm1(x); };
+    auto std_log = [](double x) { return std::log(x); };
+    auto std_log1p = [](double x) { return std::log1p(x); };
+    CHECK(worst_ulps(e, std_exp, -30, 30) <= bound);
+    CHECK(worst_ulps(e, std_exp, -700, 700) <= bound);
+    CHECK(worst_ulps(em1, std_expm1, -1, 1) <= bound);
+    CHECK(worst_ulps(em1, std_expm1, -1e-6, 1e-6) <= bound);
+    CHECK(worst_ulps(em1, std_expm1, -40, 40) <= bound);
+    CHECK(worst_ulps(l, std_log, 1e-6, 10) <= bound);
+    CHECK(worst_ulps(l, std_log, 0.5, 2) <= bound);
+    CHECK(worst_ulps(l, std_log, 1, 1e300) <= bound);
+    CHECK(worst_ulps(l1p, std_log1p, -0.999, 1) <= bound);
+    CHECK(worst_ulps(l1p, std_log1p, -1e-8, 1e-8) <= bound);
+}
+
+TEST_CASE("portable sin, cos, atan and atan2 are within 2 ulp of the C library",
+          "[portable-math]") {
+    auto s = [](double x) { return portable::sin(x); };
+    auto c = [](double x) { return portable::cos(x); };
+    auto a = [](double x) { return portable::atan(x); };
+    auto std_sin = [](double x) { return std::sin(x); };
+    auto std_cos = [](double x) { return std::cos(x); };
+    auto std_atan = [](double x) { return std::atan(x); };
+    CHECK(worst_ulps(s, std_sin, -7, 7) <= bound);
+    CHECK(worst_ulps(c, std_cos, -7, 7) <= bound);
+    CHECK(worst_ulps(s, std_sin, -1e-3, 1e-3) <= bound);
+    CHECK(worst_ulps(s, std_sin, -1000, 1000) <= bound);
+    CHECK(worst_ulps(c, std_cos, -1000, 1000) <= bound);
+    CHECK(worst_ulps(a, std_atan, -3, 3) <= bound);
+    CHECK(worst_ulps(a, std_atan, -1e6, 1e6) <= bound);
+    termpool::Random rng(3);
+    double worst = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const double y = 2 * rng.uniform() - 1, x = 2 * rng.uniform() - 1;
+        worst = std::max(worst, ulps(portable::atan2(y, x), std::atan2(y, x)));
+    }
+    CHECK(worst <= bound);
+}
+
+TEST_CASE("portable functions give exact values where the maths is exact", "[portable-math]") {
+    CHECK(portable::exp(0) == 1);
+    CHECK(portable::expm1(0) == 0);
+    CHECK(portable::log(1) == 0);
+    CHECK(portable::log1p(0) == 0);
+    CHECK(portable::sin(0) == 0);
+    CHECK(portable::cos(0) == 1);
+    CHECK(portable::atan(0) == 0);
+    for (int quarter = -8; quarter <= 8; ++quarter) {
+        const portable::SinCos sc = portable::sin_cos_degrees(90.0 * quarter);
+        const int q = ((quarter % 4) + 4) % 4;
+        CHECK(sc.sin == (q == 1 ? 1.0 : q == 3 ? -1.0 : 0.0));
+        CHECK(sc.cos == (q == 0 ? 1.0 : q == 2 ? -1.0 : 0.0));
+    }
+    CHECK(portable::atan2(0.0, -1.0) == std::atan2(0.0, -1.0));
+    CHECK(portable::atan2(-0.0, -1.0) == std::atan2(-0.0, -1.0));
+    CHECK(portable::atan2(1.0, 0.0) == std::atan2(1.0, 0.0));
+    CHECK(std::signbit(portable::atan2(-0.0, 1.0)));
+}
+
+TEST_CASE("portable functions handle the edges as the C library does", "[portable-math]") {
+    const double inf = std::numeric_limits<double>::infinity();
+    CHECK(portable::exp(1000) == inf);
+    CHECK(portable::exp(-1000) == 0);
+    CHECK(portable::expm1(-1000) == -1);
+    CHECK(portable::log(0) == -inf);
+    CHECK(std::isnan(portable::log(-1)));
+    CHECK(portable::log(inf) == inf);
+    CHECK(portable::log1p(-1) == -inf);
+    CHECK(std::isnan(portable::sin(inf)));
+    CHECK(portable::atan(inf) == std::atan(inf));
+    CHECK(portable::atan2(inf, inf) == std::atan2(inf, inf));
+    CHECK(portable::atan2(-inf, -inf) == std::atan2(-inf, -inf));
+    CHECK(ulps(portable::exp(-740), std::exp(-740)) <= bound); // subnormal
+    CHECK(ulps(portable::log(5e-324), std::log(5e-324)) <= bound);
+}
+
+TEST_CASE("sin_cos_degrees agrees with sin and cos of the angle in radians", "[portable-math]") {
+    termpool::Random rng(5);
+    double worst = 0;
+    for (int i = 0; i < 100000; ++i) {
+        const double deg = 720 * rng.uniform() - 360;
+        const portable::SinCos sc = portable::sin_cos_degrees(deg);
+        const double rad = deg * (M_PI / 180);
+        worst =
+            std::max({worst, std::fabs(sc.sin - std::sin(rad)), std::fabs(sc.cos - std::cos(rad))});
+    }
+    CHECK(worst < 1e-15);
+}
