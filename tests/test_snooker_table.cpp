@@ -272,6 +272,14 @@ TEST_CASE("scenarios on the snooker table: snooker balls, ids up to 21, rack sno
     CHECK(refusal("table 9ft\nball 21 1 1\n", line).starts_with("ball id 21 is outside 0..15"));
     CHECK(refusal("table 12ft\n", line).find("snooker") != std::string::npos);
     CHECK(refusal("rack pyramid\n", line).find("snooker") != std::string::npos);
+    // The pool referees have no verdict on a colour.
+    CHECK(refusal("table snooker\ngame 8ball\nball 0 1 0.8\nball 17 2 0.8\nstrike 3 0\n", line) ==
+          "'ball 17' cannot go with 'game 8ball' (line 2): the 8ball referee judges balls 0..15 "
+          "only");
+    CHECK(line == 4);
+    CHECK(refusal("table snooker\nrack snooker\nshooter 2\nstrike 3 0\n", line)
+              .starts_with("rack ball 16 needs a game that has it"));
+    CHECK(parsed("table snooker\nrack snooker\nstrike 7 0\n").balls.size() == 22);
     // Pool tables keep pool balls.
     CHECK(parsed("table 7ft\nball 1 1 0.5\n").setup.physics.ball_radius == 0.028575);
 }

@@ -617,6 +617,23 @@ ScenarioError conflict(Said a, Said b, std::string_view why) {
                          first + " cannot go with " + second + ": " + std::string(why)};
 }
 
+/// True when any game directive was given.
+bool has_game_context(const Draft& draft) {
+    return std::any_of(std::begin(context_directives), std::end(context_directives),
+                       [&](std::string_view key) { return line_of(draft, key).has_value(); });
+}
+
+/// The largest ball id the referee of `game` knows.
+int last_ball_of(GameType game) {
+    switch (game) {
+    case GameType::eight_ball:
+    case GameType::eight_ball_bar:
+    case GameType::nine_ball:
+        break;
+    }
+    return pool_last_id;
+}
+
 /// Checks the game directives against each other, the balls and the strike.
 std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Placed>& placed) {
     const GameContext& game = draft.game;
@@ -647,6 +664,19 @@ std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Pl
             return conflict({"push-out", *push_line}, {"break", *break_line},
                             "the push-out is the shot after the break");
     }
+    // A pool referee has no verdict on a snooker colour.
+    if (has_game_context(draft)) {
+        for (const Placed& p : placed) {
+            if (p.ball.id <= last_ball_of(draft.setup.game))
+                continue;
+            const std::string why = "the " + std::string(game_type_name(draft.setup.game)) +
+                                    " referee judges balls 0.." +
+                                    std::to_string(last_ball_of(draft.setup.game)) + " only";
+            return game_line
+                       ? conflict({describe(p), p.line}, game_said, why)
+                       : ScenarioError{p.line, describe(p) + " needs a game that has it: " + why};
+        }
+    }
     if (call_line && game.call.ball != 0) {
         const bool on_table = std::any_of(placed.begin(), placed.end(), [&](const Placed& p) {
             return p.ball.id == game.call.ball;
@@ -668,12 +698,6 @@ std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Pl
                                  quoted(first->text) + " without a strike: nothing to judge"};
     }
     return std::nullopt;
-}
-
-/// True when any game directive was given.
-bool has_game_context(const Draft& draft) {
-    return std::any_of(std::begin(context_directives), std::end(context_directives),
-                       [&](std::string_view key) { return line_of(draft, key).has_value(); });
 }
 
 /// The first ball line with an id the table does not take (16..21 on a pool table).
