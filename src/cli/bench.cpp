@@ -37,9 +37,10 @@ constexpr double break_angle_jitter = 0.5;  // degrees either way, so that break
 constexpr double shot_min_speed = 1.0;      // m/s
 constexpr double shot_max_speed = 4.0;      // m/s
 constexpr double shot_max_tip_offset = 0.3; // fraction of R, either way
-// A snooker break: from the D, thin off the back red nearest the cue ball (a cut of some 50
-// degrees), firm enough to bring the cue ball round the table. Its aim is jittered less than
-// the 8-ball break's: half a degree over two metres would miss the pack or hit it full.
+// A snooker break: from the D, thin off the back red nearest the cue ball (the line of aim
+// 1.6 R off its centre: a cut of 53 degrees), at a firm 7 m/s. Its aim is jittered less than
+// the 8-ball break's: half a degree over two metres would move the line by 19 mm, from a thin
+// hit to a miss or to the side of the pack.
 constexpr double snooker_break_speed = 7.0;        // m/s
 constexpr double snooker_break_offset = 1.6;       // the cue ball's line passes this many R off
 constexpr double snooker_break_angle_jitter = 0.1; // degrees either way
@@ -222,11 +223,9 @@ double snooker_break_aim_deg(const std::vector<Ball>& rack, double radius) {
         if (!corner || key(b) > key(*corner))
             corner = &b;
     }
+    // Across the line of aim, on the side away from the pack's centre line (the cue ball's).
     const Vec2 along = normalized(corner->position - cue.position);
     Vec2 outward{along.y, -along.x};
-    if (dot(outward, cue.position - corner->position) < 0)
-        outward = -outward;
-    // The outer side is the one away from the pack's centre line, towards the cue ball's side.
     if (dot(outward, Vec2{0, cue.position.y - corner->position.y}) < 0)
         outward = -outward;
     return degrees_of(corner->position + outward * (snooker_break_offset * radius) - cue.position);
