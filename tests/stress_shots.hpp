@@ -13,6 +13,7 @@
 #include <termpool/random.hpp>
 #include <termpool/simulator.hpp>
 #include <termpool/table.hpp>
+#include <termpool/table_physics.hpp>
 #include <termpool/text_numbers.hpp>
 #include <thread>
 #include <vector>
@@ -72,13 +73,18 @@ struct StressReport {
     double worst_relative_rise = 0; ///< the largest rise over the shot's energy
 };
 
-/// The shot for `seed`; one shot in `classic_one_in` uses a classic cloth model.
-inline StressShot make_stress_shot(std::uint64_t seed, std::uint64_t classic_one_in = 5) {
-    Random rng(seed * 0x9e3779b97f4a7c15ULL + 1);
+/// The shot for `seed`; one shot in `classic_one_in` uses a classic cloth model. With
+/// `snooker`, on the snooker table with snooker balls: snooker racks and up to 22 balls (ids
+/// 0..21); the pool shots are the same for a seed as before snooker was added.
+inline StressShot make_stress_shot(std::uint64_t seed, std::uint64_t classic_one_in = 5,
+                                   bool snooker = false) {
+    Random rng(seed * 0x9e3779b97f4a7c15ULL + 1 + (snooker ? 0x5a00cce7ULL : 0));
     StressShot shot;
     shot.seed = seed;
     const TableSize sizes[] = {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot};
     PhysicsParams& p = shot.params;
+    if (snooker)
+        p = physics_for_table(TableSize::snooker);
     if (rng.below(classic_one_in) == 0) {
         p.friction = random_classic_friction(rng, rng.below(3));
     }
@@ -86,17 +92,21 @@ inline StressShot make_stress_shot(std::uint64_t seed, std::uint64_t classic_one
         p.collision = CollisionModel::ideal;
     if (rng.below(2) == 0)
         p.cushion = CushionModel::ideal;
-    shot.table = make_table(sizes[rng.below(3)], p.ball_radius);
+    shot.table = snooker ? make_table(TableSize::snooker, p.ball_radius)
+                         : make_table(sizes[rng.below(3)], p.ball_radius);
     const Table& table = shot.table;
     const double R = p.ball_radius;
 
     if (rng.below(3) == 0) {
-        shot.balls = make_rack(table, p, rng.below(2) ? RackType::eight_ball : RackType::nine_ball,
-                               rng.next());
+        if (snooker)
+            shot.balls = make_rack(table, p, RackType::snooker, rng.next());
+        else
+            shot.balls = make_rack(
+                table, p, rng.below(2) ? RackType::eight_ball : RackType::nine_ball, rng.next());
     } else {
         // Balls anywhere the table holds them, pocket mouths included; some frozen to another
         // ball or to a rail (touching, or 1 nm off), some heavier or lighter.
-        const int count = 1 + static_cast<int>(rng.below(16));
+        const int count = 1 + static_cast<int>(rng.below(snooker ? 22 : 16));
         for (int id = 0; id < count; ++id) {
             for (int attempt = 0; attempt < 100; ++attempt) {
                 Ball b = ball_at(id, rng.uniform(-0.05, table.length + 0.05),
@@ -314,16 +324,17 @@ struct StressTally {
     }
 };
 
-/// Checks the shots of seeds first .. first + count - 1 on `threads` threads.
+/// Checks the shots of seeds first .. first + count - 1 on `threads` threads (with `snooker`,
+/// the snooker table's shots).
 inline StressTally run_stress(std::uint64_t first, std::uint64_t count, unsigned threads,
-                              std::uint64_t classic_one_in = 5) {
+                              std::uint64_t classic_one_in = 5, bool snooker = false) {
     std::vector<StressTally> tallies(std::max(1u, threads));
     std::vector<std::thread> crew;
     for (std::size_t t = 0; t < tallies.size(); ++t) {
         crew.emplace_back([&, t] {
             StressTally& tally = tallies[t];
             for (std::uint64_t k = t; k < count; k += tallies.size()) {
-                const StressShot shot = make_stress_shot(first + k, classic_one_in);
+                const StressShot shot = make_stress_shot(first + k, classic_one_in, snooker);
                 const StressReport r = check_stress_shot(shot);
                 ++tally.shots;
                 tally.classic_shots += shot.params.friction.kind != FrictionKind::physical;

@@ -131,3 +131,19 @@ TEST_CASE("bad races and break rules are refused", "[config][race]") {
         CHECK(o.race_to == 1);
     }
 }
+
+TEST_CASE("the snooker table from the command line or the config", "[config][snooker]") {
+    std::string why;
+    const auto parsed = parse_game_options({"--table", "snooker"}, why);
+    REQUIRE(parsed);
+    CHECK(parsed->setup.table == TableSize::snooker);
+    // The balls follow the table in the game, not in the options: the record keeps defaults.
+    CHECK(parsed->setup.physics.ball_radius == PhysicsParams{}.ball_radius);
+    CHECK(game_physics(parsed->setup).ball_radius == 0.02625);
+    GameOptions o;
+    std::vector<std::string> warnings;
+    CHECK_FALSE(apply_config("table = snooker\n", o, warnings));
+    CHECK(o.setup.table == TableSize::snooker);
+    CHECK_FALSE(parse_game_options({"--table", "12ft"}, why));
+    CHECK(why.find("snooker") != std::string::npos);
+}

@@ -72,6 +72,7 @@ TEST_CASE("hall protocol: every client message reads back", "[hall]") {
     client_round_trip(Hello{protocol_version, kToken, "Ann Marie 100%"});
     client_round_trip(Create{GameType::nine_ball, TableSize::seven_foot, 5});
     client_round_trip(Create{GameType::eight_ball_bar, TableSize::eight_foot, 1});
+    client_round_trip(Create{GameType::eight_ball, TableSize::snooker, 3});
     client_round_trip(Sit{12, 2});
     client_round_trip(Watch{9999});
     client_round_trip(Leave{});
@@ -109,6 +110,8 @@ TEST_CASE("hall protocol: every server message reads back", "[hall]") {
     server_round_trip(table);
     table.seats[0] = {SeatKind::empty, ""};
     table.state = TableState::waiting;
+    server_round_trip(table);
+    table.size = TableSize::snooker;
     server_round_trip(table);
     server_round_trip(PlayerView{"Ann", 0, 0});
     server_round_trip(PlayerView{"Ann", 3, 2});

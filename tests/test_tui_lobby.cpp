@@ -49,6 +49,16 @@ LobbyView two_tables() {
 
 } // namespace
 
+TEST_CASE("the lobby names a snooker table whole where it has the Size column",
+          "[tui][lobby][snooker]") {
+    LobbyView v = two_tables();
+    v.tables[1].size = TableSize::snooker;
+    const Grid g = render_lobby(v, Capabilities{}, 100, 32);
+    const std::string text = all_text(g);
+    INFO(text);
+    CHECK(text.find("snooker 5") != std::string::npos);
+}
+
 TEST_CASE("the lobby lists the tables, who is where, the message and the keys", "[tui][lobby]") {
     const Capabilities caps;
     for (const auto& [w, h] : {std::pair{80, 24}, std::pair{100, 32}, std::pair{200, 60}}) {

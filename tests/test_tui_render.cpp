@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 #include <termpool/rack.hpp>
+#include <termpool/table_physics.hpp>
 
 #include "tui/ball_style.hpp"
 #include "tui/grid_dump.hpp"
@@ -1030,4 +1031,29 @@ TEST_CASE("in ASCII the game's dashes and quotes are plain", "[tui]") {
     const std::string all = screen_text(draw(v, 100, 32, {0, false}));
     CHECK(all.find("Foul: scratch - Bob has ball in hand \"kitchen\"") != std::string::npos);
     CHECK(all.find('?') == all.find("? help"));
+}
+
+TEST_CASE("the snooker table with a snooker rack renders at any size and in every mode",
+          "[tui][snooker]") {
+    // Drawn as a pool table for now (the D and the spots come with the snooker game); here
+    // only that 22 balls and the 12 ft table draw nothing wrong.
+    const PhysicsParams params = physics_for_table(TableSize::snooker);
+    const Table snooker = make_table(TableSize::snooker, params.ball_radius);
+    View v;
+    v.table = &snooker;
+    v.balls = make_rack(snooker, params, RackType::snooker, 3);
+    v.ball_radius = params.ball_radius;
+    v.names[0] = "Alice";
+    v.names[1] = "Bob";
+    v.shooter = 1;
+    v.aiming = true;
+    v.aim_deg = 0;
+    for (const auto& [w, h] : {std::pair{80, 24}, {100, 32}, {200, 60}, {41, 15}, {5, 3}})
+        for (const Mode& mode : modes) {
+            CAPTURE(w, h, mode.name);
+            const Grid g = render(v, make_layout(snooker, w, h), mode.caps, w, h);
+            CHECK(g.cells.size() == static_cast<std::size_t>(w * h));
+            for (const Cell& c : g.cells)
+                CHECK(display_width(c.glyph) <= 1);
+        }
 }

@@ -15,6 +15,9 @@ namespace termpool {
 enum class RackType {
     eight_ball, ///< triangle of 15, the 8 in the centre, a solid and a stripe in the back corners
     nine_ball,  ///< diamond of 9, the 1 at the apex, the 9 in the centre
+    /// snooker: 15 reds in a triangle just above the pink, apex nearest it, the six colours on
+    /// their spots, the cue ball in the D (between the brown and the yellow, on the baulk line)
+    snooker,
 };
 
 /// Gap between neighbouring balls in a rack (m): a tight rack, nearly frozen. (A looser rack
@@ -30,9 +33,10 @@ inline std::uint64_t game_rack_seed(std::uint64_t game_seed, int rerack) {
     return game_seed * 1000003ULL + static_cast<std::uint64_t>(rerack);
 }
 
-/// The object balls racked with the apex on the foot spot and the cue ball on the head spot.
-/// Without a seed the order is fixed; with one, the free positions are shuffled and every ball
-/// is moved by up to `rack_jitter`.
+/// The object balls racked with the apex on the foot spot and the cue ball on the head spot
+/// (snooker: as RackType::snooker says, with ids as snooker_layout.hpp gives them). Without a
+/// seed the order is fixed; with one, the free positions are shuffled and every racked ball
+/// (every red in snooker; the colours stay on their spots) is moved by up to `rack_jitter`.
 std::vector<Ball> make_rack(const Table& table, const PhysicsParams& params, RackType type,
                             std::optional<std::uint64_t> seed = std::nullopt);
 

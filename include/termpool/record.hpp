@@ -39,7 +39,8 @@ struct RecordedAction {
 /// A whole game, or a whole match: its racks after the first each start with a rack action.
 struct GameRecord {
     /// The rules, the table and the physics; a record keeps the cloth model and the cue ball's
-    /// mass, the other constants are the defaults.
+    /// mass, the other constants are the defaults (the balls' size and mass follow the table:
+    /// game_physics).
     GameSetup setup;
     std::uint64_t seed = 1;                          ///< the first rack's seed
     int breaker = 1;                                 ///< who broke the first rack

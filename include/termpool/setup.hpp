@@ -13,6 +13,7 @@
 #include <termpool/params.hpp>
 #include <termpool/rules.hpp>
 #include <termpool/table.hpp>
+#include <termpool/table_physics.hpp>
 #include <variant>
 
 namespace termpool {
@@ -21,13 +22,20 @@ namespace termpool {
 struct GameSetup {
     GameType game = GameType::eight_ball;   ///< the rules
     TableSize table = TableSize::nine_foot; ///< the table's size
-    PhysicsParams physics;                  ///< the simulator's constants and models
+    /// The simulator's constants and models as chosen (the defaults but for what the player
+    /// changed); the balls' size and mass follow the table (`game_physics`).
+    PhysicsParams physics;
 };
 
-/// The table of `setup`, built for its ball radius.
+/// The physics a game of `setup` is played with: its physics with the balls of its table
+/// (`physics_for_table`), so snooker balls on the snooker table.
+PhysicsParams game_physics(const GameSetup& setup);
+
+/// The table of `setup`, built for the radius of its balls (`game_physics`).
 Table make_table(const GameSetup& setup);
 
-/// A new rack of `setup`'s game with `breaker` (1 or 2) to break, racked from `seed`.
+/// A new rack of `setup`'s game with `breaker` (1 or 2) to break, racked from `seed`, played
+/// with `game_physics(setup)`.
 Game make_game(const GameSetup& setup, int breaker, std::uint64_t seed);
 
 /// Why the words of a cloth model were refused; each reader words it its own way.

@@ -25,6 +25,11 @@ inline constexpr int snooker_black = 21;  ///< worth 7
 /// Number of balls in a snooker set, the cue ball included.
 inline constexpr int snooker_ball_count = 22;
 
+/// Radius of a snooker ball, m (52.5 mm across).
+inline constexpr double snooker_ball_radius = 0.02625;
+/// Mass of a snooker ball, kg (about 142 g; the cue ball the same).
+inline constexpr double snooker_ball_mass = 0.142;
+
 /// Playing area of a 12 ft snooker table between the cushion noses, m.
 inline constexpr double snooker_table_length = 3.569;
 /// Width of that playing area, m.

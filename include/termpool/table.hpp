@@ -13,12 +13,18 @@
 
 namespace termpool {
 
-/// The three common table sizes (playing surface between the cushion noses).
+/// The three common pool table sizes and the snooker table (playing surface between the
+/// cushion noses).
 enum class TableSize {
     seven_foot, ///< 1.98 x 0.99 m
     eight_foot, ///< 2.34 x 1.17 m
     nine_foot,  ///< 2.54 x 1.27 m (default)
+    snooker,    ///< 12 ft snooker table, 3.569 x 1.778 m, with snooker's smaller pockets
 };
+
+/// Every table size, pool's first, in the order menus offer them.
+inline constexpr TableSize all_table_sizes[] = {TableSize::seven_foot, TableSize::eight_foot,
+                                                TableSize::nine_foot, TableSize::snooker};
 
 /// A straight piece of cushion rubber. Balls approach it from the side `normal` points to.
 struct CushionSegment {
@@ -72,13 +78,23 @@ struct PocketSpec {
     double side_capture_depth = 0.02;   ///< m behind the mouth line
 };
 
-/// Builds the table of the given size for balls of radius `ball_radius`.
-Table make_table(TableSize size, double ball_radius = 0.028575, const PocketSpec& spec = {});
+/// The pockets of a table size: the WPA's (the defaults of PocketSpec) on a pool table;
+/// snooker's smaller, rounded ones (corner 86 mm, middle 105 mm at the cushion line) on the
+/// snooker table.
+PocketSpec pocket_spec(TableSize size);
 
-/// Name of a table size as used on the command line ("9ft").
+/// Builds the table of the given size, with its own pockets (`pocket_spec`), for balls of
+/// radius `ball_radius`.
+Table make_table(TableSize size, double ball_radius = 0.028575);
+
+/// Builds the table of the given size with the pockets of `spec`, for balls of radius
+/// `ball_radius`.
+Table make_table(TableSize size, double ball_radius, const PocketSpec& spec);
+
+/// Name of a table size as used on the command line ("9ft", "snooker").
 const char* table_size_name(TableSize size);
 
-/// Parses "7ft", "8ft" or "9ft"; nothing for anything else.
+/// Parses "7ft", "8ft", "9ft" or "snooker"; nothing for anything else.
 std::optional<TableSize> parse_table_size(std::string_view name);
 
 /// How far a ball of radius `radius` centred at `p` presses into the cushion rubber, m: the

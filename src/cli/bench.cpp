@@ -13,8 +13,10 @@
 #include <termpool/rack.hpp>
 #include <termpool/random.hpp>
 #include <termpool/simulator.hpp>
+#include <termpool/snooker_layout.hpp>
 #include <termpool/state_digest.hpp>
 #include <termpool/table.hpp>
+#include <termpool/table_physics.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/numbers.hpp"
@@ -24,8 +26,10 @@ namespace {
 
 constexpr const char* usage = "usage: termpool bench [--breaks N] [--shots N] [--seed S]\n"
                               "       termpool bench --render\n"
-                              "  --breaks N  seeded 8-ball breaks to time (default 1000, N >= 1)\n"
-                              "  --shots N   random shots on the break layouts (default 10000)\n"
+                              "  --breaks N  seeded 8-ball breaks to time, and as many snooker\n"
+                              "              breaks (default 1000, N >= 1)\n"
+                              "  --shots N   random shots on the break layouts of each (default\n"
+                              "              10000)\n"
                               "  --seed S    seed of the break angles and the shots (default 1)\n"
                               "  --render    time the terminal front end instead: frame\n"
                               "              composition and bytes sent per animation frame\n";
@@ -35,6 +39,13 @@ constexpr double break_angle_jitter = 0.5;  // degrees either way, so that break
 constexpr double shot_min_speed = 1.0;      // m/s
 constexpr double shot_max_speed = 4.0;      // m/s
 constexpr double shot_max_tip_offset = 0.3; // fraction of R, either way
+// A snooker break: from the D, thin off the back red nearest the cue ball (the line of aim
+// 1.6 R off its centre: a cut of 53 degrees), at a firm 7 m/s. Its aim is jittered less than
+// the 8-ball break's: half a degree over two metres would move the line by 19 mm, from a thin
+// hit to a miss or to the side of the pack.
+constexpr double snooker_break_speed = 7.0;        // m/s
+constexpr double snooker_break_offset = 1.6;       // the cue ball's line passes this many R off
+constexpr double snooker_break_angle_jitter = 0.1; // degrees either way
 
 struct Options {
     std::uint64_t breaks = 1000;
@@ -92,27 +103,27 @@ struct Sample {
     std::vector<double> micros;
     std::uint64_t events = 0;
     std::uint64_t cut_short = 0; ///< runs that hit World::max_events
+    StateDigest outcomes;        ///< every run's events and final balls, to the bit
 };
 
-/// Runs one shot, adds its time and events to `sample` and its outcome to `digest`.
+/// Runs one shot and adds its time, events and outcome to `sample`.
 ShotResult timed_shot(const Table& table, const PhysicsParams& params,
-                      const std::vector<Ball>& balls, const Strike& strike, Sample& sample,
-                      StateDigest& digest) {
+                      const std::vector<Ball>& balls, const Strike& strike, Sample& sample) {
     const auto start = std::chrono::steady_clock::now();
     ShotResult result = simulate_shot(table, params, balls, strike);
     const auto stop = std::chrono::steady_clock::now();
     sample.micros.push_back(std::chrono::duration<double, std::micro>(stop - start).count());
     sample.events += result.events.size();
     sample.cut_short += result.event_limit_hit ? 1 : 0;
-    digest.add(static_cast<std::uint64_t>(result.events.size()));
-    digest.add(result.rest_time);
-    digest.add(result.balls);
+    sample.outcomes.add(static_cast<std::uint64_t>(result.events.size()));
+    sample.outcomes.add(result.rest_time);
+    sample.outcomes.add(result.balls);
     return result;
 }
 
 /// The balls left on the table after a break, ready for another shot; nothing if the cue ball
-/// went down and its head-spot place is taken.
-std::optional<std::vector<Ball>> next_layout(const ShotResult& result, const Table& table,
+/// went down and its place (`cue_spot`: the head spot, or in the D) is taken.
+std::optional<std::vector<Ball>> next_layout(const ShotResult& result, Vec2 cue_spot,
                                              const PhysicsParams& params) {
     std::vector<Ball> balls;
     bool cue_pocketed = false;
@@ -124,7 +135,7 @@ std::optional<std::vector<Ball>> next_layout(const ShotResult& result, const Tab
         }
     }
     if (cue_pocketed) {
-        const Vec2 spot = table.head_spot();
+        const Vec2 spot = cue_spot;
         for (const Ball& b : balls)
             if (length(b.position - spot) < 2 * params.ball_radius)
                 return std::nullopt;
@@ -177,6 +188,105 @@ std::string cpu_name() {
     return "unknown processor";
 }
 
+/// The breaks and the shots of one game, and how many layouts they left.
+struct Part {
+    Sample breaks;
+    Sample shots;
+    std::size_t layouts = 0;
+    std::uint64_t unusable = 0;
+};
+
+/// Random strikes on `layouts`, taken in turn.
+void time_shots(const Table& table, const PhysicsParams& params,
+                const std::vector<std::vector<Ball>>& layouts, std::uint64_t count, Random& rng,
+                Sample& shots) {
+    for (std::uint64_t k = 0; k < count && !layouts.empty(); ++k) {
+        Strike strike;
+        strike.speed = rng.uniform(shot_min_speed, shot_max_speed);
+        strike.angle_deg = rng.uniform(0, 360);
+        strike.side = rng.uniform(-shot_max_tip_offset, shot_max_tip_offset);
+        strike.follow = rng.uniform(-shot_max_tip_offset, shot_max_tip_offset);
+        timed_shot(table, params, layouts[k % layouts.size()], strike, shots);
+    }
+}
+
+double degrees_of(Vec2 v) {
+    return portable::atan2(v.y, v.x) * 180.0 / std::numbers::pi;
+}
+
+/// The aim of a snooker break on `rack`: the red at the back corner of the triangle on the cue
+/// ball's side, taken thin on its outer side.
+double snooker_break_aim_deg(const std::vector<Ball>& rack, double radius) {
+    const Ball& cue = rack.front();
+    const Ball* corner = nullptr;
+    for (const Ball& b : rack) {
+        if (!is_snooker_red(b.id))
+            continue;
+        // Furthest up the table, then nearest the cue ball's side.
+        const auto key = [&](const Ball& r) {
+            return r.position.x - 2 * std::abs(r.position.y - cue.position.y);
+        };
+        if (!corner || key(b) > key(*corner))
+            corner = &b;
+    }
+    // Across the line of aim, on the side away from the pack's centre line (the cue ball's).
+    const Vec2 along = normalized(corner->position - cue.position);
+    Vec2 outward{along.y, -along.x};
+    if (dot(outward, Vec2{0, cue.position.y - corner->position.y}) < 0)
+        outward = -outward;
+    return degrees_of(corner->position + outward * (snooker_break_offset * radius) - cue.position);
+}
+
+/// Seeded 8-ball breaks on the 9 ft table, then random shots on what they leave.
+Part eight_ball_part(const Options& options, Random& rng) {
+    const Table table = make_table(TableSize::nine_foot);
+    const PhysicsParams params;
+    // Breaks: the cue ball on the head spot aimed at the apex ball on the foot spot.
+    const double aim_deg = degrees_of(table.foot_spot() - table.head_spot());
+    Part part;
+    std::vector<std::vector<Ball>> layouts;
+    for (std::uint64_t seed = 1; seed <= options.breaks; ++seed) {
+        const std::vector<Ball> rack = make_rack(table, params, RackType::eight_ball, seed);
+        const double angle = aim_deg + rng.uniform(-break_angle_jitter, break_angle_jitter);
+        const ShotResult result =
+            timed_shot(table, params, rack, Strike{break_speed, angle, 0, 0}, part.breaks);
+        auto layout =
+            result.event_limit_hit ? std::nullopt : next_layout(result, table.head_spot(), params);
+        if (layout)
+            layouts.push_back(std::move(*layout));
+        else
+            ++part.unusable;
+    }
+    time_shots(table, params, layouts, options.shots, rng, part.shots);
+    part.layouts = layouts.size();
+    return part;
+}
+
+/// Seeded snooker breaks (22 balls) on the snooker table with snooker balls, then random
+/// shots on what they leave.
+Part snooker_part(const Options& options, Random& rng) {
+    const PhysicsParams params = physics_for_table(TableSize::snooker);
+    const Table table = make_table(TableSize::snooker, params.ball_radius);
+    Part part;
+    std::vector<std::vector<Ball>> layouts;
+    for (std::uint64_t seed = 1; seed <= options.breaks; ++seed) {
+        const std::vector<Ball> rack = make_rack(table, params, RackType::snooker, seed);
+        const double angle = snooker_break_aim_deg(rack, params.ball_radius) +
+                             rng.uniform(-snooker_break_angle_jitter, snooker_break_angle_jitter);
+        const ShotResult result =
+            timed_shot(table, params, rack, Strike{snooker_break_speed, angle, 0, 0}, part.breaks);
+        auto layout = result.event_limit_hit ? std::nullopt
+                                             : next_layout(result, rack.front().position, params);
+        if (layout)
+            layouts.push_back(std::move(*layout));
+        else
+            ++part.unusable;
+    }
+    time_shots(table, params, layouts, options.shots, rng, part.shots);
+    part.layouts = layouts.size();
+    return part;
+}
+
 } // namespace
 
 int bench_command(const std::vector<std::string>& args, RenderBench render) {
@@ -189,65 +299,50 @@ int bench_command(const std::vector<std::string>& args, RenderBench render) {
     const Options options = *parsed;
     if (options.render)
         return render(cpu_name());
-    const Table table = make_table(TableSize::nine_foot);
-    const PhysicsParams params;
     Random rng(options.seed);
+    const Part eight = eight_ball_part(options, rng);
+    // Its own stream, so that the 8-ball figures are those of a bench without snooker.
+    Random snooker_rng(options.seed ^ 0x5a00cce7ULL);
+    const Part snooker = snooker_part(options, snooker_rng);
 
-    // Breaks: the cue ball on the head spot aimed at the apex ball on the foot spot.
-    const Vec2 aim = table.foot_spot() - table.head_spot();
-    const double aim_deg = portable::atan2(aim.y, aim.x) * 180.0 / std::numbers::pi;
-    // Every outcome to the bit, so that two machines or builds can compare runs at a glance.
-    StateDigest digest;
-    Sample breaks;
-    std::vector<std::vector<Ball>> layouts;
-    std::uint64_t unusable = 0;
-    for (std::uint64_t seed = 1; seed <= options.breaks; ++seed) {
-        const std::vector<Ball> rack = make_rack(table, params, RackType::eight_ball, seed);
-        const double angle = aim_deg + rng.uniform(-break_angle_jitter, break_angle_jitter);
-        const ShotResult result =
-            timed_shot(table, params, rack, Strike{break_speed, angle, 0, 0}, breaks, digest);
-        auto layout = result.event_limit_hit ? std::nullopt : next_layout(result, table, params);
-        if (layout)
-            layouts.push_back(std::move(*layout));
-        else
-            ++unusable;
-    }
-
-    // Shots: random strikes on the break layouts, taken in turn.
-    Sample shots;
-    for (std::uint64_t k = 0; k < options.shots && !layouts.empty(); ++k) {
-        Strike strike;
-        strike.speed = rng.uniform(shot_min_speed, shot_max_speed);
-        strike.angle_deg = rng.uniform(0, 360);
-        strike.side = rng.uniform(-shot_max_tip_offset, shot_max_tip_offset);
-        strike.follow = rng.uniform(-shot_max_tip_offset, shot_max_tip_offset);
-        timed_shot(table, params, layouts[k % layouts.size()], strike, shots, digest);
-    }
-
-    std::printf("termpool bench: 9ft table, default physics, seed %llu\n",
+    std::printf("termpool bench: 8-ball on the 9ft table, snooker on the snooker table with "
+                "snooker balls; default physics, seed %llu\n",
                 static_cast<unsigned long long>(options.seed));
     std::printf("measured on one core (single thread) of: %s\n\n", cpu_name().c_str());
     std::printf("%-18s %8s %11s %9s %12s %12s %10s\n", "", "runs", "median us", "p95 us",
                 "events/run", "events/s", "runs/s");
-    print_row("breaks (12 m/s)", breaks);
-    print_row("shots (1-4 m/s)", shots);
+    print_row("breaks (12 m/s)", eight.breaks);
+    print_row("shots (1-4 m/s)", eight.shots);
+    print_row("snooker breaks", snooker.breaks);
+    print_row("snooker shots", snooker.shots);
     std::printf("\n");
     std::printf("breaks: racks seeded 1..%llu, aimed at the apex +-%s deg\n",
                 static_cast<unsigned long long>(options.breaks),
                 format_number(break_angle_jitter).c_str());
-    std::printf("shots:  speed 1..4 m/s, any angle, tip offsets within +-%s R, on the %zu break "
-                "layouts in turn\n",
-                format_number(shot_max_tip_offset).c_str(), layouts.size());
+    std::printf("snooker breaks: 22 balls, racks seeded 1..%llu, from the D at %s m/s, thin "
+                "on the back corner red +-%s deg\n",
+                static_cast<unsigned long long>(options.breaks),
+                format_number(snooker_break_speed).c_str(),
+                format_number(snooker_break_angle_jitter).c_str());
+    std::printf("shots:  speed 1..4 m/s, any angle, tip offsets within +-%s R, on the %zu (8-ball) "
+                "and %zu (snooker) break layouts in turn\n",
+                format_number(shot_max_tip_offset).c_str(), eight.layouts, snooker.layouts);
+    const std::uint64_t unusable = eight.unusable + snooker.unusable;
     if (unusable > 0)
-        std::printf("        (%llu layouts left out: cut short, or the cue ball pocketed and the "
-                    "head spot taken)\n",
+        std::printf("        (%llu layouts left out: cut short, or the cue ball pocketed and its "
+                    "spot taken)\n",
                     static_cast<unsigned long long>(unusable));
-    std::printf("hash of every outcome (positions, velocities, spins, events): %s\n",
-                digest_hex(digest.value()).c_str());
-    if (breaks.cut_short + shots.cut_short > 0)
+    // So that two machines or builds can compare runs at a glance.
+    StateDigest outcomes;
+    for (const Sample* s : {&eight.breaks, &eight.shots, &snooker.breaks, &snooker.shots})
+        outcomes.add(s->outcomes.value());
+    std::printf("hash of every outcome (events, positions, velocities, spins): %s\n",
+                digest_hex(outcomes.value()).c_str());
+    const std::uint64_t cut_short = eight.breaks.cut_short + eight.shots.cut_short +
+                                    snooker.breaks.cut_short + snooker.shots.cut_short;
+    if (cut_short > 0)
         std::printf("warning: %llu runs stopped at the limit of %zu events\n",
-                    static_cast<unsigned long long>(breaks.cut_short + shots.cut_short),
-                    World::max_events);
+                    static_cast<unsigned long long>(cut_short), World::max_events);
     return 0;
 }
 

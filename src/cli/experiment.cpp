@@ -14,6 +14,7 @@
 #include <termpool/rack.hpp>
 #include <termpool/random.hpp>
 #include <termpool/simulator.hpp>
+#include <termpool/table_physics.hpp>
 #include <vector>
 
 #include "cli/chart.hpp"
@@ -24,9 +25,10 @@
 namespace termpool::cli {
 namespace {
 
-constexpr const char* usage = "usage: termpool experiment friction [--table 7ft|8ft|9ft] [--csv]\n"
-                              "       termpool experiment mass [--csv]\n"
-                              "       termpool experiment throw [--model fit|constant] [--csv]\n";
+constexpr const char* usage =
+    "usage: termpool experiment friction [--table 7ft|8ft|9ft|snooker] [--csv]\n"
+    "       termpool experiment mass [--csv]\n"
+    "       termpool experiment throw [--model fit|constant] [--csv]\n";
 
 constexpr double break_speed = 12.0; // m/s, full power
 constexpr int racks = 51;            // seeded breaks per model (odd: a true median)
@@ -102,7 +104,7 @@ int friction_study(TableSize size, bool csv) {
         std::printf("model,time_s,total_speed_m_s\n");
     }
     for (const Model& model : models) {
-        PhysicsParams params;
+        PhysicsParams params = physics_for_table(size);
         params.friction = model.friction;
         const Table table = make_table(size, params.ball_radius);
         std::vector<double> rest, path;

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <map>
 #include <termpool/rack.hpp>
+#include <termpool/snooker_layout.hpp>
+#include <termpool/table_physics.hpp>
 #include <termpool/text_lines.hpp>
 
 #include "cli/numbers.hpp"
@@ -24,6 +26,17 @@ struct Line {
 
 /// A problem with one line, before the line number is attached; empty when all is well.
 using Problem = std::optional<std::string>;
+
+/// The largest ball id of a pool table and of the snooker table (the black).
+constexpr int pool_last_id = 15;
+constexpr int snooker_last_id = snooker_black;
+
+/// The ids a table takes, as a message says them.
+std::string ball_id_range(bool snooker) {
+    return snooker ? "0.." + std::to_string(snooker_last_id)
+                   : "0.." + std::to_string(pool_last_id) + " (up to " +
+                         std::to_string(snooker_last_id) + " on 'table snooker')";
+}
 
 /// A `ball` line, kept until the parameters are final (R and m may come later in the file).
 struct BallLine {
@@ -91,13 +104,13 @@ Problem once(Draft& draft, const std::string& key, const Line& line) {
 }
 
 Problem parse_table(const Line& line, Draft& draft) {
-    if (Problem p = arity(line, 1, 1, "table 9ft|8ft|7ft"))
+    if (Problem p = arity(line, 1, 1, "table 9ft|8ft|7ft|snooker"))
         return p;
     if (Problem p = once(draft, "table", line))
         return p;
     const std::optional<TableSize> size = parse_table_size(line.arg(0));
     if (!size)
-        return "unknown table size " + quoted(line.arg(0)) + " (expected 9ft, 8ft or 7ft)";
+        return "unknown table size " + quoted(line.arg(0)) + " (expected 9ft, 8ft, 7ft or snooker)";
     draft.setup.table = *size;
     return {};
 }
@@ -276,8 +289,11 @@ Problem parse_ball(const Line& line, Draft& draft) {
     const std::optional<long long> id = parse_integer(line.arg(0));
     if (!id)
         return "ball id " + quoted(line.arg(0)) + " is not an integer";
-    if (*id < 0 || *id > 15)
-        return "ball id " + std::to_string(*id) + " is outside 0..15";
+    // Ids 16..21 (snooker's colours) need the snooker table, which a later line may give:
+    // `build` refuses them on a pool table.
+    const bool snooker = draft.setup.table == TableSize::snooker;
+    if (*id < 0 || *id > snooker_last_id)
+        return "ball id " + std::to_string(*id) + " is outside " + ball_id_range(snooker);
     BallLine ball{line.number, {}, false};
     ball.ball.id = static_cast<int>(*id);
     for (const BallLine& other : draft.balls) {
@@ -305,7 +321,7 @@ Problem parse_ball(const Line& line, Draft& draft) {
 }
 
 Problem parse_rack(const Line& line, Draft& draft) {
-    if (Problem p = arity(line, 1, 2, "rack 8ball|9ball [SEED]"))
+    if (Problem p = arity(line, 1, 2, "rack 8ball|9ball|snooker [SEED]"))
         return p;
     if (Problem p = once(draft, "rack", line))
         return p;
@@ -313,8 +329,10 @@ Problem parse_rack(const Line& line, Draft& draft) {
         draft.rack = RackType::eight_ball;
     } else if (line.arg(0) == "9ball") {
         draft.rack = RackType::nine_ball;
+    } else if (line.arg(0) == "snooker") {
+        draft.rack = RackType::snooker;
     } else {
-        return "unknown rack " + quoted(line.arg(0)) + " (expected 8ball or 9ball)";
+        return "unknown rack " + quoted(line.arg(0)) + " (expected 8ball, 9ball or snooker)";
     }
     if (line.arguments() == 2) {
         draft.rack_seed = parse_uint64(line.arg(1));
@@ -599,6 +617,23 @@ ScenarioError conflict(Said a, Said b, std::string_view why) {
                          first + " cannot go with " + second + ": " + std::string(why)};
 }
 
+/// True when any game directive was given.
+bool has_game_context(const Draft& draft) {
+    return std::any_of(std::begin(context_directives), std::end(context_directives),
+                       [&](std::string_view key) { return line_of(draft, key).has_value(); });
+}
+
+/// The largest ball id the referee of `game` knows.
+int last_ball_of(GameType game) {
+    switch (game) {
+    case GameType::eight_ball:
+    case GameType::eight_ball_bar:
+    case GameType::nine_ball:
+        break;
+    }
+    return pool_last_id;
+}
+
 /// Checks the game directives against each other, the balls and the strike.
 std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Placed>& placed) {
     const GameContext& game = draft.game;
@@ -629,6 +664,19 @@ std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Pl
             return conflict({"push-out", *push_line}, {"break", *break_line},
                             "the push-out is the shot after the break");
     }
+    // A pool referee has no verdict on a snooker colour.
+    if (has_game_context(draft)) {
+        for (const Placed& p : placed) {
+            if (p.ball.id <= last_ball_of(draft.setup.game))
+                continue;
+            const std::string why = "the " + std::string(game_type_name(draft.setup.game)) +
+                                    " referee judges balls 0.." +
+                                    std::to_string(last_ball_of(draft.setup.game)) + " only";
+            return game_line
+                       ? conflict({describe(p), p.line}, game_said, why)
+                       : ScenarioError{p.line, describe(p) + " needs a game that has it: " + why};
+        }
+    }
     if (call_line && game.call.ball != 0) {
         const bool on_table = std::any_of(placed.begin(), placed.end(), [&](const Placed& p) {
             return p.ball.id == game.call.ball;
@@ -652,17 +700,38 @@ std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Pl
     return std::nullopt;
 }
 
-/// True when any game directive was given.
-bool has_game_context(const Draft& draft) {
-    return std::any_of(std::begin(context_directives), std::end(context_directives),
-                       [&](std::string_view key) { return line_of(draft, key).has_value(); });
+/// The first ball line with an id the table does not take (16..21 on a pool table).
+std::optional<ScenarioError> check_ball_ids(const Draft& draft) {
+    if (draft.setup.table == TableSize::snooker)
+        return std::nullopt;
+    for (const BallLine& b : draft.balls)
+        if (b.ball.id > pool_last_id)
+            return ScenarioError{b.line, "ball id " + std::to_string(b.ball.id) + " is outside " +
+                                             ball_id_range(false)};
+    return std::nullopt;
+}
+
+/// The physics of the scenario: its directives on the balls of its table (snooker balls on the
+/// snooker table), but a radius or mass a `param` line gave stays.
+PhysicsParams scenario_physics(const Draft& draft) {
+    PhysicsParams physics = draft.setup.physics;
+    const PhysicsParams table_balls = physics_for_table(draft.setup.table, physics);
+    if (!line_of(draft, "param R"))
+        physics.ball_radius = table_balls.ball_radius;
+    if (!line_of(draft, "param m"))
+        physics.ball_mass = table_balls.ball_mass;
+    return physics;
 }
 
 /// Puts the checked directives together: the table and balls follow the final parameters.
 ScenarioResult build(const Draft& draft) {
+    if (auto error = check_ball_ids(draft))
+        return *error;
     Scenario scenario;
     scenario.setup = draft.setup;
-    scenario.table = make_table(scenario.setup);
+    scenario.setup.physics = scenario_physics(draft);
+    // Built for the radius in the scenario's physics, which `param R` may have set.
+    scenario.table = make_table(scenario.setup.table, scenario.setup.physics.ball_radius);
     auto gathered = gather_balls(draft, scenario);
     if (auto* error = std::get_if<ScenarioError>(&gathered))
         return *error;

@@ -31,7 +31,9 @@ struct GameContext {
 /// A scenario that passed every check and can be handed to the simulator as it is.
 struct Scenario {
     /// `game` (8-ball when not given), `table`, and the physics: the defaults with every
-    /// directive applied.
+    /// directive applied, on the balls of the table (snooker's on `table snooker`, unless
+    /// `param R` or `param m` says otherwise). Unlike a game's setup, `physics` is already the
+    /// physics of the shot: hand it to the simulator as it is.
     GameSetup setup;
     Table table = make_table(TableSize::nine_foot); ///< `setup`'s table, built for its ball radius
     std::vector<Ball> balls;                        ///< at rest, in ascending id order

@@ -11,11 +11,16 @@ namespace termpool {
 namespace {
 
 // Execution noise of the computer-pool tournaments, scaled by level: aim (degrees), speed
-// (m/s) and tip offsets (as fractions of R: 0.5 mm of a 28.575 mm radius).
+// (m/s) and tip offsets (0.5 mm, as a fraction of the ball's radius where a strike needs it).
 constexpr double sigma_aim_deg = 0.125;
 constexpr double sigma_speed = 0.075;
-constexpr double sigma_tip = 0.0005 / 0.028575;
+constexpr double sigma_tip_m = 0.0005;
 constexpr double break_speed = 12.0;
+
+// The tip's noise as a fraction of R: 0.5 mm is a larger part of a snooker ball's radius.
+double sigma_tip(const PhysicsParams& params) {
+    return sigma_tip_m / params.ball_radius;
+}
 
 double noise_scale(Level level) {
     switch (level) {
@@ -37,7 +42,7 @@ double noise_scale(Level level) {
 double aim_sigma_deg(const PhysicsParams& params) {
     constexpr double small_side = 1e-3;
     const double from_tip = squirt_angle_deg(small_side, params.cue_mass(), params.cue_end_mass) /
-                            small_side * sigma_tip;
+                            small_side * sigma_tip(params);
     return std::sqrt(std::max(0.0, sigma_aim_deg * sigma_aim_deg - from_tip * from_tip));
 }
 
@@ -343,8 +348,8 @@ Strike ComputerPlayer::noisy(const Strike& planned, const PhysicsParams& params,
     Strike s = planned;
     s.angle_deg += k * aim_sigma_deg(params) * gaussian();
     s.speed = std::clamp(s.speed + k * sigma_speed * gaussian(), 0.05, max_strike_speed);
-    s.side = std::clamp(s.side + k * sigma_tip * gaussian(), -0.5, 0.5);
-    s.follow = std::clamp(s.follow + k * sigma_tip * gaussian(), -0.5, 0.5);
+    s.side = std::clamp(s.side + k * sigma_tip(params) * gaussian(), -0.5, 0.5);
+    s.follow = std::clamp(s.follow + k * sigma_tip(params) * gaussian(), -0.5, 0.5);
     return s;
 }
 

@@ -45,7 +45,7 @@ const char* event_kind_name(EventKind kind) {
 }
 
 std::optional<TableSize> parse_table_size(std::string_view name) {
-    for (const TableSize t : {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot})
+    for (const TableSize t : all_table_sizes)
         if (name == table_size_name(t))
             return t;
     return std::nullopt;
@@ -59,6 +59,8 @@ const char* table_size_name(TableSize size) {
         return "8ft";
     case TableSize::nine_foot:
         return "9ft";
+    case TableSize::snooker:
+        return "snooker";
     }
     return "?";
 }

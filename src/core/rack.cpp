@@ -1,19 +1,24 @@
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <termpool/rack.hpp>
 #include <termpool/random.hpp>
+#include <termpool/snooker_layout.hpp>
 #include <utility>
 
 namespace termpool {
 namespace {
 
-// Spots of a triangle (rows of 1..5) or diamond (1,2,3,2,1) with the apex on the foot spot,
-// rows growing away from the head of the table.
+// Spots of a triangle (rows of 1..5) or diamond (1,2,3,2,1) with the apex on the foot spot
+// (snooker: a triangle whose apex is a gap above the pink), rows growing away from the head
+// of the table.
 std::vector<Vec2> rack_spots(const Table& table, double spacing, RackType type) {
     const int rows_eight[] = {1, 2, 3, 4, 5};
     const int rows_nine[] = {1, 2, 3, 2, 1};
-    const int* rows = type == RackType::eight_ball ? rows_eight : rows_nine;
-    const Vec2 apex = table.foot_spot();
+    const int* rows = type == RackType::nine_ball ? rows_nine : rows_eight;
+    const Vec2 apex = type == RackType::snooker
+                          ? snooker_spot(table, snooker_pink) + Vec2{spacing, 0}
+                          : table.foot_spot();
     const double row_step = spacing * std::numbers::sqrt3 / 2;
     std::vector<Vec2> spots;
     for (int r = 0; r < 5; ++r) {
@@ -24,7 +29,9 @@ std::vector<Vec2> rack_spots(const Table& table, double spacing, RackType type) 
 }
 
 // Pushes overlapping balls apart, a pair at a time, until none overlap (jitter can make them).
-void separate(std::vector<Ball>& balls, double radius) {
+// The first `fixed` balls stay where they are (snooker's colours on their spots): a ball that
+// overlaps one of them is moved the whole way.
+void separate(std::vector<Ball>& balls, double radius, std::size_t fixed = 0) {
     const double apart = 2 * radius + 1e-7;
     for (int pass = 0; pass < 100; ++pass) {
         bool moved = false;
@@ -34,6 +41,13 @@ void separate(std::vector<Ball>& balls, double radius) {
                 const double distance = length(d);
                 if (distance >= apart || distance == 0)
                     continue;
+                if (j < fixed)
+                    continue;
+                if (i < fixed) {
+                    balls[j].position += d * ((apart - distance) / distance);
+                    moved = true;
+                    continue;
+                }
                 const Vec2 push = d * ((apart - distance) / (2 * distance));
                 balls[i].position -= push;
                 balls[j].position += push;
@@ -52,6 +66,18 @@ template <class T> void shuffle(std::vector<T>& v, Random& rng) {
 
 // Ball numbers in spot order.
 std::vector<int> rack_order(RackType type, std::optional<std::uint64_t> seed) {
+    if (type == RackType::snooker) {
+        // The reds are alike; shuffled all the same, as the pool racks are, so that a seed
+        // decides which id is where.
+        std::vector<int> reds;
+        for (int id = snooker_first_red; id <= snooker_last_red; ++id)
+            reds.push_back(id);
+        if (seed) {
+            Random rng(*seed);
+            shuffle(reds, rng);
+        }
+        return reds;
+    }
     if (type == RackType::nine_ball) {
         std::vector<int> order{1, 2, 3, 4, 9, 5, 6, 7, 8};
         if (seed) {
@@ -88,6 +114,31 @@ std::vector<int> rack_order(RackType type, std::optional<std::uint64_t> seed) {
     return order;
 }
 
+// The colours on their spots and the cue ball in the D, midway between the brown and the
+// yellow on the baulk line, where a break is commonly played from.
+std::vector<Ball> snooker_fixed_balls(const Table& table, const PhysicsParams& params) {
+    std::vector<Ball> balls;
+    for (int id = snooker_yellow; id <= snooker_black; ++id) {
+        Ball b;
+        b.id = id;
+        b.mass = params.ball_mass;
+        b.position = snooker_spot(table, id);
+        balls.push_back(b);
+    }
+    Ball cue;
+    cue.id = 0;
+    cue.mass = params.cue_mass();
+    cue.position = (snooker_spot(table, snooker_brown) + snooker_spot(table, snooker_yellow)) * 0.5;
+    balls.push_back(cue);
+    return balls;
+}
+
+// Ascending ids, as a pool rack comes out (cue ball first): the reds after the cue ball, the
+// colours last.
+void sort_by_id(std::vector<Ball>& balls) {
+    std::sort(balls.begin(), balls.end(), [](const Ball& a, const Ball& b) { return a.id < b.id; });
+}
+
 } // namespace
 
 std::vector<Ball> make_rack(const Table& table, const PhysicsParams& params, RackType type,
@@ -97,11 +148,16 @@ std::vector<Ball> make_rack(const Table& table, const PhysicsParams& params, Rac
     // The jitter uses its own stream so that it does not change the order for a seed.
     Random jitter(seed.value_or(0) ^ 0x5eedf00dULL);
     std::vector<Ball> balls;
-    Ball cue;
-    cue.id = 0;
-    cue.mass = params.cue_mass();
-    cue.position = table.head_spot();
-    balls.push_back(cue);
+    if (type == RackType::snooker) {
+        balls = snooker_fixed_balls(table, params);
+    } else {
+        Ball cue;
+        cue.id = 0;
+        cue.mass = params.cue_mass();
+        cue.position = table.head_spot();
+        balls.push_back(cue);
+    }
+    const std::size_t fixed = type == RackType::snooker ? balls.size() : 0;
     for (std::size_t s = 0; s < spots.size(); ++s) {
         Ball b;
         b.id = order[s];
@@ -115,7 +171,9 @@ std::vector<Ball> make_rack(const Table& table, const PhysicsParams& params, Rac
         balls.push_back(b);
     }
     if (seed)
-        separate(balls, params.ball_radius);
+        separate(balls, params.ball_radius, fixed);
+    if (type == RackType::snooker)
+        sort_by_id(balls);
     return balls;
 }
 

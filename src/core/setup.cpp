@@ -43,12 +43,16 @@ std::string shortest(double v) {
 
 } // namespace
 
+PhysicsParams game_physics(const GameSetup& setup) {
+    return physics_for_table(setup.table, setup.physics);
+}
+
 Table make_table(const GameSetup& setup) {
-    return make_table(setup.table, setup.physics.ball_radius);
+    return make_table(setup.table, game_physics(setup).ball_radius);
 }
 
 Game make_game(const GameSetup& setup, int breaker, std::uint64_t seed) {
-    return Game(setup.game, make_table(setup), setup.physics, breaker, seed);
+    return Game(setup.game, make_table(setup), game_physics(setup), breaker, seed);
 }
 
 std::optional<FrictionKind> parse_friction_kind(std::string_view name) {

@@ -3,6 +3,7 @@
 #include <limits>
 #include <numbers>
 #include <termpool/portable_math.hpp>
+#include <termpool/snooker_layout.hpp>
 #include <termpool/table.hpp>
 
 namespace termpool {
@@ -20,6 +21,8 @@ Dimensions dimensions(TableSize size) {
         return {2.34, 1.17};
     case TableSize::nine_foot:
         break;
+    case TableSize::snooker:
+        return {snooker_table_length, snooker_table_width};
     }
     return {2.54, 1.27};
 }
@@ -37,6 +40,31 @@ struct MouthSide {
 };
 
 } // namespace
+
+PocketSpec pocket_spec(TableSize size) {
+    if (size != TableSize::snooker)
+        return {};
+    // Snooker's pockets are cut with rounded cushion ends, not pool's straight facings that
+    // narrow behind the mouth. Modelled with straight jaws: in the corners they run along the
+    // pocket's axis (135 degrees from the rail: the throat as wide as the mouth, 1.64 balls),
+    // so that a ball is not squeezed out between converging facings but has no room to spare
+    // either; in the middle they close by 5 degrees each (95), the slight taper of a middle
+    // pocket's rounded ends. The fall sits further back behind the mouth than pool's (the
+    // shelf of a snooker pocket), so a ball must travel deeper between the jaws before it
+    // drops: 35 mm in the corners, 25 mm in the middle.
+    PocketSpec spec;
+    spec.corner_mouth = 0.086;
+    spec.side_mouth = 0.105;
+    spec.corner_jaw_angle_deg = 135;
+    spec.side_jaw_angle_deg = 95;
+    spec.corner_capture_depth = 0.035;
+    spec.side_capture_depth = 0.025;
+    return spec;
+}
+
+Table make_table(TableSize size, double ball_radius) {
+    return make_table(size, ball_radius, pocket_spec(size));
+}
 
 Table make_table(TableSize size, double ball_radius, const PocketSpec& spec) {
     const auto [L, W] = dimensions(size);

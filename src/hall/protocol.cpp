@@ -479,7 +479,7 @@ std::variant<ClientMessage, ProtocolError> parse_client(std::string_view line) {
         if (r.ok() && !game)
             r.fail("a game is 8ball, 8ball-bar or 9ball");
         if (r.ok() && !size)
-            r.fail("a table is 7ft, 8ft or 9ft");
+            r.fail("a table is 7ft, 8ft, 9ft or snooker");
         m.race_to = r.integer(1, max_race_to, "a race");
         if (r.ok()) {
             m.game = *game;

@@ -257,7 +257,7 @@ void Server::State::on_act(Client& client, const RecordedAction& action) {
         // A refused strike is told in the simulator's words (which limit, how far off).
         const auto why =
             action.kind == RecordedAction::Kind::shot && error == MatchError::bad_strike
-                ? strike_problem(action.strike, table->match.setup().physics)
+                ? strike_problem(action.strike, table->match.game().params())
                 : std::nullopt;
         return send_error(client, ErrorCode::refused, why ? *why : match_error_text(error));
     }

@@ -38,8 +38,8 @@ Match first_match(const GameOptions& options, std::uint64_t seed) {
 
 App::App(Terminal& terminal, const GameOptions& options)
     : term_(terminal), options_(options), table_(make_table(options.setup)),
-      params_(options.setup.physics), seed_(options.seed.value_or(static_cast<std::uint64_t>(
-                                          Clock::now().time_since_epoch().count()))),
+      params_(game_physics(options.setup)), seed_(options.seed.value_or(static_cast<std::uint64_t>(
+                                                Clock::now().time_since_epoch().count()))),
       match_(first_match(options, seed_++)) {
     shown_balls_ = game().balls();
     message_ = name(1) + " breaks: place the cue ball in the kitchen";

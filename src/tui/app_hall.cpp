@@ -60,7 +60,7 @@ std::string App::hall_table_words() const {
 void App::take_hall_table(Match match) {
     match_ = std::move(match);
     table_ = make_table(match_.record().setup);
-    params_ = match_.record().setup.physics;
+    params_ = game_physics(match_.record().setup);
     hall_queue_.clear();
     awaiting_hall_ = false;
     resyncing_ = false;

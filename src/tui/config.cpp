@@ -50,7 +50,7 @@ std::optional<std::string> apply_config(std::string_view text, GameOptions& o,
         } else if (key == "table") {
             const std::optional<TableSize> size = parse_table_size(value);
             if (!size)
-                return fail("unknown table '" + value + "' (7ft, 8ft or 9ft)");
+                return fail("unknown table '" + value + "' (7ft, 8ft, 9ft or snooker)");
             o.setup.table = *size;
         } else if (key == "race") {
             const auto n = parse_race_to(value);

@@ -28,7 +28,8 @@ constexpr const char* options_usage =
     "                        the players' names (asked for when not given)\n"
     "  --game 8ball|8ball-bar|9ball\n"
     "                        the game (default 8ball)\n"
-    "  --table 7ft|8ft|9ft   the table (default 9ft)\n"
+    "  --table 7ft|8ft|9ft|snooker\n                        the table (default 9ft; snooker: 12 "
+    "ft, snooker balls)\n"
     "  --race N              a match: the first to win N racks (1 to 99; default 1, or\n"
     "                        asked at the end of the name prompt)\n"
     "  --breaks alternate|winner\n"
@@ -387,7 +388,7 @@ int run_practice(const std::vector<std::string>& args) {
         error = "practice is one player at the table: no --player2, --race, --breaks, --resume, "
                 "--vs-computer or --watch";
     constexpr const char* usage =
-        "usage: termpool practice [--game 8ball|8ball-bar|9ball] [--table 7ft|8ft|9ft]\n"
+        "usage: termpool practice [--game 8ball|8ball-bar|9ball] [--table 7ft|8ft|9ft|snooker]\n"
         "                         [--player1 NAME] [--seed S] [--friction MODEL]\n"
         "                         [--cue-ball-mass KG] [--cue SHAFT] [--ascii]\n"
         "One player at the table, no referee: m moves a ball, r takes the last shot again,\n"

@@ -45,6 +45,7 @@ void HallSession::handle_create_key(const Input& in) {
     } else if (t == "t") {
         create_.size = create_.size == TableSize::nine_foot    ? TableSize::seven_foot
                        : create_.size == TableSize::seven_foot ? TableSize::eight_foot
+                       : create_.size == TableSize::eight_foot ? TableSize::snooker
                                                                : TableSize::nine_foot;
     } else if (t == "+" || key == key_right || key == key_up) {
         create_.race_to = std::min(max_race_to, create_.race_to + 1);

@@ -14,6 +14,8 @@ namespace termpool::tui {
 namespace {
 
 constexpr int min_width = 40, min_height = 10;
+// The Size column holds the longest table name, "snooker", and a space.
+constexpr int size_w = 8;
 
 const Style dim{Colour::dim};
 const Style bold{Colour::normal, Colour::normal, true};
@@ -41,7 +43,7 @@ std::string padded(const std::string& text, int columns) {
 std::string table_row(const hall::TableView& t, int seat_w, bool extras) {
     std::string row = padded(std::to_string(t.number), 5) + padded(game_title(t.game), 18);
     if (extras)
-        row += padded(table_size_name(t.size), 5) + padded(std::to_string(t.race_to), 5);
+        row += padded(table_size_name(t.size), size_w) + padded(std::to_string(t.race_to), 5);
     row += padded(seat_words(t.seats[0]), seat_w) + " " + padded(seat_words(t.seats[1]), seat_w) +
            " " + padded(hall::table_state_name(t.state), 8);
     if (extras)
@@ -52,7 +54,7 @@ std::string table_row(const hall::TableView& t, int seat_w, bool extras) {
 std::string header_row(int seat_w, bool extras) {
     std::string row = padded("#", 5) + padded("Game", 18);
     if (extras)
-        row += padded("Size", 5) + padded("Race", 5);
+        row += padded("Size", size_w) + padded("Race", 5);
     row += padded("Seat 1", seat_w) + " " + padded("Seat 2", seat_w) + " " + padded("State", 8);
     if (extras)
         row += " Watching";
@@ -138,7 +140,7 @@ Grid render_lobby(const LobbyView& v, const Capabilities& caps, int width, int h
         p.text(width - 1 - display_width(people), 0, people, dim);
 
     const bool extras = width >= 90;
-    const int fixed = 5 + 18 + 2 + 8 + (extras ? 10 + 9 : 0);
+    const int fixed = 5 + 18 + 2 + 8 + (extras ? size_w + 5 + 9 : 0);
     const int seat_w = std::max(8, std::min(24, (width - 2 - fixed) / 2));
     const ListWindow window = list_window(v, height);
     const int list_top = window.top, list_rows = window.rows, keys_row = height - 1;

@@ -133,7 +133,7 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
                 return std::nullopt;
             const std::optional<TableSize> size = parse_table_size(*v);
             if (!size) {
-                error = "unknown table '" + *v + "' (7ft, 8ft or 9ft)";
+                error = "unknown table '" + *v + "' (7ft, 8ft, 9ft or snooker)";
                 return std::nullopt;
             }
             o.setup.table = *size;
