@@ -196,7 +196,7 @@ TEST_CASE("tables save and load back with their seat tokens, in number order", "
                                  seat_token_hash(token2) + "\ntermpool-record "));
     CHECK(text.find(token1) == std::string::npos);
     CHECK_THAT(contents(table_path(dir, 3)),
-               Catch::StartsWith("termpool-hall-table 1\nnumber 3\ntermpool-record 2\n"));
+               Catch::StartsWith("termpool-hall-table 1\nnumber 3\ntermpool-record 4\n"));
 
     std::vector<std::string> problems;
     std::vector<SavedTable> loaded = load_tables(dir, problems);
@@ -317,7 +317,7 @@ TEST_CASE("a damaged table file is moved aside as .bad, never over an older one,
     const std::string good = contents(table_path(dir, 2));
     REQUIRE(good.find("termpool-hall-table 1\nnumber 2\nseat1-token-hash sha256 "
                       "ca978112ca1bbdcafac231b39a23dc4da786eff8147c4e72b9807785afee48bb\n"
-                      "termpool-record 1\n") == 0);
+                      "termpool-record 4\n") == 0);
     // The line (from 1) that starts with `start`, and the text with that line replaced.
     auto line_of = [](const std::string& text, const std::string& start) {
         const std::size_t at = text.find("\n" + start);
@@ -329,6 +329,7 @@ TEST_CASE("a damaged table file is moved aside as .bad, never over an older one,
         return text.replace(at, text.find('\n', at) - at, with);
     };
     const int first_shot = line_of(good, "shot ");
+    const int check_line = line_of(good, "check ");
     const int end_line = line_of(good, "end");
 
     struct Damage {
@@ -339,6 +340,8 @@ TEST_CASE("a damaged table file is moved aside as .bad, never over an older one,
     const std::vector<Damage> damages = {
         {replace_line(good, "shot ", "shot banana"), first_shot, "shot"},
         {replace_line(good, "shot ", "place 0.01 0.01"), first_shot, "cannot be placed"},
+        // A state other than the one the table was saved in: edited, or another simulator.
+        {replace_line(good, "check ", "check 0123456789abcdef"), check_line, "edited or damaged"},
         {good.substr(0, good.size() - 4), end_line - 1, "truncated"},
         {replace_line(good, "number 2", "number 5"), 2, "does not match the file's name"},
         {replace_line(good, "termpool-hall-table 1", "termpool-hall-table 9"), 1, "newer"},

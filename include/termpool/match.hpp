@@ -116,7 +116,10 @@ public:
     /// Plays the first `actions` actions of `record` (all of them by default) on a new match;
     /// `on_shot` hears each shot. An action the match refuses (a record edited into an impossible
     /// state) is an error at its line; so is a rack action before the rack is won, after the
-    /// match is, or with a breaker other than the break rule's.
+    /// match is, or with a breaker other than the break rule's. A whole replay of a record with
+    /// a check must end in the state the check names: a record from another physics version
+    /// that still does is replayed, one that does not is refused (an error that names both
+    /// physics versions), and so is one of this version whose replay differs (edited).
     static std::variant<Match, RecordError>
     replay(const GameRecord& record, std::size_t actions = std::numeric_limits<std::size_t>::max(),
            const ShotListener& on_shot = {}, std::uint64_t computer_seed = 0);
@@ -196,6 +199,13 @@ private:
     MatchError check_player(int player) const;
     void start_rack(int breaker, std::uint64_t seed);
     void count_rack();
+    /// `replay` without the comparison with the record's check.
+    static std::variant<Match, RecordError> replay_unchecked(const GameRecord& record,
+                                                             std::size_t actions,
+                                                             const ShotListener& on_shot,
+                                                             std::uint64_t computer_seed);
+    /// Keeps the record's check up to date after an action.
+    void stamp_check();
 
     GameRecord record_;
     Game game_;

@@ -19,9 +19,9 @@ namespace termpool {
 
 /// Newest version of the text form, read and written by this build. Version 2 added races,
 /// version 3 the cue (a `cue` line for a shaft other than the standard one, a shot's
-/// `elevation`). A record is written in the oldest version that holds it, so that older builds
-/// read it.
-inline constexpr int record_version = 3;
+/// `elevation`), version 4 the check (a `physics` line and a `check` line). A record is written
+/// in the oldest version that holds it, so that older builds read it.
+inline constexpr int record_version = 4;
 
 /// One thing a player did, or the start of a match's next rack.
 struct RecordedAction {
@@ -34,6 +34,14 @@ struct RecordedAction {
     int breaker = 1;                 ///< rack: who breaks it (as the break rule says)
     std::uint64_t seed = 1;          ///< rack: its rack seed
     int line = 0;                    ///< the line it was read from (0 when made in memory)
+};
+
+/// What a record's writer saw after its last action, so that a reader can tell whether its
+/// replay gives the same game (`Match::replay` compares).
+struct RecordCheck {
+    int physics_version = 0;      ///< the writer's `physics_version` (simulator.hpp)
+    std::uint64_t state_hash = 0; ///< the writer's `Match::state_hash` after the last action
+    int line = 0;                 ///< the `check` line it was read from (0 when made in memory)
 };
 
 /// A whole game, or a whole match: its racks after the first each start with a rack action.
@@ -49,6 +57,9 @@ struct GameRecord {
     int race_to = 1;                                 ///< racks to win the match; 0 or 1: one game
     BreakRule break_rule = BreakRule::alternate;     ///< who breaks each next rack
     std::vector<RecordedAction> actions;             ///< in order
+    /// The state the actions led to when the record was written: a Match keeps it after every
+    /// action; records of version 3 and older have none.
+    std::optional<RecordCheck> check;
 };
 
 /// True for a name a seat may take: 1 to `max_player_name_bytes` bytes of UTF-8 without control

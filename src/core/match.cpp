@@ -105,6 +105,7 @@ Match::Match(const GameRecord& header, std::uint64_t computer_seed)
                                                                           {0, 0}},
       rack_breaker_(header.breaker), computer_seed_(computer_seed) {
     record_.actions.clear();
+    record_.check.reset();
     for (int p = 1; p <= 2; ++p)
         seat_computer(p, header.computers[p - 1]);
 }
@@ -112,6 +113,30 @@ Match::Match(const GameRecord& header, std::uint64_t computer_seed)
 std::variant<Match, RecordError> Match::replay(const GameRecord& record, std::size_t actions,
                                                const ShotListener& on_shot,
                                                std::uint64_t computer_seed) {
+    auto replayed = replay_unchecked(record, actions, on_shot, computer_seed);
+    if (!record.check)
+        return replayed; // version 3 and older: nothing to compare with
+    const RecordCheck& check = *record.check;
+    const Match* m = std::get_if<Match>(&replayed);
+    // A partial replay cannot see the end; the reader checks the whole record once on loading.
+    if (m && (actions < record.actions.size() || m->state_hash() == check.state_hash))
+        return replayed;
+    const int line = m ? check.line : std::get<RecordError>(replayed).line;
+    if (check.physics_version != physics_version)
+        return RecordError{line,
+                           "made with physics version " + std::to_string(check.physics_version) +
+                               ", which this termpool (physics version " +
+                               std::to_string(physics_version) + ") replays into a different game"};
+    if (m)
+        return RecordError{line, "the replay does not end in the state the check names: the "
+                                 "record was edited or damaged"};
+    return replayed;
+}
+
+std::variant<Match, RecordError> Match::replay_unchecked(const GameRecord& record,
+                                                         std::size_t actions,
+                                                         const ShotListener& on_shot,
+                                                         std::uint64_t computer_seed) {
     auto started = start(record, computer_seed);
     if (const MatchError* e = std::get_if<MatchError>(&started))
         return RecordError{0, match_error_text(*e)};
@@ -153,6 +178,10 @@ std::variant<Match, RecordError> Match::replay(const GameRecord& record, std::si
         }
     }
     return m;
+}
+
+void Match::stamp_check() {
+    record_.check = RecordCheck{physics_version, state_hash(), 0};
 }
 
 std::uint64_t Match::state_hash() const {
@@ -268,6 +297,7 @@ MatchError Match::place(int player, Vec2 spot) {
     else
         record_.actions.push_back(action);
     placed_ = true;
+    stamp_check();
     return MatchError::none;
 }
 
@@ -312,6 +342,7 @@ std::variant<PlayedShot, MatchError> Match::shoot(int player, const Strike& aske
     tally_.on_shot(shot.shooter, shot.was_break, shot.call, shot.verdict);
     placed_ = false;
     count_rack();
+    stamp_check();
     return shot;
 }
 
@@ -328,6 +359,7 @@ MatchError Match::choose(int player, Choice choice) {
     record_.actions.push_back(action);
     placed_ = false;
     count_rack();
+    stamp_check();
     return MatchError::none;
 }
 
@@ -341,6 +373,7 @@ MatchError Match::next_rack(int player) {
     const RecordedAction rack = rack_action(record_, rack_ + 1, next_breaker());
     record_.actions.push_back(rack);
     start_rack(rack.breaker, rack.seed);
+    stamp_check();
     return MatchError::none;
 }
 
@@ -398,6 +431,7 @@ MatchError Match::apply(const RecordedAction& action, Trajectory* trajectory, Pl
         else {
             record_.actions.push_back(action);
             start_rack(action.breaker, action.seed);
+            stamp_check();
         }
         break;
     }

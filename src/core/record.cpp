@@ -4,6 +4,7 @@
 #include <cmath>
 #include <termpool/random.hpp>
 #include <termpool/record.hpp>
+#include <termpool/state_digest.hpp>
 #include <termpool/text_lines.hpp>
 #include <termpool/text_numbers.hpp>
 
@@ -64,7 +65,20 @@ bool needs_version_3(const GameRecord& r) {
 }
 
 int version_needed(const GameRecord& r) {
+    if (r.check)
+        return 4;
     return needs_version_3(r) ? 3 : needs_version_2(r) ? 2 : 1;
+}
+
+// A check's hash: exactly the 16 lower-case hex digits digest_hex writes.
+std::optional<std::uint64_t> to_hash(std::string_view s) {
+    if (s.size() != 16 || std::any_of(s.begin(), s.end(), [](char c) {
+            return !((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'));
+        }))
+        return std::nullopt;
+    std::uint64_t v = 0;
+    std::from_chars(s.data(), s.data() + s.size(), v, 16);
+    return v;
 }
 
 std::string cue_text(double end_mass) {
@@ -209,8 +223,12 @@ std::string format_record(const GameRecord& r) {
         out += "race " + std::to_string(r.race_to) + "\n";
         out += std::string("breaks ") + break_rule_name(r.break_rule) + "\n";
     }
+    if (r.check)
+        out += "physics " + std::to_string(r.check->physics_version) + "\n";
     for (const RecordedAction& a : r.actions)
         out += format_action(a) + "\n";
+    if (r.check)
+        out += "check " + digest_hex(r.check->state_hash) + "\n";
     out += "end\n";
     return out;
 }
@@ -228,8 +246,9 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
     }
     GameRecord r;
     int line_number = 0;
-    bool header = false, ended = false;
+    bool header = false, ended = false, checked = false;
     std::uint64_t version = 0;
+    std::optional<int> physics;
     for (const TextLine& text_line : text_lines(text)) {
         const std::string_view line = text_line.text;
         line_number = text_line.number;
@@ -260,6 +279,10 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
             return fail("'" + std::string(key) + "' lines need record version 2");
         if (version < 3 && key == "cue")
             return fail("'cue' lines need record version 3");
+        if (version < 4 && (key == "physics" || key == "check"))
+            return fail("'" + std::string(key) + "' lines need record version 4");
+        if (checked && key != "end")
+            return fail("only 'end' may follow the 'check' line");
         if (key == "game" && want(2)) {
             const auto g = parse_game_type(std::string(f[1]));
             if (!g)
@@ -329,6 +352,19 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
             if (!rule)
                 return fail("unknown break rule '" + std::string(f[1]) + "' (alternate or winner)");
             r.break_rule = *rule;
+        } else if (key == "physics" && want(2)) {
+            const auto v = to_u64(f[1]);
+            if (!v || *v < 1 || *v > 1000000)
+                return fail("physics must be a version number");
+            physics = static_cast<int>(*v);
+        } else if (key == "check" && want(2)) {
+            const auto hash = to_hash(f[1]);
+            if (!hash)
+                return fail("a check is 16 hexadecimal digits (0-9, a-f)");
+            if (!physics)
+                return fail("a 'check' line needs a 'physics' line");
+            r.check = RecordCheck{*physics, *hash, line_number};
+            checked = true;
         } else if (auto action = read_action(f)) {
             if (const std::string* problem = std::get_if<std::string>(&*action))
                 return fail(*problem);
@@ -346,6 +382,8 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
         return RecordError{std::max(line_number, 1), "empty: not a termpool record"};
     if (!ended)
         return RecordError{line_number, "truncated: no 'end' line"};
+    if (physics && !r.check)
+        return RecordError{line_number, "a 'physics' line needs a 'check' line before 'end'"};
     return r;
 }
 
