@@ -76,6 +76,7 @@ CORE_LIB := $(BUILD)/libtermpool.a
 BIN      := $(BUILD)/termpool
 TEST_BIN := $(BUILD)/termpool_tests
 
+FLAGS_STAMP := $(BUILD)/compile-flags
 OBJ_DIRS := $(sort $(patsubst %/,%,$(dir $(ALL_OBJS) $(BIN))))
 
 FORMAT_FILES := $(wildcard src/*.cpp src/*.hpp src/*/*.cpp src/*/*.hpp \
@@ -96,7 +97,7 @@ endif
 
 .DEFAULT_GOAL := all
 .PHONY: all run test check bench soak deps ensure-deps install uninstall clean format format-check help \
-        fuzz fuzz-deps fuzz-run layers
+        fuzz fuzz-deps fuzz-run layers FORCE
 .DELETE_ON_ERROR:
 
 all: $(BIN)
@@ -116,17 +117,25 @@ $(CORE_LIB): $(CORE_OBJS) | $(OBJ_DIRS)
 # The tests and core rules have shorter stems than the general one, so make prefers them for
 # $(BUILD)/tests/*.o and $(BUILD)/core/*.o. Tests may include the core's private headers
 # (core/polynomial.hpp), so they get -Isrc like the front ends.
-$(BUILD)/tests/%.o: tests/%.cpp | $(OBJ_DIRS) $(DEPS_GATE)
+$(BUILD)/tests/%.o: tests/%.cpp $(FLAGS_STAMP) | $(OBJ_DIRS) $(DEPS_GATE)
 	$(CXX) $(ALL_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
 
-$(BUILD)/core/%.o: src/core/%.cpp | $(OBJ_DIRS) $(DEPS_GATE)
+$(BUILD)/core/%.o: src/core/%.cpp $(FLAGS_STAMP) | $(OBJ_DIRS) $(DEPS_GATE)
 	$(CXX) $(CORE_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
 
-$(BUILD)/%.o: src/%.cpp | $(OBJ_DIRS) $(DEPS_GATE)
+$(BUILD)/%.o: src/%.cpp $(FLAGS_STAMP) | $(OBJ_DIRS) $(DEPS_GATE)
 	$(CXX) $(ALL_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
 
 $(OBJ_DIRS):
 	mkdir -p $@
+
+# The compile flags of this build folder, rewritten only when they change: every object
+# depends on it, so a folder built before a flag changed (FP_FLAGS above) is rebuilt, never
+# left with objects that play differently.
+FLAGS_TEXT := $(CXX) $(ALL_CPPFLAGS) $(ALL_CXXFLAGS)
+$(FLAGS_STAMP): FORCE | $(OBJ_DIRS)
+	@if [ "$$(cat $@ 2>/dev/null)" != '$(FLAGS_TEXT)' ]; then printf '%s\n' '$(FLAGS_TEXT)' > $@; fi
+FORCE:
 
 -include $(ALL_OBJS:.o=.d)
 
