@@ -1,7 +1,8 @@
 // The snooker table in the terminal: the baulk line, the D and the six colour spots at the
 // cells their positions give, in every mode and at every size; the 22 balls told apart in
 // every tier (reds "1", the colours by their values "2" to "7"); the balls drawn over the
-// marks; pool balls on the snooker table keeping their numbers; the 2:1 layout.
+// marks; pool balls on the snooker table keeping their numbers; the 2:1 layout; and the real
+// binary's practice on the snooker table in tmux.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include <termpool/table_physics.hpp>
 #include <vector>
 
+#include "tmux_session.hpp"
 #include "tui/ball_style.hpp"
 #include "tui/braille.hpp"
 #include "tui/view.hpp"
@@ -146,6 +148,31 @@ bool marked_near(const Grid& g, const Layout& l, Vec2 p, bool utf8, bool colour)
 
 std::string spot_glyph(bool utf8) {
     return utf8 ? "\u00B7" : "+";
+}
+
+// A captured screen as rows of one-column glyphs (UTF-8 sequences).
+std::vector<std::vector<std::string>> glyph_rows(const std::string& screen) {
+    std::vector<std::vector<std::string>> rows(1);
+    for (std::size_t i = 0; i < screen.size();) {
+        if (screen[i] == '\n') {
+            rows.emplace_back();
+            ++i;
+            continue;
+        }
+        std::size_t n = 1;
+        while (i + n < screen.size() && (static_cast<unsigned char>(screen[i + n]) & 0xC0) == 0x80)
+            ++n;
+        rows.back().push_back(screen.substr(i, n));
+        i += n;
+    }
+    return rows;
+}
+
+std::string glyph_at(const std::vector<std::vector<std::string>>& rows, int x, int y) {
+    if (y < 0 || y >= static_cast<int>(rows.size()) || x < 0 ||
+        x >= static_cast<int>(rows[static_cast<std::size_t>(y)].size()))
+        return " ";
+    return rows[static_cast<std::size_t>(y)][static_cast<std::size_t>(x)];
 }
 
 } // namespace
@@ -408,4 +435,55 @@ TEST_CASE("the snooker table keeps its 2:1 shape and fits the terminal at every 
         // The black's spot, the farthest mark, is on the cloth.
         CHECK(on_felt(l, cell_of(l, snooker_spot(snooker, snooker_black))));
     }
+}
+
+TEST_CASE("practice on the snooker table in tmux shows the baulk line, the D and the spots",
+          "[tui][e2e][snooker-tui]") {
+    using namespace tmux_session;
+    if (!have_tmux()) {
+        WARN("tmux is missing: the end-to-end test of the snooker table is skipped");
+        return;
+    }
+    const ScratchDir scratch("termpool-snooker-e2e");
+    for (const bool ascii : {false, true})
+        for (const auto& [w, h] : {std::pair{100, 32}, {80, 24}}) {
+            CAPTURE(ascii, w, h);
+            Tmux t;
+            t.start("env XDG_STATE_HOME=" + scratch.path + " TERM=xterm-256color LANG=C.UTF-8 " +
+                        termpool_binary() + " practice --table snooker" + (ascii ? " --ascii" : ""),
+                    w, h);
+            REQUIRE(t.wait_for_text("Name of player 1"));
+            t.keys("Enter");
+            REQUIRE(t.wait_for_text("8-ball practice"));
+            REQUIRE(t.wait_for([](const std::string& s) {
+                return s.find("Name of player") == std::string::npos;
+            }));
+            // The aim along the centre line would cover the spots and the cue the D's back:
+            // turned 30 degrees they are clear.
+            t.repeat("Left", 30);
+            const Layout l = make_layout(snooker, w, h);
+            const Cell2 black = cell_of(l, snooker_spot(snooker, snooker_black));
+            CHECK(t.wait_for([&](const std::string& s) {
+                return glyph_at(glyph_rows(s), black.x, black.y) == spot_glyph(!ascii);
+            }));
+            const auto rows = glyph_rows(t.screen());
+            const int fy = static_cast<int>(std::lround(l.table_top));
+            const int line_x = cell_of(l, {snooker_baulk_x(snooker), 0.1}).x;
+            int line = 0;
+            for (int y = fy; y < fy + l.felt_rows; ++y) {
+                const std::string g = glyph_at(rows, line_x, y);
+                line += (ascii ? g == "|" : braille_bits(g) > 0) || g == spot_glyph(!ascii);
+            }
+            CHECK(line >= l.felt_rows - 2); // the cue may cross it
+            // The back of the D, a radius behind the line.
+            const Vec2 c = snooker_d_centre(snooker);
+            const Cell2 back = cell_of(l, {c.x - snooker_d_radius_on(snooker), c.y});
+            const std::string b = glyph_at(rows, back.x, back.y);
+            CHECK((ascii ? b == "(" : braille_bits(b) > 0));
+            // The blue's and the black's spots (the rack covers the pink's).
+            for (const int colour : {snooker_blue, snooker_black}) {
+                const Cell2 s = cell_of(l, snooker_spot(snooker, colour));
+                CHECK(glyph_at(rows, s.x, s.y) == spot_glyph(!ascii));
+            }
+        }
 }
