@@ -463,8 +463,15 @@ TEST_CASE("practice on the snooker table in tmux shows the baulk line, the D and
             t.repeat("Left", 30);
             const Layout l = make_layout(snooker, w, h);
             const Cell2 black = cell_of(l, snooker_spot(snooker, snooker_black));
+            // Until all 30 turns are drawn: the black's spot clear and the screen still for
+            // four polls in a row.
+            std::string last;
+            int still = 0;
             CHECK(t.wait_for([&](const std::string& s) {
-                return glyph_at(glyph_rows(s), black.x, black.y) == spot_glyph(!ascii);
+                still = s == last ? still + 1 : 0;
+                last = s;
+                return still >= 4 &&
+                       glyph_at(glyph_rows(s), black.x, black.y) == spot_glyph(!ascii);
             }));
             const auto rows = glyph_rows(t.screen());
             const int fy = static_cast<int>(std::lround(l.table_top));

@@ -4,6 +4,7 @@
 // drawn with the glyph nearest its direction in each cell it crosses ('-', '/', '(', '\').
 // The balls are drawn afterwards and cover them.
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -58,7 +59,11 @@ void draw_plain(const Frame& f, const Table& table) {
     const Vec2 centre = snooker_d_centre(table);
     const double r = snooker_d_radius_on(table);
     const double c = f.layout.cells_per_metre;
-    const int n = std::max(8, static_cast<int>(std::ceil(std::numbers::pi * r * c * 8)));
+    // Eight points per column of arc; a broken scale must not make the loop endless.
+    const double samples = std::numbers::pi * r * c * 8;
+    if (!(samples < 1e6))
+        return;
+    const int n = std::max(8, static_cast<int>(std::ceil(samples)));
     static const char* const glyphs[4] = {"-", "/", "(", "\\"};
     for (int k = 0; k <= n; ++k) {
         const double a = arc_from + (arc_to - arc_from) * k / n;
