@@ -2,6 +2,7 @@
 // green 6 by a clear margin from the felt and the cushion.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <vector>
 
 #include "tui/ball_style.hpp"
 #include "tui/terminal.hpp"
@@ -77,4 +78,25 @@ TEST_CASE("the 6 stands clear of the felt and the cushion in 256 colours", "[tui
     const Rgb rgb = xterm_rgb(six);
     CHECK(rgb.g > rgb.r);
     CHECK(rgb.g > rgb.b);
+}
+
+TEST_CASE("snooker's colours differ from the felt and from each other in 256 colours",
+          "[tui][palette][snooker]") {
+    const Palette felt = palette(Colour::felt);
+    std::vector<int> seen;
+    for (int id = 0; id <= 21; ++id) {
+        INFO("snooker ball " << id);
+        const Palette ball = palette(ball_colour(id, BallSet::snooker));
+        CHECK(ball.c8 != felt.c8);
+        CHECK(distance(ball.c256, felt.c256) > 100);
+        if (id == 0 || id > 15)
+            seen.push_back(ball.c256);
+        // The digits on it read: black, or white on the black.
+        const Style s = ball_style(id, true, BallSet::snooker);
+        if (id > 0)
+            CHECK(contrast(palette(s.fg).c256, ball.c256) >= 4.0);
+    }
+    for (std::size_t i = 0; i < seen.size(); ++i)
+        for (std::size_t j = i + 1; j < seen.size(); ++j)
+            CHECK(distance(seen[i], seen[j]) > 60);
 }

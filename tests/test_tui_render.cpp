@@ -1035,8 +1035,8 @@ TEST_CASE("in ASCII the game's dashes and quotes are plain", "[tui]") {
 
 TEST_CASE("the snooker table with a snooker rack renders at any size and in every mode",
           "[tui][snooker]") {
-    // Drawn as a pool table for now (the D and the spots come with the snooker game); here
-    // only that 22 balls and the 12 ft table draw nothing wrong.
+    // Here only that 22 balls and the 12 ft table draw nothing wrong; the marks and the
+    // labels are tests/test_tui_snooker.cpp's.
     const PhysicsParams params = physics_for_table(TableSize::snooker);
     const Table snooker = make_table(TableSize::snooker, params.ball_radius);
     View v;

@@ -116,6 +116,21 @@ void DotCanvas::circle(double cx, double cy, double radius, Colour role) {
     }
 }
 
+void DotCanvas::arc(double cx, double cy, double radius, double from, double to, Colour role) {
+    if (!std::isfinite(cx) || !std::isfinite(cy) || !(radius > 0) || radius > 1e4 ||
+        !std::isfinite(from) || !std::isfinite(to) || std::fabs(to - from) > 2 * std::numbers::pi)
+        return;
+    // Two samples per dot of arc, so that no dot along it is skipped.
+    const int n = std::max(2, static_cast<int>(std::ceil(std::fabs(to - from) * radius * 2)));
+    for (int k = 0; k <= n; ++k) {
+        const double a = from + (to - from) * k / n;
+        const double x = std::floor(cx + radius * std::cos(a));
+        const double y = std::floor(cy - radius * std::sin(a));
+        if (x >= 0 && y >= 0 && x < 2.0 * cols_ && y < 4.0 * rows_)
+            plot(static_cast<int>(x), static_cast<int>(y), role);
+    }
+}
+
 std::string braille_glyph(std::uint8_t mask) {
     // U+2800 + mask in UTF-8: E2, A0 + top two bits, 80 + low six bits.
     std::string g(3, '\0');

@@ -32,6 +32,9 @@ public:
     void line(double x0, double y0, double x1, double y1, Colour role, bool dashed = false);
     /// The outline of a circle in dot coordinates.
     void circle(double cx, double cy, double radius, Colour role);
+    /// Part of a circle's outline in dot coordinates: the angles from `from` to `to` radians,
+    /// counted from +x towards -y (up on the screen, as on the table), ends included.
+    void arc(double cx, double cy, double radius, double from, double to, Colour role);
 
     /// The dots of cell (col, row) as a Braille bit mask (0 for none).
     std::uint8_t mask(int col, int row) const { return cells_[index(col, row)].mask; }

@@ -38,8 +38,11 @@ struct Frame {
     Style felt() const { return {Colour::normal, Colour::felt}; }
 };
 
-/// Felt, rails, cushions, pockets, head string and foot spot.
+/// Felt, rails, cushions, pockets, head string and foot spot (on the snooker table its marks).
 void draw_table(const Frame& f);
+/// The snooker table's baulk line, D and six colour spots, faint on the felt (draw_table calls
+/// it before the balls, which cover them).
+void draw_snooker_marks(const Frame& f);
 /// Pocket numbers while a pocket is being called (after the balls, so that they stay visible).
 void draw_pocket_labels(const Frame& f);
 /// The aim line and aiming aid, the cue and the pointer's marker.

@@ -4,7 +4,8 @@
 // cells with a blank between the numbers (a rack is about 7 x 4 cells at 80x24, so some balls
 // move a cell or two). A letter (10..15 on small tables) or the cue ball's round glyph never
 // reads as part of a number, so they may touch anything. No ball is ever hidden while there is
-// room. The cue ball is placed first and always sits exactly.
+// room. The cue ball is placed first and always sits exactly. A snooker set has no two-digit
+// label ("1" a red, "2".."7" the colours, see ball_label), so its labels may touch anything.
 
 #include <algorithm>
 #include <cmath>
@@ -64,14 +65,15 @@ bool choose_cells(const Frame& f, const std::vector<Placed>& placed, double col,
     return best < 1e300;
 }
 
-void draw_ball(const Frame& f, const Ball& b, bool wide, std::vector<Placed>& placed) {
+void draw_ball(const Frame& f, const Ball& b, bool wide, BallSet set, std::vector<Placed>& placed) {
     double col, row;
     to_cell(f.layout, f.table_width(), b.position, col, row);
     if (!(std::fabs(col) < 1e6) || !(std::fabs(row) < 1e6))
         return;
-    const std::string label = ball_label(b.id, f.paint.utf8(), wide);
+    const std::string label = ball_label(b.id, f.paint.utf8(), wide, set);
     const int w = static_cast<int>(label.size()) == 2 ? 2 : 1; // "●" is 3 bytes, 1 column
-    const bool separated = label.find_first_of("0123456789") != std::string::npos;
+    const bool separated =
+        set == BallSet::pool && label.find_first_of("0123456789") != std::string::npos;
     int x = 0, y = 0;
     // With gaps close by; failing that (a crowd against a cushion), touching but never hidden.
     if (!choose_cells(f, placed, col, row, w, separated, reach_x, reach_y, x, y) &&
@@ -79,7 +81,7 @@ void draw_ball(const Frame& f, const Ball& b, bool wide, std::vector<Placed>& pl
         return;
     placed.push_back({x, y, w, separated});
     const bool colour = f.paint.colour();
-    Style style = ball_style(b.id, colour);
+    Style style = ball_style(b.id, colour, set);
     if (b.id == 0) {
         const bool refused = f.view.placing && !f.view.placement_legal;
         style = {refused ? Colour::red : Colour::white, Colour::felt, true};
@@ -108,9 +110,10 @@ std::vector<std::pair<int, int>> draw_balls(const Frame& f) {
     std::stable_sort(order.begin(), order.end(),
                      [](const Ball* a, const Ball* b) { return a->id < b->id; });
     const bool wide = labels_wide(f);
+    const BallSet set = ball_set(f.view);
     std::vector<Placed> placed;
     for (const Ball* b : order)
-        draw_ball(f, *b, wide, placed);
+        draw_ball(f, *b, wide, set, placed);
     std::vector<std::pair<int, int>> cells;
     for (const Placed& p : placed)
         for (int k = 0; k < p.w; ++k)

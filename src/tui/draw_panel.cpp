@@ -10,6 +10,7 @@
 #include <cmath>
 #include <iterator>
 #include <string>
+#include <termpool/snooker_layout.hpp>
 #include <vector>
 
 #include "tui/aim.hpp"
@@ -73,9 +74,10 @@ template <class Keep> std::string pocketed(const View& v, Keep keep) {
         if (b.id > 0 && b.state == MotionState::pocketed && keep(b.id))
             ids.push_back(b.id);
     std::sort(ids.begin(), ids.end());
+    const bool snooker = ball_set(v) == BallSet::snooker;
     std::string s;
     for (const int id : ids)
-        s += " " + std::to_string(id);
+        s += " " + (snooker ? ball_label(id, false, false, BallSet::snooker) : std::to_string(id));
     return s;
 }
 
@@ -172,9 +174,23 @@ int lay_out_legend(const Frame& f, const std::vector<int>& ids, LegendForm form,
     if (form.label)
         tokens.push_back({{"on table", dim}});
     bool letters = false;
+    const BallSet set = ball_set(f.view);
+    if (set == BallSet::snooker) {
+        // The reds are alike: one "1" with how many there are ("1x15"), then the colours.
+        const auto reds = std::count_if(ids.begin(), ids.end(), is_snooker_red);
+        if (reds > 0) {
+            Line t{{ball_label(snooker_first_red, f.paint.utf8(), wide, set),
+                    ball_style(snooker_first_red, f.paint.colour(), set)}};
+            if (reds > 1)
+                t.push_back({"x" + std::to_string(reds), dim});
+            tokens.push_back(t);
+        }
+    }
     for (const int id : ids) {
-        Line t{{ball_label(id, f.paint.utf8(), wide), ball_style(id, f.paint.colour())}};
-        if (!wide && id >= 10) {
+        if (set == BallSet::snooker && is_snooker_red(id))
+            continue;
+        Line t{{ball_label(id, f.paint.utf8(), wide, set), ball_style(id, f.paint.colour(), set)}};
+        if (set == BallSet::pool && !wide && id >= 10) {
             letters = true;
             if (form.numbers)
                 t.push_back({"=" + std::to_string(id), dim});

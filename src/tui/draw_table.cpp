@@ -1,9 +1,11 @@
-// The table: felt, rails with the cushion nose along their inner edge, pockets, head string,
-// foot spot, and the pocket numbers while a pocket is being called.
+// The table: felt, rails with the cushion nose along their inner edge, pockets, head string and
+// foot spot (snooker: baulk line, D and spots), and the pocket numbers while a pocket is being
+// called.
 
 #include <cmath>
 #include <string>
 
+#include "tui/ball_style.hpp"
 #include "tui/braille.hpp"
 #include "tui/draw.hpp"
 #include "tui/pocket_cells.hpp"
@@ -41,9 +43,16 @@ void draw_pockets(const Frame& f) {
             f.paint.put(x, y, " ", hole);
 }
 
-// A faint dotted line on the head string and a dot on the foot spot.
+// A faint dotted line on the head string and a dot on the foot spot; on the snooker table its
+// own marks instead, and the head string only while pool balls are played on it (their ball in
+// hand goes behind it). The pink's spot is the foot spot.
 void draw_markings(const Frame& f) {
     const Table& table = *f.view.table;
+    const bool snooker = table.size == TableSize::snooker;
+    if (snooker)
+        draw_snooker_marks(f);
+    if (snooker && ball_set(f.view) == BallSet::snooker)
+        return;
     const Style faint{Colour::dim, Colour::felt};
     double col, row;
     to_cell(f.layout, table.width, {table.head_string_x(), 0}, col, row);
@@ -57,7 +66,7 @@ void draw_markings(const Frame& f) {
             f.paint.put(x, y, glyph, faint);
     }
     int fx, fy;
-    if (f.cell_of(table.foot_spot(), fx, fy) && f.on_felt(fx, fy))
+    if (!snooker && f.cell_of(table.foot_spot(), fx, fy) && f.on_felt(fx, fy))
         f.paint.put(fx, fy, f.paint.utf8() ? "\u00B7" : ".", faint);
 }
 

@@ -36,6 +36,10 @@ const char* colour_name(Colour c) {
         return "green";
     case Colour::maroon:
         return "maroon";
+    case Colour::brown:
+        return "brown";
+    case Colour::pink:
+        return "pink";
     case Colour::aim:
         return "aim";
     case Colour::ghost:

@@ -181,6 +181,11 @@ Palette palette(Colour c) {
         return {46, COLOR_CYAN};
     case Colour::maroon:
         return {88, COLOR_RED};
+    case Colour::brown:
+        // With 8 colours the nearest is red; the brown still reads by its 4.
+        return {130, COLOR_RED};
+    case Colour::pink:
+        return {211, COLOR_MAGENTA};
     case Colour::aim:
         return {255, COLOR_WHITE};
     case Colour::ghost:

@@ -29,6 +29,8 @@ enum class Colour : std::uint8_t {
     orange,   ///< 5 and 13
     green,    ///< 6 and 14
     maroon,   ///< 7 and 15
+    brown,    ///< snooker's brown
+    pink,     ///< snooker's pink
     aim,      ///< the aim line and the cue
     ghost,    ///< the ghost ball and the predicted paths
     dim,      ///< secondary text
