@@ -6,6 +6,7 @@
 #include <termpool/computer.hpp>
 #include <termpool/portable_math.hpp>
 #include <termpool/simulator.hpp>
+#include <termpool/snooker_layout.hpp>
 
 namespace termpool {
 namespace {
@@ -377,11 +378,17 @@ Vec2 ComputerPlayer::place_break(const Game& game) {
     const Table& table = game.table();
     Random noise = rng_;
     rng_.next();
-    Vec2 best_spot = table.head_spot();
+    // Snooker breaks from the D: spots along the baulk line inside it.
+    const bool in_d = game.ball_in_hand() == BallInHand::d;
+    const std::vector<Vec2> fallback = in_d ? game.legal_placements(6) : std::vector<Vec2>{};
+    Vec2 best_spot = in_d && !fallback.empty() ? fallback.front() : table.head_spot();
     double best = -1e18;
     const int tries = samples_per_candidate(level_);
     for (int k = -3; k <= 3; ++k) {
-        const Vec2 spot{table.head_string_x(), table.width / 2 + k * table.width / 10};
+        const Vec2 spot = in_d
+                              ? Vec2{snooker_baulk_x(table),
+                                     table.width / 2 + k * snooker_d_radius_on(table) / 3.5}
+                              : Vec2{table.head_string_x(), table.width / 2 + k * table.width / 10};
         Game trial = game;
         if (!trial.place_cue_ball(spot))
             continue;
