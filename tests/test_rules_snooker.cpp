@@ -642,7 +642,7 @@ TEST_CASE("snooker: a whole frame between computers through the Match", "[snooke
     header.computers[1] = Level::easy;
     Match m = started(header, 9);
     std::vector<PlayedShot> shots;
-    int shots_left = 150;
+    int shots_left = 400;
     while (m.pending().kind != Pending::over && shots_left > 0) {
         const int player = m.to_act();
         const std::optional<ComputerMove> move = m.computer_move();
@@ -693,4 +693,30 @@ TEST_CASE("snooker: a whole frame between computers through the Match", "[snooke
     const auto again = Match::replay(m.record());
     REQUIRE(std::holds_alternative<Match>(again));
     CHECK(std::get<Match>(again).state_hash() == m.state_hash());
+}
+
+TEST_CASE("snooker: a best-of-N match is a race to (N+1)/2, frames rerack the snooker way",
+          "[snooker][match][race]") {
+    CHECK(race_for_best_of(1) == 1);
+    CHECK(race_for_best_of(7) == 4);
+    CHECK(race_for_best_of(35) == 18);
+    GameRecord header = snooker_header(8);
+    header.race_to = race_for_best_of(3);
+    Match m = started(header);
+    REQUIRE(m.concede(1) == MatchError::none); // frame 1 to player 2
+    CHECK(m.score().racks_won[1] == 1);
+    REQUIRE(m.pending().kind == Pending::next_rack);
+    REQUIRE(m.next_rack(m.to_act()) == MatchError::none);
+    CHECK(m.rack() == 2);
+    CHECK(m.game().balls().size() == 22);
+    CHECK(m.game().score_of(1) == 0);
+    CHECK(m.game().score_of(2) == 0);
+    CHECK(m.game().ball_in_hand() == BallInHand::d);
+    REQUIRE(m.concede(m.to_act()) == MatchError::none);
+    const auto again = Match::replay(m.record());
+    REQUIRE(std::holds_alternative<Match>(again));
+    CHECK(std::get<Match>(again).state_hash() == m.state_hash());
+    CHECK(std::get<Match>(again).score().racks_won[0] +
+              std::get<Match>(again).score().racks_won[1] ==
+          2);
 }
