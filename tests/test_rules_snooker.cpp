@@ -312,6 +312,7 @@ TEST_CASE("snooker: a free ball after a foul when snookered", "[rules][snooker][
     CHECK_FALSE(v.miss);
     CHECK(std::ranges::count(v.choices, Choice::replace_and_replay) == 0);
     CHECK(v.free_ball); // the next player is snookered the same way
+    CHECK(g.free_ball_offered());
     REQUIRE(g.choose(Choice::play_on));
     CHECK(g.snooker().free_ball);
     CHECK(g.legal_targets().size() == 7); // any ball may be nominated

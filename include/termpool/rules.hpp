@@ -242,6 +242,9 @@ public:
     int touching_ball() const;
     /// Snooker: true when the shooter is snookered on every ball on (see `snookered`).
     bool shooter_snookered() const;
+    /// Snooker: true when the choice owed follows a foul that left the chooser snookered:
+    /// playing on then gives a free ball.
+    bool free_ball_offered() const { return free_ball_offered_; }
     /// Snooker: the points still on the table for the player on now (reds at 8 each with a
     /// black, then the colours).
     int points_remaining() const;

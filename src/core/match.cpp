@@ -185,6 +185,7 @@ std::uint64_t Match::state_hash() const {
             d.add(v);
         d.add(s.free_ball);
         d.add(s.respotted_black);
+        d.add(g.free_ball_offered());
     }
     for (const Ball& b : g.balls()) {
         d.add(b.id);
