@@ -266,6 +266,27 @@ TEST_CASE("snooker: a miss may have the balls replaced", "[rules][snooker][miss]
     CHECK(g.ready_to_shoot());
 }
 
+TEST_CASE("snooker: three misses in a row, the balls replaced, lose the frame",
+          "[rules][snooker][miss]") {
+    Game g = frame(layout({1.2, 0.6}, {1, 2}, all_colours));
+    for (int miss = 1; miss <= 2; ++miss) {
+        const Verdict v = g.apply({}, hand_made(g, {hit(0, 16)}));
+        REQUIRE(v.miss);
+        CHECK(g.snooker().misses[0] == miss);
+        REQUIRE(g.choose(Choice::replace_and_replay));
+    }
+    SECTION("the third") {
+        const Verdict v = g.apply({}, hand_made(g, {hit(0, 16)}));
+        CHECK(v.winner == 2);
+        CHECK(v.reason == WinReason::three_misses);
+        CHECK(g.score_of(2) == 12);
+    }
+    SECTION("a hit in between starts the count again") {
+        g.apply({}, hand_made(g, {hit(0, 1), rail(1)}));
+        CHECK(g.snooker().misses[0] == 0);
+    }
+}
+
 TEST_CASE("snooker: snookered, by the edges of the ball on", "[rules][snooker][free]") {
     const Vec2 cue{2.0, 0.9};
     SECTION("a ball straight in the way") {
@@ -328,10 +349,20 @@ TEST_CASE("snooker: a free ball after a foul when snookered", "[rules][snooker][
         CHECK_FALSE(g.snooker().free_ball);
     }
     SECTION("without a nomination the ball hit first is the free ball") {
-        v = g.apply({}, hand_made(g, {hit(0, 21), rail(21)}));
+        ShotResult r = hand_made(g, {hit(0, 21), rail(21)});
+        for (Ball& b : r.balls) // the black driven off the line to the red
+            if (b.id == snooker_black)
+                b.position = b.position + Vec2{0, 0.3};
+        v = g.apply({}, r);
         CHECK(v.foul == Foul::none);
         CHECK(v.nominated == snooker_black);
         CHECK(v.next_shooter == 1);
+    }
+    SECTION("a free ball that leaves the opponent snookered behind it is a foul") {
+        v = g.apply(nominate(snooker_black), hand_made(g, {hit(0, 21), rail(21)}));
+        CHECK(v.foul == Foul::free_ball_snooker);
+        CHECK(v.penalty == 4); // the value of the ball on, a red: the minimum
+        CHECK(g.score_of(1) == 4);
     }
     SECTION("the free ball nominated but another colour hit") {
         v = g.apply(nominate(snooker_pink), hand_made(g, {hit(0, 21)}));

@@ -42,16 +42,17 @@ enum class BallInHand {
 /// Fouls, in order of precedence: when several happen on one shot, the verdict names the
 /// first in this order (all of them are listed as well).
 enum class Foul {
-    none,             ///< a legal shot
-    scratch,          ///< the cue ball was pocketed
-    cue_off_table,    ///< the cue ball left the table
-    off_table,        ///< an object ball left the table
-    no_contact,       ///< the cue ball hit no ball
-    wrong_ball_first, ///< the first ball hit was not a legal target
-    no_rail,          ///< after the first contact, nothing was pocketed and no ball hit a cushion
-    bad_break,        ///< 9-ball: the break pocketed nothing and drove fewer than four balls to a
-                      ///< cushion (in 8-ball an illegal break is not a foul but owes a choice)
-    pot_not_on,       ///< snooker: a ball that was not on was potted
+    none,              ///< a legal shot
+    scratch,           ///< the cue ball was pocketed
+    cue_off_table,     ///< the cue ball left the table
+    off_table,         ///< an object ball left the table
+    no_contact,        ///< the cue ball hit no ball
+    wrong_ball_first,  ///< the first ball hit was not a legal target
+    no_rail,           ///< after the first contact, nothing was pocketed and no ball hit a cushion
+    bad_break,         ///< 9-ball: the break pocketed nothing and drove fewer than four balls to a
+                       ///< cushion (in 8-ball an illegal break is not a foul but owes a choice)
+    pot_not_on,        ///< snooker: a ball that was not on was potted
+    free_ball_snooker, ///< snooker: the free ball, not potted, left the opponent snookered
 };
 
 /// Decisions the rules owe a player.
@@ -82,6 +83,7 @@ enum class WinReason {
     three_fouls,        ///< the opponent fouled three times in a row (9-ball)
     frame_won,          ///< snooker: the frame ended with more points than the opponent
     conceded,           ///< snooker: the opponent conceded the frame
+    three_misses,       ///< snooker: the opponent missed three times running, the balls replaced
 };
 
 /// Snooker: what the shooter must hit first.
@@ -99,6 +101,7 @@ struct SnookerState {
     BallOn ball_on = BallOn::red;  ///< what the shooter is on
     bool free_ball = false;        ///< the shooter may nominate any ball as the ball on
     bool respotted_black = false;  ///< the scores were level at the end: re-spotted black
+    int misses[2] = {0, 0};        ///< misses in a row of each player, the balls replaced
 };
 
 /// A called shot. Ball 0 means "not called": the referee calls the obvious shot for the
@@ -289,6 +292,7 @@ private:
     Verdict judge_nine(const ShotCall& call, const Facts& facts);
     Verdict judge_snooker(const ShotCall& call, const Facts& facts);
     std::vector<int> snooker_targets(const ShotCall& call) const;
+    bool snookered_by(int id) const;
     void respot_colours(std::vector<int> ids);
     void end_visit();
     void end_frame();

@@ -180,9 +180,11 @@ bool Game::choose(Choice choice) {
         shooter_ = who;
         is_break_ = false;
         snooker_.free_ball = free_ball;
+        snooker_.misses[opponent(who) - 1] = 0; // the three-miss count needs the balls replaced
         break;
     case Choice::offender_plays:
         shooter_ = opponent(who);
+        snooker_.misses[opponent(who) - 1] = 0;
         break;
     case Choice::replace_and_replay:
         // The foul's points stay given; the balls and the ball on go back as they were.

@@ -70,6 +70,8 @@ const char* foul_name(Foul foul) {
         return "bad-break";
     case Foul::pot_not_on:
         return "pot-not-on";
+    case Foul::free_ball_snooker:
+        return "free-ball-snooker";
     }
     return "?";
 }
@@ -126,6 +128,8 @@ const char* win_reason_name(WinReason reason) {
         return "frame-won";
     case WinReason::conceded:
         return "conceded";
+    case WinReason::three_misses:
+        return "three-misses";
     }
     return "?";
 }

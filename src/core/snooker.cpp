@@ -112,6 +112,29 @@ std::vector<int> Game::snooker_targets(const ShotCall& call) const {
     return balls_on();
 }
 
+bool Game::snookered_by(int id) const {
+    // The player now on (the turn has passed) is snookered, and would not be without `id`.
+    const Ball* cue = on_table(balls_, 0);
+    if (!cue)
+        return false;
+    std::vector<int> on;
+    if (reds_on(balls_) > 0) {
+        for (int red = snooker_first_red; red <= snooker_last_red; ++red)
+            if (ball_on_table(red))
+                on.push_back(red);
+    } else if (const int lowest = lowest_colour(balls_); lowest != 0) {
+        on.push_back(lowest);
+    }
+    const double R = params_.ball_radius;
+    if (!snookered(balls_, cue->position, on, R))
+        return false;
+    std::vector<Ball> without = balls_;
+    for (Ball& b : without)
+        if (b.id == id)
+            b.state = MotionState::pocketed;
+    return !snookered(without, cue->position, on, R);
+}
+
 int Game::touching_ball() const {
     const Ball* cue = on_table(balls_, 0);
     if (type_ != GameType::snooker || !cue)
@@ -283,6 +306,20 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
             colours_down.push_back(id);
     const bool last_black = on == BallOn::in_order && lowest == snooker_black;
 
+    // A free ball that scores nothing and leaves the opponent snookered by it on every ball
+    // on is a foul, except when only the pink and the black are left.
+    auto down = [&](int id) { return id != 0 && std::ranges::count(potted, id) > 0; };
+    const bool scores = on == BallOn::red
+                            ? std::ranges::any_of(potted, is_snooker_red) || down(free_ball)
+                        : on == BallOn::colour ? down(nominated)
+                                               : down(lowest) || down(free_ball);
+    const bool pink_and_black = reds_on(before) == 0 && lowest == snooker_pink;
+    if (v.fouls.empty() && free_ball != 0 && !scores && !pink_and_black &&
+        snookered_by(free_ball)) {
+        v.fouls.push_back(Foul::free_ball_snooker);
+        concerned(free_ball);
+    }
+
     if (!v.fouls.empty()) {
         v.penalty = penalty;
         s.scores[other - 1] += penalty;
@@ -303,6 +340,13 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
                                        std::ranges::count(v.fouls, Foul::wrong_ball_first) >
                                    0;
         v.miss = failed_to_hit && !facts.snookered_before && !touching_on;
+        // Three misses in a row, the balls replaced each time, lose the frame.
+        s.misses[me - 1] = v.miss ? s.misses[me - 1] + 1 : 0;
+        if (s.misses[me - 1] >= 3) {
+            winner_ = other;
+            reason_ = WinReason::three_misses;
+            return v;
+        }
         chooser_ = other;
         choices_ = {Choice::play_on, Choice::offender_plays};
         if (v.miss)
@@ -341,6 +385,7 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
             respot.push_back(id);
     respot_colours(respot);
     v.respotted = respot;
+    s.misses[me - 1] = 0;
     s.scores[me - 1] += points;
     s.current_break += points;
     v.points = points;

@@ -24,6 +24,8 @@ std::string foul_words(Foul foul) {
         return "illegal break";
     case Foul::pot_not_on:
         return "potted a ball not on";
+    case Foul::free_ball_snooker:
+        return "snookered with the free ball";
     }
     return "foul";
 }
@@ -82,6 +84,8 @@ std::string win_message(const Verdict& v, int shooter, const std::string names[2
         return winner + " wins the frame on points";
     case WinReason::conceded:
         return names[2 - v.winner] + " conceded" + tail;
+    case WinReason::three_misses:
+        return who + " missed three times running" + tail;
     case WinReason::none:
         break;
     }
