@@ -752,3 +752,20 @@ TEST_CASE("snooker: a best-of-N match is a race to (N+1)/2, frames rerack the sn
               std::get<Match>(again).score().racks_won[1] ==
           2);
 }
+
+TEST_CASE("snooker: the computer breaks off from the D onto a red", "[snooker][computer]") {
+    GameSetup setup;
+    setup.game = GameType::snooker;
+    int fouls = 0;
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+        Game g = make_game(setup, 1, seed);
+        ComputerPlayer computer(Level::medium, seed);
+        REQUIRE(g.place_cue_ball(computer.place_cue_ball(g)));
+        CHECK(in_snooker_d(g.table(), find_ball(g.balls(), 0).position));
+        const ComputerShot shot = computer.shot(g);
+        const Verdict v = g.play(shot.strike, shot.call);
+        CHECK(is_snooker_red(v.first_contact));
+        fouls += v.foul != Foul::none;
+    }
+    CHECK(fouls <= 1);
+}

@@ -361,6 +361,8 @@ ComputerShot ComputerPlayer::shot(const Game& game) {
 }
 
 Strike ComputerPlayer::break_strike(const Game& game, const Ball& cue) const {
+    if (game.type() == GameType::snooker)
+        return snooker_break_strike(game, cue);
     // Full power at the apex ball (the one nearest the head of the table), full in the face.
     const Ball* apex = nullptr;
     for (const Ball& b : game.balls()) {
@@ -370,6 +372,28 @@ Strike ComputerPlayer::break_strike(const Game& game, const Ball& cue) const {
             apex = &b;
     }
     return {break_speed, apex ? degrees(apex->position - cue.position) : 0, 0, 0};
+}
+
+Strike ComputerPlayer::snooker_break_strike(const Game& game, const Ball& cue) const {
+    // The break-off of snooker: thin off the back red of the triangle on the cue ball's side
+    // (the line of aim 1.6 R outside its centre), firm, so the cue ball comes back to baulk
+    // and the pack barely opens.
+    const double R = game.params().ball_radius;
+    const Ball* corner = nullptr;
+    const auto key = [&](const Ball& r) {
+        return r.position.x - 2 * std::abs(r.position.y - cue.position.y);
+    };
+    for (const Ball& b : game.balls())
+        if (is_snooker_red(b.id) && b.state != MotionState::pocketed &&
+            (!corner || key(b) > key(*corner)))
+            corner = &b;
+    if (!corner)
+        return {2.0, 0, 0, 0};
+    const Vec2 along = normalized(corner->position - cue.position);
+    Vec2 outward{along.y, -along.x};
+    if (dot(outward, Vec2{0, cue.position.y - corner->position.y}) < 0)
+        outward = -outward;
+    return {7.0, degrees(corner->position + outward * (1.6 * R) - cue.position), 0, 0};
 }
 
 Vec2 ComputerPlayer::place_break(const Game& game) {
