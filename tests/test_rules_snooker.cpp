@@ -642,6 +642,17 @@ TEST_CASE("snooker through the Match: nominations, choices, concession and repla
 }
 
 TEST_CASE("snooker: a pool record may not call a snooker ball", "[snooker][record]") {
+    GameRecord pool;
+    pool.setup.game = GameType::nine_ball;
+    Match m = started(pool);
+    ShotCall colour;
+    colour.call.ball = snooker_yellow;
+    colour.call.pocket = 1;
+    CHECK(std::get<MatchError>(m.shoot(1, {1, 0, 0, 0}, colour)) == MatchError::bad_call);
+    ShotCall no_pocket;
+    no_pocket.call.ball = 3;
+    CHECK(std::get<MatchError>(m.shoot(1, {1, 0, 0, 0}, no_pocket)) == MatchError::bad_call);
+
     const auto bad = parse_record("termpool-record 1\ngame 9ball\nshot 1 0 0 0 call 17 0\nend\n");
     REQUIRE(std::holds_alternative<RecordError>(bad));
     CHECK(std::get<RecordError>(bad).line == 3);

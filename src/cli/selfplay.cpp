@@ -121,6 +121,16 @@ std::string check_invariants(const Game& game) {
         }
     if (game.shooter() != 1 && game.shooter() != 2)
         return "no single shooter";
+    // Snooker: while reds remain every colour is on the table (they are re-spotted).
+    if (game.type() == GameType::snooker &&
+        std::ranges::any_of(game.balls(),
+                            [](const Ball& b) {
+                                return b.id >= 1 && b.id <= 15 && b.state != MotionState::pocketed;
+                            }) &&
+        std::ranges::any_of(game.balls(), [](const Ball& b) {
+            return b.id >= 16 && b.state == MotionState::pocketed;
+        }))
+        return "a colour is missing while reds remain";
     return {};
 }
 
