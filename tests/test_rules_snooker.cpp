@@ -100,6 +100,7 @@ TEST_CASE("snooker: names, the table and a new frame", "[rules][snooker]") {
     CHECK(g.snooker().ball_on == BallOn::red);
     CHECK(g.legal_targets().size() == 15);
     CHECK(g.points_remaining() == 147);
+    CHECK_FALSE(g.nomination_owed());
     CHECK(g.ready_to_shoot()); // the rack leaves the cue ball in the D
     // Ball in hand is in the D only.
     const Vec2 d = snooker_d_centre(g.table());
@@ -118,6 +119,7 @@ TEST_CASE("snooker: a red, then the nominated colour, a break", "[rules][snooker
     CHECK(v.next_shooter == 1);
     CHECK(g.snooker().ball_on == BallOn::colour);
     CHECK(g.legal_targets() == all_colours);
+    CHECK(g.nomination_owed());
 
     v = g.apply(nominate(snooker_black), hand_made(g, {hit(0, 21), drop(21, 3)}));
     CHECK(v.foul == Foul::none);

@@ -245,6 +245,13 @@ public:
     int touching_ball() const;
     /// Snooker: true when the shooter is snookered on every ball on (see `snookered`).
     bool shooter_snookered() const;
+    /// Snooker: true when the shooter names the ball on with the shot's `Call.ball`: a colour
+    /// after a red, or any ball with a free ball (without one the referee takes the ball hit
+    /// first).
+    bool nomination_owed() const {
+        return type_ == GameType::snooker &&
+               (snooker_.ball_on == BallOn::colour || snooker_.free_ball);
+    }
     /// Snooker: true when the choice owed follows a foul that left the chooser snookered:
     /// playing on then gives a free ball.
     bool free_ball_offered() const { return free_ball_offered_; }
