@@ -453,6 +453,7 @@ TEST_CASE("snooker: the end of the frame", "[rules][snooker][end]") {
         const Verdict v = g.apply({}, hand_made(g, {hit(0, 21), drop(21, 3)}));
         CHECK(v.winner == 0);
         CHECK(g.snooker().respotted_black);
+        CHECK(v.respotted == std::vector<int>{snooker_black});
         CHECK(g.ball_in_hand() == BallInHand::d);
         CHECK(at(g, snooker_black, snooker_spot(g.table(), snooker_black)));
         CHECK((g.shooter() == 1 || g.shooter() == 2));

@@ -302,7 +302,7 @@ private:
     bool snookered_by(int id) const;
     void respot_colours(std::vector<int> ids);
     void end_visit();
-    void end_frame();
+    void end_frame(Verdict& v);
     void rerack(int new_breaker);
     void spot_ball(int id);
     void finish_turn(Verdict& verdict, bool progress);

@@ -196,7 +196,7 @@ void Game::respot_colours(std::vector<int> ids) {
     }
 }
 
-void Game::end_frame() {
+void Game::end_frame(Verdict& v) {
     end_visit();
     const int a = snooker_.scores[0], b = snooker_.scores[1];
     if (a != b) {
@@ -204,6 +204,7 @@ void Game::end_frame() {
         reason_ = WinReason::frame_won;
         return;
     }
+    v.respotted = {snooker_black};
     // Level: the black is re-spotted, lots are drawn for who plays first, from the D.
     snooker_.respotted_black = true;
     snooker_.ball_on = BallOn::in_order;
@@ -328,7 +329,7 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
         if (facts.dropped(0) || facts.left_table(0))
             ball_in_hand_ = BallInHand::d;
         if (last_black) {
-            end_frame();
+            end_frame(v);
             return v;
         }
         // Colours potted on a foul come back; reds stay down.
@@ -404,7 +405,7 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
         break;
     case BallOn::in_order:
         if (last_black && std::ranges::count(potted, snooker_black) > 0)
-            end_frame();
+            end_frame(v);
         break;
     }
     return v;
