@@ -783,3 +783,16 @@ TEST_CASE("snooker: the computer breaks off from the D onto a red", "[snooker][c
     }
     CHECK(fouls <= 1);
 }
+
+TEST_CASE("snooker: a real shot away from a touching red is no foul", "[snooker][touching]") {
+    // The cue ball rests against a red; it is struck straight away from it, into the open.
+    const std::vector<Ball> balls{sball(0, 2.0, 0.9), sball(1, 2.0 + 2 * R + 0.00002, 0.9),
+                                  on_spot(snooker_yellow), on_spot(snooker_black)};
+    Game g = frame(balls);
+    REQUIRE(g.touching_ball() == 1);
+    const Verdict v = g.play({1.0, 180, 0, 0}, {});
+    CHECK(v.foul == Foul::none);
+    CHECK(v.penalty == 0);
+    CHECK(v.next_shooter == 2);
+    CHECK(find_ball(g.balls(), 1).position == balls[1].position); // the red did not move
+}
