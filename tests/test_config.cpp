@@ -46,7 +46,7 @@ TEST_CASE("unknown keys warn, bad values name their line", "[config]") {
         const char* text;
         const char* says;
     } bad[] = {
-        {"game = snooker\n", "1: unknown game 'snooker'"},
+        {"game = croquet\n", "1: unknown game 'croquet'"},
         {"\n\ntable = 12ft\n", "3: unknown table '12ft'"},
         {"power-mode = fast\n", "1: power-mode is distance or timed"},
         {"aim-aid = maybe\n", "1: aim-aid is on or off"},

@@ -120,7 +120,7 @@ TEST_CASE("bad records are refused at their line", "[record]") {
         CHECK(error_of(newer).find("1: record version 9 is newer") == 0);
     }
     SECTION("a bad value names its line") {
-        CHECK(error_of("termpool-record 1\ngame snooker\nend\n") == "2: unknown game 'snooker'");
+        CHECK(error_of("termpool-record 1\ngame croquet\nend\n") == "2: unknown game 'croquet'");
         CHECK(error_of("termpool-record 1\nshot 30 0 0 0\nend\n") == "2: shot out of range");
         CHECK(error_of("termpool-record 1\nshot 1 x 0 0\nend\n") == "2: bad shot numbers");
         CHECK(error_of("termpool-record 1\nend\nshot 1 0 0 0\n") == "3: text after 'end'");

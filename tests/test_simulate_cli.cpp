@@ -448,7 +448,7 @@ TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
 
 TEST_CASE("selfplay plays short games to their end and sums them up", "[cli][selfplay]") {
     TempDir dir;
-    for (const char* game : {"8ball", "8ball-bar", "9ball"}) {
+    for (const char* game : {"8ball", "8ball-bar", "9ball", "snooker"}) {
         const Run r =
             run(dir, std::string("selfplay --games 3 --p1 easy --p2 easy --game ") + game);
         INFO(game << " stderr: " << r.err);

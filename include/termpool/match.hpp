@@ -170,6 +170,9 @@ public:
     shoot(int player, const Strike& strike, const ShotCall& call, Trajectory* trajectory = nullptr);
     /// `player` makes the choice owed.
     MatchError choose(int player, Choice choice);
+    /// Snooker: `player`, who is to act, concedes the frame; recorded as `choose concede`.
+    /// not_offered in another game.
+    MatchError concede(int player);
     /// Racks the next rack of a race once the current one is won (either player may).
     MatchError next_rack(int player);
     /// Gives `player`'s seat a new name.

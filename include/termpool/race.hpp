@@ -22,6 +22,12 @@ std::optional<BreakRule> parse_break_rule(std::string_view name);
 /// The longest race the game offers.
 inline constexpr int max_race_to = 99;
 
+/// The race of a match of best of `frames` (snooker's way of saying it): the first to win
+/// more than half, (frames + 1) / 2.
+constexpr int race_for_best_of(int frames) {
+    return (frames + 1) / 2;
+}
+
 /// The score of a match.
 struct MatchState {
     int race_to = 1;                             ///< racks to win; 0 or 1: a single game

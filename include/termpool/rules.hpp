@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// The referee: 8-ball (WPA rules and bar rules) and 9-ball (WPA rules) on top of the
-/// simulator. A Game holds the players' state and the balls on the table; `apply` reads the
-/// events of a shot and decides what they mean. Choices the rules owe a player are explicit
-/// inputs (`choose`), never guessed.
+/// The referee: 8-ball (WPA rules and bar rules), 9-ball (WPA rules) and snooker (WPBSA rules,
+/// as far as the simulator can judge them) on top of the simulator. A Game holds the players' state
+/// and the balls on the table; `apply` reads the events of a shot and decides what they mean.
+/// Choices the rules owe a player are explicit inputs (`choose`), never guessed.
 
 #include <cstdint>
 #include <optional>
@@ -21,6 +21,7 @@ enum class GameType {
     eight_ball,     ///< WPA 8-ball: called shots, ball in hand anywhere after a foul
     eight_ball_bar, ///< bar rules: only the 8 is called, ball in hand in the kitchen
     nine_ball,      ///< WPA 9-ball: lowest ball first, push-out after the break
+    snooker,        ///< snooker (WPBSA): reds and colours, points, fouls give points away
 };
 
 /// An 8-ball group.
@@ -35,32 +36,38 @@ enum class BallInHand {
     none,     ///< the cue ball stays where it is
     kitchen,  ///< behind the head string (x <= L/4)
     anywhere, ///< anywhere on the table
+    d,        ///< snooker: inside the D (in_snooker_d)
 };
 
 /// Fouls, in order of precedence: when several happen on one shot, the verdict names the
 /// first in this order (all of them are listed as well).
 enum class Foul {
-    none,             ///< a legal shot
-    scratch,          ///< the cue ball was pocketed
-    cue_off_table,    ///< the cue ball left the table
-    off_table,        ///< an object ball left the table
-    no_contact,       ///< the cue ball hit no ball
-    wrong_ball_first, ///< the first ball hit was not a legal target
-    no_rail,          ///< after the first contact, nothing was pocketed and no ball hit a cushion
-    bad_break,        ///< 9-ball: the break pocketed nothing and drove fewer than four balls to a
-                      ///< cushion (in 8-ball an illegal break is not a foul but owes a choice)
+    none,              ///< a legal shot
+    scratch,           ///< the cue ball was pocketed
+    cue_off_table,     ///< the cue ball left the table
+    off_table,         ///< an object ball left the table
+    no_contact,        ///< the cue ball hit no ball
+    wrong_ball_first,  ///< the first ball hit was not a legal target
+    no_rail,           ///< after the first contact, nothing was pocketed and no ball hit a cushion
+    bad_break,         ///< 9-ball: the break pocketed nothing and drove fewer than four balls to a
+                       ///< cushion (in 8-ball an illegal break is not a foul but owes a choice)
+    pot_not_on,        ///< snooker: a ball that was not on was potted
+    free_ball_snooker, ///< snooker: the free ball, not potted, left the opponent snookered
 };
 
 /// Decisions the rules owe a player.
 enum class Choice {
-    play_on,      ///< accept the table as it is and shoot
-    re_rack,      ///< re-rack and break yourself
-    re_break,     ///< the player who just broke breaks again
-    spot_eight,   ///< 8 pocketed on the break: spot it and keep shooting
-    take_solids,  ///< bar rules, both groups fell on the break: take solids
-    take_stripes, ///< bar rules: take stripes
-    shoot,        ///< after a push-out: shoot from here
-    pass_back,    ///< after a push-out: the player who pushed shoots again
+    play_on,            ///< accept the table as it is and shoot
+    re_rack,            ///< re-rack and break yourself
+    re_break,           ///< the player who just broke breaks again
+    spot_eight,         ///< 8 pocketed on the break: spot it and keep shooting
+    take_solids,        ///< bar rules, both groups fell on the break: take solids
+    take_stripes,       ///< bar rules: take stripes
+    shoot,              ///< after a push-out: shoot from here
+    pass_back,          ///< after a push-out: the player who pushed shoots again
+    offender_plays,     ///< snooker, after a foul: the player who fouled plays again from there
+    replace_and_replay, ///< snooker, after a miss: the balls go back and the offender plays again
+    concede,            ///< snooker: the player to act concedes the frame (`Game::concede`)
 };
 
 /// Why the game ended.
@@ -74,10 +81,32 @@ enum class WinReason {
     eight_off_table,    ///< the opponent drove the 8 off the table
     nine_pocketed,      ///< the 9 was pocketed legally
     three_fouls,        ///< the opponent fouled three times in a row (9-ball)
+    frame_won,          ///< snooker: the frame ended with more points than the opponent
+    conceded,           ///< snooker: the opponent conceded the frame
+    three_misses,       ///< snooker: the opponent missed three times running, the balls replaced
+};
+
+/// Snooker: what the shooter must hit first.
+enum class BallOn {
+    red,      ///< any red
+    colour,   ///< a colour, after a red: the nominated one (Call.ball 16..21)
+    in_order, ///< the reds are gone: the lowest colour on the table
+};
+
+/// Snooker: the referee's score sheet of a frame.
+struct SnookerState {
+    int scores[2] = {0, 0};        ///< points of players 1 and 2
+    int current_break = 0;         ///< points of the shooter's visit so far
+    int highest_break[2] = {0, 0}; ///< each player's highest break of the frame
+    BallOn ball_on = BallOn::red;  ///< what the shooter is on
+    bool free_ball = false;        ///< the shooter may nominate any ball as the ball on
+    bool respotted_black = false;  ///< the scores were level at the end: re-spotted black
+    int misses[2] = {0, 0};        ///< misses in a row of each player, the balls replaced
 };
 
 /// A called shot. Ball 0 means "not called": the referee calls the obvious shot for the
-/// shooter, namely the first ball contacted into whichever pocket it drops in.
+/// shooter, namely the first ball contacted into whichever pocket it drops in. In snooker the
+/// ball is the nomination (a colour after a red, or the free ball) and the pocket may be 0.
 struct Call {
     int ball = 0;        ///< the ball called, 0 for none
     int pocket = 0;      ///< its pocket 1..6
@@ -107,6 +136,11 @@ struct Verdict {
     int winner = 0;                             ///< 1 or 2 once the game is over
     WinReason reason = WinReason::none;         ///< why
     bool stalemate_rerack = false;              ///< the rack was re-broken for a stalemate
+    int points = 0;                             ///< snooker: points the shooter scored
+    int penalty = 0;                            ///< snooker: foul points given to the opponent
+    int nominated = 0;                          ///< snooker: the colour or free ball taken as on
+    bool miss = false;                          ///< snooker: the foul is also a miss
+    bool free_ball = false;                     ///< snooker: the next player may take a free ball
 };
 
 /// Names as used by `termpool simulate` ("wrong-ball-first", "play-on", ...).
@@ -115,7 +149,7 @@ const char* game_type_name(GameType type);
 std::optional<GameType> parse_game_type(const std::string& name);
 /// "solids", "stripes" or "open".
 const char* group_name(Group group);
-/// "none", "kitchen" or "anywhere".
+/// "none", "kitchen", "anywhere" or "d".
 const char* ball_in_hand_name(BallInHand bih);
 /// "none", "scratch", ...
 const char* foul_name(Foul foul);
@@ -124,8 +158,16 @@ const char* choice_name(Choice choice);
 /// "eight-pocketed", ...
 const char* win_reason_name(WinReason reason);
 
+/// "red", "colour" or "in-order".
+const char* ball_on_name(BallOn on);
+
 /// The balls of a group (1-7 or 9-15); empty for `open`.
 std::vector<int> group_balls(Group group);
+
+/// Snooker: true when the cue ball at `cue` cannot hit both extreme edges of any ball of
+/// `on` in a straight line, each edge's line being blocked by a ball not in `on` (the WPBSA
+/// definition; cushions and pocket jaws are not considered). False when `on` is empty.
+bool snookered(const std::vector<Ball>& balls, Vec2 cue, const std::vector<int>& on, double R);
 
 /// One game between players 1 and 2: the referee's state and the balls on the table.
 class Game {
@@ -141,6 +183,13 @@ public:
     static Game from_position(GameType type, const Table& table, const PhysicsParams& params,
                               std::vector<Ball> balls, int shooter, Group player1_group,
                               bool is_break, bool push_out_allowed = false);
+
+    /// A snooker frame in progress, for analysis: the balls as given, `shooter` to play, the
+    /// score sheet `state`, and where the cue ball may be placed (none or d).
+    static Game from_snooker_position(const Table& table, const PhysicsParams& params,
+                                      std::vector<Ball> balls, int shooter,
+                                      const SnookerState& state,
+                                      BallInHand ball_in_hand = BallInHand::none);
 
     /// The game played.
     GameType type() const { return type_; }
@@ -180,8 +229,38 @@ public:
     /// Consecutive fouls of `player` (9-ball three-foul rule).
     int consecutive_fouls(int player) const { return fouls_in_a_row_[player - 1]; }
     /// Balls the shooter may legally hit first now (9-ball: the lowest; 8-ball: the group, the
-    /// 8 once the group is cleared; any but the 8 on an open table).
+    /// 8 once the group is cleared; any but the 8 on an open table; snooker: the reds, any
+    /// colour after a red, the lowest colour once the reds are gone, any ball with a free ball).
     std::vector<int> legal_targets() const;
+
+    /// Snooker: the score sheet (zeros in other games).
+    const SnookerState& snooker() const { return snooker_; }
+    /// Snooker: the points of `player` (1 or 2).
+    int score_of(int player) const { return snooker_.scores[player == 2 ? 1 : 0]; }
+    /// Snooker: the balls on for the shooter, before any nomination (the reds, every colour
+    /// after a red, or the lowest colour).
+    std::vector<int> balls_on() const;
+    /// Snooker: the ball on that the cue ball rests touching, -1 for none (the shooter must
+    /// play away from it; moving it is not a foul).
+    int touching_ball() const;
+    /// Snooker: true when the shooter is snookered on every ball on (see `snookered`).
+    bool shooter_snookered() const;
+    /// Snooker: true when the shooter names the ball on with the shot's `Call.ball`: a colour
+    /// after a red, or any ball with a free ball (without one the referee takes the ball hit
+    /// first).
+    bool nomination_owed() const {
+        return type_ == GameType::snooker &&
+               (snooker_.ball_on == BallOn::colour || snooker_.free_ball);
+    }
+    /// Snooker: true when the choice owed follows a foul that left the chooser snookered:
+    /// playing on then gives a free ball.
+    bool free_ball_offered() const { return free_ball_offered_; }
+    /// Snooker: the points still on the table for the player on now (reds at 8 each with a
+    /// black, then the colours).
+    int points_remaining() const;
+    /// Snooker: `player` concedes the frame; the opponent wins it. False (nothing changed) in
+    /// another game, once the frame is over, or for a player other than 1 or 2.
+    bool concede(int player);
 
     /// True when the cue ball may be placed at `p` now: inside the ball-in-hand area, on the
     /// playing surface, touching no ball.
@@ -218,6 +297,12 @@ private:
     struct Facts;
     Verdict judge_eight(const ShotCall& call, const Facts& facts);
     Verdict judge_nine(const ShotCall& call, const Facts& facts);
+    Verdict judge_snooker(const ShotCall& call, const Facts& facts);
+    std::vector<int> snooker_targets(const ShotCall& call) const;
+    bool snookered_by(int id) const;
+    void respot_colours(std::vector<int> ids);
+    void end_visit();
+    void end_frame(Verdict& v);
     void rerack(int new_breaker);
     void spot_ball(int id);
     void finish_turn(Verdict& verdict, bool progress);
@@ -244,6 +329,15 @@ private:
     WinReason reason_ = WinReason::none;
     int turns_without_progress_ = 0;
     int stalemate_turns_left_ = -1;
+    // Snooker: the score sheet, and what a replace-and-replay puts back.
+    SnookerState snooker_;
+    bool free_ball_offered_ = false; // the chooser is snookered: playing on takes a free ball
+    struct BeforeShot {
+        std::vector<Ball> balls;
+        BallInHand ball_in_hand = BallInHand::none;
+        SnookerState state;
+    };
+    BeforeShot before_shot_;
 };
 
 } // namespace termpool

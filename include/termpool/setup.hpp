@@ -27,6 +27,10 @@ struct GameSetup {
     PhysicsParams physics;
 };
 
+/// The table a game of `setup` is played on: its table, but snooker is always played on the
+/// snooker table.
+TableSize table_played(const GameSetup& setup);
+
 /// The physics a game of `setup` is played with: its physics with the balls of its table
 /// (`physics_for_table`), so snooker balls on the snooker table.
 PhysicsParams game_physics(const GameSetup& setup);

@@ -7,8 +7,10 @@
 /// The baulk end is x = 0 (as the head of a pool table); the top cushion is x = L. Looking up
 /// the table from baulk (along +x), the yellow is on the right of the D (smaller y).
 
+#include <termpool/ball.hpp>
 #include <termpool/table.hpp>
 #include <termpool/vec.hpp>
+#include <vector>
 
 namespace termpool {
 
@@ -69,5 +71,11 @@ Vec2 snooker_d_centre(const Table& table);
 bool in_snooker_d(const Table& table, Vec2 p);
 /// The spot of a colour (yellow to black); the centre of the table for any other id.
 Vec2 snooker_spot(const Table& table, int colour);
+
+/// Where colour `colour` is re-spotted among `balls` (of radius `R`; the colour itself is
+/// ignored): on its own spot if that is free, else on the free spot of the highest value, else
+/// as near its own spot as possible on the straight line towards the top cushion, else on that
+/// line towards the baulk cushion. A spot is free when the ball there would touch no other.
+Vec2 snooker_respot(const Table& table, const std::vector<Ball>& balls, int colour, double R);
 
 } // namespace termpool

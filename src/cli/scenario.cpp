@@ -416,7 +416,8 @@ Problem parse_game(const Line& line, Draft& draft) {
     if (Problem p = once(draft, "game", line))
         return p;
     const std::optional<GameType> type = parse_game_type(std::string(line.arg(0)));
-    if (!type)
+    // Snooker's referee needs a score sheet a scenario cannot state: it is played in a match.
+    if (!type || *type == GameType::snooker)
         return "unknown game " + quoted(line.arg(0)) + " (expected 8ball, 8ball-bar or 9ball)";
     draft.setup.game = *type;
     return {};
@@ -630,6 +631,8 @@ int last_ball_of(GameType game) {
     case GameType::eight_ball_bar:
     case GameType::nine_ball:
         break;
+    case GameType::snooker:
+        return snooker_black;
     }
     return pool_last_id;
 }

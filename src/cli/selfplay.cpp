@@ -18,8 +18,8 @@ namespace termpool::cli {
 namespace {
 
 constexpr const char* usage =
-    "usage: termpool selfplay --games N --p1 LEVEL --p2 LEVEL [--game 8ball|8ball-bar|9ball]\n"
-    "                         [--seed S] [--jobs J]\n"
+    "usage: termpool selfplay --games N --p1 LEVEL --p2 LEVEL\n"
+    "                         [--game 8ball|8ball-bar|9ball|snooker] [--seed S] [--jobs J]\n"
     "  LEVEL is easy, medium, hard or pro; games alternate the breaker.\n";
 
 constexpr int max_shots_per_game = 500;
@@ -98,7 +98,9 @@ std::optional<Options> parse(const std::vector<std::string>& args, std::string& 
 
 // The invariants every shot must keep; a message when one is broken.
 std::string check_invariants(const Game& game) {
-    const std::size_t count = game.type() == GameType::nine_ball ? 10 : 16;
+    const std::size_t count = game.type() == GameType::nine_ball ? 10
+                              : game.type() == GameType::snooker ? 22
+                                                                 : 16;
     if (game.balls().size() != count)
         return "balls on the table and in pockets do not add up";
     for (std::size_t id = 0; id < count; ++id) {
@@ -119,6 +121,16 @@ std::string check_invariants(const Game& game) {
         }
     if (game.shooter() != 1 && game.shooter() != 2)
         return "no single shooter";
+    // Snooker: while reds remain every colour is on the table (they are re-spotted).
+    if (game.type() == GameType::snooker &&
+        std::ranges::any_of(game.balls(),
+                            [](const Ball& b) {
+                                return b.id >= 1 && b.id <= 15 && b.state != MotionState::pocketed;
+                            }) &&
+        std::ranges::any_of(game.balls(), [](const Ball& b) {
+            return b.id >= 16 && b.state == MotionState::pocketed;
+        }))
+        return "a colour is missing while reds remain";
     return {};
 }
 

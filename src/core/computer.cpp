@@ -6,6 +6,7 @@
 #include <termpool/computer.hpp>
 #include <termpool/portable_math.hpp>
 #include <termpool/simulator.hpp>
+#include <termpool/snooker_layout.hpp>
 
 namespace termpool {
 namespace {
@@ -360,6 +361,8 @@ ComputerShot ComputerPlayer::shot(const Game& game) {
 }
 
 Strike ComputerPlayer::break_strike(const Game& game, const Ball& cue) const {
+    if (game.type() == GameType::snooker)
+        return snooker_break_strike(game, cue);
     // Full power at the apex ball (the one nearest the head of the table), full in the face.
     const Ball* apex = nullptr;
     for (const Ball& b : game.balls()) {
@@ -371,17 +374,45 @@ Strike ComputerPlayer::break_strike(const Game& game, const Ball& cue) const {
     return {break_speed, apex ? degrees(apex->position - cue.position) : 0, 0, 0};
 }
 
+Strike ComputerPlayer::snooker_break_strike(const Game& game, const Ball& cue) const {
+    // The break-off of snooker: thin off the back red of the triangle on the cue ball's side
+    // (the line of aim 1.6 R outside its centre), firm, so the cue ball comes back to baulk
+    // and the pack barely opens.
+    const double R = game.params().ball_radius;
+    const Ball* corner = nullptr;
+    const auto key = [&](const Ball& r) {
+        return r.position.x - 2 * std::abs(r.position.y - cue.position.y);
+    };
+    for (const Ball& b : game.balls())
+        if (is_snooker_red(b.id) && b.state != MotionState::pocketed &&
+            (!corner || key(b) > key(*corner)))
+            corner = &b;
+    if (!corner)
+        return {2.0, 0, 0, 0};
+    const Vec2 along = normalized(corner->position - cue.position);
+    Vec2 outward{along.y, -along.x};
+    if (dot(outward, Vec2{0, cue.position.y - corner->position.y}) < 0)
+        outward = -outward;
+    return {7.0, degrees(corner->position + outward * (1.6 * R) - cue.position), 0, 0};
+}
+
 Vec2 ComputerPlayer::place_break(const Game& game) {
     // Spots across the kitchen at the head string; each break tried a few times under noise,
     // scored by the referee (a ball down and the table kept is what a break is for).
     const Table& table = game.table();
     Random noise = rng_;
     rng_.next();
-    Vec2 best_spot = table.head_spot();
+    // Snooker breaks from the D: spots along the baulk line inside it.
+    const bool in_d = game.ball_in_hand() == BallInHand::d;
+    const std::vector<Vec2> fallback = in_d ? game.legal_placements(6) : std::vector<Vec2>{};
+    Vec2 best_spot = in_d && !fallback.empty() ? fallback.front() : table.head_spot();
     double best = -1e18;
     const int tries = samples_per_candidate(level_);
     for (int k = -3; k <= 3; ++k) {
-        const Vec2 spot{table.head_string_x(), table.width / 2 + k * table.width / 10};
+        const Vec2 spot = in_d
+                              ? Vec2{snooker_baulk_x(table),
+                                     table.width / 2 + k * snooker_d_radius_on(table) / 3.5}
+                              : Vec2{table.head_string_x(), table.width / 2 + k * table.width / 10};
         Game trial = game;
         if (!trial.place_cue_ball(spot))
             continue;

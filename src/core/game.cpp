@@ -1,7 +1,9 @@
 // The referee's state machine: racks, ball in hand, choices, and the parts of judging a shot
-// that every game shares. The rules of each game are in eight_ball.cpp and nine_ball.cpp.
+// that every game shares. The rules of each game are in eight_ball.cpp, nine_ball.cpp and
+// snooker.cpp.
 #include <algorithm>
 #include <termpool/rack.hpp>
+#include <termpool/snooker_layout.hpp>
 #include <termpool/spots.hpp>
 
 #include "shot_facts.hpp"
@@ -28,20 +30,40 @@ Game Game::from_position(GameType type, const Table& table, const PhysicsParams&
     g.player1_group_ = player1_group;
     g.ball_in_hand_ = BallInHand::none;
     g.push_out_allowed_ = push_out_allowed;
+    if (type == GameType::snooker) {
+        const bool reds = std::ranges::any_of(g.balls_, [](const Ball& b) {
+            return is_snooker_red(b.id) && b.state != MotionState::pocketed;
+        });
+        g.snooker_.ball_on = reds ? BallOn::red : BallOn::in_order;
+    }
+    return g;
+}
+
+Game Game::from_snooker_position(const Table& table, const PhysicsParams& params,
+                                 std::vector<Ball> balls, int shooter, const SnookerState& state,
+                                 BallInHand ball_in_hand) {
+    Game g = from_position(GameType::snooker, table, params, std::move(balls), shooter, Group::open,
+                           false);
+    g.snooker_ = state;
+    g.ball_in_hand_ = ball_in_hand;
     return g;
 }
 
 void Game::rerack(int new_breaker) {
-    const RackType rack = type_ == GameType::nine_ball ? RackType::nine_ball : RackType::eight_ball;
+    const RackType rack = type_ == GameType::nine_ball ? RackType::nine_ball
+                          : type_ == GameType::snooker ? RackType::snooker
+                                                       : RackType::eight_ball;
     // Each rack of a game gets its own seed, so re-racks differ but replay the same.
     balls_ = make_rack(table_, params_, rack, game_rack_seed(seed_, racks_));
     ++racks_;
     breaker_ = shooter_ = new_breaker;
     is_break_ = true;
     player1_group_ = Group::open;
-    ball_in_hand_ = BallInHand::kitchen;
+    ball_in_hand_ = type_ == GameType::snooker ? BallInHand::d : BallInHand::kitchen;
     chooser_ = 0;
     choices_.clear();
+    snooker_ = {};
+    free_ball_offered_ = false;
     push_out_allowed_ = false;
     fouls_in_a_row_[0] = fouls_in_a_row_[1] = 0;
     turns_without_progress_ = 0;
@@ -68,6 +90,8 @@ std::vector<int> Game::legal_targets() const {
         if (b.id != 0 && b.state != MotionState::pocketed)
             on_table.push_back(b.id);
     std::sort(on_table.begin(), on_table.end());
+    if (type_ == GameType::snooker)
+        return snooker_.free_ball ? on_table : balls_on();
     if (type_ == GameType::nine_ball || on_table.empty())
         return on_table.empty() ? on_table : std::vector<int>{on_table.front()};
     const Group group = group_of(shooter_);
@@ -93,14 +117,17 @@ bool Game::legal_placement(Vec2 p) const {
         return false;
     if (ball_in_hand_ == BallInHand::kitchen && p.x > table_.head_string_x())
         return false;
+    if (ball_in_hand_ == BallInHand::d && !in_snooker_d(table_, p))
+        return false;
     return ball_touching(balls_, p, R, 0) < 0;
 }
 
 std::vector<Vec2> Game::legal_placements(int per_axis) const {
     std::vector<Vec2> spots;
     const double R = params_.ball_radius;
-    const double x_max =
-        ball_in_hand_ == BallInHand::kitchen ? table_.head_string_x() : table_.length - R;
+    const double x_max = ball_in_hand_ == BallInHand::kitchen ? table_.head_string_x()
+                         : ball_in_hand_ == BallInHand::d     ? snooker_baulk_x(table_)
+                                                              : table_.length - R;
     for (int i = 0; i < per_axis; ++i) {
         for (int j = 0; j < per_axis; ++j) {
             const Vec2 p{R + (x_max - R) * (i + 0.5) / per_axis,
@@ -145,12 +172,30 @@ bool Game::choose(Choice choice) {
     const int who = chooser_;
     chooser_ = 0;
     choices_.clear();
+    const bool free_ball = free_ball_offered_;
+    free_ball_offered_ = false;
     switch (choice) {
     case Choice::play_on:
     case Choice::shoot:
         shooter_ = who;
         is_break_ = false;
+        snooker_.free_ball = free_ball;
+        snooker_.misses[opponent(who) - 1] = 0; // the three-miss count needs the balls replaced
         break;
+    case Choice::offender_plays:
+        shooter_ = opponent(who);
+        snooker_.misses[opponent(who) - 1] = 0;
+        break;
+    case Choice::replace_and_replay:
+        // The foul's points stay given; the balls and the ball on go back as they were.
+        balls_ = before_shot_.balls;
+        ball_in_hand_ = before_shot_.ball_in_hand;
+        snooker_.ball_on = before_shot_.state.ball_on;
+        snooker_.free_ball = before_shot_.state.free_ball;
+        shooter_ = opponent(who);
+        break;
+    case Choice::concede:
+        break; // never owed: see concede()
     case Choice::re_rack:
         rerack(who);
         break;
@@ -179,7 +224,7 @@ bool Game::choose(Choice choice) {
 void Game::finish_turn(Verdict& v, bool progress) {
     // Stalemate: after many turns without a ball dropping, three more turns each, then the
     // original breaker breaks a new rack.
-    if (winner_ == 0 && chooser_ == 0) {
+    if (winner_ == 0 && chooser_ == 0 && type_ != GameType::snooker) {
         turns_without_progress_ = progress ? 0 : turns_without_progress_ + 1;
         if (progress) {
             stalemate_turns_left_ = -1;
@@ -218,8 +263,14 @@ Verdict Game::apply(const ShotCall& call, const ShotResult& result) {
         return refused;
 
     Facts facts = Facts::from(result.events);
-    facts.targets = legal_targets();
+    const bool snooker = type_ == GameType::snooker;
+    facts.targets = snooker ? snooker_targets(call) : legal_targets();
     facts.prefer_legal_first_contact();
+    if (snooker) {
+        before_shot_ = {balls_, ball_in_hand_, snooker_};
+        facts.touching = touching_ball();
+        facts.snookered_before = shooter_snookered();
+    }
     const Group group = group_of(shooter_);
     facts.group_cleared =
         group != Group::open &&
@@ -234,7 +285,9 @@ Verdict Game::apply(const ShotCall& call, const ShotResult& result) {
         }
     }
     ball_in_hand_ = BallInHand::none;
-    Verdict v = type_ == GameType::nine_ball ? judge_nine(call, facts) : judge_eight(call, facts);
+    Verdict v = snooker                        ? judge_snooker(call, facts)
+                : type_ == GameType::nine_ball ? judge_nine(call, facts)
+                                               : judge_eight(call, facts);
     v.first_contact = facts.first_contact;
     v.pocketed = facts.pocketed;
     v.fouls.erase(std::remove(v.fouls.begin(), v.fouls.end(), Foul::none), v.fouls.end());

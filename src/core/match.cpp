@@ -106,6 +106,7 @@ Match::Match(const GameRecord& header, std::uint64_t computer_seed)
       rack_breaker_(header.breaker), computer_seed_(computer_seed) {
     record_.actions.clear();
     record_.check.reset();
+    record_.setup.table = table_played(header.setup); // snooker says so in its record
     for (int p = 1; p <= 2; ++p)
         seat_computer(p, header.computers[p - 1]);
 }
@@ -205,6 +206,16 @@ std::uint64_t Match::state_hash() const {
     d.add(g.consecutive_fouls(2));
     for (const Choice c : g.choices())
         d.add(static_cast<int>(c));
+    if (g.type() == GameType::snooker) {
+        // Only snooker adds these, so that the hashes of pool games stay as they were.
+        const SnookerState& s = g.snooker();
+        for (const int v : {s.scores[0], s.scores[1], s.current_break, s.highest_break[0],
+                            s.highest_break[1], static_cast<int>(s.ball_on)})
+            d.add(v);
+        d.add(s.free_ball);
+        d.add(s.respotted_black);
+        d.add(g.free_ball_offered());
+    }
     for (const Ball& b : g.balls()) {
         d.add(b.id);
         d.add(static_cast<int>(b.state));
@@ -262,6 +273,7 @@ bool Match::calls_pocket(int ball) const {
     case GameType::eight_ball_bar:
         return ball == 8;
     case GameType::nine_ball:
+    case GameType::snooker:
         return false;
     }
     return false;
@@ -324,12 +336,14 @@ std::variant<PlayedShot, MatchError> Match::shoot(int player, const Strike& aske
         return MatchError::not_now;
     if (strike_problem(strike, game_.params()))
         return MatchError::bad_strike;
-    // What the record can say: no call, a safety, or a ball 1-15 into a pocket 1-6.
+    // What the record can say: no call, a safety, or a ball 1-15 into a pocket 1-6; in snooker
+    // a ball 1-21 (the nomination), its pocket 1-6 or none (0).
     ShotCall taken = call;
     if (taken.call.safety)
         taken.call.ball = taken.call.pocket = 0;
-    const bool called = taken.call.ball >= 1 && taken.call.ball <= 15 && taken.call.pocket >= 1 &&
-                        taken.call.pocket <= 6;
+    const bool snooker = game_.type() == GameType::snooker;
+    const bool called = taken.call.ball >= 1 && taken.call.ball <= (snooker ? 21 : 15) &&
+                        taken.call.pocket >= (snooker ? 0 : 1) && taken.call.pocket <= 6;
     if (!called && (taken.call.ball != 0 || taken.call.pocket != 0))
         return MatchError::bad_call;
     PlayedShot shot{game_.shooter(), rack_, game_.is_break(), game_.call_as_taken(taken), {}, {}};
@@ -356,6 +370,24 @@ MatchError Match::choose(int player, Choice choice) {
     RecordedAction action;
     action.kind = RecordedAction::Kind::choose;
     action.choice = choice;
+    record_.actions.push_back(action);
+    placed_ = false;
+    count_rack();
+    stamp_check();
+    return MatchError::none;
+}
+
+MatchError Match::concede(int player) {
+    if (const MatchError e = check_player(player); e != MatchError::none)
+        return e;
+    const Pending kind = pending().kind;
+    if (kind == Pending::next_rack)
+        return MatchError::over;
+    if (!game_.concede(player))
+        return MatchError::not_offered;
+    RecordedAction action;
+    action.kind = RecordedAction::Kind::choose;
+    action.choice = Choice::concede;
     record_.actions.push_back(action);
     placed_ = false;
     count_rack();
@@ -413,7 +445,8 @@ MatchError Match::apply(const RecordedAction& action, Trajectory* trajectory, Pl
         error = place(to_act(), action.place);
         break;
     case RecordedAction::Kind::choose:
-        error = choose(to_act(), action.choice);
+        error =
+            action.choice == Choice::concede ? concede(to_act()) : choose(to_act(), action.choice);
         break;
     case RecordedAction::Kind::shot: {
         auto played = shoot(to_act(), action.strike, action.call, trajectory);

@@ -34,7 +34,8 @@ std::optional<std::uint64_t> to_u64(std::string_view s) {
 std::optional<Choice> to_choice(std::string_view s) {
     for (const Choice c :
          {Choice::play_on, Choice::re_rack, Choice::re_break, Choice::spot_eight,
-          Choice::take_solids, Choice::take_stripes, Choice::shoot, Choice::pass_back})
+          Choice::take_solids, Choice::take_stripes, Choice::shoot, Choice::pass_back,
+          Choice::offender_plays, Choice::replace_and_replay, Choice::concede})
         if (s == choice_name(c))
             return c;
     return std::nullopt;
@@ -162,7 +163,9 @@ read_action(const std::vector<std::string_view>& f) {
             ++i;
         } else if (f[i] == "call" && i + 2 < f.size()) {
             const auto ball = to_u64(f[i + 1]), pocket = to_u64(f[i + 2]);
-            if (!ball || !pocket || *ball < 1 || *ball > 15 || *pocket < 1 || *pocket > 6)
+            // Snooker's nominations reach ball 21 and may leave the pocket out (0); a pool
+            // record is held to 1-15 and 1-6 once its game is known (parse_record).
+            if (!ball || !pocket || *ball < 1 || *ball > 21 || *pocket > 6)
                 return "bad call";
             a.call.call.ball = static_cast<int>(*ball);
             a.call.call.pocket = static_cast<int>(*pocket);
@@ -384,6 +387,11 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
         return RecordError{line_number, "truncated: no 'end' line"};
     if (physics && !r.check)
         return RecordError{line_number, "a 'physics' line needs a 'check' line before 'end'"};
+    if (r.setup.game != GameType::snooker)
+        for (const RecordedAction& a : r.actions)
+            if (a.kind == RecordedAction::Kind::shot && a.call.call.ball != 0 &&
+                (a.call.call.ball > 15 || a.call.call.pocket < 1))
+                return RecordError{a.line, "bad call"};
     return r;
 }
 

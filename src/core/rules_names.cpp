@@ -10,12 +10,15 @@ const char* game_type_name(GameType type) {
         return "8ball-bar";
     case GameType::nine_ball:
         return "9ball";
+    case GameType::snooker:
+        return "snooker";
     }
     return "?";
 }
 
 std::optional<GameType> parse_game_type(const std::string& name) {
-    for (const GameType t : {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball})
+    for (const GameType t :
+         {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball, GameType::snooker})
         if (name == game_type_name(t))
             return t;
     return std::nullopt;
@@ -41,6 +44,8 @@ const char* ball_in_hand_name(BallInHand bih) {
         return "kitchen";
     case BallInHand::anywhere:
         return "anywhere";
+    case BallInHand::d:
+        return "d";
     }
     return "?";
 }
@@ -63,6 +68,10 @@ const char* foul_name(Foul foul) {
         return "no-rail";
     case Foul::bad_break:
         return "bad-break";
+    case Foul::pot_not_on:
+        return "pot-not-on";
+    case Foul::free_ball_snooker:
+        return "free-ball-snooker";
     }
     return "?";
 }
@@ -85,6 +94,12 @@ const char* choice_name(Choice choice) {
         return "shoot";
     case Choice::pass_back:
         return "pass-back";
+    case Choice::offender_plays:
+        return "offender-plays";
+    case Choice::replace_and_replay:
+        return "replace-and-replay";
+    case Choice::concede:
+        return "concede";
     }
     return "?";
 }
@@ -109,6 +124,24 @@ const char* win_reason_name(WinReason reason) {
         return "nine-pocketed";
     case WinReason::three_fouls:
         return "three-fouls";
+    case WinReason::frame_won:
+        return "frame-won";
+    case WinReason::conceded:
+        return "conceded";
+    case WinReason::three_misses:
+        return "three-misses";
+    }
+    return "?";
+}
+
+const char* ball_on_name(BallOn on) {
+    switch (on) {
+    case BallOn::red:
+        return "red";
+    case BallOn::colour:
+        return "colour";
+    case BallOn::in_order:
+        return "in-order";
     }
     return "?";
 }

@@ -43,12 +43,16 @@ std::string shortest(double v) {
 
 } // namespace
 
+TableSize table_played(const GameSetup& setup) {
+    return setup.game == GameType::snooker ? TableSize::snooker : setup.table;
+}
+
 PhysicsParams game_physics(const GameSetup& setup) {
-    return physics_for_table(setup.table, setup.physics);
+    return physics_for_table(table_played(setup), setup.physics);
 }
 
 Table make_table(const GameSetup& setup) {
-    return make_table(setup.table, game_physics(setup).ball_radius);
+    return make_table(table_played(setup), game_physics(setup).ball_radius);
 }
 
 Game make_game(const GameSetup& setup, int breaker, std::uint64_t seed) {

@@ -16,6 +16,8 @@ struct Game::Facts {
     std::vector<int> off_table;      // balls that left the table
     std::vector<int> targets;        // balls the shooter could legally hit first
     bool group_cleared = false;      // 8-ball: the shooter's group was all down before the shot
+    int touching = -1;               // snooker: the ball on the cue ball rested against, or -1
+    bool snookered_before = false;   // snooker: the shooter was snookered before the shot
 
     bool dropped(int id) const;
     int pocket_of(int id) const; // 0 when it did not drop

@@ -1,4 +1,5 @@
 #include <termpool/snooker_layout.hpp>
+#include <termpool/spots.hpp>
 
 namespace termpool {
 namespace {
@@ -51,6 +52,18 @@ Vec2 snooker_spot(const Table& table, int colour) {
     default:
         return {0.5 * table.length, mid};
     }
+}
+
+Vec2 snooker_respot(const Table& table, const std::vector<Ball>& balls, int colour, double R) {
+    const Vec2 own = snooker_spot(table, colour);
+    if (ball_touching(balls, own, R, colour) < 0)
+        return own;
+    for (int id = snooker_black; id >= snooker_yellow; --id)
+        if (ball_touching(balls, snooker_spot(table, id), R, colour) < 0)
+            return snooker_spot(table, id);
+    // Every spot is taken: up the table from its own spot (the long string through the
+    // spots is the middle of the table), else down it.
+    return free_spot_on_string(table, balls, own, R, colour).value_or(own);
 }
 
 } // namespace termpool

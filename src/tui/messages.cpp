@@ -22,6 +22,10 @@ std::string foul_words(Foul foul) {
         return "no rail after contact";
     case Foul::bad_break:
         return "illegal break";
+    case Foul::pot_not_on:
+        return "potted a ball not on";
+    case Foul::free_ball_snooker:
+        return "snookered with the free ball";
     }
     return "foul";
 }
@@ -45,6 +49,12 @@ std::string choice_words(Choice choice) {
         return "shoot from here";
     case Choice::pass_back:
         return "pass the shot back";
+    case Choice::offender_plays:
+        return "the offender plays again";
+    case Choice::replace_and_replay:
+        return "replace the balls, the offender plays again";
+    case Choice::concede:
+        return "concede the frame";
     }
     return "?";
 }
@@ -70,6 +80,12 @@ std::string win_message(const Verdict& v, int shooter, const std::string names[2
         return who + " pocketed the 9" + tail;
     case WinReason::three_fouls:
         return who + " fouled three times in a row" + tail;
+    case WinReason::frame_won:
+        return winner + " wins the frame on points";
+    case WinReason::conceded:
+        return names[2 - v.winner] + " conceded" + tail;
+    case WinReason::three_misses:
+        return who + " missed three times running" + tail;
     case WinReason::none:
         break;
     }
