@@ -1,5 +1,6 @@
 // The referee's state machine: racks, ball in hand, choices, and the parts of judging a shot
-// that every game shares. The rules of each game are in eight_ball.cpp and nine_ball.cpp.
+// that every game shares. The rules of each game are in eight_ball.cpp, nine_ball.cpp and
+// ten_ball.cpp.
 #include <algorithm>
 #include <termpool/rack.hpp>
 #include <termpool/spots.hpp>
@@ -31,8 +32,21 @@ Game Game::from_position(GameType type, const Table& table, const PhysicsParams&
     return g;
 }
 
+RackType game_rack(GameType type) {
+    switch (type) {
+    case GameType::eight_ball:
+    case GameType::eight_ball_bar:
+        return RackType::eight_ball;
+    case GameType::nine_ball:
+        return RackType::nine_ball;
+    case GameType::ten_ball:
+        return RackType::ten_ball;
+    }
+    return RackType::eight_ball;
+}
+
 void Game::rerack(int new_breaker) {
-    const RackType rack = type_ == GameType::nine_ball ? RackType::nine_ball : RackType::eight_ball;
+    const RackType rack = game_rack(type_);
     // Each rack of a game gets its own seed, so re-racks differ but replay the same.
     balls_ = make_rack(table_, params_, rack, game_rack_seed(seed_, racks_));
     ++racks_;
@@ -68,7 +82,7 @@ std::vector<int> Game::legal_targets() const {
         if (b.id != 0 && b.state != MotionState::pocketed)
             on_table.push_back(b.id);
     std::sort(on_table.begin(), on_table.end());
-    if (type_ == GameType::nine_ball || on_table.empty())
+    if (type_ == GameType::nine_ball || type_ == GameType::ten_ball || on_table.empty())
         return on_table.empty() ? on_table : std::vector<int>{on_table.front()};
     const Group group = group_of(shooter_);
     std::vector<int> targets;
@@ -234,7 +248,9 @@ Verdict Game::apply(const ShotCall& call, const ShotResult& result) {
         }
     }
     ball_in_hand_ = BallInHand::none;
-    Verdict v = type_ == GameType::nine_ball ? judge_nine(call, facts) : judge_eight(call, facts);
+    Verdict v = type_ == GameType::nine_ball  ? judge_nine(call, facts)
+                : type_ == GameType::ten_ball ? judge_ten(call, facts)
+                                              : judge_eight(call, facts);
     v.first_contact = facts.first_contact;
     v.pocketed = facts.pocketed;
     v.fouls.erase(std::remove(v.fouls.begin(), v.fouls.end(), Foul::none), v.fouls.end());

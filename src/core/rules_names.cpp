@@ -10,14 +10,20 @@ const char* game_type_name(GameType type) {
         return "8ball-bar";
     case GameType::nine_ball:
         return "9ball";
+    case GameType::ten_ball:
+        return "10ball";
     }
     return "?";
 }
 
 std::optional<GameType> parse_game_type(const std::string& name) {
-    for (const GameType t : {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball})
+    for (const GameType t :
+         {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball, GameType::ten_ball})
         if (name == game_type_name(t))
             return t;
+    // 10-ball's other spellings; the name written is "10ball", like "9ball".
+    if (name == "ten-ball" || name == "10-ball")
+        return GameType::ten_ball;
     return std::nullopt;
 }
 
@@ -109,6 +115,8 @@ const char* win_reason_name(WinReason reason) {
         return "nine-pocketed";
     case WinReason::three_fouls:
         return "three-fouls";
+    case WinReason::ten_pocketed:
+        return "ten-pocketed";
     }
     return "?";
 }
