@@ -256,7 +256,7 @@ TEST_CASE("unknown directives and wrong field counts name the line", "[scenario]
         {"ball 1 0.5 0.5 weight=0.1\n", 1, "unknown field 'weight=0.1'"},
         {"rack\n", 1, "missing field"},
         {"rack 8ball 1 2\n", 1, "extra field"},
-        {"rack 10ball\n", 1, "unknown rack"},
+        {"rack 11ball\n", 1, "unknown rack"},
         {"strike\n", 1, "missing field"},
         {"ball 0 1 1\nstrike 1\n", 2, "missing field"},
         {"ball 0 1 1\nstrike 1 0 0.1\n", 2, "missing field"},
@@ -478,9 +478,10 @@ TEST_CASE("any game directive makes a context, 8-ball unless `game` says otherwi
 
 TEST_CASE("bad game directives on their own line", "[scenario]") {
     check_refusals({
-        {"game\n", 1, "missing field (usage: game 8ball|8ball-bar|9ball)"},
+        {"game\n", 1, "missing field (usage: game 8ball|8ball-bar|9ball|10ball)"},
         {"game 8ball 9ball\n", 1, "extra field '9ball'"},
-        {"game snooker\n", 1, "unknown game 'snooker' (expected 8ball, 8ball-bar or 9ball)"},
+        {"game snooker\n", 1,
+         "unknown game 'snooker' (expected 8ball, 8ball-bar, 9ball or 10ball)"},
         {"game 8-ball\n", 1, "unknown game"},
         {"shooter\n", 1, "missing field"},
         {"shooter 3\n", 1, "shooter '3' is not 1 or 2"},

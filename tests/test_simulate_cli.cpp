@@ -437,8 +437,9 @@ TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
         {"call 8 9\n", 1, "called pocket 9 is outside 1..6"},
         {"game 9ball\nbreak\npush-out\nball 0 1 1\nstrike 1 0\n", 3,
          "the push-out is the shot after the break"},
-        {"push-out\nball 0 1 1\nstrike 1 0\n", 1, "push-out needs 'game 9ball'"},
-        {"game 8ball\npush-out\nball 0 1 1\nstrike 1 0\n", 2, "the push-out is a 9-ball rule"},
+        {"push-out\nball 0 1 1\nstrike 1 0\n", 1, "push-out needs 'game 9ball' or 'game 10ball'"},
+        {"game 8ball\npush-out\nball 0 1 1\nstrike 1 0\n", 2,
+         "the push-out is a 9-ball and 10-ball rule"},
         {"shooter 3\n", 1, "not 1 or 2"},
         {"rack 8ball\nbreak\n", 2, "without a strike"},
         {"game 8ball\ngame 9ball\n", 2, "more than one 'game' line"},
@@ -448,7 +449,7 @@ TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
 
 TEST_CASE("selfplay plays short games to their end and sums them up", "[cli][selfplay]") {
     TempDir dir;
-    for (const char* game : {"8ball", "8ball-bar", "9ball"}) {
+    for (const char* game : {"8ball", "8ball-bar", "9ball", "10ball", "ten-ball"}) {
         const Run r =
             run(dir, std::string("selfplay --games 3 --p1 easy --p2 easy --game ") + game);
         INFO(game << " stderr: " << r.err);

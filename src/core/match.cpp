@@ -234,6 +234,8 @@ bool Match::calls_pocket(int ball) const {
         return ball == 8;
     case GameType::nine_ball:
         return false;
+    case GameType::ten_ball:
+        return true;
     }
     return false;
 }
