@@ -28,7 +28,7 @@ std::string ball_label(int id, bool utf8, bool wide);
 /// Monochrome: solids reversed, stripes bold, the 8 reversed and bold.
 Style ball_style(int id, bool colour);
 
-/// "8-ball", "8-ball, bar rules", "9-ball".
+/// "8-ball", "8-ball, bar rules", "9-ball", "10-ball".
 const char* game_title(GameType type);
 
 } // namespace termpool::tui
