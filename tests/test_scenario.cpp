@@ -534,6 +534,8 @@ TEST_CASE("game contexts that cannot happen name the later line involved", "[sce
         {"game 9ball\n" + shot + "call 1 3\n", 7,
          "'call' cannot go with 'game 9ball' (line 1): 9-ball shots are not called"},
         {"call safety\ngame 9ball\n" + shot, 2, "9-ball shots are not called"},
+        {"game 10ball\ngroups 1=stripes\n" + shot, 2,
+         "'groups 1=stripes' cannot go with 'game 10ball' (line 1): 10-ball has no groups"},
         // The called ball must be on the table.
         {shot + "call 2 3\n", 6, "called ball 2 is not on the table"},
         {"call 10 1\nrack 9ball\nstrike 10 0\n", 1, "called ball 10 is not on the table"},

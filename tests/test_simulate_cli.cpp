@@ -371,6 +371,25 @@ TEST_CASE("simulate: 9-ball, a higher ball hit first is a foul", "[cli]") {
           "ball-in-hand anywhere\n");
 }
 
+TEST_CASE("simulate: 10-ball, the called ball in another pocket owes the opponent a choice",
+          "[cli][ten]") {
+    TempDir dir;
+    // Straight along y = 0.635 into the 1 and on into the middle of the foot rail, no pocket:
+    // the 1 goes nowhere near pocket 3, so it is called there and missed; nothing down.
+    CHECK(verdict_of(dir, "game 10ball\nball 0 1.0 0.635\nball 1 1.5 0.635\nball 10 0.5 1.0\n"
+                          "call 1 3\nstrike 2 0\n") ==
+          "first-contact 1\nfoul none\npocketed\ngroups open\nnext 2\nball-in-hand none\n");
+    // The 1 straight into corner pocket 3: called there, the shooter plays on; called in
+    // pocket 4, it stays down and the opponent chooses.
+    const std::string into_three =
+        "game 10ball\nball 0 2.14 0.4\nball 1 2.34 0.2\nball 10 0.5 1.0\nstrike 2 -45\n";
+    CHECK(verdict_of(dir, into_three + "call 1 3\n") ==
+          "first-contact 1\nfoul none\npocketed 1\ngroups open\nnext 1\nball-in-hand none\n");
+    CHECK(verdict_of(dir, into_three + "call 1 4\n") ==
+          "first-contact 1\nfoul none\npocketed 1\ngroups open\nnext 2\nball-in-hand none\n"
+          "choice shoot pass-back\n");
+}
+
 TEST_CASE("simulate: a 9-ball push-out hitting nothing is no foul and owes a choice", "[cli]") {
     TempDir dir;
     // Straight up the table from the 1, which is off the line: no contact, no foul.

@@ -660,6 +660,9 @@ std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Pl
         if (call_line)
             return conflict({"call", *call_line}, game_said, "9-ball shots are not called");
     }
+    if (draft.setup.game == GameType::ten_ball && groups_line && game.player1_group != Group::open)
+        return conflict({"groups " + groups_text(game.player1_group), *groups_line}, game_said,
+                        "10-ball has no groups");
     if (const std::optional<int> push_line = line_of(draft, "push-out")) {
         if (draft.setup.game != GameType::nine_ball && draft.setup.game != GameType::ten_ball)
             return game_line ? conflict({"push-out", *push_line}, game_said,
