@@ -49,8 +49,9 @@ enum class Foul {
     no_contact,       ///< the cue ball hit no ball
     wrong_ball_first, ///< the first ball hit was not a legal target
     no_rail,          ///< after the first contact, nothing was pocketed and no ball hit a cushion
-    bad_break, ///< 9-ball, 10-ball: the break pocketed nothing and drove fewer than four balls to a
-               ///< cushion (in 8-ball an illegal break is not a foul but owes a choice)
+    bad_break,        ///< 9-ball, 10-ball: the break pocketed nothing and drove fewer than four
+                      ///< balls to a cushion (in 8-ball an illegal break is not a foul but owes
+                      ///< a choice)
 };
 
 /// Decisions the rules owe a player.
