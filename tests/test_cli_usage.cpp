@@ -59,7 +59,7 @@ TEST_CASE("the usage names every option of the game and every command", "[cli][u
     REQUIRE(o.status == 0);
     for (const char* item : {"--player1 NAME",
                              "--player2 NAME",
-                             "--game 8ball|8ball-bar|9ball",
+                             "--game 8ball|8ball-bar|9ball|10ball",
                              "--table 7ft|8ft|9ft",
                              "--race N",
                              "--breaks alternate|winner",

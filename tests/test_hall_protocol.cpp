@@ -71,6 +71,7 @@ TEST_CASE("hall protocol: every client message reads back", "[hall]") {
     client_round_trip(Hello{protocol_version, "", "Ann"});
     client_round_trip(Hello{protocol_version, kToken, "Ann Marie 100%"});
     client_round_trip(Create{GameType::nine_ball, TableSize::seven_foot, 5});
+    client_round_trip(Create{GameType::ten_ball, TableSize::nine_foot, 3});
     client_round_trip(Create{GameType::eight_ball_bar, TableSize::eight_foot, 1});
     client_round_trip(Create{GameType::eight_ball, TableSize::snooker, 3});
     client_round_trip(Sit{12, 2});
@@ -166,7 +167,7 @@ TEST_CASE("hall protocol: malformed client lines are refused", "[hall]") {
         "hello 2 - %20Ann",
         "hello 2 - Ann%",
         "hello one - Ann",
-        "create 10ball 9ft 1",
+        "create 11ball 9ft 1",
         "create 8ball 10ft 1",
         "create 8ball 9ft 0",
         "create 8ball 9ft 100",

@@ -47,8 +47,8 @@ Seen seen(const Match& m) {
 } // namespace
 
 TEST_CASE("whole games play through the Match alone and replay to every action", "[match]") {
-    for (const GameType game :
-         {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball}) {
+    for (const GameType game : {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball,
+                                GameType::ten_ball}) {
         INFO(game_type_name(game));
         Match match = started(header_for(game, 21), 5);
         std::vector<Seen> states{seen(match)};
@@ -338,4 +338,43 @@ TEST_CASE("a strike with a negative zero is played as the record writes it", "[m
     const auto again = Match::replay(std::get<GameRecord>(parsed));
     REQUIRE(std::holds_alternative<Match>(again));
     CHECK(seen(std::get<Match>(again)) == seen(match));
+}
+
+TEST_CASE("10-ball: every shot after the break calls its pocket, and the computer calls",
+          "[match][ten]") {
+    int called = 0, choices = 0;
+    for (const std::uint64_t seed : {3, 4, 5}) {
+        GameRecord header = header_for(GameType::ten_ball, seed);
+        header.computers[0] = Level::easy;
+        header.computers[1] = Level::easy;
+        Match match = started(header, seed);
+        CHECK_FALSE(match.calls_pocket(1)); // the break calls nothing
+        int guard = 0;
+        while (match.pending().kind != Pending::over && ++guard < 400) {
+            const PendingAction p = match.pending();
+            if (p.kind == Pending::choose) {
+                CHECK(p.choices == std::vector<Choice>{Choice::shoot, Choice::pass_back});
+                ++choices;
+            }
+            if (p.kind == Pending::shoot && !match.game().is_break()) {
+                CHECK(match.calls_pocket(1));
+                CHECK(match.calls_pocket(10));
+                const std::optional<ComputerMove> move = match.computer_move();
+                REQUIRE(move);
+                const Call& call = move->shot.call.call;
+                // The computer names a ball and pocket (or safety) unless nothing could be
+                // potted, when the referee takes the obvious call.
+                called += call.safety || (call.ball >= 1 && call.pocket >= 1);
+            }
+            REQUIRE(play_computer_move(match) == MatchError::none);
+        }
+        REQUIRE(match.pending().kind == Pending::over);
+        CHECK(match.game().win_reason() != WinReason::nine_pocketed);
+        // The record replays to the same end, choices and all.
+        const auto replayed = Match::replay(match.record());
+        REQUIRE(std::holds_alternative<Match>(replayed));
+        CHECK(std::get<Match>(replayed).state_hash() == match.state_hash());
+    }
+    CHECK(called > 0);
+    INFO(choices << " choices after a ball down uncalled");
 }

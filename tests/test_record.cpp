@@ -81,7 +81,7 @@ std::string error_of(const std::string& text) {
 } // namespace
 
 TEST_CASE("a recorded game replays to the same table, bit for bit", "[record]") {
-    for (const GameType type : {GameType::eight_ball, GameType::nine_ball}) {
+    for (const GameType type : {GameType::eight_ball, GameType::nine_ball, GameType::ten_ball}) {
         const auto [record, game] = played_game(type, 7);
         REQUIRE(record.actions.size() > 5);
         const std::string text = format_record(record);

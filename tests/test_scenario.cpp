@@ -256,7 +256,7 @@ TEST_CASE("unknown directives and wrong field counts name the line", "[scenario]
         {"ball 1 0.5 0.5 weight=0.1\n", 1, "unknown field 'weight=0.1'"},
         {"rack\n", 1, "missing field"},
         {"rack 8ball 1 2\n", 1, "extra field"},
-        {"rack 10ball\n", 1, "unknown rack"},
+        {"rack 11ball\n", 1, "unknown rack"},
         {"strike\n", 1, "missing field"},
         {"ball 0 1 1\nstrike 1\n", 2, "missing field"},
         {"ball 0 1 1\nstrike 1 0 0.1\n", 2, "missing field"},
@@ -478,9 +478,10 @@ TEST_CASE("any game directive makes a context, 8-ball unless `game` says otherwi
 
 TEST_CASE("bad game directives on their own line", "[scenario]") {
     check_refusals({
-        {"game\n", 1, "missing field (usage: game 8ball|8ball-bar|9ball)"},
+        {"game\n", 1, "missing field (usage: game 8ball|8ball-bar|9ball|10ball)"},
         {"game 8ball 9ball\n", 1, "extra field '9ball'"},
-        {"game snooker\n", 1, "unknown game 'snooker' (expected 8ball, 8ball-bar or 9ball)"},
+        {"game snooker\n", 1,
+         "unknown game 'snooker' (expected 8ball, 8ball-bar, 9ball or 10ball)"},
         {"game 8-ball\n", 1, "unknown game"},
         {"shooter\n", 1, "missing field"},
         {"shooter 3\n", 1, "shooter '3' is not 1 or 2"},
@@ -533,6 +534,8 @@ TEST_CASE("game contexts that cannot happen name the later line involved", "[sce
         {"game 9ball\n" + shot + "call 1 3\n", 7,
          "'call' cannot go with 'game 9ball' (line 1): 9-ball shots are not called"},
         {"call safety\ngame 9ball\n" + shot, 2, "9-ball shots are not called"},
+        {"game 10ball\ngroups 1=stripes\n" + shot, 2,
+         "'groups 1=stripes' cannot go with 'game 10ball' (line 1): 10-ball has no groups"},
         // The called ball must be on the table.
         {shot + "call 2 3\n", 6, "called ball 2 is not on the table"},
         {"call 10 1\nrack 9ball\nstrike 10 0\n", 1, "called ball 10 is not on the table"},

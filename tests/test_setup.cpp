@@ -65,6 +65,18 @@ TEST_CASE("bad cloth-model words say what is wrong and where", "[setup]") {
     CHECK(std::holds_alternative<FrictionModel>(parsed({"decay", "+0.5"})));
 }
 
+TEST_CASE("--game takes 10-ball by any of its names", "[setup][ten]") {
+    for (const char* name : {"10ball", "ten-ball", "10-ball"}) {
+        std::string error;
+        const auto o = tui::parse_game_options({"--game", name}, error);
+        REQUIRE(o);
+        CHECK(o->setup.game == GameType::ten_ball);
+    }
+    std::string error;
+    CHECK_FALSE(tui::parse_game_options({"--game", "11ball"}, error));
+    CHECK(error.find("10ball") != std::string::npos);
+}
+
 TEST_CASE("the game's options carry the setup, with their own wording for bad models", "[setup]") {
     std::string error;
     const auto o = tui::parse_game_options({"--game", "9ball", "--table", "7ft", "--friction",

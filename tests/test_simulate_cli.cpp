@@ -371,6 +371,25 @@ TEST_CASE("simulate: 9-ball, a higher ball hit first is a foul", "[cli]") {
           "ball-in-hand anywhere\n");
 }
 
+TEST_CASE("simulate: 10-ball, the called ball in another pocket owes the opponent a choice",
+          "[cli][ten]") {
+    TempDir dir;
+    // Straight along y = 0.635 into the 1 and on into the middle of the foot rail, no pocket:
+    // the 1 goes nowhere near pocket 3, so it is called there and missed; nothing down.
+    CHECK(verdict_of(dir, "game 10ball\nball 0 1.0 0.635\nball 1 1.5 0.635\nball 10 0.5 1.0\n"
+                          "call 1 3\nstrike 2 0\n") ==
+          "first-contact 1\nfoul none\npocketed\ngroups open\nnext 2\nball-in-hand none\n");
+    // The 1 straight into corner pocket 3: called there, the shooter plays on; called in
+    // pocket 4, it stays down and the opponent chooses.
+    const std::string into_three =
+        "game 10ball\nball 0 2.14 0.4\nball 1 2.34 0.2\nball 10 0.5 1.0\nstrike 2 -45\n";
+    CHECK(verdict_of(dir, into_three + "call 1 3\n") ==
+          "first-contact 1\nfoul none\npocketed 1\ngroups open\nnext 1\nball-in-hand none\n");
+    CHECK(verdict_of(dir, into_three + "call 1 4\n") ==
+          "first-contact 1\nfoul none\npocketed 1\ngroups open\nnext 2\nball-in-hand none\n"
+          "choice shoot pass-back\n");
+}
+
 TEST_CASE("simulate: a 9-ball push-out hitting nothing is no foul and owes a choice", "[cli]") {
     TempDir dir;
     // Straight up the table from the 1, which is off the line: no contact, no foul.
@@ -437,8 +456,9 @@ TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
         {"call 8 9\n", 1, "called pocket 9 is outside 1..6"},
         {"game 9ball\nbreak\npush-out\nball 0 1 1\nstrike 1 0\n", 3,
          "the push-out is the shot after the break"},
-        {"push-out\nball 0 1 1\nstrike 1 0\n", 1, "push-out needs 'game 9ball'"},
-        {"game 8ball\npush-out\nball 0 1 1\nstrike 1 0\n", 2, "the push-out is a 9-ball rule"},
+        {"push-out\nball 0 1 1\nstrike 1 0\n", 1, "push-out needs 'game 9ball' or 'game 10ball'"},
+        {"game 8ball\npush-out\nball 0 1 1\nstrike 1 0\n", 2,
+         "the push-out is a 9-ball and 10-ball rule"},
         {"shooter 3\n", 1, "not 1 or 2"},
         {"rack 8ball\nbreak\n", 2, "without a strike"},
         {"game 8ball\ngame 9ball\n", 2, "more than one 'game' line"},
@@ -448,7 +468,7 @@ TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
 
 TEST_CASE("selfplay plays short games to their end and sums them up", "[cli][selfplay]") {
     TempDir dir;
-    for (const char* game : {"8ball", "8ball-bar", "9ball", "snooker"}) {
+    for (const char* game : {"8ball", "8ball-bar", "9ball", "10ball", "ten-ball", "snooker"}) {
         const Run r =
             run(dir, std::string("selfplay --games 3 --p1 easy --p2 easy --game ") + game);
         INFO(game << " stderr: " << r.err);

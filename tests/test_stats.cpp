@@ -338,7 +338,7 @@ TEST_CASE("totals add up, the longest run is the longer one", "[stats]") {
 }
 
 TEST_CASE("stats of a whole game played by the computer add up", "[stats][game]") {
-    for (const GameType type : {GameType::eight_ball, GameType::nine_ball}) {
+    for (const GameType type : {GameType::eight_ball, GameType::nine_ball, GameType::ten_ball}) {
         StatsTally live;
         const GameRecord record = computer_game(type, 11, live);
         const auto stats = stats_of_record(record);
@@ -350,7 +350,10 @@ TEST_CASE("stats of a whole game played by the computer add up", "[stats][game]"
         CHECK(s[0].racks_won + s[1].racks_won == 1);
         CHECK(s[0].racks_played == 1);
         CHECK(s[1].racks_played == 1);
-        CHECK(s[0].balls_potted + s[1].balls_potted <= (type == GameType::nine_ball ? 9 : 15));
+        const int object_balls = type == GameType::nine_ball  ? 9
+                                 : type == GameType::ten_ball ? 10
+                                                              : 15;
+        CHECK(s[0].balls_potted + s[1].balls_potted <= object_balls);
         CHECK(s[0].balls_potted + s[1].balls_potted > 0);
         const auto shots = std::count_if(
             record.actions.begin(), record.actions.end(),

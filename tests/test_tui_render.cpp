@@ -685,6 +685,13 @@ View nine_ball_view() {
     return v;
 }
 
+View ten_ball_view() {
+    View v = rack_view(table);
+    v.balls = make_rack(table, PhysicsParams{}, RackType::ten_ball, 4);
+    v.game = GameType::ten_ball;
+    return v;
+}
+
 // The rack after the 1 went down: nothing may still read "1".
 View rack_without_one() {
     View v = rack_view(table);
@@ -701,6 +708,7 @@ TEST_CASE("every ball reads as its own number or letter, in every tier and at ev
     const std::pair<const char*, View> views[] = {{"rack", rack_view(table)},
                                                   {"crowded", crowded_view(table)},
                                                   {"nine", nine_ball_view()},
+                                                  {"ten", ten_ball_view()},
                                                   {"without the 1", rack_without_one()}};
     for (const auto& [name, v] : views)
         for (const auto& [w, h] : all_sizes)
@@ -876,6 +884,23 @@ TEST_CASE("9-ball: one list of what has dropped, and the consecutive fouls", "[t
         }
     v.fouls[0] = v.fouls[1] = 0;
     CHECK(screen_text(draw(v, 100, 32)).find("foul") == std::string::npos);
+}
+
+TEST_CASE("10-ball: the title, one list of what has dropped, and the consecutive fouls",
+          "[tui][ten]") {
+    View v = ten_ball_view();
+    v.aiming = false;
+    v.message.clear();
+    for (Ball& b : v.balls)
+        if (b.id == 2 || b.id == 10)
+            b.state = MotionState::pocketed;
+    v.fouls[1] = 2;
+    const std::string all = screen_text(draw(v, 100, 32));
+    CAPTURE(all);
+    CHECK(all.find("10-ball") != std::string::npos);
+    CHECK(all.find("pocketed 2 10") != std::string::npos);
+    CHECK(all.find("2 fouls: a third loses") != std::string::npos);
+    CHECK(all.find("open table") == std::string::npos);
 }
 
 TEST_CASE("the called pocket is said in words", "[tui]") {

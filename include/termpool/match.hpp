@@ -158,8 +158,8 @@ public:
     bool computer_to_act() const;
     /// Who breaks the next rack, once the current one is won: 1 or 2 (0 before).
     int next_breaker() const;
-    /// True when a shot at `ball` must name its pocket: 8-ball after the break, the 8 only in
-    /// bar rules, never in 9-ball.
+    /// True when a shot at `ball` must name its pocket: 8-ball and 10-ball after the break, the
+    /// 8 only in bar rules, never in 9-ball.
     bool calls_pocket(int ball) const;
 
     /// Puts the cue ball at `spot` for `player`'s ball in hand.

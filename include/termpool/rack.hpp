@@ -15,6 +15,9 @@ namespace termpool {
 enum class RackType {
     eight_ball, ///< triangle of 15, the 8 in the centre, a solid and a stripe in the back corners
     nine_ball,  ///< diamond of 9, the 1 at the apex, the 9 in the centre
+    /// triangle of 10 (rows of 1 to 4), the 1 at the apex, the 10 in the middle of the third
+    /// row, the 2 and the 3 on the back corners
+    ten_ball,
     /// snooker: 15 reds in a triangle just above the pink, apex nearest it, the six colours on
     /// their spots, the cue ball in the D (between the brown and the yellow, on the baulk line)
     snooker,

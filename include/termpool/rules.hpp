@@ -1,15 +1,16 @@
 #pragma once
 /// \file
-/// The referee: 8-ball (WPA rules and bar rules), 9-ball (WPA rules) and snooker (WPBSA rules,
-/// as far as the simulator can judge them) on top of the simulator. A Game holds the players' state
-/// and the balls on the table; `apply` reads the events of a shot and decides what they mean.
-/// Choices the rules owe a player are explicit inputs (`choose`), never guessed.
+/// The referee: 8-ball (WPA rules and bar rules), 9-ball and 10-ball (WPA rules) and snooker
+/// (WPBSA rules, as far as the simulator can judge them) on top of the simulator. A Game holds
+/// the players' state and the balls on the table; `apply` reads the events of a shot and decides
+/// what they mean. Choices the rules owe a player are explicit inputs (`choose`), never guessed.
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <termpool/ball.hpp>
 #include <termpool/params.hpp>
+#include <termpool/rack.hpp>
 #include <termpool/simulator.hpp>
 #include <termpool/table.hpp>
 #include <vector>
@@ -21,6 +22,7 @@ enum class GameType {
     eight_ball,     ///< WPA 8-ball: called shots, ball in hand anywhere after a foul
     eight_ball_bar, ///< bar rules: only the 8 is called, ball in hand in the kitchen
     nine_ball,      ///< WPA 9-ball: lowest ball first, push-out after the break
+    ten_ball,       ///< WPA 10-ball: lowest ball first, every shot called, push-out after the break
     snooker,        ///< snooker (WPBSA): reds and colours, points, fouls give points away
 };
 
@@ -49,8 +51,9 @@ enum class Foul {
     no_contact,        ///< the cue ball hit no ball
     wrong_ball_first,  ///< the first ball hit was not a legal target
     no_rail,           ///< after the first contact, nothing was pocketed and no ball hit a cushion
-    bad_break,         ///< 9-ball: the break pocketed nothing and drove fewer than four balls to a
-                       ///< cushion (in 8-ball an illegal break is not a foul but owes a choice)
+    bad_break,         ///< 9-ball, 10-ball: the break pocketed nothing and drove fewer than four
+                       ///< balls to a cushion (in 8-ball an illegal break is not a foul but owes
+                       ///< a choice)
     pot_not_on,        ///< snooker: a ball that was not on was potted
     free_ball_snooker, ///< snooker: the free ball, not potted, left the opponent snookered
 };
@@ -63,8 +66,9 @@ enum class Choice {
     spot_eight,         ///< 8 pocketed on the break: spot it and keep shooting
     take_solids,        ///< bar rules, both groups fell on the break: take solids
     take_stripes,       ///< bar rules: take stripes
-    shoot,              ///< after a push-out: shoot from here
-    pass_back,          ///< after a push-out: the player who pushed shoots again
+    shoot,              ///< after a push-out (or a 10-ball ball pocketed uncalled): shoot from here
+    pass_back,          ///< after a push-out (or a 10-ball ball pocketed uncalled): the player who
+                        ///< played the shot shoots again
     offender_plays,     ///< snooker, after a foul: the player who fouled plays again from there
     replace_and_replay, ///< snooker, after a miss: the balls go back and the offender plays again
     concede,            ///< snooker: the player to act concedes the frame (`Game::concede`)
@@ -80,7 +84,8 @@ enum class WinReason {
     eight_wrong_pocket, ///< the opponent pocketed the 8 in a pocket not called
     eight_off_table,    ///< the opponent drove the 8 off the table
     nine_pocketed,      ///< the 9 was pocketed legally
-    three_fouls,        ///< the opponent fouled three times in a row (9-ball)
+    three_fouls,        ///< the opponent fouled three times in a row (9-ball, 10-ball)
+    ten_pocketed,       ///< the called 10 was pocketed legally in the called pocket
     frame_won,          ///< snooker: the frame ended with more points than the opponent
     conceded,           ///< snooker: the opponent conceded the frame
     three_misses,       ///< snooker: the opponent missed three times running, the balls replaced
@@ -115,8 +120,8 @@ struct Call {
 
 /// What the shooter declared for a shot besides the strike.
 struct ShotCall {
-    Call call;             ///< 8-ball calls
-    bool push_out = false; ///< 9-ball: this shot is a push-out
+    Call call;             ///< 8-ball and 10-ball calls
+    bool push_out = false; ///< 9-ball, 10-ball: this shot is a push-out
 };
 
 /// What a shot meant.
@@ -132,7 +137,7 @@ struct Verdict {
     BallInHand ball_in_hand = BallInHand::none; ///< for the next shooter
     int chooser = 0;                            ///< player who owes a choice (0: none)
     std::vector<Choice> choices;                ///< the options of that choice
-    std::vector<int> respotted;                 ///< balls put back on the table (the 8, the 9)
+    std::vector<int> respotted;                 ///< balls put back on the table (the 8, 9, 10)
     int winner = 0;                             ///< 1 or 2 once the game is over
     WinReason reason = WinReason::none;         ///< why
     bool stalemate_rerack = false;              ///< the rack was re-broken for a stalemate
@@ -143,9 +148,13 @@ struct Verdict {
     bool free_ball = false;                     ///< snooker: the next player may take a free ball
 };
 
+/// The rack `type` is played from.
+RackType game_rack(GameType type);
+
 /// Names as used by `termpool simulate` ("wrong-ball-first", "play-on", ...).
 const char* game_type_name(GameType type);
-/// Parses a game name; nothing for an unknown one.
+/// Parses a game name ("8ball", "8ball-bar", "9ball", "10ball"; 10-ball also as "ten-ball" or
+/// "10-ball"); nothing for an unknown one.
 std::optional<GameType> parse_game_type(const std::string& name);
 /// "solids", "stripes" or "open".
 const char* group_name(Group group);
@@ -179,7 +188,7 @@ public:
 
     /// A game in progress, for analysis: the balls as given, `shooter` to play, `player1_group`
     /// as the groups, `is_break` when the next shot is a break, `push_out_allowed` when it is
-    /// the shot right after a 9-ball break. Ball in hand none.
+    /// the shot right after a 9-ball or 10-ball break. Ball in hand none.
     static Game from_position(GameType type, const Table& table, const PhysicsParams& params,
                               std::vector<Ball> balls, int shooter, Group player1_group,
                               bool is_break, bool push_out_allowed = false);
@@ -219,18 +228,19 @@ public:
     int winner() const { return winner_; }
     /// Why the game ended.
     WinReason win_reason() const { return reason_; }
-    /// True when a push-out may be declared on the next shot (9-ball).
+    /// True when a push-out may be declared on the next shot (9-ball, 10-ball).
     bool push_out_allowed() const { return push_out_allowed_; }
     /// `call` as the referee takes it for the next shot: a push-out only where one is allowed.
     ShotCall call_as_taken(ShotCall call) const {
         call.push_out = call.push_out && push_out_allowed_;
         return call;
     }
-    /// Consecutive fouls of `player` (9-ball three-foul rule).
+    /// Consecutive fouls of `player` (the 9-ball and 10-ball three-foul rule).
     int consecutive_fouls(int player) const { return fouls_in_a_row_[player - 1]; }
-    /// Balls the shooter may legally hit first now (9-ball: the lowest; 8-ball: the group, the
-    /// 8 once the group is cleared; any but the 8 on an open table; snooker: the reds, any
-    /// colour after a red, the lowest colour once the reds are gone, any ball with a free ball).
+    /// Balls the shooter may legally hit first now (9-ball, 10-ball: the lowest; 8-ball: the
+    /// group, the 8 once the group is cleared; any but the 8 on an open table; snooker: the reds,
+    /// any colour after a red, the lowest colour once the reds are gone, any ball with a free
+    /// ball).
     std::vector<int> legal_targets() const;
 
     /// Snooker: the score sheet (zeros in other games).
@@ -303,6 +313,13 @@ private:
     void respot_colours(std::vector<int> ids);
     void end_visit();
     void end_frame(Verdict& v);
+    Verdict judge_ten(const ShotCall& call, const Facts& facts);
+    // What 9-ball and 10-ball share (nine_ball.cpp): the fouls of a shot, a foul's penalty,
+    // the choice after a push-out, and the money ball spotted when it went down.
+    void rotation_fouls(Verdict& v, const Facts& facts, bool was_break, bool push_out) const;
+    void rotation_foul_penalty(Verdict& v, const Facts& facts, int money_ball);
+    void rotation_push_out(Verdict& v, const Facts& facts, int money_ball);
+    void spot_if_down(Verdict& v, const Facts& facts, int id);
     void rerack(int new_breaker);
     void spot_ball(int id);
     void finish_turn(Verdict& verdict, bool progress);

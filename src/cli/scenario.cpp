@@ -321,7 +321,7 @@ Problem parse_ball(const Line& line, Draft& draft) {
 }
 
 Problem parse_rack(const Line& line, Draft& draft) {
-    if (Problem p = arity(line, 1, 2, "rack 8ball|9ball|snooker [SEED]"))
+    if (Problem p = arity(line, 1, 2, "rack 8ball|9ball|10ball|snooker [SEED]"))
         return p;
     if (Problem p = once(draft, "rack", line))
         return p;
@@ -329,10 +329,13 @@ Problem parse_rack(const Line& line, Draft& draft) {
         draft.rack = RackType::eight_ball;
     } else if (line.arg(0) == "9ball") {
         draft.rack = RackType::nine_ball;
+    } else if (line.arg(0) == "10ball") {
+        draft.rack = RackType::ten_ball;
     } else if (line.arg(0) == "snooker") {
         draft.rack = RackType::snooker;
     } else {
-        return "unknown rack " + quoted(line.arg(0)) + " (expected 8ball, 9ball or snooker)";
+        return "unknown rack " + quoted(line.arg(0)) +
+               " (expected 8ball, 9ball, 10ball or snooker)";
     }
     if (line.arguments() == 2) {
         draft.rack_seed = parse_uint64(line.arg(1));
@@ -411,14 +414,15 @@ Problem parse_cue(const Line& line, Draft& draft) {
 }
 
 Problem parse_game(const Line& line, Draft& draft) {
-    if (Problem p = arity(line, 1, 1, "game 8ball|8ball-bar|9ball"))
+    if (Problem p = arity(line, 1, 1, "game 8ball|8ball-bar|9ball|10ball"))
         return p;
     if (Problem p = once(draft, "game", line))
         return p;
     const std::optional<GameType> type = parse_game_type(std::string(line.arg(0)));
     // Snooker's referee needs a score sheet a scenario cannot state: it is played in a match.
     if (!type || *type == GameType::snooker)
-        return "unknown game " + quoted(line.arg(0)) + " (expected 8ball, 8ball-bar or 9ball)";
+        return "unknown game " + quoted(line.arg(0)) +
+               " (expected 8ball, 8ball-bar, 9ball or 10ball)";
     draft.setup.game = *type;
     return {};
 }
@@ -630,6 +634,7 @@ int last_ball_of(GameType game) {
     case GameType::eight_ball:
     case GameType::eight_ball_bar:
     case GameType::nine_ball:
+    case GameType::ten_ball:
         break;
     case GameType::snooker:
         return snooker_black;
@@ -658,11 +663,15 @@ std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Pl
         if (call_line)
             return conflict({"call", *call_line}, game_said, "9-ball shots are not called");
     }
+    if (draft.setup.game == GameType::ten_ball && groups_line && game.player1_group != Group::open)
+        return conflict({"groups " + groups_text(game.player1_group), *groups_line}, game_said,
+                        "10-ball has no groups");
     if (const std::optional<int> push_line = line_of(draft, "push-out")) {
-        if (draft.setup.game != GameType::nine_ball)
+        if (draft.setup.game != GameType::nine_ball && draft.setup.game != GameType::ten_ball)
             return game_line ? conflict({"push-out", *push_line}, game_said,
-                                        "the push-out is a 9-ball rule")
-                             : ScenarioError{*push_line, "push-out needs 'game 9ball'"};
+                                        "the push-out is a 9-ball and 10-ball rule")
+                             : ScenarioError{*push_line, "push-out needs 'game 9ball' or "
+                                                         "'game 10ball'"};
         if (break_line)
             return conflict({"push-out", *push_line}, {"break", *break_line},
                             "the push-out is the shot after the break");

@@ -19,7 +19,7 @@ namespace {
 
 constexpr const char* usage =
     "usage: termpool selfplay --games N --p1 LEVEL --p2 LEVEL\n"
-    "                         [--game 8ball|8ball-bar|9ball|snooker] [--seed S] [--jobs J]\n"
+    "                         [--game 8ball|8ball-bar|9ball|10ball|snooker] [--seed S] [--jobs J]\n"
     "  LEVEL is easy, medium, hard or pro; games alternate the breaker.\n";
 
 constexpr int max_shots_per_game = 500;
@@ -98,15 +98,15 @@ std::optional<Options> parse(const std::vector<std::string>& args, std::string& 
 
 // The invariants every shot must keep; a message when one is broken.
 std::string check_invariants(const Game& game) {
-    const std::size_t count = game.type() == GameType::nine_ball ? 10
-                              : game.type() == GameType::snooker ? 22
-                                                                 : 16;
+    const int last_ball = game.type() == GameType::nine_ball  ? 9
+                          : game.type() == GameType::ten_ball ? 10
+                          : game.type() == GameType::snooker  ? 21
+                                                              : 15;
+    const std::size_t count = static_cast<std::size_t>(last_ball) + 1;
     if (game.balls().size() != count)
         return "balls on the table and in pockets do not add up";
-    for (std::size_t id = 0; id < count; ++id) {
-        const int want = game.type() == GameType::nine_ball && id > 9 ? -1 : static_cast<int>(id);
-        if (want >= 0 &&
-            std::ranges::count_if(game.balls(), [&](const Ball& b) { return b.id == want; }) != 1)
+    for (int want = 0; want <= last_ball; ++want) {
+        if (std::ranges::count_if(game.balls(), [&](const Ball& b) { return b.id == want; }) != 1)
             return "ball " + std::to_string(want) + " is not accounted for exactly once";
     }
     const double R = game.params().ball_radius;
@@ -131,6 +131,14 @@ std::string check_invariants(const Game& game) {
             return b.id >= 16 && b.state == MotionState::pocketed;
         }))
         return "a colour is missing while reds remain";
+    // 10-ball: the 10 comes back whenever it drops without winning.
+    if (game.type() == GameType::ten_ball && game.winner() == 0 &&
+        std::ranges::any_of(game.balls(), [](const Ball& b) {
+            return b.id == 10 && b.state == MotionState::pocketed;
+        }))
+        return "the 10 is down and the game goes on";
+    if (game.type() == GameType::ten_ball && game.win_reason() == WinReason::nine_pocketed)
+        return "a 10-ball game won by the 9";
     return {};
 }
 

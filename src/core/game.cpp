@@ -1,6 +1,6 @@
 // The referee's state machine: racks, ball in hand, choices, and the parts of judging a shot
 // that every game shares. The rules of each game are in eight_ball.cpp, nine_ball.cpp and
-// snooker.cpp.
+// ten_ball.cpp and snooker.cpp.
 #include <algorithm>
 #include <termpool/rack.hpp>
 #include <termpool/snooker_layout.hpp>
@@ -49,10 +49,23 @@ Game Game::from_snooker_position(const Table& table, const PhysicsParams& params
     return g;
 }
 
+RackType game_rack(GameType type) {
+    switch (type) {
+    case GameType::eight_ball:
+    case GameType::eight_ball_bar:
+        return RackType::eight_ball;
+    case GameType::nine_ball:
+        return RackType::nine_ball;
+    case GameType::ten_ball:
+        return RackType::ten_ball;
+    case GameType::snooker:
+        return RackType::snooker;
+    }
+    return RackType::eight_ball;
+}
+
 void Game::rerack(int new_breaker) {
-    const RackType rack = type_ == GameType::nine_ball ? RackType::nine_ball
-                          : type_ == GameType::snooker ? RackType::snooker
-                                                       : RackType::eight_ball;
+    const RackType rack = game_rack(type_);
     // Each rack of a game gets its own seed, so re-racks differ but replay the same.
     balls_ = make_rack(table_, params_, rack, game_rack_seed(seed_, racks_));
     ++racks_;
@@ -92,7 +105,7 @@ std::vector<int> Game::legal_targets() const {
     std::sort(on_table.begin(), on_table.end());
     if (type_ == GameType::snooker)
         return snooker_.free_ball ? on_table : balls_on();
-    if (type_ == GameType::nine_ball || on_table.empty())
+    if (type_ == GameType::nine_ball || type_ == GameType::ten_ball || on_table.empty())
         return on_table.empty() ? on_table : std::vector<int>{on_table.front()};
     const Group group = group_of(shooter_);
     std::vector<int> targets;
@@ -287,6 +300,7 @@ Verdict Game::apply(const ShotCall& call, const ShotResult& result) {
     ball_in_hand_ = BallInHand::none;
     Verdict v = snooker                        ? judge_snooker(call, facts)
                 : type_ == GameType::nine_ball ? judge_nine(call, facts)
+                : type_ == GameType::ten_ball  ? judge_ten(call, facts)
                                                : judge_eight(call, facts);
     v.first_contact = facts.first_contact;
     v.pocketed = facts.pocketed;

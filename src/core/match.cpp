@@ -275,6 +275,8 @@ bool Match::calls_pocket(int ball) const {
     case GameType::nine_ball:
     case GameType::snooker:
         return false;
+    case GameType::ten_ball:
+        return true;
     }
     return false;
 }

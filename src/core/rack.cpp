@@ -9,13 +9,16 @@
 namespace termpool {
 namespace {
 
-// Spots of a triangle (rows of 1..5) or diamond (1,2,3,2,1) with the apex on the foot spot
-// (snooker: a triangle whose apex is a gap above the pink), rows growing away from the head
-// of the table.
+// Spots of a triangle (rows of 1..5; 10-ball: 1..4) or diamond (1,2,3,2,1) with the apex on
+// the foot spot (snooker: a triangle whose apex is a gap above the pink), rows growing away
+// from the head of the table.
 std::vector<Vec2> rack_spots(const Table& table, double spacing, RackType type) {
     const int rows_eight[] = {1, 2, 3, 4, 5};
     const int rows_nine[] = {1, 2, 3, 2, 1};
-    const int* rows = type == RackType::nine_ball ? rows_nine : rows_eight;
+    const int rows_ten[] = {1, 2, 3, 4, 0};
+    const int* rows = type == RackType::nine_ball  ? rows_nine
+                      : type == RackType::ten_ball ? rows_ten
+                                                   : rows_eight;
     const Vec2 apex = type == RackType::snooker
                           ? snooker_spot(table, snooker_pink) + Vec2{spacing, 0}
                           : table.foot_spot();
@@ -88,6 +91,22 @@ std::vector<int> rack_order(RackType type, std::optional<std::uint64_t> seed) {
             for (int& n : order)
                 if (n != 1 && n != 9)
                     n = free[k++];
+        }
+        return order;
+    }
+    if (type == RackType::ten_ball) {
+        // Spot 4 is the middle of the third row; spots 6 and 9 are the back corners.
+        std::vector<int> order{1, 4, 5, 6, 10, 7, 2, 8, 9, 3};
+        if (seed) {
+            Random rng(*seed);
+            std::vector<int> free{4, 5, 6, 7, 8, 9};
+            shuffle(free, rng);
+            std::size_t k = 0;
+            for (int& n : order)
+                if (n >= 4 && n <= 9)
+                    n = free[k++];
+            if (rng.below(2) == 0)
+                std::swap(order[6], order[9]);
         }
         return order;
     }

@@ -12,15 +12,21 @@ const char* game_type_name(GameType type) {
         return "9ball";
     case GameType::snooker:
         return "snooker";
+    case GameType::ten_ball:
+        return "10ball";
     }
     return "?";
 }
 
 std::optional<GameType> parse_game_type(const std::string& name) {
     for (const GameType t :
-         {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball, GameType::snooker})
+         {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball, GameType::ten_ball,
+          GameType::snooker})
         if (name == game_type_name(t))
             return t;
+    // 10-ball's other spellings; the name written is "10ball", like "9ball".
+    if (name == "ten-ball" || name == "10-ball")
+        return GameType::ten_ball;
     return std::nullopt;
 }
 
@@ -124,6 +130,8 @@ const char* win_reason_name(WinReason reason) {
         return "nine-pocketed";
     case WinReason::three_fouls:
         return "three-fouls";
+    case WinReason::ten_pocketed:
+        return "ten-pocketed";
     case WinReason::frame_won:
         return "frame-won";
     case WinReason::conceded:

@@ -15,13 +15,12 @@
 /// Client to server:
 ///
 ///   hello VERSION TOKEN|- NAME        first message; "-" asks for a new token
-///   create GAME SIZE RACE             a new table: 8ball|8ball-bar|9ball, 7ft|8ft|9ft, 1..99
-///   sit TABLE SEAT                    take seat 1 or 2 (or take back one's own away seat)
-///   watch TABLE                       follow a table as a spectator
-///   leave                             leave the table (a seat in a started game stays, away)
-///   act ACTION                        place / shot / choose, as `format_action` writes it
-///   next-rack                         rack the next rack of a race
-///   aim DEG SPEED SIDE FOLLOW ELEV    the shooter's cue as it aims (a Strike, not played)
+///   create GAME SIZE RACE             a new table: 8ball|8ball-bar|9ball|10ball,
+///   7ft|8ft|9ft, 1..99 sit TABLE SEAT                    take seat 1 or 2 (or take back one's own
+///   away seat) watch TABLE                       follow a table as a spectator leave leave the
+///   table (a seat in a started game stays, away) act ACTION                        place / shot /
+///   choose, as `format_action` writes it next-rack                         rack the next rack of a
+///   race aim DEG SPEED SIDE FOLLOW ELEV    the shooter's cue as it aims (a Strike, not played)
 ///   chat TEXT                         to the table: 1..200 characters, no control characters
 ///   computer SEAT LEVEL|none          seat (or unseat) the computer in an empty seat (a
 ///                                     player seated at the table only)

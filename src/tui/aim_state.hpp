@@ -35,7 +35,7 @@ struct AimState {
     int called_pocket = 0;          ///< the pocket the shot calls, 0: none
     bool pocket_chosen = false;     ///< the player picked the pocket: keep it while aiming
     bool safety = false;            ///< a safety is called
-    bool push_out = false;          ///< 9-ball: the shot is a push-out
+    bool push_out = false;          ///< 9-ball, 10-ball: the shot is a push-out
     int target_index = -1;          ///< which of the ranked targets the aim proposes
     TargetLine target_line = TargetLine::straight; ///< how the proposed aim reaches its ball
     int preview_ball = -1;                         ///< the ball the aid shows the cue ball hitting

@@ -50,8 +50,7 @@ App::App(Terminal& terminal, const GameOptions& options)
     if (options.computer)
         seat_computer(2, *options.computer);
     if (options.practice) {
-        const RackType rack =
-            options.setup.game == GameType::nine_ball ? RackType::nine_ball : RackType::eight_ball;
+        const RackType rack = game_rack(options.setup.game);
         // The rack a game would have.
         practice_.emplace(table_, params_, rack, match_.record().seed);
         sync_practice();
@@ -99,7 +98,7 @@ void App::compose(View& v) const {
     v.race_to = score().is_race() && !practice_ ? score().race_to : 0;
     v.racks_won[0] = score().racks_won[0];
     v.racks_won[1] = score().racks_won[1];
-    if (g.type() == GameType::nine_ball) {
+    if (g.type() == GameType::nine_ball || g.type() == GameType::ten_ball) {
         v.fouls[0] = g.consecutive_fouls(1);
         v.fouls[1] = g.consecutive_fouls(2);
     }

@@ -94,6 +94,8 @@ const char* game_title(GameType type) {
         return "8-ball, bar rules";
     case GameType::nine_ball:
         return "9-ball";
+    case GameType::ten_ball:
+        return "10-ball";
     case GameType::snooker:
         return "snooker";
     }

@@ -42,7 +42,7 @@ std::string ball_label(int id, bool utf8, bool wide, BallSet set = BallSet::pool
 /// colours reversed and bold.
 Style ball_style(int id, bool colour, BallSet set = BallSet::pool);
 
-/// "8-ball", "8-ball, bar rules", "9-ball".
+/// "8-ball", "8-ball, bar rules", "9-ball", "10-ball".
 const char* game_title(GameType type);
 
 } // namespace termpool::tui

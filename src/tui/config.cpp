@@ -45,7 +45,7 @@ std::optional<std::string> apply_config(std::string_view text, GameOptions& o,
         } else if (key == "game") {
             const auto g = parse_game_type(value);
             if (!g)
-                return fail("unknown game '" + value + "' (8ball, 8ball-bar or 9ball)");
+                return fail("unknown game '" + value + "' (8ball, 8ball-bar, 9ball or 10ball)");
             o.setup.game = *g;
         } else if (key == "table") {
             const std::optional<TableSize> size = parse_table_size(value);

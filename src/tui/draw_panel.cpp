@@ -81,13 +81,13 @@ template <class Keep> std::string pocketed(const View& v, Keep keep) {
     return s;
 }
 
-// "solids 1 3 4" (the player's group and what of it has dropped), "open table"; in 9-ball the
-// consecutive fouls, the second one as a warning.
+// "solids 1 3 4" (the player's group and what of it has dropped), "open table"; in 9-ball and
+// 10-ball the consecutive fouls, the second one as a warning.
 Piece player_detail(const Frame& f, int player) {
     const View& v = f.view;
     if (v.practice)
         return {"", {}}; // no referee: no groups, no fouls
-    if (v.game == GameType::nine_ball) {
+    if (v.game == GameType::nine_ball || v.game == GameType::ten_ball) {
         const int fouls = std::max(0, v.fouls[player - 1]);
         if (fouls == 0)
             return {"", dim};
@@ -104,11 +104,11 @@ Piece player_detail(const Frame& f, int player) {
             dim};
 }
 
-// "pocketed 3 11": in 9-ball all that has dropped, in 8-ball what belongs to nobody's group
-// (all of it on an open table, the 8). Empty when there is none.
+// "pocketed 3 11": in 9-ball and 10-ball all that has dropped, in 8-ball what belongs to nobody's
+// group (all of it on an open table, the 8). Empty when there is none.
 std::string loose_balls(const View& v) {
     const std::string ids = pocketed(v, [&](int id) {
-        return v.game == GameType::nine_ball ||
+        return v.game == GameType::nine_ball || v.game == GameType::ten_ball ||
                !(in_group(id, v.groups[0]) || in_group(id, v.groups[1]));
     });
     return ids.empty() ? "" : "pocketed" + ids;

@@ -26,7 +26,7 @@ namespace {
 constexpr const char* options_usage =
     "  --player1 NAME, --player2 NAME\n"
     "                        the players' names (asked for when not given)\n"
-    "  --game 8ball|8ball-bar|9ball\n"
+    "  --game 8ball|8ball-bar|9ball|10ball\n"
     "                        the game (default 8ball)\n"
     "  --table 7ft|8ft|9ft|snooker\n                        the table (default 9ft; snooker: 12 "
     "ft, snooker balls)\n"
@@ -388,7 +388,8 @@ int run_practice(const std::vector<std::string>& args) {
         error = "practice is one player at the table: no --player2, --race, --breaks, --resume, "
                 "--vs-computer or --watch";
     constexpr const char* usage =
-        "usage: termpool practice [--game 8ball|8ball-bar|9ball] [--table 7ft|8ft|9ft|snooker]\n"
+        "usage: termpool practice [--game 8ball|8ball-bar|9ball|10ball]\n"
+        "                         [--table 7ft|8ft|9ft|snooker]\n"
         "                         [--player1 NAME] [--seed S] [--friction MODEL]\n"
         "                         [--cue-ball-mass KG] [--cue SHAFT] [--ascii]\n"
         "One player at the table, no referee: m moves a ball, r takes the last shot again,\n"

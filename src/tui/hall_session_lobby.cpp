@@ -41,6 +41,7 @@ void HallSession::handle_create_key(const Input& in) {
     } else if (t == "g") {
         create_.game = create_.game == GameType::eight_ball       ? GameType::eight_ball_bar
                        : create_.game == GameType::eight_ball_bar ? GameType::nine_ball
+                       : create_.game == GameType::nine_ball      ? GameType::ten_ball
                                                                   : GameType::eight_ball;
     } else if (t == "t") {
         create_.size = create_.size == TableSize::nine_foot    ? TableSize::seven_foot

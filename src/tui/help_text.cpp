@@ -24,7 +24,7 @@ const std::string& help_text() {
                                     "g                 aiming aid on / off\n"
                                     "1-6               call a pocket\n"
                                     "0                 call safety (on / off)\n"
-                                    "u                 9-ball push-out after the break\n"
+                                    "u                 9-ball, 10-ball: push-out after the break\n"
                                     "n                 rename a player (not in the hall)\n"
                                     "x                 skip the animation\n"
                                     "?                 this help\n"

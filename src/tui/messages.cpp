@@ -78,6 +78,8 @@ std::string win_message(const Verdict& v, int shooter, const std::string names[2
         return who + " drove the 8 off the table" + tail;
     case WinReason::nine_pocketed:
         return who + " pocketed the 9" + tail;
+    case WinReason::ten_pocketed:
+        return who + " pocketed the called 10" + tail;
     case WinReason::three_fouls:
         return who + " fouled three times in a row" + tail;
     case WinReason::frame_won:

@@ -123,7 +123,7 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
                 return std::nullopt;
             const auto g = parse_game_type(*v);
             if (!g) {
-                error = "unknown game '" + *v + "' (8ball, 8ball-bar or 9ball)";
+                error = "unknown game '" + *v + "' (8ball, 8ball-bar, 9ball or 10ball)";
                 return std::nullopt;
             }
             o.setup.game = *g;

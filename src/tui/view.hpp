@@ -163,7 +163,7 @@ struct View {
     int help_page = 0;              ///< its page, 0-based (see help_page_count)
     int race_to = 0;                ///< racks needed to win the match; 0: a single game
     int racks_won[2] = {0, 0};      ///< racks each player has won in the match
-    int fouls[2] = {0, 0};          ///< consecutive fouls of each player (9-ball)
+    int fouls[2] = {0, 0};          ///< consecutive fouls of each player (9-, 10-ball)
     bool practice = false;          ///< practice: one player, no groups or fouls in the panel
     std::string overlay; ///< a box of text (questions, game over), if any, clear of the balls
     std::vector<std::string> chat; ///< a hall table's chat, oldest first: the last lines show
