@@ -19,9 +19,8 @@ const char* game_type_name(GameType type) {
 }
 
 std::optional<GameType> parse_game_type(const std::string& name) {
-    for (const GameType t :
-         {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball, GameType::ten_ball,
-          GameType::snooker})
+    for (const GameType t : {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball,
+                             GameType::ten_ball, GameType::snooker})
         if (name == game_type_name(t))
             return t;
     // 10-ball's other spellings; the name written is "10ball", like "9ball".
