@@ -477,7 +477,7 @@ std::variant<ClientMessage, ProtocolError> parse_client(std::string_view line) {
         const auto game = parse_game_type(std::string(r.word()));
         const auto size = parse_table_size(r.word());
         if (r.ok() && !game)
-            r.fail("a game is 8ball, 8ball-bar, 9ball or 10ball");
+            r.fail("a game is 8ball, 8ball-bar, 9ball, 10ball or snooker");
         if (r.ok() && !size)
             r.fail("a table is 7ft, 8ft, 9ft or snooker");
         m.race_to = r.integer(1, max_race_to, "a race");

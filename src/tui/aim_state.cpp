@@ -16,6 +16,8 @@ void AimState::new_turn() {
     safety = false;
     push_out = false;
     pocket_chosen = false;
+    nominated = 0;
+    nomination_chosen = false;
     target_index = -1;
     side = follow = 0;
     elevation_deg = 0;

@@ -36,6 +36,8 @@ struct AimState {
     bool pocket_chosen = false;     ///< the player picked the pocket: keep it while aiming
     bool safety = false;            ///< a safety is called
     bool push_out = false;          ///< 9-ball, 10-ball: the shot is a push-out
+    int nominated = 0;              ///< snooker: the colour (or free ball) nominated, 0: none
+    bool nomination_chosen = false; ///< snooker: the player named it (else the aimed ball)
     int target_index = -1;          ///< which of the ranked targets the aim proposes
     TargetLine target_line = TargetLine::straight; ///< how the proposed aim reaches its ball
     int preview_ball = -1;                         ///< the ball the aid shows the cue ball hitting

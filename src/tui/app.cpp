@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <termpool/snooker_layout.hpp>
 
 #include "tui/help_text.hpp"
 #include "tui/messages.hpp"
@@ -42,7 +43,7 @@ App::App(Terminal& terminal, const GameOptions& options)
                                                 Clock::now().time_since_epoch().count()))),
       match_(first_match(options, seed_++)) {
     shown_balls_ = game().balls();
-    message_ = name(1) + " breaks: place the cue ball in the kitchen";
+    message_ = breaks_words(1);
     aim_.time_power = options.timed_power;
     aim_.show_aid = options.aim_aid;
     if (options.watch)
@@ -102,6 +103,29 @@ void App::compose(View& v) const {
         v.fouls[0] = g.consecutive_fouls(1);
         v.fouls[1] = g.consecutive_fouls(2);
     }
+    if (g.type() == GameType::snooker) {
+        const SnookerState& s = g.snooker();
+        v.scores[0] = s.scores[0];
+        v.scores[1] = s.scores[1];
+        v.current_break = s.current_break;
+        v.highest_break[0] = s.highest_break[0];
+        v.highest_break[1] = s.highest_break[1];
+        v.ball_on = s.ball_on;
+        v.free_ball = s.free_ball;
+        v.points_remaining = g.points_remaining();
+        if (s.ball_on == BallOn::in_order) {
+            const std::vector<int> on = g.balls_on();
+            v.lowest_colour = on.empty() ? 0 : on.front();
+        }
+        // A match of frames is said as best of N (a race to 3 is best of 5).
+        v.best_of = score().is_race() ? 2 * score().race_to - 1 : 0;
+        v.race_to = 0;
+        // Another terminal's nomination is not sent while it aims: no guess at it.
+        if (mode_ == Mode::aiming && (!in_hall() || hall_seat_to_act())) {
+            v.nominated = aim_.nominated;
+            v.nomination_chosen = aim_.nomination_chosen;
+        }
+    }
     v.message =
         save_problem_.empty() ? message_ : "Could not save: " + save_problem_ + "; " + message_;
     v.help = help_;
@@ -131,7 +155,10 @@ void App::compose(View& v) const {
         std::string text =
             (message_.empty() ? "" : message_ + "\n\n") + name(g.chooser()) + ", choose:";
         for (std::size_t i = 0; i < g.choices().size(); ++i)
-            text += "\n" + std::to_string(i + 1) + "  " + choice_words(g.choices()[i]);
+            text += "\n" + std::to_string(i + 1) + "  " +
+                    choice_words(g.choices()[i], g.type(), g.free_ball_offered());
+        if (snooker_play())
+            text += "\nC  concede the frame";
         v.overlay = text;
         break;
     }
@@ -148,6 +175,8 @@ void App::compose(View& v) const {
         compose_hall(v);
     if (confirm_quit_)
         v.overlay = in_hall() ? "Leave the table?  y / n" : "Quit the game?  y / n";
+    if (confirm_concede_)
+        v.overlay = name(match_.to_act()) + ": concede the frame?  y / n";
 }
 
 void App::compose_aiming(View& v) const {
@@ -189,8 +218,13 @@ void App::compose_prompt(View& v) const {
         if (entry_.player == 2 && mode_ == Mode::names)
             v.overlay += "\n(or: computer [easy|medium|hard|pro])";
     } else if (entry_.asking_race) {
-        v.overlay = title + "\n\nRace to how many racks? " + entry_.text + "_\n(Enter keeps " +
-                    std::to_string(std::max(1, options_.race_to)) + "; 1 is a single game)";
+        const int race = std::max(1, options_.race_to);
+        if (snooker_play())
+            v.overlay = title + "\n\nBest of how many frames? " + entry_.text + "_\n(Enter keeps " +
+                        std::to_string(2 * race - 1) + "; 1 is a single frame)";
+        else
+            v.overlay = title + "\n\nRace to how many racks? " + entry_.text + "_\n(Enter keeps " +
+                        std::to_string(race) + "; 1 is a single game)";
     } else {
         return;
     }
@@ -223,7 +257,12 @@ bool App::nudge(Vec2& spot, int key, const std::string& text) const {
         by = {0, -2 * step};
     else
         return false;
-    spot = step_on_table(table_, spot, by, params_.ball_radius);
+    const Vec2 stepped = step_on_table(table_, spot, by, params_.ball_radius);
+    // The D is small: the keys keep a ball in hand there inside it (the pointer may leave it,
+    // and is told why the ball cannot go there).
+    const bool in_d = mode_ == Mode::placing && game().ball_in_hand() == BallInHand::d;
+    if (!in_d || !in_snooker_d(table_, spot) || in_snooker_d(table_, stepped))
+        spot = stepped;
     return true;
 }
 
@@ -261,6 +300,14 @@ void App::handle(const Input& in) {
 }
 
 bool App::handle_overlay(const Input& in) {
+    if (confirm_concede_) {
+        if (in.kind == Input::Kind::mouse && !in.clicked)
+            return true;
+        confirm_concede_ = false;
+        if (in.kind == Input::Kind::text && (in.text == "y" || in.text == "Y"))
+            concede();
+        return true;
+    }
     if (confirm_quit_) {
         // y, or q again (q q quits, as in many terminal programs).
         if (in.kind == Input::Kind::text && (in.text == "y" || in.text == "Y" || in.text == "q"))
@@ -297,6 +344,11 @@ void App::handle_key(int key, const std::string& text) {
     }
     if (text == "?") {
         help_ = true;
+        return;
+    }
+    if (text == "C" && snooker_play() &&
+        (mode_ == Mode::placing || mode_ == Mode::aiming || mode_ == Mode::choosing)) {
+        ask_concede();
         return;
     }
     if (text == "n" && mode_ != Mode::game_over && mode_ != Mode::animating && !in_hall()) {

@@ -115,6 +115,12 @@ private:
     void ask_race();
     void handle_race_entry(const Input& in);
     void update_preview();
+    void propose_nomination();
+    bool nominate_key(const std::string& text);
+    bool snooker_play() const;
+    void ask_concede();
+    void concede();
+    std::string breaks_words(int breaker) const;
     void aim_at_easiest();
     Vec2 cue_position() const;
     std::vector<int> targets() const;
@@ -161,6 +167,7 @@ private:
     bool help_ = false;
     int help_page_ = 0;
     bool confirm_quit_ = false;
+    bool confirm_concede_ = false; // snooker: "Concede the frame?" waits for y or n
 
     AimState aim_;
     Vec2 place_; // ball in hand: where the cue ball would go

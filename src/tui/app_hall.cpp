@@ -51,7 +51,7 @@ void App::hall_record(Match match) {
 std::string App::hall_table_words() const {
     // Where the table stands, and with ball in hand what the player must do first.
     if (match_.record().actions.empty())
-        return name(match_.to_act()) + " breaks: place the cue ball in the kitchen";
+        return breaks_words(match_.to_act());
     if (match_.pending().kind == Pending::place)
         return resumed_words() + ": place the cue ball";
     return resumed_words();
@@ -178,6 +178,8 @@ bool App::apply_hall_action(const RecordedAction& action) {
     // Whatever the server applied, what this terminal sent is settled: it was this action, or
     // its refusal is on the way.
     const int actor = match_.to_act();
+    const std::string choice =
+        choice_words(action.choice, game().type(), match_.game().free_ball_offered());
     awaiting_hall_ = false;
     if (action.kind == RecordedAction::Kind::shot) {
         Game before = match_.game();
@@ -197,12 +199,14 @@ bool App::apply_hall_action(const RecordedAction& action) {
         start_aiming();
         break;
     case RecordedAction::Kind::choose:
-        message_ = name(actor) + ": " + choice_words(action.choice);
+        message_ = action.choice == Choice::concede
+                       ? name(actor) + " concedes the frame \u2014 " + name(3 - actor) + " wins it"
+                       : name(actor) + ": " + choice;
         start_turn();
         break;
     case RecordedAction::Kind::rack:
-        message_ = "Rack " + std::to_string(match_.rack()) + ": " + name(action.breaker) +
-                   " breaks: place the cue ball in the kitchen";
+        message_ = (snooker_play() ? "Frame " : "Rack ") + std::to_string(match_.rack()) + ": " +
+                   breaks_words(action.breaker);
         start_turn();
         break;
     case RecordedAction::Kind::shot:

@@ -17,7 +17,7 @@ void App::new_game(int breaker) {
     match_ = std::move(match_).rematch(breaker, seed_++);
     shown_balls_ = game().balls();
     trajectory_.reset();
-    message_ = name(breaker) + " breaks: place the cue ball in the kitchen";
+    message_ = breaks_words(breaker);
 }
 
 void App::next_rack() {
@@ -33,8 +33,8 @@ void App::next_rack() {
         return;
     shown_balls_ = game().balls();
     save();
-    message_ = "Rack " + std::to_string(match_.rack()) + ": " + name(breaker) +
-               " breaks: place the cue ball in the kitchen";
+    message_ = (snooker_play() ? "Frame " : "Rack ") + std::to_string(match_.rack()) + ": " +
+               breaks_words(breaker);
     start_turn();
 }
 
@@ -99,9 +99,15 @@ void App::computer_turn() {
         if (!pacing_.due(now))
             return;
         pacing_.stop();
+        if (move.choice == Choice::concede) {
+            concede();
+            return;
+        }
         const std::string who = name(match_.to_act());
+        const std::string words =
+            choice_words(move.choice, game().type(), game().free_ball_offered());
         choose(move.choice);
-        message_ = who + ": " + choice_words(move.choice);
+        message_ = who + ": " + words;
         start_turn();
         return;
     }

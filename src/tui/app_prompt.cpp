@@ -83,9 +83,15 @@ void App::handle_race_entry(const Input& in) {
     if (in.key != key_enter && in.key != key_escape)
         return;
     if (in.key != key_escape && !entry_.text.empty()) {
-        const std::optional<int> race = parse_race_to(entry_.text);
+        // Snooker asks for the frames of the match, best of N.
+        const bool frames = snooker_play();
+        const std::optional<int> best_of = frames ? parse_best_of(entry_.text) : std::nullopt;
+        const std::optional<int> race =
+            frames ? (best_of ? std::optional<int>(race_for_best_of(*best_of)) : std::nullopt)
+                   : parse_race_to(entry_.text);
         if (!race || match_.set_race(*race) != MatchError::none) {
-            entry_.error = "a race is 1 to " + std::to_string(max_race_to) + " racks";
+            entry_.error = frames ? "best of an odd number of frames: 1, 3, 5, ..."
+                                  : "a race is 1 to " + std::to_string(max_race_to) + " racks";
             return;
         }
         options_.race_to = *race;

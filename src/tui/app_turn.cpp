@@ -5,17 +5,39 @@
 #include <algorithm>
 #include <optional>
 #include <string>
+#include <termpool/snooker_layout.hpp>
+#include <vector>
 
 #include "tui/app.hpp"
 #include "tui/messages.hpp"
 #include "tui/save_file.hpp"
 
 namespace termpool::tui {
+namespace {
+
+// Where the cue ball in hand starts: the head spot in the kitchen; in the D beside the brown,
+// towards the yellow, where a snooker break is played from; else the legal spot nearest them.
+Vec2 first_spot(const Game& g, Vec2 head_spot) {
+    Vec2 want = head_spot;
+    if (g.ball_in_hand() == BallInHand::d) {
+        const double r = snooker_d_radius_on(g.table());
+        want = snooker_d_centre(g.table()) + Vec2{-r / 4, -r / 2};
+    }
+    if (g.legal_placement(want))
+        return want;
+    const std::vector<Vec2> spots = g.legal_placements(24);
+    if (spots.empty())
+        return want;
+    return *std::min_element(spots.begin(), spots.end(),
+                             [&](Vec2 a, Vec2 b) { return length(a - want) < length(b - want); });
+}
+
+} // namespace
 
 void App::begin() {
     message_ = practice_
                    ? "Practice: no referee. m moves a ball, r takes a shot again, t racks again"
-                   : name(game().shooter()) + " breaks: place the cue ball in the kitchen";
+                   : breaks_words(game().shooter());
     // News from before the game (a config warning, where it is saved) leads the first line.
     for (auto n = options_.notices.rbegin(); n != options_.notices.rend(); ++n)
         message_ = *n + "; " + message_;
@@ -47,9 +69,7 @@ void App::start_turn() {
             !cue || cue->state == MotionState::pocketed || !g.legal_placement(cue->position);
         warn_of_third_foul();
         mode_ = Mode::placing;
-        place_ = must_move ? (g.legal_placement(table_.head_spot()) ? table_.head_spot()
-                                                                    : g.legal_placements().front())
-                           : cue->position;
+        place_ = must_move ? first_spot(g, table_.head_spot()) : cue->position;
         return;
     }
     start_aiming();
@@ -81,12 +101,47 @@ void App::start_aiming() {
         message_ = who + ": aim (" + (term_.caps().mouse ? "mouse, " : "") +
                    "Left/Right), Space shoots" + (practice_ ? "; m moves a ball" : "");
     }
+    if (snooker_play() && game().nomination_owed() && !computer)
+        message_ += (message_.empty() ? who + ": " : "; ") +
+                    std::string(game().snooker().free_ball ? "a free ball: 2-7 nominates it"
+                                                           : "2-7 nominates a colour");
     // The proposed aim cannot reach the ball straight: say so before Space is pressed.
     if (aim_.target_line != TargetLine::straight && !computer)
         message_ += (message_.empty() ? "" : "; ") +
                     std::string(aim_.target_line == TargetLine::kick
                                     ? "no straight line to a legal ball: a kick off one rail"
                                     : "no clear line to a legal ball");
+}
+
+std::string App::breaks_words(int breaker) const {
+    return name(breaker) + " breaks: place the cue ball " +
+           ball_in_hand_words(game().type() == GameType::snooker ? BallInHand::d
+                                                                 : BallInHand::kitchen);
+}
+
+void App::ask_concede() {
+    // Only the player to act concedes, and only at this terminal's seat in the hall.
+    if (computer_to_act() || (in_hall() && !hall_seat_to_act()) || game().winner() != 0)
+        return;
+    confirm_concede_ = true;
+}
+
+void App::concede() {
+    const int who = match_.to_act();
+    if (in_hall()) {
+        RecordedAction action;
+        action.kind = RecordedAction::Kind::choose;
+        action.choice = Choice::concede;
+        send_to_hall(action);
+        return;
+    }
+    if (match_.concede(who) != MatchError::none)
+        return;
+    message_ = name(who) + " concedes the frame \u2014 " + name(3 - who) + " wins it";
+    save();
+    if (match_.score().match_winner() != 0 && !replaying_)
+        save_stats();
+    start_turn();
 }
 
 bool App::try_place(Vec2 spot) {
@@ -120,8 +175,15 @@ void App::shoot() {
         return;
     }
     const double power = aim_.current_power(now);
-    const ShotCall call =
+    ShotCall call =
         game().call_as_taken(aim_.call([this](int ball) { return calls_pocket(ball); }));
+    if (snooker_play()) {
+        // The nomination the player named; without one the referee takes the ball hit first,
+        // the aimed ball the panel proposed.
+        call.call = {};
+        if (game().nomination_owed() && aim_.nomination_chosen)
+            call.call.ball = aim_.nominated;
+    }
     aim_.power = power;
     if (in_hall()) {
         RecordedAction action;

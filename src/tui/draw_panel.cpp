@@ -17,6 +17,7 @@
 #include "tui/ball_style.hpp"
 #include "tui/draw.hpp"
 #include "tui/pocket_cells.hpp"
+#include "tui/snooker_panel.hpp"
 #include "tui/text_width.hpp"
 
 namespace termpool::tui {
@@ -87,6 +88,8 @@ Piece player_detail(const Frame& f, int player) {
     const View& v = f.view;
     if (v.practice)
         return {"", {}}; // no referee: no groups, no fouls
+    if (v.game == GameType::snooker)
+        return {high_break_text(v, player), dim};
     if (v.game == GameType::nine_ball || v.game == GameType::ten_ball) {
         const int fouls = std::max(0, v.fouls[player - 1]);
         if (fouls == 0)
@@ -107,6 +110,8 @@ Piece player_detail(const Frame& f, int player) {
 // "pocketed 3 11": in 9-ball and 10-ball all that has dropped, in 8-ball what belongs to nobody's
 // group (all of it on an open table, the 8). Empty when there is none.
 std::string loose_balls(const View& v) {
+    if (v.game == GameType::snooker)
+        return ""; // the colours come back, the reds are counted in the legend
     const std::string ids = pocketed(v, [&](int id) {
         return v.game == GameType::nine_ball || v.game == GameType::ten_ball ||
                !(in_group(id, v.groups[0]) || in_group(id, v.groups[1]));
@@ -117,6 +122,15 @@ std::string loose_balls(const View& v) {
 // "8-ball, race to 5"; with `title` false just "race to 5" (empty without a race).
 Line header(const View& v, bool title) {
     Line line;
+    if (snooker_panel(v)) {
+        // "snooker  Frames 1-0 (best of 5)"
+        const std::string frames = frames_text(v);
+        if (title)
+            line.push_back({game_title(v.game), bold});
+        if (!frames.empty())
+            line.push_back({title ? "  " + frames : frames, bold});
+        return line;
+    }
     const std::string race = v.race_to > 0 ? "race to " + std::to_string(v.race_to) : "";
     if (title)
         line.push_back({std::string(game_title(v.game)) + (v.practice ? " practice" : ""), bold});
@@ -139,10 +153,17 @@ std::string call_text(const View& v) {
 Line name_line(const Frame& f, int player, int width) {
     const View& v = f.view;
     const bool shooting = v.shooter == player;
-    const bool race = v.race_to > 0;
-    const int score_w =
-        race ? 1 + static_cast<int>(std::to_string(std::max(0, v.racks_won[player - 1])).size())
-             : 0;
+    // Snooker shows the points of the frame (the frames are in the header), padded to the
+    // wider of the two so that they line up.
+    const bool points = snooker_panel(v);
+    const bool race = v.race_to > 0 || points;
+    const auto figure = [&](int p) {
+        return std::max(0, points ? v.scores[p - 1] : v.racks_won[p - 1]);
+    };
+    const int figure_w = static_cast<int>(
+        points ? std::max(std::to_string(figure(1)).size(), std::to_string(figure(2)).size())
+               : std::to_string(figure(player)).size());
+    const int score_w = race ? 1 + figure_w : 0;
     int name_w = 0;
     for (const std::string& n : v.names)
         name_w = std::max(name_w, display_width(truncate_to_width(n, 20)));
@@ -151,8 +172,12 @@ Line name_line(const Frame& f, int player, int width) {
     Line line{{shooting ? (f.paint.utf8() ? "\u25B6 " : "> ") : "  ", mark}};
     name += std::string(static_cast<std::size_t>(std::max(0, name_w - display_width(name))), ' ');
     line.push_back({name, shooting ? mark : Style{}});
-    if (race)
-        line.push_back({" " + std::to_string(std::max(0, v.racks_won[player - 1])), bold});
+    if (race) {
+        std::string n = std::to_string(figure(player));
+        n.insert(0, static_cast<std::size_t>(std::max(0, figure_w - static_cast<int>(n.size()))),
+                 ' ');
+        line.push_back({" " + n, bold});
+    }
     return line;
 }
 
@@ -329,6 +354,8 @@ void draw_side_panel(const Frame& f) {
         put_lines({{{"  ", {}}, player_detail(f, player)}});
     }
     put_lines(wrapped(loose_balls(v), width, dim));
+    if (snooker_panel(v))
+        put_lines(wrapped(snooker_status(v), width, mark));
     ++y;
     // The message matters most after the players.
     if (!v.message.empty()) {
@@ -428,6 +455,8 @@ void draw_below_panel(const Frame& f) {
         }
         left.push_back({line, 0});
     }
+    if (snooker_panel(v))
+        left.push_back({{{snooker_status(v), mark}}, 0});
     const std::string loose = loose_balls(v);
     if (!loose.empty())
         left.push_back({{{loose, dim}}, 3});

@@ -42,7 +42,15 @@ void HallSession::handle_create_key(const Input& in) {
         create_.game = create_.game == GameType::eight_ball       ? GameType::eight_ball_bar
                        : create_.game == GameType::eight_ball_bar ? GameType::nine_ball
                        : create_.game == GameType::nine_ball      ? GameType::ten_ball
+                       : create_.game == GameType::ten_ball       ? GameType::snooker
                                                                   : GameType::eight_ball;
+        // Snooker is played on the snooker table, and pool on a pool table.
+        if (create_.game == GameType::snooker)
+            create_.size = TableSize::snooker;
+        else if (create_.size == TableSize::snooker)
+            create_.size = TableSize::nine_foot;
+    } else if (t == "t" && create_.game == GameType::snooker) {
+        create_.size = TableSize::snooker; // the only table for snooker
     } else if (t == "t") {
         create_.size = create_.size == TableSize::nine_foot    ? TableSize::seven_foot
                        : create_.size == TableSize::seven_foot ? TableSize::eight_foot
@@ -140,10 +148,12 @@ std::string HallSession::create_form_text() const {
            std::string(game_title(create_.game)) +
            "\n"
            "t  table     " +
-           table_size_name(create_.size) +
-           "\n"
-           "+- race to   " +
-           std::to_string(create_.race_to) + (create_.race_to == 1 ? " (a single game)" : "") +
+           table_size_name(create_.size) + "\n" +
+           (create_.game == GameType::snooker
+                ? "+- best of   " + std::to_string(2 * create_.race_to - 1) + " frames" +
+                      (create_.race_to == 1 ? " (a single frame)" : "")
+                : "+- race to   " + std::to_string(create_.race_to) +
+                      (create_.race_to == 1 ? " (a single game)" : "")) +
            "\n"
            "o  opponent  " +
            opponent + "\n\nEnter creates it, Esc goes back";

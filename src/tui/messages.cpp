@@ -1,5 +1,6 @@
 #include "tui/messages.hpp"
 
+#include <termpool/snooker_layout.hpp>
 #include <termpool/spots.hpp>
 
 namespace termpool::tui {
@@ -59,6 +60,45 @@ std::string choice_words(Choice choice) {
     return "?";
 }
 
+std::string choice_words(Choice choice, GameType game, bool free_ball) {
+    if (game != GameType::snooker)
+        return choice_words(choice);
+    // As a snooker referee asks after a foul.
+    switch (choice) {
+    case Choice::play_on:
+        return free_ball ? "play on, with a free ball" : "play on from here";
+    case Choice::offender_plays:
+        return "put the offender back in";
+    case Choice::replace_and_replay:
+        return "replace the balls, the offender plays again (a miss)";
+    default:
+        return choice_words(choice);
+    }
+}
+
+std::string snooker_ball_name(int id) {
+    static const char* const colours[] = {"yellow", "green", "brown", "blue", "pink", "black"};
+    if (is_snooker_red(id))
+        return "red";
+    if (is_snooker_colour(id))
+        return colours[id - snooker_yellow];
+    return "";
+}
+
+std::string ball_in_hand_words(BallInHand where) {
+    switch (where) {
+    case BallInHand::d:
+        return "in the D";
+    case BallInHand::kitchen:
+        return "in the kitchen";
+    case BallInHand::anywhere:
+        return "anywhere";
+    case BallInHand::none:
+        break;
+    }
+    return "";
+}
+
 std::string win_message(const Verdict& v, int shooter, const std::string names[2]) {
     const std::string& who = names[shooter - 1];
     const std::string& winner = names[v.winner - 1];
@@ -104,8 +144,12 @@ std::string placement_problem(const Game& game, Vec2 spot) {
         return "that is off the cloth";
     if (game.ball_in_hand() == BallInHand::kitchen && spot.x > game.table().head_string_x())
         return "in the kitchen only (left of the head string)";
+    if (game.ball_in_hand() == BallInHand::d && !in_snooker_d(game.table(), spot))
+        return "in the D only";
     if (const int touched = ball_touching(game.balls(), spot, R, 0); touched >= 0)
-        return "it would touch the " + std::to_string(touched);
+        return "it would touch the " + (game.type() == GameType::snooker
+                                            ? snooker_ball_name(touched)
+                                            : std::to_string(touched));
     return "not allowed there";
 }
 
@@ -115,6 +159,19 @@ std::string verdict_message(const Verdict& v, int shooter, const std::string nam
     const std::string& next = names[v.next_shooter - 1];
     if (v.stalemate_rerack)
         return "Stalemate: " + next + " breaks a new rack";
+    if (v.foul != Foul::none && v.penalty > 0) {
+        // Snooker: the points go to the opponent, who then chooses or plays from the D.
+        const std::string& other = names[2 - shooter];
+        std::string m = std::string(v.miss ? "Foul and a miss: " : "Foul: ") + foul_words(v.foul) +
+                        " \u2014 " + std::to_string(v.penalty) + " points to " + other;
+        if (v.chooser != 0)
+            return m + "; " + names[v.chooser - 1] + " chooses";
+        if (v.ball_in_hand == BallInHand::d)
+            return m + "; " + next + " has ball in hand in the D";
+        return m + "; " + next + " to play";
+    }
+    if (v.points > 0 && v.next_shooter == shooter)
+        return names[shooter - 1] + " scores " + std::to_string(v.points) + " and plays on";
     if (v.foul != Foul::none) {
         std::string m = "Foul: " + foul_words(v.foul);
         if (v.ball_in_hand != BallInHand::none)

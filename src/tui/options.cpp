@@ -16,6 +16,15 @@ std::optional<int> parse_race_to(std::string_view text) {
     return n;
 }
 
+std::optional<int> parse_best_of(std::string_view text) {
+    int n = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (ec != std::errc{} || end != text.data() + text.size() || n < 1 || n > 2 * max_race_to - 1 ||
+        n % 2 == 0)
+        return std::nullopt;
+    return n;
+}
+
 std::optional<GameOptions> parse_game_options(const std::vector<std::string>& args,
                                               std::string& error, GameOptions o) {
     for (std::size_t i = 0; i < args.size(); ++i) {
@@ -123,7 +132,7 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
                 return std::nullopt;
             const auto g = parse_game_type(*v);
             if (!g) {
-                error = "unknown game '" + *v + "' (8ball, 8ball-bar, 9ball or 10ball)";
+                error = "unknown game '" + *v + "' (8ball, 8ball-bar, 9ball, 10ball or snooker)";
                 return std::nullopt;
             }
             o.setup.game = *g;
@@ -160,6 +169,18 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
                 return std::nullopt;
             }
             o.race_to = *n;
+        } else if (a == "--best-of") {
+            // Snooker says a match of frames so: best of 5 is a race to 3.
+            const std::string* v = value();
+            if (!v)
+                return std::nullopt;
+            const auto n = parse_best_of(*v);
+            if (!n) {
+                error = "--best-of takes an odd number of frames from 1 to " +
+                        std::to_string(2 * max_race_to - 1) + ", not '" + *v + "'";
+                return std::nullopt;
+            }
+            o.race_to = race_for_best_of(*n);
         } else if (a == "--breaks") {
             const std::string* v = value();
             if (!v)

@@ -44,6 +44,10 @@ struct GameOptions {
 /// max_race_to; nothing otherwise.
 std::optional<int> parse_race_to(std::string_view text);
 
+/// Parses a match's length in frames for --best-of: an odd whole number from 1 to
+/// 2 * max_race_to - 1; nothing otherwise.
+std::optional<int> parse_best_of(std::string_view text);
+
 /// Parses the game's options; on error returns nothing and sets `error`.
 /// `defaults` (from the config file) are what the command line starts from.
 std::optional<GameOptions> parse_game_options(const std::vector<std::string>& args,

@@ -165,6 +165,17 @@ struct View {
     int racks_won[2] = {0, 0};      ///< racks each player has won in the match
     int fouls[2] = {0, 0};          ///< consecutive fouls of each player (9-, 10-ball)
     bool practice = false;          ///< practice: one player, no groups or fouls in the panel
+    // Snooker's score sheet for the panel (game == snooker, not practice).
+    int scores[2] = {0, 0};         ///< snooker: each player's points in the frame
+    int current_break = 0;          ///< snooker: the points of the visit at the table so far
+    int highest_break[2] = {0, 0};  ///< snooker: each player's highest break of the frame
+    BallOn ball_on = BallOn::red;   ///< snooker: what the player at the table is on
+    bool free_ball = false;         ///< snooker: a free ball, any ball may be nominated
+    int nominated = 0;              ///< snooker: the colour (or free ball) nominated, 0: none
+    bool nomination_chosen = false; ///< snooker: the player picked it (else the aim's ball)
+    int lowest_colour = 0;          ///< snooker: the colour on once the reds are gone
+    int points_remaining = 0;       ///< snooker: the points still on the table
+    int best_of = 0;                ///< snooker: frames of the match (best of N), 0: one frame
     std::string overlay; ///< a box of text (questions, game over), if any, clear of the balls
     std::vector<std::string> chat; ///< a hall table's chat, oldest first: the last lines show
     bool hall = false;             ///< a hall table: q leaves it, Tab opens the chat

@@ -1,0 +1,50 @@
+#include "tui/snooker_panel.hpp"
+
+#include <algorithm>
+
+#include "tui/messages.hpp"
+
+namespace termpool::tui {
+
+bool snooker_panel(const View& v) {
+    return v.game == GameType::snooker && !v.practice;
+}
+
+std::string frames_text(const View& v) {
+    if (v.best_of <= 1)
+        return "";
+    return "Frames " + std::to_string(std::max(0, v.racks_won[0])) + "-" +
+           std::to_string(std::max(0, v.racks_won[1])) + " (best of " + std::to_string(v.best_of) +
+           ")";
+}
+
+std::string high_break_text(const View& v, int player) {
+    const int high = v.highest_break[player == 2 ? 1 : 0];
+    return high > 0 ? "high break " + std::to_string(high) : "";
+}
+
+std::string ball_on_text(const View& v) {
+    const std::string nominated = snooker_ball_name(v.nominated);
+    if (v.free_ball)
+        return nominated.empty() ? "free ball" : "free ball: " + nominated;
+    switch (v.ball_on) {
+    case BallOn::red:
+        return "on red";
+    case BallOn::colour:
+        if (nominated.empty())
+            return "on a colour";
+        return v.nomination_chosen ? "nominated " + nominated : "on a colour: " + nominated;
+    case BallOn::in_order:
+        return v.lowest_colour ? "on " + snooker_ball_name(v.lowest_colour) : "on a colour";
+    }
+    return "";
+}
+
+std::string snooker_status(const View& v, const std::string& gap) {
+    std::string s = v.current_break > 0 ? "break " + std::to_string(v.current_break) + gap : "";
+    s += ball_on_text(v);
+    s += gap + std::to_string(std::max(0, v.points_remaining)) + " left";
+    return s;
+}
+
+} // namespace termpool::tui
