@@ -8,6 +8,7 @@
 
 #include "tui/app.hpp"
 #include "tui/messages.hpp"
+#include "tui/nomination.hpp"
 #include "tui/pocket_cells.hpp"
 
 namespace termpool::tui {
@@ -55,64 +56,18 @@ bool App::snooker_play() const {
 }
 
 void App::propose_nomination() {
-    // Snooker: after a red (or with a free ball) the shot names its ball on; the aimed ball is
-    // proposed, as the pool call proposes its pocket, until the player names another.
-    if (!snooker_play() || !game().nomination_owed()) {
-        aim_.nominated = 0;
-        aim_.nomination_chosen = false;
-        return;
-    }
-    if (aim_.nomination_chosen)
-        return;
-    const int aimed = aim_.preview_ball;
-    if (game().snooker().free_ball) {
-        // Any ball not on may be the free ball; aiming at a ball on is playing it.
-        const std::vector<int> on = game().balls_on();
-        aim_.nominated =
-            aimed > 0 && std::find(on.begin(), on.end(), aimed) == on.end() ? aimed : 0;
-    } else {
-        aim_.nominated = is_snooker_colour(aimed) ? aimed : 0;
-    }
+    if (snooker_play())
+        tui::propose_nomination(game(), aim_);
 }
 
 bool App::nominate_key(const std::string& text) {
-    // Snooker's digits name a colour by its value (2 yellow .. 7 black); the pool keys for
-    // pockets and safety mean nothing here.
-    if (text.size() != 1 || text[0] < '0' || text[0] > '9')
-        return false;
-    const int value = text[0] - '0';
-    if (!game().nomination_owed()) {
-        message_ = "No nomination now: " + std::string(game().snooker().ball_on == BallOn::red
-                                                           ? "on a red"
-                                                           : "on the colours in order");
-        return true;
-    }
-    if (value < 2 || value > 7) {
-        message_ = "Nominate a colour by its value: 2 yellow, 3 green, 4 brown, 5 blue, 6 pink, "
-                   "7 black";
-        return true;
-    }
-    const int id = snooker_yellow + value - 2;
-    bool on_table = false;
-    for (const Ball& b : game().balls())
-        on_table = on_table || (b.id == id && b.state != MotionState::pocketed);
-    if (!on_table) {
-        message_ = "The " + snooker_ball_name(id) + " is not on the table";
-        return true;
-    }
-    if (aim_.nomination_chosen && aim_.nominated == id) {
-        // The same key again: back to the aimed ball.
-        aim_.nomination_chosen = false;
-        propose_nomination();
-        message_ = "Nomination: the ball aimed at";
-        return true;
-    }
-    aim_.nominated = id;
-    aim_.nomination_chosen = true;
-    message_ = name(game().shooter()) +
-               (game().snooker().free_ball ? " nominates the free ball: " : " nominates ") +
-               snooker_ball_name(id);
-    return true;
+    // Snooker's digits name a colour by its value; the pool keys for pockets and safety mean
+    // nothing here.
+    const std::optional<std::string> said =
+        nomination_key(game(), aim_, text, name(game().shooter()));
+    if (said)
+        message_ = *said;
+    return said.has_value();
 }
 
 void App::handle_aiming_key(int key, const std::string& text) {

@@ -10,6 +10,7 @@
 
 #include "tui/app.hpp"
 #include "tui/messages.hpp"
+#include "tui/nomination.hpp"
 #include "tui/save_file.hpp"
 
 namespace termpool::tui {
@@ -180,9 +181,7 @@ void App::shoot() {
     if (snooker_play()) {
         // The nomination the player named; without one the referee takes the ball hit first,
         // the aimed ball the panel proposed.
-        call.call = {};
-        if (game().nomination_owed() && aim_.nomination_chosen)
-            call.call.ball = aim_.nominated;
+        call.call = nomination_call(game(), aim_);
     }
     aim_.power = power;
     if (in_hall()) {

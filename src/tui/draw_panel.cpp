@@ -494,6 +494,10 @@ void draw_below_panel(const Frame& f) {
                 worst = it;
         left.erase(worst);
     }
+    // Snooker's frame score lost its row with the title: it goes under the message.
+    if (beside && snooker_panel(v) && !frames_text(v).empty() &&
+        (left.empty() || left.front().drop != 4))
+        call = wrapped(frames_text(v), mid_w, bold);
     for (std::size_t i = 0; i < left.size(); ++i)
         draw_line(p, x, l.panel_y + static_cast<int>(i), left[i].line,
                   left[i].drop == 1 || left[i].drop == 2 ? right - x : pw);
