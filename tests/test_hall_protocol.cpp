@@ -74,6 +74,7 @@ TEST_CASE("hall protocol: every client message reads back", "[hall]") {
     client_round_trip(Create{GameType::ten_ball, TableSize::nine_foot, 3});
     client_round_trip(Create{GameType::eight_ball_bar, TableSize::eight_foot, 1});
     client_round_trip(Create{GameType::eight_ball, TableSize::snooker, 3});
+    client_round_trip(Create{GameType::snooker, TableSize::snooker, 3});
     client_round_trip(Sit{12, 2});
     client_round_trip(Watch{9999});
     client_round_trip(Leave{});

@@ -1041,3 +1041,35 @@ TEST_CASE("hall client: a server line longer than 4 KiB ends the connection, nev
     CHECK(client.fd() == -1); // nothing left for a loop to wait on
     CHECK(std::chrono::steady_clock::now() - start < kWait);
 }
+
+TEST_CASE("hall server: a snooker table is a snooker table, and a concession ends the frame",
+          "[hall][snooker]") {
+    test::TempDir dir("termpool-hall");
+    RunningServer running(dir.path());
+    HallClient ann = connected(dir.path(), "Ann");
+    HallClient bob = connected(dir.path(), "Bob");
+    // Asked for on a 7 ft table (create_table's size): played on the snooker table.
+    const int table = create_table(ann, GameType::snooker);
+    sit(ann, table, 1);
+    sit(bob, table, 2);
+    REQUIRE(ann.match(table));
+    CHECK(ann.match(table)->setup().game == GameType::snooker);
+    CHECK(ann.match(table)->setup().table == TableSize::snooker);
+    CHECK(ann.match(table)->table().size == TableSize::snooker);
+    // The cue ball placed in the D, the break played, then the player to act concedes.
+    for (int step = 0; step < 2; ++step)
+        play_one(ann, bob, table, {&ann, &bob});
+    const int conceding = ann.match(table)->to_act();
+    REQUIRE((conceding == 1 || conceding == 2));
+    RecordedAction concede;
+    concede.kind = RecordedAction::Kind::choose;
+    concede.choice = Choice::concede;
+    const std::size_t seq = ann.match(table)->record().actions.size() + 1;
+    REQUIRE((conceding == 1 ? ann : bob).send(Act{concede}));
+    await_action(ann, table, seq);
+    await_action(bob, table, seq);
+    CHECK(ann.match(table)->game().winner() == 3 - conceding);
+    CHECK(ann.match(table)->game().win_reason() == WinReason::conceded);
+    CHECK(bob.match(table)->state_hash() == ann.match(table)->state_hash());
+    CHECK(saved_hash(dir.path(), table) == ann.match(table)->state_hash());
+}

@@ -318,18 +318,3 @@ TEST_CASE("a frame against the computer in tmux: in the D, the break, the score 
         t.keys("y");
     }
 }
-TEST_CASE("dump", "[.dump]") {
-    const View v = frame_view();
-    for (const auto& [w, h] : {std::pair{120, 24}, {160, 30}, {41, 15}, {120, 20}}) {
-        const Layout l = make_layout(table, w, h);
-        const Grid g = render(v, l, {256, true}, w, h);
-        std::printf("%dx%d below=%d panel %d,%d %dx%d\n", w, h, l.panel_below, l.panel_x, l.panel_y,
-                    l.panel_width, l.panel_height);
-        for (int y = 0; y < g.height; ++y) {
-            std::string row;
-            for (int x = 0; x < g.width; ++x)
-                row += g.at(x, y).glyph;
-            std::printf("%s\n", row.c_str());
-        }
-    }
-}

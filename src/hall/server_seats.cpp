@@ -17,6 +17,8 @@ std::variant<Match, MatchError> new_match(const Create& create, std::uint64_t se
     GameRecord header;
     header.setup.game = create.game;
     header.setup.table = create.size;
+    // Snooker is played on the snooker table whatever size was asked for: the lobby says so.
+    header.setup.table = table_played(header.setup);
     header.seed = seed;
     header.race_to = create.race_to;
     return Match::start(header, seed);

@@ -135,6 +135,9 @@ bool App::show_computer_aim(Clock::time_point now) {
     aim_.follow = move.shot.strike.follow;
     aim_.elevation_deg = move.shot.strike.elevation_deg;
     aim_.power = pacing_.power_at(t, game().is_break());
+    // Snooker: the panel shows the computer's own nomination, if it names one.
+    aim_.nominated = move.shot.call.call.ball;
+    aim_.nomination_chosen = snooker_play() && game().nomination_owed() && aim_.nominated != 0;
     update_preview();
     return pacing_.due(now);
 }
