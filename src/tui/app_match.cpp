@@ -58,12 +58,17 @@ std::string App::game_over_text() const {
     const std::string summary = "\n\n" + stats_summary(match_.record().names, figures);
     if (!s.is_race())
         return message_ + summary + "\n\nr  rematch (loser breaks)\nn  new game\nq  quit";
-    const std::string race = "Race to " + std::to_string(s.race_to) + ": " + score_words();
+    // Snooker says a match of frames as best of N.
+    const bool frames = snooker_play();
+    const std::string race = (frames ? "Best of " + std::to_string(2 * s.race_to - 1) + " frames"
+                                     : "Race to " + std::to_string(s.race_to)) +
+                             ": " + score_words();
     if (const int winner = s.match_winner())
         return message_ + "\n\n" + name(winner) + " wins the match\n" + race + summary +
                "\n\nr  rematch (loser breaks)\nn  new match\nq  quit";
-    return message_ + "\n\n" + race + summary + "\n\nEnter  next rack (" +
-           name(match_.next_breaker()) + " breaks)\nq      quit (the match is saved)";
+    return message_ + "\n\n" + race + summary + "\n\nEnter  next " +
+           (frames ? "frame (" : "rack (") + name(match_.next_breaker()) +
+           " breaks)\nq      quit (the match is saved)";
 }
 
 bool App::computer_to_act() const {

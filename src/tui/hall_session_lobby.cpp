@@ -150,8 +150,8 @@ std::string HallSession::create_form_text() const {
            "t  table     " +
            table_size_name(create_.size) + "\n" +
            (create_.game == GameType::snooker
-                ? "+- best of   " + std::to_string(2 * create_.race_to - 1) + " frames" +
-                      (create_.race_to == 1 ? " (a single frame)" : "")
+                ? "+- best of   " + std::to_string(2 * create_.race_to - 1) +
+                      (create_.race_to == 1 ? " (a single frame)" : " frames")
                 : "+- race to   " + std::to_string(create_.race_to) +
                       (create_.race_to == 1 ? " (a single game)" : "")) +
            "\n"
