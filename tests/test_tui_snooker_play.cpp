@@ -318,3 +318,36 @@ TEST_CASE("a frame against the computer in tmux: in the D, the break, the score 
         t.keys("y");
     }
 }
+
+TEST_CASE("C concedes the frame in tmux once y confirms it", "[tui][e2e][snooker][snooker-play]") {
+    using namespace tmux_session;
+    if (!have_tmux()) {
+        WARN("tmux is missing: the end-to-end test of a concession is skipped");
+        return;
+    }
+    const ScratchDir scratch("termpool-snooker-concede");
+    Tmux t;
+    t.start("env XDG_STATE_HOME=" + scratch.path + " XDG_CONFIG_HOME=" + scratch.path +
+                " TERM=xterm-256color LANG=C.UTF-8 " + termpool_binary() +
+                " --game snooker --best-of 3 --player1 Ann --player2 Bob --seed 3",
+            100, 32);
+    REQUIRE(t.wait_for_text("Ann breaks: place the cue ball in the D"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("Left/Right"));
+    // Anything but y keeps the frame going.
+    t.keys("C");
+    REQUIRE(t.wait_for_text("Ann: concede the frame?  y / n"));
+    t.keys("n");
+    REQUIRE(t.wait_for(
+        [](const std::string& s) { return s.find("concede the frame?") == std::string::npos; }));
+    CHECK(t.screen().find("concedes") == std::string::npos);
+    t.keys("C");
+    REQUIRE(t.wait_for_text("Ann: concede the frame?  y / n"));
+    t.keys("y");
+    CHECK(t.wait_for_text("Ann concedes the frame"));
+    CHECK(t.wait_for_text("Best of 3 frames: Ann 0, Bob 1"));
+    // The next frame, Bob to break from the D; the panel has the frame score.
+    t.keys("Enter");
+    CHECK(t.wait_for_text("Frame 2: Bob breaks: place the cue ball in the D"));
+    CHECK(t.wait_for_text("Frames 0-1 (best of 3)"));
+}
