@@ -4,10 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <termpool/snooker_layout.hpp>
-
 #include "tui/app.hpp"
-#include "tui/messages.hpp"
 #include "tui/nomination.hpp"
 #include "tui/pocket_cells.hpp"
 
