@@ -4,11 +4,15 @@
 // --best-of option, and the real binary's frame against the computer in tmux: the cue ball placed
 // in the D, the break, and the score panel.
 #include <catch2/catch.hpp>
+#include <fstream>
 #include <string>
+#include <termpool/match.hpp>
 #include <termpool/rack.hpp>
+#include <termpool/record.hpp>
 #include <termpool/setup.hpp>
 #include <termpool/snooker_layout.hpp>
 #include <termpool/table_physics.hpp>
+#include <variant>
 #include <vector>
 
 #include "tmux_session.hpp"
@@ -350,4 +354,80 @@ TEST_CASE("C concedes the frame in tmux once y confirms it", "[tui][e2e][snooker
     t.keys("Enter");
     CHECK(t.wait_for_text("Frame 2: Bob breaks: place the cue ball in the D"));
     CHECK(t.wait_for_text("Frames 0-1 (best of 3)"));
+}
+
+namespace {
+
+// A snooker frame between two pro computers up to the first shot that owes a nomination (a red
+// just potted), saved with people in both seats (Ann and Bob); empty if none came.
+std::string frame_owing_a_nomination() {
+    GameRecord header;
+    header.setup.game = GameType::snooker;
+    header.setup.table = TableSize::snooker;
+    header.seed = 11;
+    header.names[0] = "Ann";
+    header.names[1] = "Bob";
+    header.computers[0] = header.computers[1] = Level::pro;
+    auto started = Match::start(header, 5);
+    REQUIRE(std::holds_alternative<Match>(started));
+    Match match = std::move(std::get<Match>(started));
+    for (int step = 0; step < 400; ++step) {
+        const PendingAction p = match.pending();
+        if (p.kind == Pending::shoot && match.game().nomination_owed() &&
+            !match.game().snooker().free_ball) {
+            match.seat_computer(1, std::nullopt);
+            match.seat_computer(2, std::nullopt);
+            return format_record(match.record());
+        }
+        if (p.kind == Pending::over || p.kind == Pending::next_rack)
+            return "";
+        const std::optional<ComputerMove> move = match.computer_move();
+        REQUIRE(move);
+        if (move->kind == Pending::place)
+            REQUIRE(match.place(p.player, move->spot) == MatchError::none);
+        else if (move->kind == Pending::choose)
+            REQUIRE(match.choose(p.player, move->choice) == MatchError::none);
+        else
+            REQUIRE(std::holds_alternative<PlayedShot>(
+                match.shoot(p.player, move->shot.strike, move->shot.call)));
+    }
+    return "";
+}
+
+} // namespace
+
+TEST_CASE("after a red the keys 2-7 nominate a colour in tmux, and the shot calls it",
+          "[tui][e2e][snooker][snooker-play]") {
+    using namespace tmux_session;
+    if (!have_tmux()) {
+        WARN("tmux is missing: the end-to-end test of the nomination is skipped");
+        return;
+    }
+    const std::string saved = frame_owing_a_nomination();
+    REQUIRE_FALSE(saved.empty());
+    const ScratchDir scratch("termpool-snooker-nominate");
+    const std::string file = scratch.path + "/frame.save";
+    std::ofstream(file) << saved;
+    Tmux t;
+    t.start("env XDG_STATE_HOME=" + scratch.path + " XDG_CONFIG_HOME=" + scratch.path +
+                " TERM=xterm-256color LANG=C.UTF-8 " + termpool_binary() + " --resume " + file +
+                "; sleep 60",
+            100, 32);
+    REQUIRE(t.wait_for_text("Game resumed"));
+    CHECK(t.wait_for_text("2-7 nominates a colour"));
+    // The aimed colour is proposed until one is named.
+    CHECK(t.wait_for_text("on a colour"));
+    t.keys("7");
+    CHECK(t.wait_for_text("nominates black"));
+    CHECK(t.wait_for_text("nominated black"));
+    // The same key again: back to the aimed ball; then the pink.
+    t.keys("7");
+    CHECK(t.wait_for_text("Nomination: the ball aimed at"));
+    t.keys("6");
+    CHECK(t.wait_for_text("nominated pink"));
+    t.keys("Space");
+    // The shot is saved with its nomination: the pink, ball 20, no pocket.
+    CHECK(t.wait_for([&](const std::string&) {
+        return file_text(file).find(" call 20 0") != std::string::npos;
+    }));
 }
