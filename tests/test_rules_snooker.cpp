@@ -627,6 +627,11 @@ TEST_CASE("snooker through the Match: nominations, choices, concession and repla
     REQUIRE(m.concede(conceder) == MatchError::none);
     CHECK(m.game().winner() == 3 - conceder);
     CHECK(m.pending().kind == Pending::over);
+    // The figures count the frame: won by the other player, played by both.
+    CHECK(m.tally().of(3 - conceder).racks_won == 1);
+    CHECK(m.tally().of(conceder).racks_won == 0);
+    CHECK(m.tally().of(1).racks_played == 1);
+    CHECK(m.tally().of(2).racks_played == 1);
 
     const std::string text = format_record(m.record());
     CHECK(text.find("game snooker") != std::string::npos);
@@ -642,6 +647,7 @@ TEST_CASE("snooker through the Match: nominations, choices, concession and repla
     CHECK(r.game().score_of(1) == m.game().score_of(1));
     CHECK(r.game().score_of(2) == m.game().score_of(2));
     CHECK(r.game().win_reason() == WinReason::conceded);
+    CHECK(r.tally().both() == m.tally().both());
 }
 
 TEST_CASE("snooker: a pool record may not call a snooker ball", "[snooker][record]") {

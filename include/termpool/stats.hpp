@@ -62,6 +62,9 @@ public:
     /// `call` as the game took it (push_out only when a push-out was allowed) and `verdict`
     /// as Game::apply returned it. A verdict with a winner ends the rack.
     void on_shot(int shooter, bool was_break, const ShotCall& call, const Verdict& verdict);
+    /// Hears a rack that ended without a shot, a snooker frame conceded: `winner` (1 or 2) won
+    /// it, and the visit at the table is over.
+    void on_conceded(int winner);
 
     /// The figures of `player` (1 or 2) so far.
     const PlayerStats& of(int player) const { return stats_[player == 2 ? 1 : 0]; }

@@ -387,6 +387,7 @@ MatchError Match::concede(int player) {
         return MatchError::over;
     if (!game_.concede(player))
         return MatchError::not_offered;
+    tally_.on_conceded(game_.winner());
     RecordedAction action;
     action.kind = RecordedAction::Kind::choose;
     action.choice = Choice::concede;

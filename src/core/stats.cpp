@@ -86,6 +86,15 @@ void StatsTally::on_shot(int shooter, bool was_break, const ShotCall& call, cons
         visitor_ = 0;
 }
 
+void StatsTally::on_conceded(int winner) {
+    if (winner != 1 && winner != 2)
+        return;
+    ++stats_[0].racks_played;
+    ++stats_[1].racks_played;
+    ++stats_[winner - 1].racks_won;
+    visitor_ = 0;
+}
+
 std::variant<StatsTally, RecordError> tally_record(const GameRecord& record) {
     const auto replayed = Match::replay(record);
     if (const RecordError* problem = std::get_if<RecordError>(&replayed))
