@@ -59,6 +59,20 @@ TEST_CASE("the lobby names a snooker table whole where it has the Size column",
     CHECK(text.find("snooker 5") != std::string::npos);
 }
 
+TEST_CASE("the lobby gives a snooker match as best of N frames", "[tui][lobby][snooker]") {
+    LobbyView v = two_tables();
+    v.tables[1].game = GameType::snooker;
+    v.tables[1].size = TableSize::snooker;
+    v.tables[1].race_to = 3;
+    const std::string text = all_text(render_lobby(v, Capabilities{}, 100, 32));
+    INFO(text);
+    CHECK(text.find("snooker bo5") != std::string::npos);
+    // A single frame is 1, as a single game is.
+    v.tables[1].race_to = 1;
+    CHECK(all_text(render_lobby(v, Capabilities{}, 100, 32)).find("snooker 1") !=
+          std::string::npos);
+}
+
 TEST_CASE("the lobby lists the tables, who is where, the message and the keys", "[tui][lobby]") {
     const Capabilities caps;
     for (const auto& [w, h] : {std::pair{80, 24}, std::pair{100, 32}, std::pair{200, 60}}) {

@@ -43,7 +43,12 @@ std::string padded(const std::string& text, int columns) {
 std::string table_row(const hall::TableView& t, int seat_w, bool extras) {
     std::string row = padded(std::to_string(t.number), 5) + padded(game_title(t.game), 18);
     if (extras)
-        row += padded(table_size_name(t.size), size_w) + padded(std::to_string(t.race_to), 5);
+        // A snooker match is best of N frames: "bo5" for a race to 3.
+        row += padded(table_size_name(t.size), size_w) +
+               padded(t.game == GameType::snooker && t.race_to > 1
+                          ? "bo" + std::to_string(2 * t.race_to - 1)
+                          : std::to_string(t.race_to),
+                      5);
     row += padded(seat_words(t.seats[0]), seat_w) + " " + padded(seat_words(t.seats[1]), seat_w) +
            " " + padded(hall::table_state_name(t.state), 8);
     if (extras)
