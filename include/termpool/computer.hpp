@@ -30,6 +30,10 @@ public:
     Vec2 place_cue_ball(const Game& game);
     /// The option to take when the game owes this player a choice.
     Choice choose(const Game& game);
+    /// Snooker: true when the player to act (the chooser, else the shooter) should concede
+    /// the frame: it is behind by more points than remain on the table, with three reds or
+    /// fewer left. Always false in the other games.
+    bool concedes(const Game& game) const;
     /// The next shot (the game must have no choice owed and the cue ball on the table).
     ComputerShot shot(const Game& game);
     /// Shots simulated so far by this player's searches.
