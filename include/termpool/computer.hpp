@@ -19,6 +19,12 @@ struct ComputerShot {
     double score = 0; ///< how good the referee found the planned shot
 };
 
+/// How easy the best pot is for the player on now, 0 (none in sight) to about 1: the legal
+/// balls and pockets with clear lines, rated by the cut and the distances; in snooker each
+/// ball weighted by what it is worth. The search counts it for position and, for the
+/// opponent, against a safety.
+double pot_ease(const Game& game);
+
 /// One computer player. Its decisions depend only on the game and its own seeded stream.
 class ComputerPlayer {
 public:

@@ -247,6 +247,10 @@ double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue
 
 } // namespace
 
+double pot_ease(const Game& game) {
+    return game.type() == GameType::snooker ? snooker_next_quality(game) : next_shot_quality(game);
+}
+
 ComputerPlayer::ComputerPlayer(Level level, std::uint64_t seed) : level_(level), rng_(seed) {}
 
 ComputerShot ComputerPlayer::search(const Game& game) {
