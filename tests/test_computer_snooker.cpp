@@ -127,6 +127,32 @@ TEST_CASE("snooker computer: with no pot on it plays safe", "[computer][snooker]
     }
 }
 
+TEST_CASE("snooker computer: it takes a free ball that gives a pot", "[computer][snooker]") {
+    // On a red, with a free ball: the only red hidden behind the pink (the player is
+    // snookered), the black straight into the top corner. Nominated as the free ball the black
+    // scores 1 and is re-spotted.
+    const Table& t = snooker_table();
+    const Vec2 black = snooker_spot(t, snooker_black);
+    const Vec2 cue = behind(black, 6, 0.4);
+    const Vec2 pink = snooker_spot(t, snooker_pink);
+    const Vec2 red = pink + normalized(pink - cue) * 0.1;
+    const Game base = frame(layout(cue, {{1, red}}), BallOn::red);
+    REQUIRE(base.shooter_snookered());
+    SnookerState state = base.snooker();
+    state.free_ball = true;
+    const Game game = Game::from_snooker_position(t, base.params(), base.balls(), 1, state);
+    REQUIRE(game.nomination_owed());
+    ComputerPlayer computer(Level::pro, 4);
+    const ComputerShot shot = computer.shot(game);
+    CHECK(shot.call.call.ball == snooker_black);
+    Game check = game;
+    const Verdict v = check.play(shot.planned, shot.call);
+    CHECK(v.foul == Foul::none);
+    CHECK(v.nominated == snooker_black);
+    CHECK(v.points == 1);
+    CHECK(check.snooker().ball_on == BallOn::colour);
+}
+
 TEST_CASE("snooker computer: it concedes only a frame it cannot win", "[computer][snooker]") {
     ComputerPlayer computer(Level::hard, 1);
     const Table& t = snooker_table();
