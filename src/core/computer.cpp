@@ -266,10 +266,14 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     }
     const double R = game.params().ball_radius;
     const bool snooker = game.type() == GameType::snooker;
-    const std::vector<double> speeds =
-        level_ == Level::easy ? std::vector<double>{2.5} : std::vector<double>{1.5, 2.5, 4.0};
-    const std::vector<double> spins =
-        level_ == Level::easy ? std::vector<double>{0.0} : std::vector<double>{-0.3, 0.0, 0.3};
+    // Snooker's table is longer and its position play finer: a softer pace and a stronger
+    // screw and follow besides the pool set.
+    const std::vector<double> speeds = level_ == Level::easy ? std::vector<double>{2.5}
+                                       : snooker ? std::vector<double>{1.0, 1.5, 2.5, 4.0}
+                                                 : std::vector<double>{1.5, 2.5, 4.0};
+    const std::vector<double> spins = level_ == Level::easy ? std::vector<double>{0.0}
+                                      : snooker ? std::vector<double>{-0.45, -0.2, 0.0, 0.2, 0.45}
+                                                : std::vector<double>{-0.3, 0.0, 0.3};
 
     struct Candidate {
         Strike strike;
