@@ -218,7 +218,10 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
             stats.balls_potted += static_cast<std::uint64_t>(
                 std::ranges::count_if(p.verdict.pocketed, [](int id) { return id != 0; }));
         }
-        if (!p.was_break && shot.call.call.ball != 0) {
+        // A snooker nomination without a pocket is a safety on a colour, not a pot tried.
+        const bool pot_tried =
+            shot.call.call.ball != 0 && (o.game != GameType::snooker || shot.call.call.pocket != 0);
+        if (!p.was_break && pot_tried) {
             ++stats.pot_attempts;
             if (std::ranges::count(p.verdict.pocketed, shot.call.call.ball) &&
                 p.verdict.foul == Foul::none)

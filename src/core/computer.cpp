@@ -331,10 +331,13 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     // Snooker safeties: the ball on hit full to thin at a touch, a medium pace and firmly
     // (the cue ball sent back up the table to baulk), and, where the straight line is
     // blocked, off one cushion (the escape from a snooker). The call is a safety; with a
-    // nomination owed the referee takes the colour hit first.
+    // nomination owed it names the ball played at, pocket 0 (no pot in mind).
     auto add_snooker_safeties = [&](const Ball& object) {
         ShotCall call;
-        call.call.safety = true;
+        if (game.nomination_owed())
+            call.call.ball = object.id;
+        else
+            call.call.safety = true;
         const Vec2 to_ball = object.position - cue->position;
         if (!blocked(game.balls(), cue->position, object.position, {0, object.id}, R)) {
             for (const double offset : {-1.8, -1.4, -0.9, -0.4, 0.0, 0.4, 0.9, 1.4, 1.8}) {
