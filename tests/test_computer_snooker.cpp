@@ -53,6 +53,21 @@ Vec2 behind(Vec2 ball, int pocket, double distance) {
 // Reds well out of the way of the shots below, near the baulk side cushion.
 const std::vector<std::pair<int, Vec2>> spare_reds{{2, {1.1, 1.6}}, {3, {1.25, 1.62}}};
 
+// A miss by player 1 from `balls`: the cue ball hits the yellow first and ends at `left`.
+Game after_miss(const std::vector<Ball>& balls, Vec2 left) {
+    Game g = frame(balls, BallOn::red);
+    ShotResult r;
+    r.events = {{0.1, EventKind::ball_ball, 0, snooker_yellow}};
+    r.balls = g.balls();
+    for (Ball& b : r.balls)
+        if (b.id == 0)
+            b.position = left;
+    const Verdict v = g.apply({}, r);
+    REQUIRE(v.miss);
+    REQUIRE(g.chooser() == 2);
+    return g;
+}
+
 } // namespace
 
 TEST_CASE("snooker computer: it pots an easy red", "[computer][snooker]") {
@@ -151,6 +166,32 @@ TEST_CASE("snooker computer: it takes a free ball that gives a pot", "[computer]
     CHECK(v.nominated == snooker_black);
     CHECK(v.points == 1);
     CHECK(check.snooker().ball_on == BallOn::colour);
+}
+
+TEST_CASE("snooker computer: after a miss it plays on when left an easy pot",
+          "[computer][snooker]") {
+    const Vec2 red{1.4, 0.3};
+    auto reds = spare_reds;
+    reds.push_back({1, red});
+    const Table& t = snooker_table();
+    const Game g = after_miss(layout({1.0, t.width / 2}, reds), behind(red, 2, 0.45));
+    ComputerPlayer computer(Level::hard, 2);
+    CHECK(computer.choose(g) == Choice::play_on);
+}
+
+TEST_CASE("snooker computer: it does not put back an offender who missed an easy pot",
+          "[computer][snooker]") {
+    // The offender was straight on a red; the miss left the cue ball tight on the baulk
+    // cushion, behind the brown: nothing easy for anyone there.
+    const Vec2 red{1.4, 0.3};
+    auto reds = spare_reds;
+    reds.push_back({1, red});
+    const Table& t = snooker_table();
+    const Game g = after_miss(layout(behind(red, 2, 0.45), reds), {R + 0.001, t.width / 2});
+    ComputerPlayer computer(Level::hard, 2);
+    const Choice c = computer.choose(g);
+    CHECK(c != Choice::replace_and_replay);
+    CHECK(std::ranges::count(g.choices(), c) == 1);
 }
 
 TEST_CASE("snooker computer: it concedes only a frame it cannot win", "[computer][snooker]") {
