@@ -171,7 +171,7 @@ double snooker_next_quality(const Game& game) {
 // Snooker: the shot's worth from the shooter's side. Points scored and given away count at
 // their value; a kept table is worth more with an easy ball to follow; a table handed over
 // is worth less the easier the opponent's pot, and more when the opponent is snookered or
-// the cue ball is left far from the balls on, on a cushion (a safety).
+// the cue ball is left far from the balls on, on a cushion, in baulk (a safety).
 double snooker_score(const Verdict& v, int shooter, const Game& after, bool position) {
     if (v.winner != 0)
         return v.winner == shooter ? 1000 : -1000;
@@ -205,6 +205,9 @@ double snooker_score(const Verdict& v, int shooter, const Game& after, bool posi
                               R;
     if (to_cushion < 2 * R)
         s += 6;
+    // Back in baulk, with the balls on up the table, is the classic safe leave.
+    if (cue->position.x < snooker_baulk_x(t) && nearest > 0.25 * t.length)
+        s += 8;
     return s;
 }
 
