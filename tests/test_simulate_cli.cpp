@@ -480,6 +480,10 @@ TEST_CASE("selfplay plays short games to their end and sums them up", "[cli][sel
         CHECK(games == 3);
         CHECK(r.out.find("p1 easy") != std::string::npos);
         CHECK(r.out.find("fouls per game") != std::string::npos);
+        // Snooker's summary has the frame score, the highest break and the pots per visit.
+        const bool snooker = std::string(game) == "snooker";
+        CHECK((r.out.find("highest break") != std::string::npos) == snooker);
+        CHECK((r.out.find("pots per visit") != std::string::npos) == snooker);
     }
     CHECK(run(dir, "selfplay --games 2 --p1 easy").status == 2);
     CHECK(run(dir, "selfplay --games 2 --p1 easy --p2 grandmaster").status == 2);

@@ -19,6 +19,12 @@ struct ComputerShot {
     double score = 0; ///< how good the referee found the planned shot
 };
 
+/// How easy the best pot is for the player on now, 0 (none in sight) to about 1: the legal
+/// balls and pockets with clear lines, rated by the cut and the distances; in snooker each
+/// ball weighted by what it is worth. The search counts it for position and, for the
+/// opponent, against a safety.
+double pot_ease(const Game& game);
+
 /// One computer player. Its decisions depend only on the game and its own seeded stream.
 class ComputerPlayer {
 public:
@@ -30,6 +36,10 @@ public:
     Vec2 place_cue_ball(const Game& game);
     /// The option to take when the game owes this player a choice.
     Choice choose(const Game& game);
+    /// Snooker: true when the player to act (the chooser, else the shooter) should concede
+    /// the frame: it is behind by more points than remain on the table, with three reds or
+    /// fewer left. Always false in the other games.
+    bool concedes(const Game& game) const;
     /// The next shot (the game must have no choice owed and the cue ball on the table).
     ComputerShot shot(const Game& game);
     /// Shots simulated so far by this player's searches.

@@ -168,7 +168,7 @@ public:
     /// judged and recorded.
     std::variant<PlayedShot, MatchError>
     shoot(int player, const Strike& strike, const ShotCall& call, Trajectory* trajectory = nullptr);
-    /// `player` makes the choice owed.
+    /// `player` makes the choice owed; Choice::concede, never owed, is `concede(player)`.
     MatchError choose(int player, Choice choice);
     /// Snooker: `player`, who is to act, concedes the frame; recorded as `choose concede`.
     /// not_offered in another game.
@@ -189,7 +189,8 @@ public:
 
     /// The move of the computer seated at the player to act (nothing when a person acts, or
     /// the match is over or waits for the next rack). Ask once per decision: the computer's
-    /// stream moves on with each question.
+    /// stream moves on with each question. A snooker computer that concedes (see
+    /// `ComputerPlayer::concedes`) answers with kind choose and Choice::concede.
     std::optional<ComputerMove> computer_move();
     /// Seats the computers afresh, their decisions from `computer_seed` + the seat's number (a
     /// resumed game's computers start new streams).

@@ -39,6 +39,13 @@ struct SeatFigures {
     std::uint64_t simulations = 0;
     std::uint64_t pot_attempts = 0;
     std::uint64_t pots = 0;
+    // Snooker: the frame's score, its highest break, and the visits to the table (a visit is
+    // a run of shots by one player) with the balls potted in them.
+    int frame_score = 0;
+    int highest_break = 0;
+    std::uint64_t visits = 0;
+    std::uint64_t balls_potted = 0;
+    std::uint64_t fouls = 0;
 };
 
 struct GameSummary {
@@ -159,6 +166,7 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
     }
     Match& match = std::get<Match>(started);
     bool opponent_shot = false;
+    int last_actor = 0;
     using Clock = std::chrono::steady_clock;
     while (match.pending().kind != Pending::over) {
         if (summary.shots >= max_shots_per_game) {
@@ -200,9 +208,20 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
         ++summary.shots;
         if (actor != header.breaker)
             opponent_shot = true;
-        if (p.verdict.foul != Foul::none)
+        if (actor != last_actor)
+            ++stats.visits;
+        last_actor = actor;
+        if (p.verdict.foul != Foul::none) {
             ++summary.fouls;
-        if (!p.was_break && shot.call.call.ball != 0) {
+            ++stats.fouls;
+        } else {
+            stats.balls_potted += static_cast<std::uint64_t>(
+                std::ranges::count_if(p.verdict.pocketed, [](int id) { return id != 0; }));
+        }
+        // A snooker nomination without a pocket is a safety on a colour, not a pot tried.
+        const bool pot_tried =
+            shot.call.call.ball != 0 && (o.game != GameType::snooker || shot.call.call.pocket != 0);
+        if (!p.was_break && pot_tried) {
             ++stats.pot_attempts;
             if (std::ranges::count(p.verdict.pocketed, shot.call.call.ball) &&
                 p.verdict.foul == Foul::none)
@@ -212,6 +231,10 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
             summary.violation = problem + " after shot " + std::to_string(summary.shots);
             return summary;
         }
+    }
+    for (int seat = 1; seat <= 2; ++seat) {
+        summary.players[seat - 1].frame_score = match.game().score_of(seat);
+        summary.players[seat - 1].highest_break = match.game().snooker().highest_break[seat - 1];
     }
     summary.winner = match.game().winner();
     summary.reason = match.game().win_reason();
@@ -283,6 +306,11 @@ int selfplay_command(const std::vector<std::string>& args) {
             per[p].simulations += r.players[p].simulations;
             per[p].pot_attempts += r.players[p].pot_attempts;
             per[p].pots += r.players[p].pots;
+            per[p].frame_score += r.players[p].frame_score;
+            per[p].highest_break = std::max(per[p].highest_break, r.players[p].highest_break);
+            per[p].visits += r.players[p].visits;
+            per[p].balls_potted += r.players[p].balls_potted;
+            per[p].fouls += r.players[p].fouls;
         }
     }
     const double n = static_cast<double>(o.games);
@@ -299,6 +327,15 @@ int selfplay_command(const std::vector<std::string>& args) {
                     s.decisions ? s.seconds / s.decisions : 0.0,
                     s.seconds > 0 ? s.simulations / s.seconds : 0.0);
     }
+    if (o.game == GameType::snooker)
+        for (int p = 0; p < 2; ++p) {
+            const SeatFigures& s = per[p];
+            std::printf("p%d %-6s frame score %.1f  highest break %d  pots per visit %.2f  "
+                        "fouls per frame %.2f\n",
+                        p + 1, level_name(o.levels[p]), s.frame_score / n, s.highest_break,
+                        s.visits ? static_cast<double>(s.balls_potted) / s.visits : 0.0,
+                        s.fouls / n);
+        }
     std::printf("fouls per game %.2f, shots per game %.1f, break-and-runs %llu (%.1f%%), "
                 "%.1f s\n",
                 fouls / n, shots / n, static_cast<unsigned long long>(runs), 100 * runs / n, wall);

@@ -365,6 +365,8 @@ std::variant<PlayedShot, MatchError> Match::shoot(int player, const Strike& aske
 MatchError Match::choose(int player, Choice choice) {
     if (const MatchError e = check_player(player); e != MatchError::none)
         return e;
+    if (choice == Choice::concede)
+        return concede(player); // never owed, but a player may always concede
     if (pending().kind != Pending::choose)
         return MatchError::not_now;
     if (!game_.choose(choice))
@@ -485,7 +487,10 @@ std::optional<ComputerMove> Match::computer_move() {
     ComputerPlayer& computer = *computers_[p.player - 1];
     ComputerMove move;
     move.kind = p.kind;
-    if (p.kind == Pending::place)
+    if (computer.concedes(game_)) {
+        move.kind = Pending::choose;
+        move.choice = Choice::concede;
+    } else if (p.kind == Pending::place)
         move.spot = computer.place_cue_ball(game_);
     else if (p.kind == Pending::choose)
         move.choice = computer.choose(game_);

@@ -1,0 +1,232 @@
+// The computer at snooker: it pots an easy red, nominates and pots the colour it plays for,
+// plays safe when there is no pot, and concedes only a frame it cannot win.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <termpool/computer.hpp>
+#include <termpool/match.hpp>
+#include <termpool/snooker_layout.hpp>
+#include <termpool/table_physics.hpp>
+
+#include "physics_helpers.hpp"
+
+using namespace termpool;
+using namespace termpool::test;
+
+namespace {
+
+constexpr double R = snooker_ball_radius;
+
+const Table& snooker_table() {
+    static const Table table = make_table(TableSize::snooker, snooker_ball_radius);
+    return table;
+}
+
+Ball sball(int id, Vec2 p) {
+    return ball_at(id, p.x, p.y, snooker_ball_mass);
+}
+
+// The colours on their spots, the reds given, the cue ball at `cue`.
+std::vector<Ball> layout(Vec2 cue, const std::vector<std::pair<int, Vec2>>& reds) {
+    std::vector<Ball> balls{sball(0, cue)};
+    for (const auto& [id, p] : reds)
+        balls.push_back(sball(id, p));
+    for (int colour = snooker_yellow; colour <= snooker_black; ++colour)
+        balls.push_back(sball(colour, snooker_spot(snooker_table(), colour)));
+    return balls;
+}
+
+Game frame(std::vector<Ball> balls, BallOn on, int score1 = 0, int score2 = 0) {
+    SnookerState state;
+    state.ball_on = on;
+    state.scores[0] = score1;
+    state.scores[1] = score2;
+    return Game::from_snooker_position(snooker_table(), physics_for_table(TableSize::snooker),
+                                       std::move(balls), 1, state);
+}
+
+// The point `distance` behind `ball` on the line from `pocket` through it.
+Vec2 behind(Vec2 ball, int pocket, double distance) {
+    const Vec2 at = snooker_table().pockets[pocket - 1].position;
+    return ball - normalized(at - ball) * distance;
+}
+
+// Reds well out of the way of the shots below, near the baulk side cushion.
+const std::vector<std::pair<int, Vec2>> spare_reds{{2, {1.1, 1.6}}, {3, {1.25, 1.62}}};
+
+// A miss by player 1 from `balls`: the cue ball hits the yellow first and ends at `left`.
+Game after_miss(const std::vector<Ball>& balls, Vec2 left) {
+    Game g = frame(balls, BallOn::red);
+    ShotResult r;
+    r.events = {{0.1, EventKind::ball_ball, 0, snooker_yellow}};
+    r.balls = g.balls();
+    for (Ball& b : r.balls)
+        if (b.id == 0)
+            b.position = left;
+    const Verdict v = g.apply({}, r);
+    REQUIRE(v.miss);
+    REQUIRE(g.chooser() == 2);
+    return g;
+}
+
+} // namespace
+
+TEST_CASE("snooker computer: it pots an easy red", "[computer][snooker]") {
+    const Vec2 red{1.4, 0.3};
+    auto reds = spare_reds;
+    reds.push_back({1, red});
+    const Game game = frame(layout(behind(red, 2, 0.45), reds), BallOn::red);
+    for (const Level level : {Level::medium, Level::hard, Level::pro}) {
+        ComputerPlayer computer(level, 5);
+        const ComputerShot shot = computer.shot(game);
+        Game check = game;
+        const Verdict v = check.play(shot.planned, shot.call);
+        INFO("level " << level_name(level));
+        CHECK(v.foul == Foul::none);
+        CHECK(v.points >= 1);
+        CHECK(std::ranges::any_of(v.pocketed, is_snooker_red));
+        CHECK(check.snooker().ball_on == BallOn::colour);
+    }
+}
+
+TEST_CASE("snooker computer: after a red it nominates the colour it pots", "[computer][snooker]") {
+    // The black is straight into the top corner from here: worth most and easiest.
+    const Vec2 black = snooker_spot(snooker_table(), snooker_black);
+    const Game game = frame(layout(behind(black, 6, 0.4), spare_reds), BallOn::colour);
+    REQUIRE(game.nomination_owed());
+    for (const Level level : {Level::hard, Level::pro}) {
+        ComputerPlayer computer(level, 9);
+        const ComputerShot shot = computer.shot(game);
+        INFO("level " << level_name(level));
+        CHECK(shot.call.call.ball == snooker_black);
+        CHECK_FALSE(shot.call.call.safety);
+        Game check = game;
+        const Verdict v = check.play(shot.planned, shot.call);
+        CHECK(v.foul == Foul::none);
+        CHECK(v.nominated == snooker_black);
+        CHECK(v.points == 7);
+    }
+}
+
+TEST_CASE("snooker computer: a colour it nominates is one it can pot", "[computer][snooker]") {
+    // The blue straight into a middle pocket; the cue ball far from the black and the pink.
+    const Vec2 blue = snooker_spot(snooker_table(), snooker_blue);
+    const Game game = frame(layout(behind(blue, 5, 0.35), spare_reds), BallOn::colour);
+    ComputerPlayer computer(Level::pro, 3);
+    const ComputerShot shot = computer.shot(game);
+    REQUIRE(is_snooker_colour(shot.call.call.ball));
+    Game check = game;
+    const Verdict v = check.play(shot.planned, shot.call);
+    CHECK(v.foul == Foul::none);
+    CHECK(v.nominated == shot.call.call.ball);
+    CHECK(v.points == snooker_value(shot.call.call.ball));
+}
+
+TEST_CASE("snooker computer: with no pot on it plays safe", "[computer][snooker]") {
+    // The only red frozen to the top cushion: no pot from baulk, a safety to play.
+    const Table& t = snooker_table();
+    const Game game =
+        frame(layout({1.0, t.width / 2}, {{1, {t.length - R - 0.001, 0.5}}}), BallOn::red);
+    REQUIRE(pot_ease(game) == 0);
+    for (const Level level : {Level::hard, Level::pro}) {
+        ComputerPlayer computer(level, 21);
+        const ComputerShot shot = computer.shot(game);
+        Game check = game;
+        const Verdict v = check.play(shot.planned, shot.call);
+        INFO("level " << level_name(level));
+        CHECK(v.foul == Foul::none);
+        CHECK(v.first_contact == 1);
+        // A safety (hard may try a double instead) leaves the opponent no easy pot, by the
+        // computer's own measure.
+        if (shot.call.call.safety && v.next_shooter == 2)
+            CHECK(pot_ease(check) < 0.25);
+    }
+}
+
+TEST_CASE("snooker computer: it takes a free ball that gives a pot", "[computer][snooker]") {
+    // On a red, with a free ball: the only red hidden behind the pink (the player is
+    // snookered), the black straight into the top corner. Nominated as the free ball the black
+    // scores 1 and is re-spotted.
+    const Table& t = snooker_table();
+    const Vec2 black = snooker_spot(t, snooker_black);
+    const Vec2 cue = behind(black, 6, 0.4);
+    const Vec2 pink = snooker_spot(t, snooker_pink);
+    const Vec2 red = pink + normalized(pink - cue) * 0.1;
+    const Game base = frame(layout(cue, {{1, red}}), BallOn::red);
+    REQUIRE(base.shooter_snookered());
+    SnookerState state = base.snooker();
+    state.free_ball = true;
+    const Game game = Game::from_snooker_position(t, base.params(), base.balls(), 1, state);
+    REQUIRE(game.nomination_owed());
+    ComputerPlayer computer(Level::pro, 4);
+    const ComputerShot shot = computer.shot(game);
+    CHECK(shot.call.call.ball == snooker_black);
+    Game check = game;
+    const Verdict v = check.play(shot.planned, shot.call);
+    CHECK(v.foul == Foul::none);
+    CHECK(v.nominated == snooker_black);
+    CHECK(v.points == 1);
+    CHECK(check.snooker().ball_on == BallOn::colour);
+}
+
+TEST_CASE("snooker computer: after a miss it plays on when left an easy pot",
+          "[computer][snooker]") {
+    const Vec2 red{1.4, 0.3};
+    auto reds = spare_reds;
+    reds.push_back({1, red});
+    const Table& t = snooker_table();
+    const Game g = after_miss(layout({1.0, t.width / 2}, reds), behind(red, 2, 0.45));
+    ComputerPlayer computer(Level::hard, 2);
+    CHECK(computer.choose(g) == Choice::play_on);
+}
+
+TEST_CASE("snooker computer: it does not put back an offender who missed an easy pot",
+          "[computer][snooker]") {
+    // The offender was straight on a red; the miss left the cue ball tight on the baulk
+    // cushion, behind the brown: nothing easy for anyone there.
+    const Vec2 red{1.4, 0.3};
+    auto reds = spare_reds;
+    reds.push_back({1, red});
+    const Table& t = snooker_table();
+    const Game g = after_miss(layout(behind(red, 2, 0.45), reds), {R + 0.001, t.width / 2});
+    ComputerPlayer computer(Level::hard, 2);
+    const Choice c = computer.choose(g);
+    CHECK(c != Choice::replace_and_replay);
+    CHECK(std::ranges::count(g.choices(), c) == 1);
+}
+
+TEST_CASE("snooker computer: it concedes only a frame it cannot win", "[computer][snooker]") {
+    ComputerPlayer computer(Level::hard, 1);
+    const Table& t = snooker_table();
+    // The colours only: 27 points remain.
+    const std::vector<Ball> colours = layout({0.5, t.width / 2}, {});
+    CHECK(computer.concedes(frame(colours, BallOn::in_order, 10, 40)));
+    CHECK_FALSE(computer.concedes(frame(colours, BallOn::in_order, 10, 37)));
+    CHECK_FALSE(computer.concedes(frame(colours, BallOn::in_order, 40, 10)));
+    // Many reds left: never, however far behind (snookers and breaks can still win it).
+    std::vector<std::pair<int, Vec2>> reds;
+    for (int id = 1; id <= 6; ++id)
+        reds.push_back({id, {2.6 + 0.06 * id, 0.3}});
+    CHECK_FALSE(computer.concedes(frame(layout({0.5, t.width / 2}, reds), BallOn::red, 0, 120)));
+    // Two reds left, 16 + 27 on the table: behind by 44 it concedes.
+    reds.resize(2);
+    CHECK(computer.concedes(frame(layout({0.5, t.width / 2}, reds), BallOn::red, 0, 44)));
+    CHECK_FALSE(computer.concedes(frame(layout({0.5, t.width / 2}, reds), BallOn::red, 0, 43)));
+}
+
+TEST_CASE("snooker computer: its concession goes through the match", "[computer][snooker]") {
+    GameRecord header;
+    header.setup.game = GameType::snooker;
+    header.computers[0] = Level::hard;
+    header.computers[1] = Level::hard;
+    auto started = Match::start(header, 7);
+    REQUIRE(std::holds_alternative<Match>(started));
+    Match& match = std::get<Match>(started);
+    // At the start nobody concedes: the computer's move is the break-off placement.
+    const std::optional<ComputerMove> move = match.computer_move();
+    REQUIRE(move);
+    CHECK(move->choice != Choice::concede);
+    // A concession made as a choice ends the frame for the opponent.
+    CHECK(match.choose(match.to_act(), Choice::concede) == MatchError::none);
+    CHECK(match.game().winner() == 2);
+    CHECK(match.game().win_reason() == WinReason::conceded);
+}
