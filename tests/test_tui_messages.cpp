@@ -65,3 +65,18 @@ TEST_CASE("the re-break choice reads right for whoever is offered it", "[tui]") 
     // either way it is the breaker who breaks again.
     CHECK(termpool::tui::choice_words(termpool::Choice::re_break) == "the breaker breaks again");
 }
+
+TEST_CASE("a snooker foul names the points and says in-off, not scratch",
+          "[tui][messages][snooker]") {
+    Verdict v;
+    v.foul = Foul::scratch;
+    v.penalty = 4;
+    v.next_shooter = 2;
+    v.chooser = 2;
+    CHECK(verdict_message(v, 1, names) == "Foul: in-off \u2014 4 points to Bob; Bob chooses");
+    v.foul = Foul::wrong_ball_first;
+    v.penalty = 7;
+    v.miss = true;
+    CHECK(verdict_message(v, 1, names) ==
+          "Foul and a miss: wrong ball first \u2014 7 points to Bob; Bob chooses");
+}

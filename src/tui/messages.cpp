@@ -162,8 +162,10 @@ std::string verdict_message(const Verdict& v, int shooter, const std::string nam
     if (v.foul != Foul::none && v.penalty > 0) {
         // Snooker: the points go to the opponent, who then chooses or plays from the D.
         const std::string& other = names[2 - shooter];
-        std::string m = std::string(v.miss ? "Foul and a miss: " : "Foul: ") + foul_words(v.foul) +
-                        " \u2014 " + std::to_string(v.penalty) + " points to " + other;
+        // A snooker player says "in-off" where a pool player says "scratch".
+        const std::string what = v.foul == Foul::scratch ? "in-off" : foul_words(v.foul);
+        std::string m = std::string(v.miss ? "Foul and a miss: " : "Foul: ") + what + " \u2014 " +
+                        std::to_string(v.penalty) + " points to " + other;
         if (v.chooser != 0)
             return m + "; " + names[v.chooser - 1] + " chooses";
         if (v.ball_in_hand == BallInHand::d)
