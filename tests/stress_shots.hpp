@@ -100,18 +100,22 @@ inline StressShot make_stress_shot(std::uint64_t seed, std::uint64_t classic_one
     if (rng.below(3) == 0) {
         if (snooker)
             shot.balls = make_rack(table, p, RackType::snooker, rng.next());
-        else
-            shot.balls = make_rack(
-                table, p, rng.below(2) ? RackType::eight_ball : RackType::nine_ball, rng.next());
+        else {
+            // One draw per statement: the order of a call's arguments is the compiler's choice,
+            // and the determinism test keeps the hash of these shots for every compiler.
+            const RackType rack = rng.below(2) ? RackType::eight_ball : RackType::nine_ball;
+            shot.balls = make_rack(table, p, rack, rng.next());
+        }
     } else {
         // Balls anywhere the table holds them, pocket mouths included; some frozen to another
         // ball or to a rail (touching, or 1 nm off), some heavier or lighter.
         const int count = 1 + static_cast<int>(rng.below(snooker ? 22 : 16));
         for (int id = 0; id < count; ++id) {
             for (int attempt = 0; attempt < 100; ++attempt) {
-                Ball b = ball_at(id, rng.uniform(-0.05, table.length + 0.05),
-                                 rng.uniform(-0.05, table.width + 0.05),
-                                 rng.below(4) == 0 ? rng.uniform(0.12, 0.25) : p.ball_mass);
+                const double x = rng.uniform(-0.05, table.length + 0.05);
+                const double y = rng.uniform(-0.05, table.width + 0.05);
+                const double mass = rng.below(4) == 0 ? rng.uniform(0.12, 0.25) : p.ball_mass;
+                Ball b = ball_at(id, x, y, mass);
                 const double off = rng.below(2) ? 0 : 1e-9;
                 switch (rng.below(5)) {
                 case 0:
@@ -126,7 +130,7 @@ inline StressShot make_stress_shot(std::uint64_t seed, std::uint64_t classic_one
                         const Ball& other = shot.balls[rng.below(shot.balls.size())];
                         const double angle = rng.uniform(0, 2 * std::numbers::pi);
                         b.position =
-                            other.position + Vec2{std::cos(angle), std::sin(angle)} * (2 * R + off);
+                            other.position + unit_from_angle(angle) * (2 * R + off);
                     }
                     break;
                 default:
