@@ -63,13 +63,13 @@ TEST_CASE("a played record names its physics and the state it ends in", "[record
     INFO(text);
     CHECK(text.starts_with("termpool-record 4\n"));
     CHECK(text.find("\nphysics " + std::to_string(physics_version) + "\n") != std::string::npos);
-    const std::string check = "\ncheck " + digest_hex(match.state_hash()) + "\nend\n";
+    const std::string check = "\ncheck " + digest_hex(match.check_hash()) + "\nend\n";
     CHECK(text.ends_with(check));
 
     const GameRecord back = read(text);
     REQUIRE(back.check);
     CHECK(back.check->physics_version == physics_version);
-    CHECK(back.check->state_hash == match.state_hash());
+    CHECK(back.check->hash == match.check_hash());
     const auto replayed = Match::replay(back);
     REQUIRE(std::holds_alternative<Match>(replayed));
     CHECK(std::get<Match>(replayed).state_hash() == match.state_hash());
@@ -84,7 +84,7 @@ TEST_CASE("a new match has no check until it has an action", "[record][check]") 
     CHECK(format_record(fresh.record()).starts_with("termpool-record 1\n"));
     const Match one = played(1);
     REQUIRE(one.record().check);
-    CHECK(one.record().check->state_hash == one.state_hash());
+    CHECK(one.record().check->hash == one.check_hash());
 }
 
 TEST_CASE("a record from another physics version replays when it still matches",
@@ -102,7 +102,7 @@ TEST_CASE("a record from another physics version replays when it still matches",
 TEST_CASE("a record whose replay ends elsewhere is refused at its check line", "[record][check]") {
     const Match match = played(30);
     const std::string text = format_record(match.record());
-    const std::string hash = digest_hex(match.state_hash());
+    const std::string hash = digest_hex(match.check_hash());
     const int check_line = static_cast<int>(std::count(text.begin(), text.end(), '\n')) - 1;
     // Another hash: what a different simulator, or an edited file, would give.
     std::string other = hash;
@@ -154,5 +154,27 @@ TEST_CASE("physics and check lines are read strictly", "[record][check]") {
               "3: a check is 16 hexadecimal digits (0-9, a-f)");
     CHECK(parse_error("termpool-record 4\nphysics 2\ncheck " + hash + "\nshot 1 0 0 0\nend\n") ==
           "4: only 'end' may follow the 'check' line");
+    CHECK(parse_error("termpool-record 4\nphysics 2\nphysics 2\ncheck " + hash + "\nend\n") ==
+          "3: a second 'physics' line");
+    CHECK(parse_error("termpool-record 4\nshot 1 0 0 0\nphysics 2\ncheck " + hash + "\nend\n") ==
+          "3: the 'physics' line must come before the actions");
     CHECK(parse_error("termpool-record 4\nphysics 2\ncheck " + hash + "\nend\n").empty());
+}
+
+TEST_CASE("an edited race does not pass the check", "[record][check]") {
+    GameRecord header;
+    header.setup.game = GameType::nine_ball;
+    header.seed = 4;
+    header.race_to = 2;
+    header.computers[0] = Level::hard;
+    header.computers[1] = Level::hard;
+    Match match = test::started(header, 3);
+    for (int i = 0; i < 20; ++i)
+        REQUIRE(test::play_computer_move(match) == MatchError::none);
+    const std::string text = format_record(match.record());
+    CHECK(replay_error(read(text)).empty());
+    const std::string longer = edited(text, "\nrace 2\n", "\nrace 5\n");
+    CHECK(replay_error(read(longer)).find("the record was edited or damaged") != std::string::npos);
+    const std::string winner = edited(text, "\nbreaks alternate\n", "\nbreaks winner\n");
+    CHECK(replay_error(read(winner)).find("edited or damaged") != std::string::npos);
 }

@@ -802,3 +802,51 @@ TEST_CASE("snooker: a real shot away from a touching red is no foul", "[snooker]
     CHECK(v.next_shooter == 2);
     CHECK(find_ball(g.balls(), 1).position == balls[1].position); // the red did not move
 }
+
+TEST_CASE("snooker: a nominated free ball must be hit first", "[rules][snooker][free]") {
+    // Reds on; a free ball after a foul: the pink is named as the free ball.
+    SnookerState s = on(BallOn::red);
+    s.free_ball = true;
+    SECTION("the red hit first instead, and potted: a foul, no points") {
+        Game g = frame(layout({1.2, 0.6}, {1}, all_colours), 1, s);
+        const Verdict v = g.apply(nominate(snooker_pink), hand_made(g, {hit(0, 1), drop(1, 3)}));
+        CHECK(v.foul == Foul::wrong_ball_first);
+        CHECK(v.points == 0);
+        CHECK(v.penalty == 4);
+        CHECK(g.score_of(2) == 4);
+    }
+    SECTION("the named free ball and a red hit at once: the free ball counts as hit first") {
+        Game g = frame(layout({1.2, 0.6}, {1}, all_colours), 1, s);
+        const Verdict v =
+            g.apply(nominate(snooker_pink), hand_made(g, {hit(0, 1), hit(0, 20), drop(20, 3)}));
+        CHECK(v.foul == Foul::none);
+        CHECK(v.points == 1); // the free ball is worth a red
+    }
+    SECTION("with no ball named, the red hit first is playing the ball on") {
+        Game g = frame(layout({1.2, 0.6}, {1}, all_colours), 1, s);
+        const Verdict v = g.apply({}, hand_made(g, {hit(0, 1), drop(1, 3)}));
+        CHECK(v.foul == Foul::none);
+        CHECK(v.points == 1);
+    }
+}
+
+TEST_CASE("snooker: a foul after a red before any colour is nominated costs seven",
+          "[rules][snooker][foul]") {
+    SECTION("nothing hit") {
+        Game g = frame(layout({1.2, 0.6}, {1}, all_colours), 1, on(BallOn::colour));
+        const Verdict v = g.apply({}, hand_made(g, {}));
+        CHECK(v.foul == Foul::no_contact);
+        CHECK(v.penalty == 7);
+    }
+    SECTION("a red hit first") {
+        Game g = frame(layout({1.2, 0.6}, {1}, all_colours), 1, on(BallOn::colour));
+        const Verdict v = g.apply({}, hand_made(g, {hit(0, 1)}));
+        CHECK(v.foul == Foul::wrong_ball_first);
+        CHECK(v.penalty == 7);
+    }
+    SECTION("a colour named and missed: its value, at least 4") {
+        Game g = frame(layout({1.2, 0.6}, {1}, all_colours), 1, on(BallOn::colour));
+        const Verdict v = g.apply(nominate(snooker_yellow), hand_made(g, {}));
+        CHECK(v.penalty == 4);
+    }
+}

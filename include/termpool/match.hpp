@@ -149,6 +149,9 @@ public:
     /// actions. Two copies that played the same actions have the same hash on any build that
     /// computes the same doubles.
     std::uint64_t state_hash() const;
+    /// What a record's `check` line holds: `state_hash` and the race (its length and break
+    /// rule, which the header gives and no action repeats).
+    std::uint64_t check_hash() const;
 
     /// What the match waits for and from whom.
     PendingAction pending() const;

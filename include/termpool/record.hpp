@@ -39,9 +39,9 @@ struct RecordedAction {
 /// What a record's writer saw after its last action, so that a reader can tell whether its
 /// replay gives the same game (`Match::replay` compares).
 struct RecordCheck {
-    int physics_version = 0;      ///< the writer's `physics_version` (simulator.hpp)
-    std::uint64_t state_hash = 0; ///< the writer's `Match::state_hash` after the last action
-    int line = 0;                 ///< the `check` line it was read from (0 when made in memory)
+    int physics_version = 0; ///< the writer's `physics_version` (simulator.hpp)
+    std::uint64_t hash = 0;  ///< the writer's `Match::check_hash` after the last action
+    int line = 0;            ///< the `check` line it was read from (0 when made in memory)
 };
 
 /// A whole game, or a whole match: its racks after the first each start with a rack action.

@@ -120,7 +120,7 @@ std::variant<Match, RecordError> Match::replay(const GameRecord& record, std::si
     const RecordCheck& check = *record.check;
     const Match* m = std::get_if<Match>(&replayed);
     // A partial replay cannot see the end; the reader checks the whole record once on loading.
-    if (m && (actions < record.actions.size() || m->state_hash() == check.state_hash))
+    if (m && (actions < record.actions.size() || m->check_hash() == check.hash))
         return replayed;
     const int line = m ? check.line : std::get<RecordError>(replayed).line;
     if (check.physics_version != physics_version)
@@ -182,7 +182,16 @@ std::variant<Match, RecordError> Match::replay_unchecked(const GameRecord& recor
 }
 
 void Match::stamp_check() {
-    record_.check = RecordCheck{physics_version, state_hash(), 0};
+    record_.check = RecordCheck{physics_version, check_hash(), 0};
+}
+
+std::uint64_t Match::check_hash() const {
+    // The race is in the header, not in the actions: an edited race must not pass the check.
+    StateDigest d;
+    d.add(state_hash());
+    d.add(score_.race_to);
+    d.add(static_cast<int>(score_.break_rule));
+    return d.value();
 }
 
 std::uint64_t Match::state_hash() const {
@@ -215,6 +224,8 @@ std::uint64_t Match::state_hash() const {
         d.add(s.free_ball);
         d.add(s.respotted_black);
         d.add(g.free_ball_offered());
+        d.add(s.misses[0]);
+        d.add(s.misses[1]);
     }
     for (const Ball& b : g.balls()) {
         d.add(b.id);
@@ -450,8 +461,7 @@ MatchError Match::apply(const RecordedAction& action, Trajectory* trajectory, Pl
         error = place(to_act(), action.place);
         break;
     case RecordedAction::Kind::choose:
-        error =
-            action.choice == Choice::concede ? concede(to_act()) : choose(to_act(), action.choice);
+        error = choose(to_act(), action.choice); // a concession too
         break;
     case RecordedAction::Kind::shot: {
         auto played = shoot(to_act(), action.strike, action.call, trajectory);

@@ -231,7 +231,7 @@ std::string format_record(const GameRecord& r) {
     for (const RecordedAction& a : r.actions)
         out += format_action(a) + "\n";
     if (r.check)
-        out += "check " + digest_hex(r.check->state_hash) + "\n";
+        out += "check " + digest_hex(r.check->hash) + "\n";
     out += "end\n";
     return out;
 }
@@ -356,6 +356,10 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
                 return fail("unknown break rule '" + std::string(f[1]) + "' (alternate or winner)");
             r.break_rule = *rule;
         } else if (key == "physics" && want(2)) {
+            if (physics)
+                return fail("a second 'physics' line");
+            if (!r.actions.empty())
+                return fail("the 'physics' line must come before the actions");
             const auto v = to_u64(f[1]);
             if (!v || *v < 1 || *v > 1000000)
                 return fail("physics must be a version number");

@@ -104,9 +104,14 @@ std::vector<int> Game::balls_on() const {
 }
 
 std::vector<int> Game::snooker_targets(const ShotCall& call) const {
-    if (snooker_.free_ball)
-        return legal_targets();
     const int called = call.call.safety ? 0 : call.call.ball;
+    if (snooker_.free_ball) {
+        // A nominated free ball must be hit first (or at once with a ball on, which then counts
+        // as hitting it); without a nomination any ball may be the free ball.
+        if (called > 0 && ball_on_table(called))
+            return {called};
+        return legal_targets();
+    }
     if (snooker_.ball_on == BallOn::colour && is_snooker_colour(called) && ball_on_table(called))
         return {called};
     return balls_on();
@@ -258,6 +263,8 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
             free_ball = facts.first_contact;
     }
     auto is_on = [&](int id) { return really_on(id) || (free_ball != 0 && id == free_ball); };
+    // A free ball named before the shot must be the first ball hit.
+    const bool free_ball_named = free_ball != 0 && free_ball == called;
     v.nominated = on == BallOn::colour ? nominated : free_ball;
 
     // Fouls, and their value: the ball on or the ball concerned, the higher, at least 4.
@@ -283,7 +290,8 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
     if (facts.first_contact < 0) {
         if (!touching_on) // playing away from a touching ball on is deemed to hit it
             v.fouls.push_back(Foul::no_contact);
-    } else if (!is_on(facts.first_contact)) {
+    } else if (!is_on(facts.first_contact) ||
+               (free_ball_named && facts.first_contact != free_ball)) {
         v.fouls.push_back(Foul::wrong_ball_first);
         concerned(facts.first_contact);
     }
@@ -322,6 +330,10 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
     }
 
     if (!v.fouls.empty()) {
+        // After a red, a foul before any colour is nominated (nothing hit, or a red first, with
+        // no colour named) costs seven.
+        if (on == BallOn::colour && nominated == 0)
+            penalty = 7;
         v.penalty = penalty;
         s.scores[other - 1] += penalty;
         end_visit();

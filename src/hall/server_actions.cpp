@@ -164,9 +164,8 @@ MatchError Server::State::play(Match& match, int seat, const RecordedAction& act
     case RecordedAction::Kind::place:
         return match.place(seat, action.place);
     case RecordedAction::Kind::choose:
-        // A concession is recorded as a choice, and taken whenever the seat is to act.
-        return action.choice == Choice::concede ? match.concede(seat)
-                                                : match.choose(seat, action.choice);
+        // A concession is recorded as a choice; Match::choose takes it whenever the seat is to act.
+        return match.choose(seat, action.choice);
     case RecordedAction::Kind::shot: {
         const auto played = match.shoot(seat, action.strike, action.call);
         const MatchError* error = std::get_if<MatchError>(&played);
