@@ -129,8 +129,7 @@ inline StressShot make_stress_shot(std::uint64_t seed, std::uint64_t classic_one
                     if (!shot.balls.empty()) {
                         const Ball& other = shot.balls[rng.below(shot.balls.size())];
                         const double angle = rng.uniform(0, 2 * std::numbers::pi);
-                        b.position =
-                            other.position + unit_from_angle(angle) * (2 * R + off);
+                        b.position = other.position + unit_from_angle(angle) * (2 * R + off);
                     }
                     break;
                 default:
