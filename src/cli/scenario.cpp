@@ -633,9 +633,11 @@ int last_ball_of(GameType game) {
     switch (game) {
     case GameType::eight_ball:
     case GameType::eight_ball_bar:
-    case GameType::nine_ball:
-    case GameType::ten_ball:
         break;
+    case GameType::nine_ball:
+        return 9;
+    case GameType::ten_ball:
+        return 10;
     case GameType::snooker:
         return snooker_black;
     }
