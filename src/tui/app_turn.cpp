@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <optional>
 #include <string>
+#include <termpool/setup.hpp>
 #include <termpool/snooker_layout.hpp>
 #include <vector>
 
@@ -80,8 +81,7 @@ void App::warn_of_third_foul() {
     // WPA 9-ball and 10-ball: a player on two fouls must be told before the shot that a third
     // loses.
     const Game& g = game();
-    if ((g.type() == GameType::nine_ball || g.type() == GameType::ten_ball) &&
-        g.consecutive_fouls(g.shooter()) >= 2)
+    if (is_rotation_game(g.type()) && g.consecutive_fouls(g.shooter()) >= 2)
         message_ += (message_.empty() ? "" : "; ") + name(g.shooter()) +
                     " is on two fouls: a third in a row loses the game";
 }
