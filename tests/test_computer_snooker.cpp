@@ -122,10 +122,11 @@ TEST_CASE("snooker computer: a colour it nominates is one it can pot", "[compute
 }
 
 TEST_CASE("snooker computer: with no pot on it plays safe", "[computer][snooker]") {
-    // The only red frozen to the top cushion: no pot from baulk, a safety to play.
+    // The only red frozen to the top cushion, off the colours' line: no pot from baulk, a safety
+    // to play (both levels choose one here; at y = 0.5 pro calls a bank instead).
     const Table& t = snooker_table();
     const Game game =
-        frame(layout({1.0, t.width / 2}, {{1, {t.length - R - 0.001, 0.5}}}), BallOn::red);
+        frame(layout({1.0, t.width / 2}, {{1, {t.length - R - 0.001, 1.4}}}), BallOn::red);
     REQUIRE(pot_ease(game) == 0);
     for (const Level level : {Level::hard, Level::pro}) {
         ComputerPlayer computer(level, 21);
@@ -135,10 +136,24 @@ TEST_CASE("snooker computer: with no pot on it plays safe", "[computer][snooker]
         INFO("level " << level_name(level));
         CHECK(v.foul == Foul::none);
         CHECK(v.first_contact == 1);
-        // A safety (hard may try a double instead) leaves the opponent no easy pot, by the
-        // computer's own measure.
-        if (shot.call.call.safety && v.next_shooter == 2)
+        INFO((shot.call.call.safety ? "called a safety" : "called a pot of ball ")
+             << (shot.call.call.safety ? "" : std::to_string(shot.call.call.ball)));
+        // Whatever it calls (pro and hard may call a bank of the red, which its noise search
+        // rates as the best shot to nothing), the shot as planned, without noise, is safe: it
+        // pots the red and the player stays at the table, or it leaves the opponent no easy
+        // pot by the computer's own measure. Both ends are checked, so the test cannot pass
+        // on a choice it does not look at.
+        const bool potted = std::find(v.pocketed.begin(), v.pocketed.end(), 1) != v.pocketed.end();
+        if (potted) {
+            CHECK(v.points == 1);
+            CHECK(v.next_shooter == 1);
+        } else {
+            CHECK(v.next_shooter == 2);
             CHECK(pot_ease(check) < 0.25);
+        }
+        // A called safety is not meant to pot: it must leave the table to the opponent.
+        if (shot.call.call.safety)
+            CHECK_FALSE(potted);
     }
 }
 

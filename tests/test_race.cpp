@@ -65,3 +65,12 @@ TEST_CASE("a race to 0 or 1 is a single game", "[race]") {
         CHECK_FALSE(match.record_rack(2));
     }
 }
+
+TEST_CASE("a race to N is best of 2N - 1 frames, and back", "[race]") {
+    CHECK(best_of_for_race(1) == 1);
+    CHECK(best_of_for_race(3) == 5);
+    CHECK(best_of_for_race(max_race_to) == 197);
+    for (int race = 1; race <= max_race_to; ++race)
+        CHECK(race_for_best_of(best_of_for_race(race)) == race);
+    static_assert(best_of_for_race(4) == 7);
+}

@@ -462,6 +462,13 @@ TEST_CASE("simulate refuses game contexts that cannot happen", "[cli]") {
         {"shooter 3\n", 1, "not 1 or 2"},
         {"rack 8ball\nbreak\n", 2, "without a strike"},
         {"game 8ball\ngame 9ball\n", 2, "more than one 'game' line"},
+        // The rotation games' referees know their own balls only, whichever line comes first.
+        {"game 10ball\nball 0 1 1\nball 13 2 1\nstrike 1 0\n", 3,
+         "the 10ball referee judges balls 0..10 only"},
+        {"ball 0 1 1\nball 13 2 1\ngame 10ball\nstrike 1 0\n", 3,
+         "the 10ball referee judges balls 0..10 only"},
+        {"game 9ball\nball 0 1 1\nball 10 2 1\nstrike 1 0\n", 3,
+         "the 9ball referee judges balls 0..9 only"},
     };
     check_refused(cases);
 }

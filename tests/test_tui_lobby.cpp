@@ -73,6 +73,29 @@ TEST_CASE("the lobby gives a snooker match as best of N frames", "[tui][lobby][s
           std::string::npos);
 }
 
+TEST_CASE("the lobby's Race column holds a snooker best of 197 and its header lines up",
+          "[tui][lobby][snooker]") {
+    LobbyView v = two_tables();
+    v.tables[1].game = GameType::snooker;
+    v.tables[1].size = TableSize::snooker;
+    v.tables[1].race_to = 99;
+    const Grid g = render_lobby(v, Capabilities{}, 100, 32);
+    INFO(all_text(g));
+    std::string header, row;
+    for (int y = 0; y < g.height; ++y) {
+        const std::string line = row_text(g, y);
+        if (line.find("Race") != std::string::npos)
+            header = line;
+        if (line.find("bo197") != std::string::npos)
+            row = line;
+    }
+    // A space between the race and the first seat.
+    CHECK(row.find("bo197 Bob (away)") != std::string::npos);
+    // The header's Race and Seat 1 start where the row's race and first seat do.
+    CHECK(header.find("Race") == row.find("bo197"));
+    CHECK(header.find("Seat 1") == row.find("Bob (away)"));
+}
+
 TEST_CASE("the lobby lists the tables, who is where, the message and the keys", "[tui][lobby]") {
     const Capabilities caps;
     for (const auto& [w, h] : {std::pair{80, 24}, std::pair{100, 32}, std::pair{200, 60}}) {

@@ -28,6 +28,12 @@ constexpr int race_for_best_of(int frames) {
     return (frames + 1) / 2;
 }
 
+/// The frames of a match of race to `race_to` said snooker's way, best of 2 * race_to - 1
+/// (best of 5 for a race to 3); the inverse of `race_for_best_of` for odd counts.
+constexpr int best_of_for_race(int race_to) {
+    return 2 * race_to - 1;
+}
+
 /// The score of a match.
 struct MatchState {
     int race_to = 1;                             ///< racks to win; 0 or 1: a single game

@@ -633,9 +633,11 @@ int last_ball_of(GameType game) {
     switch (game) {
     case GameType::eight_ball:
     case GameType::eight_ball_bar:
-    case GameType::nine_ball:
-    case GameType::ten_ball:
         break;
+    case GameType::nine_ball:
+        return 9;
+    case GameType::ten_ball:
+        return 10;
     case GameType::snooker:
         return snooker_black;
     }
@@ -667,7 +669,7 @@ std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Pl
         return conflict({"groups " + groups_text(game.player1_group), *groups_line}, game_said,
                         "10-ball has no groups");
     if (const std::optional<int> push_line = line_of(draft, "push-out")) {
-        if (draft.setup.game != GameType::nine_ball && draft.setup.game != GameType::ten_ball)
+        if (!is_rotation_game(draft.setup.game))
             return game_line ? conflict({"push-out", *push_line}, game_said,
                                         "the push-out is a 9-ball and 10-ball rule")
                              : ScenarioError{*push_line, "push-out needs 'game 9ball' or "

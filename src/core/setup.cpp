@@ -43,6 +43,10 @@ std::string shortest(double v) {
 
 } // namespace
 
+bool is_rotation_game(GameType game) {
+    return game == GameType::nine_ball || game == GameType::ten_ball;
+}
+
 TableSize table_played(const GameSetup& setup) {
     return setup.game == GameType::snooker ? TableSize::snooker : setup.table;
 }

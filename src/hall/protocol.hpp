@@ -1,4 +1,6 @@
 #pragma once
+// The message tables below are laid out by hand; clang-format would fold them into prose.
+// clang-format off
 /// \file
 /// The hall's line protocol, version 1: what a client and the server say to each other over
 /// the hall's Unix socket. Pure functions, no I/O; both sides use them.
@@ -15,12 +17,15 @@
 /// Client to server:
 ///
 ///   hello VERSION TOKEN|- NAME        first message; "-" asks for a new token
-///   create GAME SIZE RACE             a new table: 8ball|8ball-bar|9ball|10ball,
-///   7ft|8ft|9ft, 1..99 sit TABLE SEAT                    take seat 1 or 2 (or take back one's own
-///   away seat) watch TABLE                       follow a table as a spectator leave leave the
-///   table (a seat in a started game stays, away) act ACTION                        place / shot /
-///   choose, as `format_action` writes it next-rack                         rack the next rack of a
-///   race aim DEG SPEED SIDE FOLLOW ELEV    the shooter's cue as it aims (a Strike, not played)
+///   create GAME SIZE RACE             a new table: GAME 8ball|8ball-bar|9ball|10ball|snooker,
+///                                     SIZE 7ft|8ft|9ft|snooker, RACE 1..99
+///   sit TABLE SEAT                    take seat 1 or 2 (or take back one's own away seat)
+///   watch TABLE                       follow a table as a spectator
+///   leave                             leave the table (a seat in a started game stays, away)
+///   act ACTION                        place / shot / choose (choose concede: concede the
+///                                     frame, snooker), as `format_action` writes it
+///   next-rack                         rack the next rack of a race
+///   aim DEG SPEED SIDE FOLLOW ELEV    the shooter's cue as it aims (a Strike, not played)
 ///   chat TEXT                         to the table: 1..200 characters, no control characters
 ///   computer SEAT LEVEL|none          seat (or unseat) the computer in an empty seat (a
 ///                                     player seated at the table only)
@@ -54,6 +59,7 @@
 ///                                     the shooter's cue, at most every 50 ms
 ///   chat TABLE NAME TEXT              a chat line at the table
 ///   pong                              the answer to ping
+// clang-format on
 
 #include <cstddef>
 #include <cstdint>

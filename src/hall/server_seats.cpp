@@ -16,9 +16,9 @@ namespace {
 std::variant<Match, MatchError> new_match(const Create& create, std::uint64_t seed) {
     GameRecord header;
     header.setup.game = create.game;
+    // Snooker is played on the snooker table whatever size was asked for: the Match sees to
+    // it (table_played), and the lobby shows the Match's table.
     header.setup.table = create.size;
-    // Snooker is played on the snooker table whatever size was asked for: the lobby says so.
-    header.setup.table = table_played(header.setup);
     header.seed = seed;
     header.race_to = create.race_to;
     return Match::start(header, seed);

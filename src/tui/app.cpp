@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <termpool/race.hpp>
+#include <termpool/setup.hpp>
 #include <termpool/snooker_layout.hpp>
 
 #include "tui/help_text.hpp"
@@ -99,7 +101,7 @@ void App::compose(View& v) const {
     v.race_to = score().is_race() && !practice_ ? score().race_to : 0;
     v.racks_won[0] = score().racks_won[0];
     v.racks_won[1] = score().racks_won[1];
-    if (g.type() == GameType::nine_ball || g.type() == GameType::ten_ball) {
+    if (is_rotation_game(g.type())) {
         v.fouls[0] = g.consecutive_fouls(1);
         v.fouls[1] = g.consecutive_fouls(2);
     }
@@ -118,7 +120,7 @@ void App::compose(View& v) const {
             v.lowest_colour = on.empty() ? 0 : on.front();
         }
         // A match of frames is said as best of N (a race to 3 is best of 5).
-        v.best_of = score().is_race() ? 2 * score().race_to - 1 : 0;
+        v.best_of = score().is_race() ? best_of_for_race(score().race_to) : 0;
         v.race_to = 0;
         // Another terminal's nomination is not sent while it aims: no guess at it.
         if (mode_ == Mode::aiming && (!in_hall() || hall_seat_to_act())) {
@@ -221,7 +223,7 @@ void App::compose_prompt(View& v) const {
         const int race = std::max(1, options_.race_to);
         if (snooker_play())
             v.overlay = title + "\n\nBest of how many frames? " + entry_.text + "_\n(Enter keeps " +
-                        std::to_string(2 * race - 1) + "; 1 is a single frame)";
+                        std::to_string(best_of_for_race(race)) + "; 1 is a single frame)";
         else
             v.overlay = title + "\n\nRace to how many racks? " + entry_.text + "_\n(Enter keeps " +
                         std::to_string(race) + "; 1 is a single game)";

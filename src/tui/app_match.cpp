@@ -3,6 +3,7 @@
 // stats file, and a saved game taken up again.
 
 #include <string>
+#include <termpool/race.hpp>
 
 #include "tui/app.hpp"
 #include "tui/messages.hpp"
@@ -60,9 +61,10 @@ std::string App::game_over_text() const {
         return message_ + summary + "\n\nr  rematch (loser breaks)\nn  new game\nq  quit";
     // Snooker says a match of frames as best of N.
     const bool frames = snooker_play();
-    const std::string race = (frames ? "Best of " + std::to_string(2 * s.race_to - 1) + " frames"
-                                     : "Race to " + std::to_string(s.race_to)) +
-                             ": " + score_words();
+    const std::string race =
+        (frames ? "Best of " + std::to_string(best_of_for_race(s.race_to)) + " frames"
+                : "Race to " + std::to_string(s.race_to)) +
+        ": " + score_words();
     if (const int winner = s.match_winner())
         return message_ + "\n\n" + name(winner) + " wins the match\n" + race + summary +
                "\n\nr  rematch (loser breaks)\nn  new match\nq  quit";

@@ -5,35 +5,17 @@
 #include <algorithm>
 #include <optional>
 #include <string>
+#include <termpool/setup.hpp>
 #include <termpool/snooker_layout.hpp>
 #include <vector>
 
 #include "tui/app.hpp"
+#include "tui/cue_ball_spot.hpp"
 #include "tui/messages.hpp"
 #include "tui/nomination.hpp"
 #include "tui/save_file.hpp"
 
 namespace termpool::tui {
-namespace {
-
-// Where the cue ball in hand starts: the head spot in the kitchen; in the D beside the brown,
-// towards the yellow, where a snooker break is played from; else the legal spot nearest them.
-Vec2 first_spot(const Game& g, Vec2 head_spot) {
-    Vec2 want = head_spot;
-    if (g.ball_in_hand() == BallInHand::d) {
-        const double r = snooker_d_radius_on(g.table());
-        want = snooker_d_centre(g.table()) + Vec2{-r / 4, -r / 2};
-    }
-    if (g.legal_placement(want))
-        return want;
-    const std::vector<Vec2> spots = g.legal_placements(24);
-    if (spots.empty())
-        return want;
-    return *std::min_element(spots.begin(), spots.end(),
-                             [&](Vec2 a, Vec2 b) { return length(a - want) < length(b - want); });
-}
-
-} // namespace
 
 void App::begin() {
     message_ = practice_
@@ -70,7 +52,7 @@ void App::start_turn() {
             !cue || cue->state == MotionState::pocketed || !g.legal_placement(cue->position);
         warn_of_third_foul();
         mode_ = Mode::placing;
-        place_ = must_move ? first_spot(g, table_.head_spot()) : cue->position;
+        place_ = must_move ? first_cue_ball_spot(g, table_.head_spot()) : cue->position;
         return;
     }
     start_aiming();
@@ -80,8 +62,7 @@ void App::warn_of_third_foul() {
     // WPA 9-ball and 10-ball: a player on two fouls must be told before the shot that a third
     // loses.
     const Game& g = game();
-    if ((g.type() == GameType::nine_ball || g.type() == GameType::ten_ball) &&
-        g.consecutive_fouls(g.shooter()) >= 2)
+    if (is_rotation_game(g.type()) && g.consecutive_fouls(g.shooter()) >= 2)
         message_ += (message_.empty() ? "" : "; ") + name(g.shooter()) +
                     " is on two fouls: a third in a row loses the game";
 }

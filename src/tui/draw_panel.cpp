@@ -10,6 +10,7 @@
 #include <cmath>
 #include <iterator>
 #include <string>
+#include <termpool/setup.hpp>
 #include <termpool/snooker_layout.hpp>
 #include <vector>
 
@@ -90,7 +91,7 @@ Piece player_detail(const Frame& f, int player) {
         return {"", {}}; // no referee: no groups, no fouls
     if (v.game == GameType::snooker)
         return {high_break_text(v, player), dim};
-    if (v.game == GameType::nine_ball || v.game == GameType::ten_ball) {
+    if (is_rotation_game(v.game)) {
         const int fouls = std::max(0, v.fouls[player - 1]);
         if (fouls == 0)
             return {"", dim};
@@ -113,7 +114,7 @@ std::string loose_balls(const View& v) {
     if (v.game == GameType::snooker)
         return ""; // the colours come back, the reds are counted in the legend
     const std::string ids = pocketed(v, [&](int id) {
-        return v.game == GameType::nine_ball || v.game == GameType::ten_ball ||
+        return is_rotation_game(v.game) ||
                !(in_group(id, v.groups[0]) || in_group(id, v.groups[1]));
     });
     return ids.empty() ? "" : "pocketed" + ids;

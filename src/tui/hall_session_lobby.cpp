@@ -150,7 +150,7 @@ std::string HallSession::create_form_text() const {
            "t  table     " +
            table_size_name(create_.size) + "\n" +
            (create_.game == GameType::snooker
-                ? "+- best of   " + std::to_string(2 * create_.race_to - 1) +
+                ? "+- best of   " + std::to_string(best_of_for_race(create_.race_to)) +
                       (create_.race_to == 1 ? " (a single frame)" : " frames")
                 : "+- race to   " + std::to_string(create_.race_to) +
                       (create_.race_to == 1 ? " (a single game)" : "")) +

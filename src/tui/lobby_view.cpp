@@ -5,6 +5,7 @@
 #include "tui/lobby_view.hpp"
 
 #include <algorithm>
+#include <termpool/race.hpp>
 
 #include "tui/ball_style.hpp"
 #include "tui/painter.hpp"
@@ -16,6 +17,8 @@ namespace {
 constexpr int min_width = 40, min_height = 10;
 // The Size column holds the longest table name, "snooker", and a space.
 constexpr int size_w = 8;
+// The Race column holds the longest race, a snooker best of 197 ("bo197"), and a space.
+constexpr int race_w = 6;
 
 const Style dim{Colour::dim};
 const Style bold{Colour::normal, Colour::normal, true};
@@ -46,9 +49,9 @@ std::string table_row(const hall::TableView& t, int seat_w, bool extras) {
         // A snooker match is best of N frames: "bo5" for a race to 3.
         row += padded(table_size_name(t.size), size_w) +
                padded(t.game == GameType::snooker && t.race_to > 1
-                          ? "bo" + std::to_string(2 * t.race_to - 1)
+                          ? "bo" + std::to_string(best_of_for_race(t.race_to))
                           : std::to_string(t.race_to),
-                      5);
+                      race_w);
     row += padded(seat_words(t.seats[0]), seat_w) + " " + padded(seat_words(t.seats[1]), seat_w) +
            " " + padded(hall::table_state_name(t.state), 8);
     if (extras)
@@ -59,7 +62,7 @@ std::string table_row(const hall::TableView& t, int seat_w, bool extras) {
 std::string header_row(int seat_w, bool extras) {
     std::string row = padded("#", 5) + padded("Game", 18);
     if (extras)
-        row += padded("Size", size_w) + padded("Race", 5);
+        row += padded("Size", size_w) + padded("Race", race_w);
     row += padded("Seat 1", seat_w) + " " + padded("Seat 2", seat_w) + " " + padded("State", 8);
     if (extras)
         row += " Watching";
@@ -145,7 +148,7 @@ Grid render_lobby(const LobbyView& v, const Capabilities& caps, int width, int h
         p.text(width - 1 - display_width(people), 0, people, dim);
 
     const bool extras = width >= 90;
-    const int fixed = 5 + 18 + 2 + 8 + (extras ? size_w + 5 + 9 : 0);
+    const int fixed = 5 + 18 + 2 + 8 + (extras ? size_w + race_w + 9 : 0);
     const int seat_w = std::max(8, std::min(24, (width - 2 - fixed) / 2));
     const ListWindow window = list_window(v, height);
     const int list_top = window.top, list_rows = window.rows, keys_row = height - 1;

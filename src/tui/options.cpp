@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <termpool/race.hpp>
 
 namespace termpool::tui {
 
@@ -19,8 +20,8 @@ std::optional<int> parse_race_to(std::string_view text) {
 std::optional<int> parse_best_of(std::string_view text) {
     int n = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
-    if (ec != std::errc{} || end != text.data() + text.size() || n < 1 || n > 2 * max_race_to - 1 ||
-        n % 2 == 0)
+    if (ec != std::errc{} || end != text.data() + text.size() || n < 1 ||
+        n > best_of_for_race(max_race_to) || n % 2 == 0)
         return std::nullopt;
     return n;
 }
@@ -177,7 +178,7 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
             const auto n = parse_best_of(*v);
             if (!n) {
                 error = "--best-of takes an odd number of frames from 1 to " +
-                        std::to_string(2 * max_race_to - 1) + ", not '" + *v + "'";
+                        std::to_string(best_of_for_race(max_race_to)) + ", not '" + *v + "'";
                 return std::nullopt;
             }
             o.race_to = race_for_best_of(*n);
