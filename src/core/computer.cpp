@@ -104,9 +104,10 @@ bool blocked(const std::vector<Ball>& balls, Vec2 a, Vec2 b, std::pair<int, int>
     return false;
 }
 
-// How good the shooter's next shot looks from here, 0..1: the best legal ball and pocket with
-// nothing in the way, rated by how full the cut is and how far the balls travel.
-double next_shot_quality(const Game& game) {
+// How good the shooter's next shot looks from here: the best legal ball and pocket with nothing
+// in the way, rated 0..1 by how full the cut is and how far the balls travel, times what the
+// ball is worth (`weight`).
+template <class Weight> double weighted_next_quality(const Game& game, Weight weight) {
     const Ball* cue = find(game.balls(), 0);
     if (!cue)
         return 0;
@@ -123,14 +124,20 @@ double next_shot_quality(const Game& game) {
             const double cut = dot(normalized(line), normalized(to_pocket));
             if (cut < 0.34)
                 continue;
-            const double quality =
-                cut * cut * portable::exp(-(length(line) + length(to_pocket)) / 2.5);
+            // A weight of 1 leaves the product's bits as they were without it.
+            const double quality = weight(target) * cut * cut *
+                                   portable::exp(-(length(line) + length(to_pocket)) / 2.5);
             if (quality > best && !blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
                 !blocked(game.balls(), object->position, pocket.position, {0, target}, R))
                 best = quality;
         }
     }
     return best;
+}
+
+// Pool: every legal ball is worth the same.
+double next_shot_quality(const Game& game) {
+    return weighted_next_quality(game, [](int) { return 1.0; });
 }
 
 // Snooker: how much a ball on is worth taking next. A red opens the way to the black; a
@@ -139,33 +146,10 @@ double snooker_weight(int id) {
     return is_snooker_red(id) ? 1.0 : 0.5 + 0.5 * snooker_value(id) / 7.0;
 }
 
-// Snooker: the best next pot for whoever is on now, as next_shot_quality rates it, each ball
-// weighted by what it is worth (a colour after a red: the black before the yellow).
+// Snooker: the best next pot for whoever is on now, each ball weighted by what it is worth (a
+// colour after a red: the black before the yellow).
 double snooker_next_quality(const Game& game) {
-    const Ball* cue = find(game.balls(), 0);
-    if (!cue)
-        return 0;
-    const double R = game.params().ball_radius;
-    double best = 0;
-    for (const int target : game.legal_targets()) {
-        const Ball* object = find(game.balls(), target);
-        if (!object)
-            continue;
-        for (const Pocket& pocket : game.table().pockets) {
-            const Vec2 to_pocket = pocket.position - object->position;
-            const Vec2 ghost = object->position - normalized(to_pocket) * (2 * R);
-            const Vec2 line = ghost - cue->position;
-            const double cut = dot(normalized(line), normalized(to_pocket));
-            if (cut < 0.34)
-                continue;
-            const double quality = snooker_weight(target) * cut * cut *
-                                   portable::exp(-(length(line) + length(to_pocket)) / 2.5);
-            if (quality > best && !blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
-                !blocked(game.balls(), object->position, pocket.position, {0, target}, R))
-                best = quality;
-        }
-    }
-    return best;
+    return weighted_next_quality(game, snooker_weight);
 }
 
 // Snooker: the shot's worth from the shooter's side. Points scored and given away count at
