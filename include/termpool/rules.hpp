@@ -314,8 +314,17 @@ private:
     void end_visit();
     void end_frame(Verdict& v);
     Verdict judge_ten(const ShotCall& call, const Facts& facts);
-    // What 9-ball and 10-ball share (nine_ball.cpp): the fouls of a shot, a foul's penalty,
-    // the choice after a push-out, and the money ball spotted when it went down.
+    // What 9-ball and 10-ball share (nine_ball.cpp): the start of judging a shot (the break and
+    // push-out flags move on, fouls are judged and a foul's penalty paid), the fouls of a shot,
+    // a foul's penalty, the choice after a push-out, and the money ball spotted when it went
+    // down.
+    struct RotationStart {
+        bool was_break = false; // the shot was the break
+        bool push_out = false;  // the shot was a push-out the rules allowed
+        bool fouled = false;    // a foul: judged and penalised, the verdict is complete
+    };
+    RotationStart rotation_start(Verdict& v, const ShotCall& shot, const Facts& facts,
+                                 int money_ball);
     void rotation_fouls(Verdict& v, const Facts& facts, bool was_break, bool push_out) const;
     void rotation_foul_penalty(Verdict& v, const Facts& facts, int money_ball);
     void rotation_push_out(Verdict& v, const Facts& facts, int money_ball);

@@ -49,23 +49,31 @@ void Game::rotation_push_out(Verdict& v, const Facts& facts, int money_ball) {
     choices_ = {Choice::shoot, Choice::pass_back};
 }
 
+Game::RotationStart Game::rotation_start(Verdict& v, const ShotCall& shot, const Facts& facts,
+                                         int money_ball) {
+    RotationStart start;
+    start.was_break = is_break_;
+    start.push_out = shot.push_out && push_out_allowed_;
+    is_break_ = false;
+    // The push-out is allowed only on the shot right after the break.
+    push_out_allowed_ = start.was_break;
+    rotation_fouls(v, facts, start.was_break, start.push_out);
+    start.fouled = !v.fouls.empty();
+    if (start.fouled)
+        rotation_foul_penalty(v, facts, money_ball);
+    else
+        fouls_in_a_row_[shooter_ - 1] = 0;
+    return start;
+}
+
 Verdict Game::judge_nine(const ShotCall& shot, const Facts& facts) {
     Verdict v;
     const int me = shooter_, other = opponent(shooter_);
-    const bool was_break = is_break_;
-    const bool push_out = shot.push_out && push_out_allowed_;
-    is_break_ = false;
-    // The push-out is allowed only on the shot right after the break.
-    push_out_allowed_ = was_break;
-
-    rotation_fouls(v, facts, was_break, push_out);
-    if (!v.fouls.empty()) {
-        rotation_foul_penalty(v, facts, 9);
+    const RotationStart start = rotation_start(v, shot, facts, 9);
+    if (start.fouled)
         return v;
-    }
-    fouls_in_a_row_[me - 1] = 0;
 
-    if (push_out) {
+    if (start.push_out) {
         rotation_push_out(v, facts, 9);
         return v;
     }

@@ -10,18 +10,10 @@ namespace termpool {
 Verdict Game::judge_ten(const ShotCall& shot, const Facts& facts) {
     Verdict v;
     const int me = shooter_, other = opponent(shooter_);
-    const bool was_break = is_break_;
-    const bool push_out = shot.push_out && push_out_allowed_;
-    is_break_ = false;
-    // The push-out is allowed only on the shot right after the break.
-    push_out_allowed_ = was_break;
-
-    rotation_fouls(v, facts, was_break, push_out);
-    if (!v.fouls.empty()) {
-        rotation_foul_penalty(v, facts, 10);
+    const RotationStart start = rotation_start(v, shot, facts, 10);
+    if (start.fouled)
         return v;
-    }
-    fouls_in_a_row_[me - 1] = 0;
+    const bool was_break = start.was_break, push_out = start.push_out;
 
     if (push_out) {
         rotation_push_out(v, facts, 10);
