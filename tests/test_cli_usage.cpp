@@ -101,3 +101,30 @@ TEST_CASE("without a terminal the game says so and prints nothing else", "[cli][
     CHECK(o.out == "termpool: the game needs a terminal (try termpool --help)\n");
     CHECK(o.out.find('\033') == std::string::npos);
 }
+
+TEST_CASE("a command the program suggests names it so that it runs where the player is",
+          "[cli][usage]") {
+    const ScratchDir dir("termpool-self");
+    const std::string bin = termpool_binary();
+    // Not on the PATH (a build run from its tree): the program's own absolute path.
+    const Output away = run_in(dir, "PATH=/usr/bin:/bin '" + bin + "' --resume 0 2>&1");
+    CHECK(away.status == 2);
+    const std::string real = run("readlink -f '" + bin + "'");
+    REQUIRE(!real.empty());
+    CHECK(away.out == "termpool: there is no save 0 (" + real.substr(0, real.size() - 1) +
+                          " --resume lists them)\n");
+    // Found on the PATH as termpool (here through a link to this very file): its name.
+    REQUIRE(std::system(("mkdir -p " + dir.path + "/bin && ln -s '" +
+                         real.substr(0, real.size() - 1) + "' " + dir.path + "/bin/termpool")
+                            .c_str()) == 0);
+    const Output home =
+        run_in(dir, "PATH=" + dir.path + "/bin:/usr/bin:/bin termpool --resume 0 2>&1");
+    CHECK(home.out == "termpool: there is no save 0 (termpool --resume lists them)\n");
+    // Another termpool first on the PATH is not this one: the path again.
+    REQUIRE(std::system(("mkdir -p " + dir.path + "/other && printf '#!/bin/sh\\n' > " + dir.path +
+                         "/other/termpool && chmod +x " + dir.path + "/other/termpool")
+                            .c_str()) == 0);
+    const Output other =
+        run_in(dir, "PATH=" + dir.path + "/other:/usr/bin:/bin '" + bin + "' --resume 0 2>&1");
+    CHECK(other.out.find("(" + real.substr(0, real.size() - 1) + " --resume") != std::string::npos);
+}

@@ -10,6 +10,7 @@
 #include <variant>
 
 #include "files/keep_aside.hpp"
+#include "files/self_command.hpp"
 #include "tui/app.hpp"
 #include "tui/config.hpp"
 #include "tui/options.hpp"
@@ -152,12 +153,13 @@ int in_terminal(const GameOptions& options, const std::function<void(App&)>& set
 // How to continue the save at `path`: plain --resume while it is the only save.
 std::string resume_command(const std::string& path) {
     const int slot = slot_of(path);
+    const std::string resume = self_command() + " --resume";
     if (slot == 0)
-        return "termpool --resume " + path;
+        return resume + " " + path;
     const std::vector<int> slots = existing_slots();
     if (slots.size() == 1 && slots.front() == slot)
-        return "termpool --resume";
-    return "termpool --resume " + std::to_string(slot);
+        return resume;
+    return resume + " " + std::to_string(slot);
 }
 
 // After curses has ended: where the game is and how to go on with it, when there is a game.
@@ -170,8 +172,8 @@ void tell_where_saved(const std::string& path, const std::optional<std::string>&
     // A game that is over has nothing to continue: it can be watched again.
     const auto loaded = load_game(*after);
     if (const auto* game = std::get_if<Match>(&loaded); game && finished(*game)) {
-        std::printf("Game over, saved in %s; watch it again with: termpool replay %s\n",
-                    display_path(path).c_str(), display_path(path).c_str());
+        std::printf("Game over, saved in %s; watch it again with: %s replay %s\n",
+                    display_path(path).c_str(), self_command().c_str(), display_path(path).c_str());
         return;
     }
     std::printf("Game saved in %s; continue it with: %s\n", display_path(path).c_str(),
@@ -218,8 +220,8 @@ std::variant<Chosen, int> resume_named(const std::string& which) {
         std::all_of(which.begin(), which.end(), [](char c) { return c >= '0' && c <= '9'; });
     const int slot = number && which.size() <= 3 ? std::stoi(which) : 0;
     if (number && (slot < 1 || slot_of(slot_path(slot)) != slot)) {
-        std::fprintf(stderr, "termpool: there is no save %s (termpool --resume lists them)\n",
-                     which.c_str());
+        std::fprintf(stderr, "termpool: there is no save %s (%s --resume lists them)\n",
+                     which.c_str(), self_command().c_str());
         return 2;
     }
     const std::string path = number ? slot_path(slot) : which;
@@ -280,7 +282,8 @@ std::variant<Chosen, int> resume_only() {
         std::fprintf(stderr, "termpool: no saved game to resume (%s)\n", why.c_str());
         return 1;
     }
-    std::printf("Saved games you can continue (termpool --resume N, or --resume FILE):\n");
+    std::printf("Saved games you can continue (%s --resume N, or --resume FILE):\n",
+                self_command().c_str());
     for (const Chosen& c : free)
         std::printf("%s\n", describe(slot_of(c.lock.path()), c.lock.path(), c.game).c_str());
     return 0;
@@ -315,7 +318,9 @@ int new_game(GameOptions options, std::vector<std::string> notices) {
     });
     const std::string& path = lock.path();
     if (slot_of(path) > 1)
-        notices.push_back(std::string(skipped ? "An unfinished game is kept for termpool --resume"
+        // In the game's own panel, where the command would not fit: on the way out the game
+        // says how to continue each save.
+        notices.push_back(std::string(skipped ? "An unfinished game is kept for --resume"
                                               : "Another termpool game is running") +
                           ": this one is saved in " + display_path(path));
     if (read.problem) {
