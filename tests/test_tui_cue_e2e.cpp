@@ -11,10 +11,6 @@ using tmux_session::Tmux;
 
 TEST_CASE("the game in tmux: e raises the cue, a jump is refused, the raised cue shoots",
           "[tui][e2e][cue]") {
-    if (!tmux_session::have_tmux()) {
-        WARN("tmux is missing: this end-to-end test is skipped");
-        return;
-    }
     ScratchDir dir("termpool-test");
     Tmux t;
     t.start("env XDG_STATE_HOME=" + dir.path + " TERM=xterm-256color LANG=C.UTF-8 " +

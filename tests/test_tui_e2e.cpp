@@ -14,19 +14,9 @@
 using namespace tmux_session;
 
 TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]") {
-    if (std::system("command -v tmux >/dev/null 2>&1") != 0) {
-        WARN("tmux is missing: the end-to-end test of the game is skipped");
-        return;
-    }
-    const std::string binary = termpool_binary();
-    const ScratchDir scratch("termpool-e2e");
-    const std::string& dir = scratch.path;
-    const std::string status_file = dir + "/status";
-
+    const ScratchDir dir("termpool-e2e");
     Tmux t;
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"env XDG_STATE_HOME=" + dir +
-           " TERM=xterm-256color LANG=C.UTF-8 " + binary + "; echo \\$? > " + status_file +
-           "; sleep 60\"");
+    t.start(game_command(dir, ""));
     REQUIRE(t.wait_for_text("Name of player 1"));
 
     // Names at the prompt.
@@ -70,27 +60,16 @@ TEST_CASE("the game in tmux: names, break, mouse aim, resize, quit", "[tui][e2e]
     t.keys("q");
     REQUIRE(t.wait_for_text("Quit"));
     t.keys("y");
-    const std::string status = exit_status(status_file);
-    CHECK(status == "0");
+    CHECK(exit_status(dir.status_file()) == "0");
     CHECK(t.flag("mouse_any_flag") == "0");
     CHECK(t.flag("mouse_button_flag") == "0");
-    std::remove(status_file.c_str());
 }
 
 TEST_CASE("the help at 80x24: pages turn with Space, k and PgDn; Esc and q close it",
           "[tui][e2e]") {
-    if (std::system("command -v tmux >/dev/null 2>&1") != 0) {
-        WARN("tmux is missing: the end-to-end test of the help is skipped");
-        return;
-    }
-    const std::string binary = termpool_binary();
-    const ScratchDir scratch("termpool-help");
-    const std::string& dir = scratch.path;
-    const std::string status_file = dir + "/status";
+    const ScratchDir dir("termpool-help");
     Tmux t;
-    t.tmux("new-session -d -s e2e -x 80 -y 24 \"env XDG_STATE_HOME=" + dir +
-           " TERM=xterm-256color LANG=C.UTF-8 " + binary +
-           " --player1 Ann --player2 Bob; echo \\$? > " + status_file + "; sleep 60\"");
+    t.start(game_command(dir, "--player1 Ann --player2 Bob"), 80, 24);
     REQUIRE(t.wait_for_text("place the cue ball"));
     CHECK(t.screen().find("? help  q quit") != std::string::npos);
     t.keys("?");
@@ -104,80 +83,54 @@ TEST_CASE("the help at 80x24: pages turn with Space, k and PgDn; Esc and q close
     t.keys("NPage");
     CHECK(t.wait_for_text("page 3/3"));
     t.keys("Escape");
-    CHECK(
-        t.wait_for([](const std::string& s) { return s.find("Esc closes") == std::string::npos; }));
+    CHECK(t.wait_gone("Esc closes"));
     // q closes the help rather than asking to quit; opened again it starts on page 1.
     t.keys("?");
     REQUIRE(t.wait_for_text("page 1/3"));
     t.keys("q");
-    CHECK(
-        t.wait_for([](const std::string& s) { return s.find("Esc closes") == std::string::npos; }));
+    CHECK(t.wait_gone("Esc closes"));
     CHECK(t.screen().find("Quit the game?") == std::string::npos);
     t.keys("q");
     REQUIRE(t.wait_for_text("Quit the game?"));
     t.keys("y");
-    CHECK(exit_status(status_file) == "0");
-    std::remove(status_file.c_str());
+    CHECK(exit_status(dir.status_file()) == "0");
 }
 
 TEST_CASE("SIGHUP during a shot leaves a save that resumes", "[tui][e2e]") {
-    if (std::system("command -v tmux >/dev/null 2>&1") != 0) {
-        WARN("tmux is missing: the end-to-end test of saves is skipped");
-        return;
-    }
-    const std::string binary = termpool_binary();
-    const ScratchDir scratch("termpool-save");
-    const std::string& dir = scratch.path;
-    const std::string status_file = dir + "/status";
-    const std::string save = dir + "/termpool/game.save";
-    const std::string env = "env XDG_STATE_HOME=" + dir + " TERM=xterm-256color LANG=C.UTF-8 ";
-
+    const ScratchDir dir("termpool-save");
     Tmux t;
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + binary +
-           " --player1 Ann --player2 Bob; echo \\$? > " + status_file + "; sleep 60\"");
+    t.start(game_command(dir, "--player1 Ann --player2 Bob"));
     REQUIRE(t.wait_for_text("place the cue ball"));
     t.keys("Enter");
     REQUIRE(t.wait_for_text("[ shoot ]"));
     t.keys("Space");
-    // Hang up while the break is still rolling.
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    const std::string pid = run("tmux -L " + t.socket + " display-message -p -t e2e '#{pane_pid}'");
-    run("pkill -HUP -P " + pid + " 2>/dev/null");
-    const std::string status = exit_status(status_file);
-    CHECK(status == "129");
-    std::ifstream saved(save);
-    std::string text((std::istreambuf_iterator<char>(saved)), std::istreambuf_iterator<char>());
+    // Hang up while the break is still rolling (the break rolls for seconds).
+    REQUIRE(t.wait_for_text("Ann shoots"));
+    run("pkill -HUP -P " + t.flag("pane_pid") + " 2>/dev/null");
+    CHECK(exit_status(dir.status_file()) == "129");
+    const std::string text = file_text(dir.save());
     CHECK(text.find("\nshot 12 ") != std::string::npos); // the break, at full power
     CHECK(text.find("\nend\n") != std::string::npos);
 
     // Resumed, the game is where the shot left it.
-    t.tmux("kill-session -t e2e");
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + binary + " --resume; sleep 60\"");
+    t.kill_session();
+    t.start(game_command(dir, "--resume"));
     CHECK(t.wait_for_text("Game resumed"));
 }
 
 TEST_CASE("a saved game plays back with replay", "[tui][e2e]") {
-    if (std::system("command -v tmux >/dev/null 2>&1") != 0) {
-        WARN("tmux is missing: the end-to-end test of replays is skipped");
-        return;
-    }
-    const std::string binary = termpool_binary();
-    const ScratchDir scratch("termpool-replay");
-    const std::string& dir = scratch.path;
+    const ScratchDir dir("termpool-replay");
     {
-        std::ofstream out(dir + "/game.save");
+        std::ofstream out(dir.path + "/game.save");
         out << "termpool-record 1\ngame 8ball\ntable 9ft\nseed 3\nbreaker 1\nplayer1 Ann\n"
                "player2 Bob\nshot 12 0 0 0\nshot 2 90 0 0\nend\n";
     }
-    const std::string status_file = dir + "/status";
     Tmux t;
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"env TERM=xterm-256color LANG=C.UTF-8 " + binary +
-           " replay " + dir + "/game.save; echo \\$? > " + status_file + "; sleep 60\"");
+    t.start(game_command(dir, "replay " + dir.path + "/game.save"));
     REQUIRE(t.wait_for_text("Replay, shot 1 of 2"));
     t.keys("Space");
     t.keys("Right");
     CHECK(t.wait_for_text("Ann"));
     t.keys("q");
-    const std::string status = exit_status(status_file);
-    CHECK(status == "0");
+    CHECK(exit_status(dir.status_file()) == "0");
 }

@@ -14,20 +14,6 @@ using namespace tmux_session;
 
 namespace {
 
-// The text of another session's pane.
-std::string pane(const Tmux& t, const std::string& session) {
-    return t.tmux("capture-pane -p -t " + session);
-}
-
-bool wait_for_pane(const Tmux& t, const std::string& session, const std::string& text) {
-    for (int i = 0; i < 200; ++i) {
-        if (pane(t, session).find(text) != std::string::npos)
-            return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    return false;
-}
-
 // `termpool ARGS` with saves in `dir`, both streams, and its exit status.
 std::pair<int, std::string> run_termpool(const ScratchDir& dir, const std::string& args) {
     const std::string command = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
@@ -44,28 +30,22 @@ std::pair<int, std::string> run_termpool(const ScratchDir& dir, const std::strin
 } // namespace
 
 TEST_CASE("two games at once keep two saves; --resume lists them and picks one", "[tui][e2e]") {
-    if (!have_tmux()) {
-        WARN("tmux is missing: the saves test is skipped");
-        return;
-    }
     const ScratchDir dir("termpool-saves");
     const std::string env = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
                             " TERM=xterm-256color LANG=C.UTF-8 HOME=" + dir.path + " ";
     const std::string first = dir.path + "/termpool/game.save";
     const std::string second = dir.path + "/termpool/game-2.save";
     Tmux t;
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + termpool_binary() +
-           " --player1 Ann --player2 Bob; sleep 60\"");
+    t.start(env + termpool_binary() + " --player1 Ann --player2 Bob; sleep 60");
     REQUIRE(t.wait_for_text("place the cue ball"));
     t.keys("Enter");
     REQUIRE(t.wait_for_text("[ shoot ]"));
-    t.tmux("new-session -d -s other -x 100 -y 32 \"" + env + termpool_binary() +
-           " --player1 Cy --player2 Dee; sleep 60\"");
+    t.start(env + termpool_binary() + " --player1 Cy --player2 Dee; sleep 60", 100, 32, "other");
     // The second game is told where it is saved, then plays there.
-    REQUIRE(wait_for_pane(t, "other", "this one is saved in"));
-    CHECK(pane(t, "other").find("~/termpool/game-2.save") != std::string::npos);
-    t.tmux("send-keys -t other Enter");
-    REQUIRE(wait_for_pane(t, "other", "[ shoot ]"));
+    REQUIRE(t.wait_for_text("this one is saved in", 10, "other"));
+    CHECK(t.screen("other").find("~/termpool/game-2.save") != std::string::npos);
+    t.keys("Enter", "other");
+    REQUIRE(t.wait_for_text("[ shoot ]", 10, "other"));
     CHECK(file_text(first).find("player1 Ann") != std::string::npos);
     CHECK(file_text(second).find("player1 Cy") != std::string::npos);
 
@@ -78,30 +58,28 @@ TEST_CASE("two games at once keep two saves; --resume lists them and picks one",
     t.keys("q");
     REQUIRE(t.wait_for_text("Quit"));
     t.keys("y");
-    CHECK(t.wait_for_text("Game saved in ~/termpool/game.save; continue it with: termpool "
-                          "--resume 1"));
-    t.tmux("send-keys -t other q");
-    REQUIRE(wait_for_pane(t, "other", "Quit"));
-    t.tmux("send-keys -t other y");
-    CHECK(wait_for_pane(t, "other", "continue it with: termpool --resume 2"));
+    // The binary is not on the PATH here: the way on names it as it was started.
+    CHECK(t.wait_for_text("Game saved in ~/termpool/game.save; continue it with: " +
+                              termpool_binary() + " --resume 1",
+                          10, "e2e", true));
+    t.keys("q", "other");
+    REQUIRE(t.wait_for_text("Quit", 10, "other"));
+    t.keys("y", "other");
+    CHECK(t.wait_for_text("continue it with: " + termpool_binary() + " --resume 2", 10, "other",
+                          true));
 
     // Both are listed, with their players; --resume 2 continues Cy's.
     const auto listed = run_termpool(dir, "--resume");
     CHECK(listed.first == 0);
     CHECK(listed.second.find("1  Ann v Bob, 8ball, 9ft, 0 shots, saved ") != std::string::npos);
     CHECK(listed.second.find("2  Cy v Dee, 8ball, 9ft, 0 shots, saved ") != std::string::npos);
-    t.tmux("kill-session -t e2e");
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + termpool_binary() +
-           " --resume 2; sleep 60\"");
+    t.kill_session();
+    t.start(env + termpool_binary() + " --resume 2; sleep 60");
     CHECK(t.wait_for_text("Game resumed: Cy to play"));
 }
 
 TEST_CASE("replay without a file shows the save; --resume FILE; a config warning in the game",
           "[tui][e2e]") {
-    if (!have_tmux()) {
-        WARN("tmux is missing: the replay test is skipped");
-        return;
-    }
     const ScratchDir dir("termpool-replay-save");
     std::system(("mkdir -p " + dir.path + "/termpool").c_str());
     std::ofstream(dir.path + "/termpool/game.save")
@@ -111,32 +89,25 @@ TEST_CASE("replay without a file shows the save; --resume FILE; a config warning
     const std::string env = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
                             " TERM=xterm-256color LANG=C.UTF-8 ";
     Tmux t;
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + termpool_binary() +
-           " replay; sleep 60\"");
+    t.start(env + termpool_binary() + " replay; sleep 60");
     CHECK(t.wait_for_text("Replay, shot 1 of 2"));
     t.keys("q");
-    t.tmux("kill-session -t e2e");
+    t.kill_session();
 
     // --resume FILE continues a save kept anywhere, and saves back to it.
     std::system(("cp " + dir.path + "/termpool/game.save " + dir.path + "/kept.save").c_str());
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + termpool_binary() + " --resume " +
-           dir.path + "/kept.save; sleep 60\"");
+    t.start(env + termpool_binary() + " --resume " + dir.path + "/kept.save; sleep 60");
     CHECK(t.wait_for_text("Game resumed"));
     t.keys("q");
     REQUIRE(t.wait_for_text("Quit"));
     t.keys("y");
     // The line is longer than the pane: join what tmux wrapped.
-    const std::string told = "continue it with: termpool --resume " + dir.path + "/kept.save";
-    bool said = false;
-    for (int i = 0; i < 100 && !said; ++i) {
-        said = t.tmux("capture-pane -p -J -t e2e").find(told) != std::string::npos;
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
-    CHECK(said);
-    t.tmux("kill-session -t e2e");
+    CHECK(t.wait_for_text("continue it with: " + termpool_binary() + " --resume " + dir.path +
+                              "/kept.save",
+                          10, "e2e", true));
+    t.kill_session();
 
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"" + env + termpool_binary() +
-           " --player1 Cy --player2 Dee; sleep 60\"");
+    t.start(env + termpool_binary() + " --player1 Cy --player2 Dee; sleep 60");
     CHECK(t.wait_for_text("unknown key 'flavour'"));
 }
 
@@ -161,10 +132,6 @@ std::string saved_game(int actions = 0) {
 } // namespace
 
 TEST_CASE("a new game takes a finished save's place, never an unfinished one's", "[tui][e2e]") {
-    if (!have_tmux()) {
-        WARN("tmux is missing: the saves test is skipped");
-        return;
-    }
     const ScratchDir dir("termpool-slots");
     const std::string env = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
                             " TERM=xterm-256color LANG=C.UTF-8 HOME=" + dir.path + " ";
@@ -190,7 +157,7 @@ TEST_CASE("a new game takes a finished save's place, never an unfinished one's",
     // An unfinished game: it stays for --resume, and the new game goes to game-2.save.
     const std::string unfinished = saved_game(4);
     std::ofstream(first) << unfinished;
-    play_a_placement("An unfinished game is kept for termpool --resume");
+    play_a_placement("An unfinished game is kept for --resume");
     CHECK(file_text(first) == unfinished);
     CHECK(file_text(dir.path + "/termpool/game-2.save").find("player1 Cy") != std::string::npos);
 
@@ -230,10 +197,6 @@ TEST_CASE("--resume lists a race with its score", "[tui][e2e][race]") {
 }
 
 TEST_CASE("a save that fails stays on the message line until one works", "[tui][e2e]") {
-    if (!have_tmux()) {
-        WARN("tmux is missing: the saves test is skipped");
-        return;
-    }
     // The state directory's termpool is a file: no save can be written there (even by root).
     const ScratchDir dir("termpool-nosave");
     std::ofstream(dir.path + "/termpool") << "not a directory\n";
@@ -251,10 +214,6 @@ TEST_CASE("a save that fails stays on the message line until one works", "[tui][
 
 TEST_CASE("a game saved after a ball-in-hand placement resumes at the aim with the ball put",
           "[tui][e2e]") {
-    if (!have_tmux()) {
-        WARN("tmux is missing: the saves test is skipped");
-        return;
-    }
     const ScratchDir dir("termpool-placed");
     const std::string env = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
                             " TERM=xterm-256color LANG=C.UTF-8 HOME=" + dir.path + " ";

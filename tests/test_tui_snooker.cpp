@@ -440,10 +440,6 @@ TEST_CASE("the snooker table keeps its 2:1 shape and fits the terminal at every 
 TEST_CASE("practice on the snooker table in tmux shows the baulk line, the D and the spots",
           "[tui][e2e][snooker-tui]") {
     using namespace tmux_session;
-    if (!have_tmux()) {
-        WARN("tmux is missing: the end-to-end test of the snooker table is skipped");
-        return;
-    }
     const ScratchDir scratch("termpool-snooker-e2e");
     for (const bool ascii : {false, true})
         for (const auto& [w, h] : {std::pair{100, 32}, {80, 24}}) {

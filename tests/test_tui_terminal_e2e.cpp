@@ -23,36 +23,28 @@ bool process_gone(const std::string& pid) {
 } // namespace
 
 TEST_CASE("a terminal that goes away ends the game within a second, saved", "[tui][e2e]") {
-    if (!have_tmux()) {
-        WARN("tmux is missing: the hangup test is skipped");
-        return;
-    }
     const ScratchDir dir("termpool-hangup");
-    const std::string status_file = dir.path + "/status";
-    const std::string save = dir.path + "/termpool/game.save";
     Tmux t;
     // Another session keeps the server alive once the game's session is killed. The shell
     // ignores SIGHUP and the game is not the session leader, so no SIGHUP reaches it: only
     // the hangup of its terminal tells it to leave (as under a parent that does not pass it on).
-    t.tmux("new-session -d -s keep sleep 60");
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"trap '' HUP; env XDG_STATE_HOME=" + dir.path +
-           " TERM=xterm-256color LANG=C.UTF-8 " + termpool_binary() +
-           " --player1 Ann --player2 Bob; echo \\$? > " + status_file + "\"");
+    t.start("sleep 60", 100, 32, "keep");
+    t.start("trap '' HUP; " +
+            game_command(dir, "--player1 Ann --player2 Bob", "xterm-256color", false));
     REQUIRE(t.wait_for_text("place the cue ball"));
     t.keys("Enter");
     REQUIRE(t.wait_for_text("[ shoot ]"));
     t.keys("Space");
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    // The terminal goes away while the break rolls.
+    REQUIRE(t.wait_for_text("Ann shoots"));
     std::string game_pid = run("pgrep -P " + t.flag("pane_pid"));
     while (!game_pid.empty() && game_pid.back() == '\n')
         game_pid.pop_back();
     REQUIRE(!game_pid.empty());
 
-    t.tmux("kill-session -t e2e");
+    t.kill_session();
     const auto killed = std::chrono::steady_clock::now();
-    while (!process_gone(game_pid) &&
-           std::chrono::steady_clock::now() - killed < std::chrono::seconds(3))
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    wait_until([&] { return process_gone(game_pid); }, 3);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - killed).count();
     const bool gone = process_gone(game_pid);
@@ -60,8 +52,8 @@ TEST_CASE("a terminal that goes away ends the game within a second, saved", "[tu
         ::kill(std::stoi(game_pid), SIGKILL); // the defect: it would spin forever
     CHECK(gone);
     CHECK(seconds < 1.0);
-    CHECK(exit_status(status_file) == "129");
-    const std::string text = file_text(save);
+    CHECK(exit_status(dir.status_file()) == "129");
+    const std::string text = file_text(dir.save());
     CHECK(text.find("\nplace ") != std::string::npos);
     CHECK(text.find("\nshot ") != std::string::npos); // the break, saved on the way out
     CHECK(text.find("\nend\n") != std::string::npos);
@@ -69,17 +61,9 @@ TEST_CASE("a terminal that goes away ends the game within a second, saved", "[tu
 
 TEST_CASE("vt100: no mouse tracking, a stray click report does not shoot, the screen is cleared",
           "[tui][e2e]") {
-    if (!have_tmux()) {
-        WARN("tmux is missing: the vt100 test is skipped");
-        return;
-    }
     const ScratchDir dir("termpool-vt100");
-    const std::string status_file = dir.path + "/status";
-    const std::string save = dir.path + "/termpool/game.save";
     Tmux t;
-    t.tmux("new-session -d -s e2e -x 100 -y 32 \"env XDG_STATE_HOME=" + dir.path +
-           " TERM=vt100 LANG=C.UTF-8 " + termpool_binary() +
-           " --player1 Ann --player2 Bob; echo \\$? > " + status_file + "; sleep 60\"");
+    t.start(game_command(dir, "--player1 Ann --player2 Bob", "vt100"));
     REQUIRE(t.wait_for_text("place the cue ball"));
     t.keys("Enter");
     REQUIRE(t.wait_for_text("[ shoot ]"));
@@ -95,9 +79,15 @@ TEST_CASE("vt100: no mouse tracking, a stray click report does not shoot, the sc
     t.keys("-H 1b 5b 4d 23 41 31");
     t.keys("-H 1b 5b 3c 30 3b 33 33 3b 31 37 4d");
     t.keys("-H 1b 5b 3c 30 3b 33 33 3b 31 37 6d");
-    std::this_thread::sleep_for(std::chrono::milliseconds(700));
+    // Keys are read in order: once the help that ? opens is up, and closed again, the reports
+    // before it have been read, and the screen is what it was.
+    t.keys("?");
+    REQUIRE(t.wait_for_text("Esc closes"));
+    t.keys("Escape");
+    REQUIRE(t.wait_gone("Esc closes"));
+    CHECK(t.wait_for([&](const std::string& s) { return s == before; }, 2));
     CHECK(t.screen() == before);
-    CHECK(file_text(save).find("\nshot ") == std::string::npos);
+    CHECK(file_text(dir.save()).find("\nshot ") == std::string::npos);
 
     // Arrows still work (the pane sends ESC O D in keypad mode).
     t.keys("Left");
@@ -107,7 +97,7 @@ TEST_CASE("vt100: no mouse tracking, a stray click report does not shoot, the sc
     t.keys("q");
     REQUIRE(t.wait_for_text("Quit"));
     t.keys("y");
-    CHECK(exit_status(status_file) == "0");
+    CHECK(exit_status(dir.status_file()) == "0");
     const std::string after = t.screen();
     CHECK(after.find("[ shoot ]") == std::string::npos);
     CHECK(after.find("open table") == std::string::npos);

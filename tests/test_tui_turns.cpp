@@ -56,10 +56,6 @@ std::string cell_text(const std::string& screen, int x, int y) {
 } // namespace
 
 TEST_CASE("the status line names the players and says what to do", "[tui][e2e]") {
-    if (!tmux_session::have_tmux()) {
-        WARN("tmux is missing: this end-to-end test is skipped");
-        return;
-    }
     ScratchDir dir("termpool-test");
     Tmux t;
     start_game(t, dir.path, "--player1 Ann --player2 Bob --seed 1");
@@ -85,10 +81,6 @@ TEST_CASE("the status line names the players and says what to do", "[tui][e2e]")
 }
 
 TEST_CASE("hovering aims but keeps the power; keys take the pointer's mark away", "[tui][e2e]") {
-    if (!tmux_session::have_tmux()) {
-        WARN("tmux is missing: this end-to-end test is skipped");
-        return;
-    }
     ScratchDir dir("termpool-test");
     Tmux t;
     start_game(t, dir.path, "--player1 Ann --player2 Bob --seed 1");
@@ -119,10 +111,6 @@ TEST_CASE("hovering aims but keeps the power; keys take the pointer's mark away"
 }
 
 TEST_CASE("9-ball: Space at the start of each turn never hits a wrong ball first", "[tui][e2e]") {
-    if (!tmux_session::have_tmux()) {
-        WARN("tmux is missing: this end-to-end test is skipped");
-        return;
-    }
     ScratchDir dir("termpool-test");
     const std::string save = dir.path + "/termpool/game.save";
     Tmux t;
