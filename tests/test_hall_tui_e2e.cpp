@@ -142,15 +142,28 @@ bool shot_rolling(const std::string& screen, const std::string& who = "Ann") {
     return false;
 }
 
+// True when the player at this screen owes a choice (the others' screens say whom they wait for).
+bool owes_choice(const std::string& screen) {
+    return screen.find(", choose:") != std::string::npos &&
+           screen.find("waiting for") == std::string::npos;
+}
+
 // Waits until every screen has stopped rolling a shot and the legends that show agree (a box
-// may cover some, never all); false after `seconds`.
-bool same_table(const std::vector<const Tmux*>& terminals, double seconds = 20) {
+// may cover some, never all); false after `seconds`. A screen that rolls a shot is sent x,
+// which skips to its end, as a player who has seen enough would. With `take_choices`, a player
+// who owes a choice (an 8 potted on the break: its box covers every legend) takes the first.
+bool same_table(const std::vector<const Tmux*>& terminals, double seconds = 20,
+                bool take_choices = false) {
     const auto end = Clock::now() + std::chrono::duration<double>(seconds);
     while (Clock::now() < end) {
         bool settled = true;
         std::optional<std::set<int>> shown;
         for (std::size_t i = 0; i < terminals.size() && settled; ++i) {
             const std::string s = terminals[i]->screen();
+            if (shot_rolling(s) || shot_rolling(s, "Bob"))
+                terminals[i]->keys("x");
+            else if (take_choices && owes_choice(s))
+                terminals[i]->keys("1");
             const std::set<int> left = balls_on_table(s);
             if (!left.empty() && !shown)
                 shown = left;
@@ -175,8 +188,7 @@ const Tmux* play_turn(const std::vector<const Tmux*>& terminals) {
     for (int tries = 0; tries < 400; ++tries) {
         for (const Tmux* t : terminals) {
             const std::string s = t->screen();
-            if (s.find(", choose:") != std::string::npos &&
-                s.find("waiting for") == std::string::npos) {
+            if (owes_choice(s)) {
                 t->keys("1");
                 std::this_thread::sleep_for(200ms);
                 continue;
@@ -237,20 +249,10 @@ TEST_CASE("three hall terminals: a table created, a seat taken, a watcher, the r
     CHECK(bob.wait_for_text("elev 5\u00B0"));
     CHECK(cid.wait_for_text("elev 5\u00B0"));
     ann.keys("Space");
-    // The shot reaches the other two screens and rolls out there too.
+    // The shot reaches the other two screens and rolls out there too (x skips to its end).
     CHECK(bob.wait_for([](const std::string& s) { return shot_rolling(s); }));
     CHECK(cid.wait_for([](const std::string& s) { return shot_rolling(s); }));
-    std::set<int> left[3];
-    const bool settled = ann.wait_for(
-        [&](const std::string& a) {
-            const std::string b = bob.screen(), c = cid.screen();
-            left[0] = balls_on_table(a);
-            left[1] = balls_on_table(b);
-            left[2] = balls_on_table(c);
-            return !shot_rolling(a) && !shot_rolling(b) && !shot_rolling(c) && !left[0].empty() &&
-                   left[0] == left[1] && left[1] == left[2];
-        },
-        20);
+    const bool settled = same_table({&ann, &bob, &cid}, 20, true);
     INFO("Ann:\n" << ann.screen() << "\nBob:\n" << bob.screen() << "\nCid:\n" << cid.screen());
     CHECK(settled);
 

@@ -360,7 +360,7 @@ std::string frame_owing_a_nomination() {
     header.seed = 11;
     header.names[0] = "Ann";
     header.names[1] = "Bob";
-    header.computers[0] = header.computers[1] = Level::pro;
+    header.computers[0] = header.computers[1] = Level::easy;
     auto started = Match::start(header, 5);
     REQUIRE(std::holds_alternative<Match>(started));
     Match match = std::move(std::get<Match>(started));
@@ -415,6 +415,7 @@ TEST_CASE("after a red the keys 2-7 nominate a colour in tmux, and the shot call
     t.keys("6");
     CHECK(t.wait_for_text("nominated pink"));
     t.keys("Space");
+    t.keys("x"); // the shot is saved once it has rolled: at once
     // The shot is saved with its nomination: the pink, ball 20, no pocket.
     CHECK(t.wait_for([&](const std::string&) {
         return file_text(file).find(" call 20 0") != std::string::npos;
