@@ -40,6 +40,43 @@ using namespace std::chrono_literals;
 
 namespace {
 
+// A log the server's thread writes while the test reads it.
+class LockedLog : public std::streambuf {
+public:
+    std::string text() {
+        const std::lock_guard lock(mutex_);
+        return text_;
+    }
+
+protected:
+    int overflow(int c) override {
+        const std::lock_guard lock(mutex_);
+        if (c != EOF)
+            text_ += static_cast<char>(c);
+        return c == EOF ? 0 : c;
+    }
+    std::streamsize xsputn(const char* s, std::streamsize n) override {
+        const std::lock_guard lock(mutex_);
+        text_.append(s, static_cast<std::size_t>(n));
+        return n;
+    }
+
+private:
+    std::mutex mutex_;
+    std::string text_;
+};
+
+// Waits (at most kWait) until the server's log holds `line`; whether it came.
+bool log_shows(LockedLog& log, const std::string& line) {
+    const auto end = std::chrono::steady_clock::now() + kWait;
+    while (log.text().find(line) == std::string::npos) {
+        if (std::chrono::steady_clock::now() >= end)
+            return false;
+        std::this_thread::sleep_for(5ms);
+    }
+    return true;
+}
+
 // A server on `dir`/hall.sock, serving on a thread until destroyed.
 class RunningServer {
 public:
@@ -49,7 +86,10 @@ public:
         server_ = std::make_unique<Server>(options);
         const std::string problem = server_->open();
         REQUIRE(problem == "");
-        thread_ = std::thread([this] { status_ = server_->run(); });
+        thread_ = std::thread([this] {
+            status_ = server_->run();
+            finished_ = true;
+        });
     }
     ~RunningServer() { stop(); }
     RunningServer(const RunningServer&) = delete;
@@ -63,11 +103,14 @@ public:
         server_.reset(); // closes every connection, removes the socket file
     }
     Server& server() { return *server_; }
+    /// True once `run` returned (by itself: idle_exit).
+    bool finished() const { return finished_; }
 
 private:
     std::unique_ptr<Server> server_;
     std::thread thread_;
     int status_ = 0;
+    std::atomic<bool> finished_{false};
 };
 
 Error expect_error(HallClient& client) {
@@ -217,7 +260,9 @@ TEST_CASE("hall server: bad input gets an error, the server goes on", "[hall]") 
 
 TEST_CASE("hall server: an out-of-turn action is refused and changes nothing", "[hall]") {
     test::TempDir dir("termpool-hall");
-    RunningServer running(dir.path());
+    ServerOptions options;
+    options.chat_interval = std::chrono::hours(1); // the second chat is too soon however slow
+    RunningServer running(dir.path(), options);
     HallClient ann = connected(dir.path(), "Ann");
     HallClient bob = connected(dir.path(), "Bob");
     const int table = create_table(ann);
@@ -230,7 +275,7 @@ TEST_CASE("hall server: an out-of-turn action is refused and changes nothing", "
     const Error error = expect_error(bob);
     CHECK(error.code == ErrorCode::refused);
     CHECK(error.text == match_error_text(MatchError::wrong_player));
-    // A spectator may not play either, nor may anyone chat twice in a second.
+    // A spectator may not play either, nor may anyone chat twice within chat_interval.
     bob.send(Chat{"hi"});
     expect<ChatShown>(ann);
     bob.send(Chat{"again"});
@@ -486,28 +531,41 @@ TEST_CASE("hall server: the lobby's changes go out coalesced, requests have a bu
     RunningServer running(dir.path());
     HallClient lobby = connected(dir.path(), "Lou");
     REQUIRE(lobby.wait_for(is<LobbyEnd>, kWait));
+    // Every snapshot made from here on may still be unread.
+    const auto since = std::chrono::steady_clock::now();
     HallClient ann = connected(dir.path(), "Ann");
     HallClient eve = connected(dir.path(), "Eve");
     const int table = create_table(ann);
     sit(ann, table, 1); // the table stays while Eve comes and goes
 
     SECTION("a watcher toggling does not flood the lobby") {
-        const auto start = std::chrono::steady_clock::now();
-        for (int i = 0; i < 9; ++i) { // 18 requests: within the budget
+        for (int i = 0; i < 9; ++i) { // 18 requests, and the sit below: within the budget
             REQUIRE(eve.send(Watch{table}));
             expect<RecordEnd>(eve);
             REQUIRE(eve.send(Leave{}));
             expect<Left>(eve);
         }
-        const auto elapsed = std::chrono::steady_clock::now() - start;
-        // Everything sent by now has had its time to come.
+        // The last change, unlike any before it: Eve sits. The lobby is read up to the snapshot
+        // that shows it (so the changes were not lost), counting every snapshot on the way: at
+        // most one every lobby_interval (250 ms) since `since`, and one made just before it.
+        sit(eve, table, 2);
         int snapshots = 0;
-        const auto end = std::chrono::steady_clock::now() + 400ms;
-        while (std::chrono::steady_clock::now() < end)
-            if (const auto m = lobby.receive(50ms); m && is<LobbyBegin>(*m))
-                ++snapshots;
-        CHECK(snapshots >= 1);
-        CHECK(snapshots <= 2 + static_cast<int>((elapsed + 400ms) / 250ms));
+        bool shows_eve = false; // the snapshot being read has Eve in seat 2
+        const auto last = lobby.wait_for(
+            [&](const ServerMessage& m) {
+                if (is<LobbyBegin>(m)) {
+                    ++snapshots;
+                    shows_eve = false;
+                }
+                if (const auto* t = std::get_if<TableView>(&m))
+                    shows_eve = shows_eve || (t->number == table && t->seats[1].name == "Eve");
+                return is<LobbyEnd>(m) && shows_eve;
+            },
+            kWait);
+        const auto elapsed = std::chrono::steady_clock::now() - since;
+        REQUIRE(last);
+        INFO(snapshots << " snapshots in " << elapsed / 1ms << " ms");
+        CHECK(snapshots <= 2 + static_cast<int>(elapsed / 250ms));
     }
     SECTION("too many syncs are refused") {
         REQUIRE(eve.send(Watch{table}));
@@ -522,7 +580,11 @@ TEST_CASE("hall server: the lobby's changes go out coalesced, requests have a bu
 
 TEST_CASE("hall server: the computer's answer for a table that changed is dropped", "[hall]") {
     test::TempDir dir("termpool-hall");
-    RunningServer running(dir.path());
+    LockedLog sink;
+    std::ostream log(&sink);
+    ServerOptions options;
+    options.log = &log;
+    RunningServer running(dir.path(), options);
     HallClient ann = connected(dir.path(), "Ann");
     HallClient eve = connected(dir.path(), "Eve");
     const int table = create_table(ann);
@@ -533,10 +595,19 @@ TEST_CASE("hall server: the computer's answer for a table that changed is droppe
     // to break (it starts thinking) and leaves.
     ann.send_raw("sit " + std::to_string(table) + " 2\ncomputer 1 easy\nleave\n");
     REQUIRE(ann.wait_for(is<Left>, kWait));
-    // Seat 2 is empty: the computer must not break.
-    CHECK_FALSE(eve.wait_for(is<ActionDone>, 1500ms));
+    // The answer comes, and the server says it dropped it...
+    REQUIRE(log_shows(sink, "table " + std::to_string(table) +
+                                ": the computer's answer is for the table as it was: dropped"));
+    // ...so seat 2 is empty and the computer did not break: nothing came before the record.
     REQUIRE(eve.send(Sync{}));
-    expect<RecordEnd>(eve);
+    bool acted = false;
+    REQUIRE(eve.wait_for(
+        [&](const ServerMessage& m) {
+            acted = acted || is<ActionDone>(m);
+            return is<RecordEnd>(m);
+        },
+        kWait));
+    CHECK_FALSE(acted);
     CHECK(eve.match(table)->record().actions.empty());
     CHECK(eve.match(table)->record().names[1] == "Player 2");
 }
@@ -585,22 +656,42 @@ TEST_CASE("hall server: out of file descriptors, the server waits rather than sp
     REQUIRE(::getrlimit(RLIMIT_NOFILE, &saved) == 0);
     rlimit tight = saved;
     tight.rlim_cur = static_cast<rlim_t>(next);
+    Server& server = running.server();
+    REQUIRE(server.accept_pauses() == 0);
+    const auto start = std::chrono::steady_clock::now();
     REQUIRE(::setrlimit(RLIMIT_NOFILE, &tight) == 0);
     const int connected_ok =
         ::connect(waiting, reinterpret_cast<const sockaddr*>(&address), sizeof address);
-    const auto cpu = [] {
-        rusage usage{};
-        ::getrusage(RUSAGE_SELF, &usage);
-        return usage.ru_utime.tv_sec * 1e6 + usage.ru_utime.tv_usec + usage.ru_stime.tv_sec * 1e6 +
-               usage.ru_stime.tv_usec;
+    // Each failed accept leaves the listener out of poll for 100 ms. Watched from its first
+    // failure until three more (nothing here may open a descriptor, nor fail the test, before
+    // the limit is back): a loop that spins on the listener fails accept in every round, so
+    // reaches them at once; one that spins elsewhere makes rounds without them. Both counts
+    // are the server's own: a slow or loaded machine makes fewer rounds, never more.
+    const auto pauses_reach = [&](std::size_t count) {
+        const auto end = std::chrono::steady_clock::now() + kWait;
+        while (server.accept_pauses() < count && std::chrono::steady_clock::now() < end)
+            std::this_thread::sleep_for(1ms);
+        return server.accept_pauses() >= count;
     };
-    const double before = cpu();
-    std::this_thread::sleep_for(400ms);
-    const double used = cpu() - before;
+    const bool paused = pauses_reach(1);
+    const std::size_t first_pauses = server.accept_pauses();
+    const std::size_t first_rounds = server.rounds();
+    const bool paused_again = paused && pauses_reach(first_pauses + 3);
+    const std::size_t last_rounds = server.rounds();
+    const std::size_t last_pauses = server.accept_pauses(); // read after the rounds
+    const auto elapsed = std::chrono::steady_clock::now() - start;
     REQUIRE(::setrlimit(RLIMIT_NOFILE, &saved) == 0);
     ::close(waiting);
     REQUIRE(connected_ok == 0);
-    CHECK(used < 200e3); // microseconds of CPU in 400 ms: a spinning loop takes them all
+    REQUIRE(paused);
+    REQUIRE(paused_again);
+    INFO(last_pauses << " pauses, " << last_rounds - first_rounds << " rounds from the first, in "
+                     << elapsed / 1ms << " ms");
+    // Every pause lasted its 100 ms before accept was tried again...
+    CHECK(elapsed >= static_cast<long>(last_pauses - 1) * 100ms);
+    // ...and the loop slept through it: two rounds a pause (its end, then accept's failure),
+    // a few more for the lobby and anything else due.
+    CHECK(last_rounds - first_rounds <= 2 * (last_pauses - first_pauses) + 10);
     // Descriptors back, it serves again.
     CHECK(still_serves(dir.path()));
     ann.send(Ping{});
@@ -836,32 +927,6 @@ TEST_CASE("hall server: a file at the socket's path that is not its socket is le
 
 namespace {
 
-// A log the server's thread writes while the test reads it.
-class LockedLog : public std::streambuf {
-public:
-    std::string text() {
-        const std::lock_guard lock(mutex_);
-        return text_;
-    }
-
-protected:
-    int overflow(int c) override {
-        const std::lock_guard lock(mutex_);
-        if (c != EOF)
-            text_ += static_cast<char>(c);
-        return c == EOF ? 0 : c;
-    }
-    std::streamsize xsputn(const char* s, std::streamsize n) override {
-        const std::lock_guard lock(mutex_);
-        text_.append(s, static_cast<std::size_t>(n));
-        return n;
-    }
-
-private:
-    std::mutex mutex_;
-    std::string text_;
-};
-
 std::string hex(std::uint64_t v) {
     char text[17];
     std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(v));
@@ -979,27 +1044,40 @@ TEST_CASE("hall client: a copy that disagrees asks sync with what it came to", "
 TEST_CASE("hall server: idle_exit: a table keeps the hall, and once it goes the hall goes",
           "[hall]") {
     test::TempDir dir("termpool-hall");
+    int table = 0;
     {
         // A game under way whose players both went: the table stays, its seats away.
         RunningServer first(dir.path());
         HallClient ann = connected(dir.path(), "Ann");
         HallClient bob = connected(dir.path(), "Bob");
-        const int table = create_table(ann);
+        table = create_table(ann);
         sit(ann, table, 1);
         sit(bob, table, 2);
         play_one(ann, bob, table, {&ann, &bob});
     }
+    // The restored seats count from the table file's last change, which the server reads to
+    // the second: the file is dated this whole second, and away_limit ends 400 ms from now, so
+    // the table goes then (and not before: it is there once restored), well within the hall's
+    // first idle second.
+    const auto now = std::chrono::system_clock::now();
+    const auto changed = std::chrono::floor<std::chrono::seconds>(now);
+    const std::time_t changed_t = std::chrono::system_clock::to_time_t(changed);
+    const timespec times[2] = {{changed_t, 0}, {changed_t, 0}};
+    REQUIRE(::utimensat(AT_FDCWD, table_path(dir.path(), table).c_str(), times, 0) == 0);
+    LockedLog sink;
+    std::ostream log(&sink);
     ServerOptions options;
     options.socket_path = dir.path() + "/hall.sock";
     options.state_dir = dir.path();
     options.idle_exit = std::chrono::seconds(1);
-    options.away_limit = 2500ms; // the restored seats are freed 2.5 s after the last save
+    options.away_limit = std::chrono::ceil<std::chrono::milliseconds>(now - changed) + 400ms;
+    options.log = &log;
+    const auto freed = changed + options.away_limit; // on the system clock
     Server server(options);
     REQUIRE(server.open() == "");
     REQUIRE(server.table_count() == 1);
     std::atomic<bool> done{false};
     int status = -1;
-    const auto started = std::chrono::steady_clock::now();
     std::thread loop([&] {
         status = server.run();
         done = true;
@@ -1013,16 +1091,52 @@ TEST_CASE("hall server: idle_exit: a table keeps the hall, and once it goes the 
             loop.join();
         }
     } join{server, loop};
-    // Nobody connects, but the restored table holds the hall past the idle time...
-    std::this_thread::sleep_for(1500ms);
-    CHECK_FALSE(done);
-    // ...until its away seats are freed and it goes; a second later the hall goes too.
-    for (const auto end = started + 10s; !done && std::chrono::steady_clock::now() < end;)
-        std::this_thread::sleep_for(20ms);
+    // Nobody connects. The hall goes by itself (the bound is only a deadline)...
+    for (const auto end = std::chrono::steady_clock::now() + 10s;
+         !done && std::chrono::steady_clock::now() < end;)
+        std::this_thread::sleep_for(5ms);
+    const auto ended = std::chrono::system_clock::now();
     REQUIRE(done);
     CHECK(status == 0);
     CHECK(server.table_count() == 0);
-    CHECK(std::chrono::steady_clock::now() - started >= 2s);
+    // ...its idle second counted from when the table went, not from its start: a hall that
+    // did not count the table would have gone 1 s after it started, 400 ms sooner. (The
+    // server turns the file's date into its own clock's time; 50 ms allow for that.)
+    INFO("ended " << (ended - freed) / 1ms << " ms after the seats were due");
+    CHECK(ended - freed >= 1s - 50ms);
+    // In that order: the seats freed, the table closed, and only then the hall.
+    const std::string said = sink.text();
+    INFO(said);
+    const std::string name = "table " + std::to_string(table);
+    const auto seat_freed = said.find(name + ": seat 1 was away too long: freed");
+    const auto closed = said.find(name + " closed");
+    const auto exiting = said.find("no connection and no table for 1 s: exiting");
+    REQUIRE(seat_freed != std::string::npos);
+    REQUIRE(closed != std::string::npos);
+    REQUIRE(exiting != std::string::npos);
+    CHECK(seat_freed < closed);
+    CHECK(closed < exiting);
+}
+
+TEST_CASE("hall server: idle_exit: a connection keeps the hall past the idle time", "[hall]") {
+    test::TempDir dir("termpool-hall");
+    ServerOptions options;
+    options.idle_exit = std::chrono::seconds(1);
+    RunningServer running(dir.path(), options);
+    HallClient ann = connected(dir.path(), "Ann");
+    // The loop ran before Ann was welcomed: were her connection not to count, the hall would
+    // have gone by 1 s after this.
+    const auto welcomed = std::chrono::steady_clock::now();
+    // Ann says nothing past that moment (with a margin)...
+    std::this_thread::sleep_until(welcomed + options.idle_exit + 100ms);
+    // ...then two round trips: the second is read in a round that began after the first was
+    // answered, with the hall's idle check, past the moment.
+    for (int i = 0; i < 2; ++i) {
+        REQUIRE(ann.send(Ping{}));
+        REQUIRE(ann.wait_for(is<Pong>, kWait));
+    }
+    CHECK_FALSE(running.finished());
+    CHECK_FALSE(ann.closed());
 }
 
 TEST_CASE("hall client: a server line longer than 4 KiB ends the connection, never a spin",

@@ -1,6 +1,7 @@
 // The hall's folders: the socket folder made private and refused when someone else could
 // reach into it (tmux's rule), the default paths, and the state folder, where every table is
 // saved atomically with its seat tokens' hashes and read back, a damaged file moved aside.
+#include <atomic>
 #include <catch2/catch.hpp>
 #include <cerrno>
 #include <chrono>
@@ -9,9 +10,11 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -278,21 +281,49 @@ TEST_CASE("a save is atomic: a temporary file in the same folder, synced, rename
         CHECK(contents(table_path(dir, 1)) == short_text);
     }
     SECTION("a writer killed at any moment leaves the old file or the new one") {
+        // The writer counts its saves in memory it shares with this process: each round it is
+        // killed once it has made a few (1, 4, 7, ... 16), so in the middle of its loop,
+        // wherever in a save that lands; never after a fixed time.
+        static_assert(std::atomic<int>::is_always_lock_free);
+        void* shared = ::mmap(nullptr, sizeof(std::atomic<int>), PROT_READ | PROT_WRITE,
+                              MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+        REQUIRE(shared != MAP_FAILED);
+        struct Unmap {
+            void* memory;
+            ~Unmap() { ::munmap(memory, sizeof(std::atomic<int>)); }
+        } unmap{shared};
+        auto* saves = new (shared) std::atomic<int>(0);
         for (int round = 0; round < 6; ++round) {
+            saves->store(0);
             const pid_t child = ::fork();
             REQUIRE(child >= 0);
             if (child == 0) {
                 // Saves the two versions in turn until killed (bounded in count and time).
                 const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-                for (int k = 0; k < 100000 && std::chrono::steady_clock::now() < until; ++k)
+                for (int k = 0; k < 100000 && std::chrono::steady_clock::now() < until; ++k) {
                     if (!save_table(dir, k % 2 == 0 ? second : first).empty())
                         ::_exit(1);
+                    ++*saves;
+                }
                 ::_exit(0);
             }
-            std::this_thread::sleep_for(std::chrono::milliseconds(3 + 4 * round));
-            ::kill(child, SIGKILL);
+            const int target = 1 + 3 * round;
             int status = 0;
-            REQUIRE(::waitpid(child, &status, 0) == child);
+            bool gone = false; // it exited by itself (and is reaped)
+            for (const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+                 *saves < target && std::chrono::steady_clock::now() < end;) {
+                if (::waitpid(child, &status, WNOHANG) == child) {
+                    gone = true;
+                    break;
+                }
+                std::this_thread::sleep_for(std::chrono::microseconds(100));
+            }
+            const int made = *saves;
+            if (!gone) {
+                ::kill(child, SIGKILL);
+                REQUIRE(::waitpid(child, &status, 0) == child);
+            }
+            CHECK(made >= target);
             CHECK(WIFSIGNALED(status)); // killed mid-loop, not finished or failed
             const std::string text = contents(table_path(dir, 1));
             CHECK((text == short_text || text == long_text));

@@ -101,6 +101,14 @@ std::size_t Server::table_count() const {
     return state_->table_count;
 }
 
+std::size_t Server::rounds() const {
+    return state_->rounds;
+}
+
+std::size_t Server::accept_pauses() const {
+    return state_->accept_pauses;
+}
+
 int Server::run() {
     State& s = *state_;
     std::vector<pollfd> fds;
@@ -146,6 +154,7 @@ int Server::run() {
             break;
         }
         s.woke = Clock::now();
+        ++s.rounds;
         if (fds[0].revents & POLLIN)
             break;
         if (fds[1].revents & POLLIN)

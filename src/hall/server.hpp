@@ -88,6 +88,12 @@ public:
 
     /// Tables held (for tests and the log).
     std::size_t table_count() const;
+    /// Rounds of the poll loop so far, one per return of poll (for tests: a loop that spins
+    /// shows as rounds without end).
+    std::size_t rounds() const;
+    /// Times accept failed for want of file descriptors (or memory) and the listener was left
+    /// out of poll for a while (for tests).
+    std::size_t accept_pauses() const;
 
 private:
     struct State;

@@ -190,6 +190,8 @@ void Server::State::computer_answers() {
         // The table changed while the computer thought (someone left, a seat changed):
         // the answer is for a table that is no more; ask again if still the computer's turn.
         if (answer.ticket != table.ticket) {
+            log("table " + std::to_string(table.number) +
+                ": the computer's answer is for the table as it was: dropped");
             think(table);
             continue;
         }

@@ -85,6 +85,7 @@ void Server::State::accept_clients() {
             if (errno == EMFILE || errno == ENFILE || errno == ENOBUFS || errno == ENOMEM) {
                 log(std::string("accept: ") + std::strerror(errno) + ": pausing 100 ms");
                 accept_paused_until = Clock::now() + std::chrono::milliseconds(100);
+                ++accept_pauses;
             }
             return;
         }

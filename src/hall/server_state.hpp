@@ -132,6 +132,8 @@ struct Server::State {
     // of poll until then, rather than spin.
     std::optional<Clock::time_point> accept_paused_until;
     std::atomic<std::size_t> table_count{0};
+    std::atomic<std::size_t> rounds{0};        // returns of poll (Server::rounds)
+    std::atomic<std::size_t> accept_pauses{0}; // accept_paused_until set (Server::accept_pauses)
     std::mt19937_64 random{std::random_device{}()};
     // The actions of this round waiting for their saves, at most one a table (Table::saving).
     std::vector<Proposal> batch;
