@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 #include <termpool/match.hpp>
+#include <thread>
 #include <variant>
 #include <vector>
 
@@ -91,15 +92,49 @@ inline RecordedAction chosen_move(const Match& match) {
     return action;
 }
 
-/// Waits until `client` has seen action `seq` of `table`.
+/// Waits until `client` has seen action `seq` of `table`; an error in its place ends the wait
+/// and the test, and says what it was.
 inline void await_action(hall::HallClient& client, int table, std::size_t seq) {
     const auto m = client.wait_for(
         [&](const hall::ServerMessage& m) {
             const auto* a = std::get_if<hall::ActionDone>(&m);
-            return a && a->table == table && a->seq == seq;
+            return std::holds_alternative<hall::Error>(m) ||
+                   (a && a->table == table && a->seq == seq);
         },
         kWait);
+    INFO("action " << seq << " of table " << table << ": "
+                   << (m ? hall::format_server(*m) : "nothing within kWait"));
     REQUIRE(m);
+    REQUIRE_FALSE(std::holds_alternative<hall::Error>(*m));
+}
+
+/// Sends `move` from the seat `actor` holds at `table` and waits until the server has taken
+/// it. A seat's actions have a budget (ServerOptions::action_rate a second after a burst of
+/// action_burst): a test that plays a whole game at full speed can spend it (a long rack did,
+/// one run in forty) and is told "rate"; it then waits a token's time (50 ms at the default 20
+/// a second) and sends the move again, as a player told to slow down would.
+inline void act(hall::HallClient& actor, int table, const RecordedAction& move) {
+    const std::size_t seq = actor.match(table)->record().actions.size() + 1;
+    const auto end = std::chrono::steady_clock::now() + kWait;
+    for (;;) {
+        REQUIRE(actor.send(hall::Act{move}));
+        const auto m = actor.wait_for(
+            [&](const hall::ServerMessage& m) {
+                const auto* a = std::get_if<hall::ActionDone>(&m);
+                return std::holds_alternative<hall::Error>(m) ||
+                       (a && a->table == table && a->seq == seq);
+            },
+            kWait);
+        INFO("action " << seq << " of table " << table << ": "
+                       << (m ? hall::format_server(*m) : "nothing within kWait"));
+        REQUIRE(m);
+        const auto* error = std::get_if<hall::Error>(&*m);
+        if (!error)
+            return;
+        REQUIRE(error->code == hall::ErrorCode::rate);
+        REQUIRE(std::chrono::steady_clock::now() < end);
+        std::this_thread::sleep_for(std::chrono::milliseconds(60));
+    }
 }
 
 /// The seated player to act plays one move; every client in `all` sees it.
@@ -108,9 +143,10 @@ inline void play_one(hall::HallClient& p1, hall::HallClient& p2, int table,
     const Match& local = *p1.match(table);
     const std::size_t seq = local.record().actions.size() + 1;
     hall::HallClient& actor = local.to_act() == 1 ? p1 : p2;
-    REQUIRE(actor.send(hall::Act{chosen_move(*actor.match(table))}));
+    act(actor, table, chosen_move(*actor.match(table)));
     for (hall::HallClient* client : all)
-        await_action(*client, table, seq);
+        if (client != &actor)
+            await_action(*client, table, seq);
 }
 
 /// The state hash of table `table` as saved in `dir` (its record replayed).
