@@ -67,6 +67,9 @@ public:
     void add(std::size_t index, double start, const Ball& ball);
     /// The state of every ball at `time` (seconds since the strike), without re-simulating.
     std::vector<Ball> sample(double time) const;
+    /// The state of ball slot `index` at `time`; the slot must have a piece (balls with none
+    /// are left out of the whole sample above).
+    Ball sample(std::size_t index, double time) const;
     /// The pieces of ball slot `index`.
     const std::vector<Piece>& pieces(std::size_t index) const { return pieces_[index]; }
 

@@ -75,9 +75,9 @@ ShotResult break_shot(const Table& table, const PhysicsParams& params, std::vect
 // Path length of ball slot `index` over the shot, from the recorded motion.
 double distance_rolled(const Trajectory& t, std::size_t index, double end) {
     double total = 0;
-    Vec2 last = t.sample(0)[index].position;
+    Vec2 last = t.sample(index, 0).position;
     for (double time = 0.001; time <= end; time += 0.001) {
-        const Vec2 p = t.sample(time)[index].position;
+        const Vec2 p = t.sample(index, time).position;
         total += length(p - last);
         last = p;
     }
@@ -110,7 +110,8 @@ int friction_study(TableSize size, bool csv) {
         std::vector<double> rest, path;
         double pocketed = 0;
         Series series{model.name, model.name[0], {}};
-        for (int k = 1; k <= racks; ++k) {
+        // The CSV is the first rack's series alone: the medians need every rack.
+        for (int k = 1; k <= (csv ? 1 : racks); ++k) {
             const auto rack = make_rack(table, params, RackType::eight_ball, k);
             Trajectory trajectory(params, rack.size());
             const ShotResult r = break_shot(table, params, rack, k, &trajectory);

@@ -18,22 +18,34 @@ void Trajectory::add(std::size_t index, double start, const Ball& ball) {
     list.push_back({start, ball});
 }
 
+namespace {
+
+// The state at `time` of a ball whose pieces are `list` (not empty).
+Ball state_at(const std::vector<Trajectory::Piece>& list, double time,
+              const core::ClothModel& cloth, const PhysicsParams& params) {
+    // The last piece that started at or before `time`.
+    auto it = std::upper_bound(list.begin(), list.end(), time,
+                               [](double t, const Trajectory::Piece& p) { return t < p.start; });
+    const Trajectory::Piece& piece = it == list.begin() ? list.front() : *std::prev(it);
+    const double limit = cloth.time_to_transition(piece.ball, params);
+    const double dt = std::clamp(time - piece.start, 0.0, limit);
+    return cloth.advance(piece.ball, dt, params);
+}
+
+} // namespace
+
 std::vector<Ball> Trajectory::sample(double time) const {
     const core::ClothModel cloth = core::cloth_model(params_.friction);
     std::vector<Ball> out;
     out.reserve(pieces_.size());
-    for (const std::vector<Piece>& list : pieces_) {
-        if (list.empty())
-            continue;
-        // The last piece that started at or before `time`.
-        auto it = std::upper_bound(list.begin(), list.end(), time,
-                                   [](double t, const Piece& p) { return t < p.start; });
-        const Piece& piece = it == list.begin() ? list.front() : *std::prev(it);
-        const double limit = cloth.time_to_transition(piece.ball, params_);
-        const double dt = std::clamp(time - piece.start, 0.0, limit);
-        out.push_back(cloth.advance(piece.ball, dt, params_));
-    }
+    for (const std::vector<Piece>& list : pieces_)
+        if (!list.empty())
+            out.push_back(state_at(list, time, cloth, params_));
     return out;
+}
+
+Ball Trajectory::sample(std::size_t index, double time) const {
+    return state_at(pieces_[index], time, core::cloth_model(params_.friction), params_);
 }
 
 } // namespace termpool
