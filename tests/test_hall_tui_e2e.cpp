@@ -150,10 +150,10 @@ bool owes_choice(const std::string& screen) {
 
 // Waits until every screen has stopped rolling a shot and the legends that show agree (a box
 // may cover some, never all); false after `seconds`. A screen that rolls a shot is sent x,
-// which skips to its end, as a player who has seen enough would. With `take_choices`, a player
-// who owes a choice (an 8 potted on the break: its box covers every legend) takes the first.
-bool same_table(const std::vector<const Tmux*>& terminals, double seconds = 20,
-                bool take_choices = false) {
+// which skips to its end, as a player who has seen enough would. A player who owes a choice
+// takes the first: its box covers every legend (an 8 potted on the break, an illegal break;
+// the hall deals each rack at random, so any test may meet one).
+bool same_table(const std::vector<const Tmux*>& terminals, double seconds = 20) {
     const auto end = Clock::now() + std::chrono::duration<double>(seconds);
     while (Clock::now() < end) {
         bool settled = true;
@@ -162,7 +162,7 @@ bool same_table(const std::vector<const Tmux*>& terminals, double seconds = 20,
             const std::string s = terminals[i]->screen();
             if (shot_rolling(s) || shot_rolling(s, "Bob"))
                 terminals[i]->keys("x");
-            else if (take_choices && owes_choice(s))
+            else if (owes_choice(s))
                 terminals[i]->keys("1");
             const std::set<int> left = balls_on_table(s);
             if (!left.empty() && !shown)
@@ -252,7 +252,7 @@ TEST_CASE("three hall terminals: a table created, a seat taken, a watcher, the r
     // The shot reaches the other two screens and rolls out there too (x skips to its end).
     CHECK(bob.wait_for([](const std::string& s) { return shot_rolling(s); }));
     CHECK(cid.wait_for([](const std::string& s) { return shot_rolling(s); }));
-    const bool settled = same_table({&ann, &bob, &cid}, 20, true);
+    const bool settled = same_table({&ann, &bob, &cid});
     INFO("Ann:\n" << ann.screen() << "\nBob:\n" << bob.screen() << "\nCid:\n" << cid.screen());
     CHECK(settled);
 
