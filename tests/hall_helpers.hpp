@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <termpool/match.hpp>
 #include <thread>
@@ -92,18 +93,30 @@ inline RecordedAction chosen_move(const Match& match) {
     return action;
 }
 
-/// Waits until `client` has seen action `seq` of `table`; an error in its place ends the wait
-/// and the test, and says what it was.
-inline void await_action(hall::HallClient& client, int table, std::size_t seq) {
-    const auto m = client.wait_for(
+/// The first of action `seq` of `table` or an error that `client` receives (within kWait).
+inline std::optional<hall::ServerMessage> action_or_error(hall::HallClient& client, int table,
+                                                          std::size_t seq) {
+    return client.wait_for(
         [&](const hall::ServerMessage& m) {
             const auto* a = std::get_if<hall::ActionDone>(&m);
             return std::holds_alternative<hall::Error>(m) ||
                    (a && a->table == table && a->seq == seq);
         },
         kWait);
-    INFO("action " << seq << " of table " << table << ": "
-                   << (m ? hall::format_server(*m) : "nothing within kWait"));
+}
+
+/// What a test that waited for action `seq` of `table` got, for its failure message.
+inline std::string got_instead(const std::optional<hall::ServerMessage>& m, int table,
+                               std::size_t seq) {
+    return "action " + std::to_string(seq) + " of table " + std::to_string(table) + ": " +
+           (m ? hall::format_server(*m) : "nothing within kWait");
+}
+
+/// Waits until `client` has seen action `seq` of `table`; an error in its place ends the wait
+/// and the test, and says what it was.
+inline void await_action(hall::HallClient& client, int table, std::size_t seq) {
+    const auto m = action_or_error(client, table, seq);
+    INFO(got_instead(m, table, seq));
     REQUIRE(m);
     REQUIRE_FALSE(std::holds_alternative<hall::Error>(*m));
 }
@@ -118,15 +131,8 @@ inline void act(hall::HallClient& actor, int table, const RecordedAction& move) 
     const auto end = std::chrono::steady_clock::now() + kWait;
     for (;;) {
         REQUIRE(actor.send(hall::Act{move}));
-        const auto m = actor.wait_for(
-            [&](const hall::ServerMessage& m) {
-                const auto* a = std::get_if<hall::ActionDone>(&m);
-                return std::holds_alternative<hall::Error>(m) ||
-                       (a && a->table == table && a->seq == seq);
-            },
-            kWait);
-        INFO("action " << seq << " of table " << table << ": "
-                       << (m ? hall::format_server(*m) : "nothing within kWait"));
+        const auto m = action_or_error(actor, table, seq);
+        INFO(got_instead(m, table, seq));
         REQUIRE(m);
         const auto* error = std::get_if<hall::Error>(&*m);
         if (!error)
