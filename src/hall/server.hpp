@@ -6,7 +6,9 @@
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -65,6 +67,10 @@ struct ServerOptions {
     /// The server saves and exits once it has had no connection and no table for this long
     /// (0: never). A hall `termpool hall` starts in the background runs with 60 s.
     std::chrono::seconds idle_exit{0};
+    /// Where the racks' deals and the computers' seeds come from: the system's randomness when
+    /// empty; with a seed, the same deals in the same order on every run (tests, which must not
+    /// meet by chance a rack that ends at once). Seat tokens never come from it.
+    std::optional<std::uint64_t> deal_seed;
     std::ostream* log = nullptr; ///< where to log (nothing when null)
 };
 

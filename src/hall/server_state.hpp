@@ -134,7 +134,7 @@ struct Server::State {
     std::atomic<std::size_t> table_count{0};
     std::atomic<std::size_t> rounds{0};        // returns of poll (Server::rounds)
     std::atomic<std::size_t> accept_pauses{0}; // accept_paused_until set (Server::accept_pauses)
-    std::mt19937_64 random{std::random_device{}()};
+    std::mt19937_64 random; // the deals and the computers' seeds (ServerOptions::deal_seed)
     // The actions of this round waiting for their saves, at most one a table (Table::saving).
     std::vector<Proposal> batch;
     bool settling = false;
@@ -146,6 +146,7 @@ struct Server::State {
 
     explicit State(ServerOptions o)
         : options(std::move(o)), pool(options.computer_threads),
+          random(options.deal_seed ? *options.deal_seed : std::random_device{}()),
           savers(std::max(0, options.save_threads - 1)) {}
 
     void log(const std::string& line) const {
