@@ -116,7 +116,10 @@ TEST_CASE("SIGHUP during a shot leaves a save that resumes", "[tui][e2e]") {
     // Resumed, the game is where the shot left it.
     t.kill_session();
     t.start(game_command(dir, "--resume"));
-    CHECK(t.wait_for_text("Game resumed"));
+    const bool resumed = t.wait_for_text("Game resumed");
+    INFO(t.screen() << "\nsessions: " << t.tmux("list-sessions")
+                    << "status file: " << file_text(dir.status_file()));
+    CHECK(resumed);
 }
 
 TEST_CASE("a saved game plays back with replay", "[tui][e2e]") {

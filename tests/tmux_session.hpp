@@ -91,11 +91,15 @@ struct Tmux {
     std::string tmux(const std::string& args) const {
         return run("tmux -L " + socket + " -f /dev/null " + args + " 2>&1");
     }
-    /// Starts `command` (run by sh) in a new session, `width` x `height` cells.
+    /// Starts `command` (run by sh) in a new session, `width` x `height` cells. The server
+    /// stays up with no session (exit-empty off), so that a test may end one session and start
+    /// the next: a server that exits with its last session can take the next one's start with
+    /// it (seen once under load: the resumed game never appeared).
     void start(const std::string& command, int width = 100, int height = 32,
                const std::string& session = "e2e") const {
         tmux("new-session -d -s " + session + " -x " + std::to_string(width) + " -y " +
-             std::to_string(height) + " " + shell_quote(command));
+             std::to_string(height) + " " + shell_quote(command) +
+             " \\; set-option -g exit-empty off");
     }
     /// Ends a session (its pane's processes get a hangup).
     void kill_session(const std::string& session = "e2e") const {
