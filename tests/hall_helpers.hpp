@@ -20,6 +20,8 @@ namespace termpool::test {
 
 /// The longest any one answer may take.
 inline constexpr std::chrono::milliseconds kWait{5000};
+/// kWait in seconds, for wait_until.
+inline constexpr double kWaitSeconds = kWait.count() / 1000.0;
 
 /// True when `m` is a T.
 template <class T> bool is(const hall::ServerMessage& m) {

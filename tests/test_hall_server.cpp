@@ -32,6 +32,7 @@
 #include "hall/server.hpp"
 #include "hall_helpers.hpp"
 #include "temp_dir.hpp"
+#include "wait_until.hpp"
 
 using namespace termpool;
 using namespace termpool::hall;
@@ -68,13 +69,8 @@ private:
 
 // Waits (at most kWait) until the server's log holds `line`; whether it came.
 bool log_shows(LockedLog& log, const std::string& line) {
-    const auto end = std::chrono::steady_clock::now() + kWait;
-    while (log.text().find(line) == std::string::npos) {
-        if (std::chrono::steady_clock::now() >= end)
-            return false;
-        std::this_thread::sleep_for(5ms);
-    }
-    return true;
+    return wait_until([&] { return log.text().find(line) != std::string::npos; }, kWaitSeconds,
+                      5ms);
 }
 
 // A server on `dir`/hall.sock, serving on a thread until destroyed.
@@ -461,10 +457,7 @@ TEST_CASE("hall server: sitting again in one's own seat changes nothing", "[hall
 
 // Waits (at most kWait) until the server holds `count` tables.
 bool tables_become(RunningServer& running, std::size_t count) {
-    const auto end = std::chrono::steady_clock::now() + kWait;
-    while (running.server().table_count() != count && std::chrono::steady_clock::now() < end)
-        std::this_thread::sleep_for(5ms);
-    return running.server().table_count() == count;
+    return wait_until([&] { return running.server().table_count() == count; }, kWaitSeconds, 5ms);
 }
 
 TEST_CASE("hall server: a table nobody plays at goes", "[hall]") {
@@ -674,10 +667,7 @@ TEST_CASE("hall server: out of file descriptors, the server waits rather than sp
     // reaches them at once; one that spins elsewhere makes rounds without them. Both counts
     // are the server's own: a slow or loaded machine makes fewer rounds, never more.
     const auto pauses_reach = [&](std::size_t count) {
-        const auto end = std::chrono::steady_clock::now() + kWait;
-        while (server.accept_pauses() < count && std::chrono::steady_clock::now() < end)
-            std::this_thread::sleep_for(1ms);
-        return server.accept_pauses() >= count;
+        return wait_until([&] { return server.accept_pauses() >= count; }, kWaitSeconds, 1ms);
     };
     const bool paused = pauses_reach(1);
     const std::size_t first_pauses = server.accept_pauses();
@@ -1098,9 +1088,7 @@ TEST_CASE("hall server: idle_exit: a table keeps the hall, and once it goes the 
         }
     } join{server, loop};
     // Nobody connects. The hall goes by itself (the bound is only a deadline)...
-    for (const auto end = std::chrono::steady_clock::now() + 10s;
-         !done && std::chrono::steady_clock::now() < end;)
-        std::this_thread::sleep_for(5ms);
+    wait_until([&] { return done.load(); }, 10, 5ms);
     const auto ended = std::chrono::system_clock::now();
     REQUIRE(done);
     CHECK(status == 0);

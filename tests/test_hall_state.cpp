@@ -31,6 +31,7 @@
 #include "match_helpers.hpp"
 #include "scoped_env.hpp"
 #include "temp_dir.hpp"
+#include "wait_until.hpp"
 
 using namespace termpool;
 using namespace termpool::hall;
@@ -39,6 +40,7 @@ using termpool::test::mode_of;
 using termpool::test::names_in;
 using termpool::test::ScopedEnv;
 using termpool::test::TempDir;
+using termpool::test::wait_until;
 
 namespace {
 
@@ -310,14 +312,12 @@ TEST_CASE("a save is atomic: a temporary file in the same folder, synced, rename
             const int target = 1 + 3 * round;
             int status = 0;
             bool gone = false; // it exited by itself (and is reaped)
-            for (const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-                 *saves < target && std::chrono::steady_clock::now() < end;) {
-                if (::waitpid(child, &status, WNOHANG) == child) {
-                    gone = true;
-                    break;
-                }
-                std::this_thread::sleep_for(std::chrono::microseconds(100));
-            }
+            wait_until(
+                [&] {
+                    gone = ::waitpid(child, &status, WNOHANG) == child;
+                    return gone || *saves >= target;
+                },
+                5, std::chrono::microseconds(100));
             const int made = *saves;
             if (!gone) {
                 ::kill(child, SIGKILL);

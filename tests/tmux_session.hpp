@@ -18,6 +18,8 @@
 #include <thread>
 #include <unistd.h>
 
+#include "wait_until.hpp"
+
 namespace tmux_session {
 
 /// What `command` (run by sh) prints on stdout.
@@ -54,16 +56,9 @@ inline void require_tool(const std::string& tool, const std::string& package) {
                     "them as skipped");
 }
 
-/// Polls `ok` every 20 ms until it holds; false after `seconds`. The one way a test waits.
+/// Polls `ok` every 20 ms until it holds; false after `seconds` (10 unless told).
 inline bool wait_until(const std::function<bool()>& ok, double seconds = 10) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    for (;;) {
-        if (ok())
-            return true;
-        if (std::chrono::steady_clock::now() >= end)
-            return false;
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
+    return termpool::test::wait_until(ok, seconds);
 }
 
 /// The whole file, empty when it cannot be read.
