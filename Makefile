@@ -66,13 +66,16 @@ LDLIBS       += -lncursesw
 # ---------------------------------------------------------------------------
 # Sources and objects (out of tree, mirroring src/ under $(BUILD)/)
 
-# The core is a static library; the commands (src/cli), the front end (src/tui) and the hall
+# The core is a static library; the commands (src/cli), the front end (src/tui), what the player
+# keeps between games (src/player: options, config, names, saves, statistics) and the hall
 # (src/hall: its server, state and socket folders) are linked with it into the binary and the
 # test binary.
 CORE_SRCS := $(wildcard src/core/*.cpp)
 FILES_SRCS := $(wildcard src/files/*.cpp)
+PLAYER_SRCS := $(wildcard src/player/*.cpp)
 HALL_SRCS := $(wildcard src/hall/*.cpp)
-APP_SRCS  := $(wildcard src/cli/*.cpp) $(wildcard src/tui/*.cpp) $(FILES_SRCS) $(HALL_SRCS)
+APP_SRCS  := $(wildcard src/cli/*.cpp) $(wildcard src/tui/*.cpp) $(PLAYER_SRCS) $(FILES_SRCS) \
+             $(HALL_SRCS)
 MAIN_SRC  := src/main.cpp
 TEST_SRCS := $(wildcard tests/*.cpp)
 
@@ -206,9 +209,9 @@ FUZZ_DIR      := build/fuzz
 FUZZ_CORE_FLAGS := -std=c++20 $(FP_FLAGS) -O1 -g -fsanitize=fuzzer-no-link,address,undefined -Iinclude
 FUZZ_FLAGS    := $(FUZZ_CORE_FLAGS) -Isrc
 FUZZ_APP_SRCS := src/cli/scenario.cpp src/cli/numbers.cpp \
-                 src/tui/config.cpp src/files/xdg_dir.cpp src/tui/player_name.cpp \
-                 src/tui/text_width.cpp src/tui/options.cpp src/tui/stats_file.cpp \
-                 src/files/keep_aside.cpp src/files/atomic_file.cpp src/tui/save_file.cpp \
+                 src/player/config.cpp src/files/xdg_dir.cpp src/player/player_name.cpp \
+                 src/player/options.cpp src/player/stats_file.cpp \
+                 src/files/keep_aside.cpp src/files/atomic_file.cpp src/player/save_file.cpp \
                  src/hall/protocol.cpp
 FUZZ_CORE_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(CORE_SRCS))
 FUZZ_APP_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_APP_SRCS))

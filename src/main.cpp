@@ -2,10 +2,10 @@
 
 #include "cli/commands.hpp"
 #include "hall/hall_main.hpp"
+#include "player/stats_command.hpp"
 #include "tui/bench_render.hpp"
 #include "tui/game_main.hpp"
 #include "tui/hall_session.hpp"
-#include "tui/stats_command.hpp"
 
 #include <exception>
 #include <iostream>
@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
             return termpool::tui::run_hall(rest);
         }
         if (command == "stats") {
-            return termpool::tui::stats_command(rest);
+            return termpool::stats_command(rest);
         }
     } catch (const std::exception& e) {
         std::cerr << "termpool: error: " << e.what() << '\n';

@@ -1,10 +1,9 @@
 // The config file: defaults for the game, with bad values refused at their line.
 #include <catch2/catch.hpp>
 
-#include "tui/config.hpp"
+#include "player/config.hpp"
 
 using namespace termpool;
-using namespace termpool::tui;
 
 TEST_CASE("the config file sets the game's defaults", "[config]") {
     GameOptions o;

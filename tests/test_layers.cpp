@@ -3,7 +3,8 @@
 // includes no front end, no command and none of src/ but its own files; the commands and the
 // front end do not include each other and use the core through include/termpool/ only; the
 // hall (src/hall) is a layer of its own that uses the core the same way, and neither the core
-// nor the commands include it (src/main.cpp dispatches to it); the public headers include
+// nor the commands include it (src/main.cpp dispatches to it); what the player keeps between
+// games (src/player) draws nothing; the public headers include
 // nothing but each other and the standard library. The build enforces
 // part of it (the core is compiled with -Iinclude only); these tests name the file and line.
 #include <algorithm>
@@ -137,6 +138,26 @@ TEST_CASE("the file helpers include only the public headers, each other and the 
         CHECK_FALSE(contains(inc.target, "curses"));
         if (!inc.angled)
             CHECK(inc.target.starts_with("files/"));
+    }
+}
+
+TEST_CASE("what the player keeps between games draws nothing and knows no front end", "[layers]") {
+    // Saves, save slots, statistics, config, options and names live in src/player so that any
+    // front end (the terminal game, the hall's, a future one) can use them: they include the
+    // public headers, each other, the file helpers and the system, never a screen.
+    const std::vector<Include> all = includes("src/player");
+    REQUIRE(all.size() > 20);
+    for (const Include& inc : all) {
+        INFO(inc.file << ": " << inc.line);
+        CHECK_FALSE(contains(inc.target, "curses"));
+        if (!inc.angled)
+            CHECK((inc.target.starts_with("player/") || inc.target.starts_with("files/")));
+    }
+    for (const char* moved : {"save_file", "save_slots", "stats_file", "stats_summary",
+                              "stats_command", "config", "options", "player_name"}) {
+        INFO(moved);
+        CHECK_FALSE(fs::exists(fs::path("src/tui") / (std::string(moved) + ".cpp")));
+        CHECK(fs::exists(fs::path("src/player") / (std::string(moved) + ".cpp")));
     }
 }
 

@@ -6,7 +6,7 @@
 #include <termpool/setup.hpp>
 #include <vector>
 
-#include "tui/options.hpp"
+#include "player/options.hpp"
 
 using namespace termpool;
 
@@ -68,20 +68,20 @@ TEST_CASE("bad cloth-model words say what is wrong and where", "[setup]") {
 TEST_CASE("--game takes 10-ball by any of its names", "[setup][ten]") {
     for (const char* name : {"10ball", "ten-ball", "10-ball"}) {
         std::string error;
-        const auto o = tui::parse_game_options({"--game", name}, error);
+        const auto o = termpool::parse_game_options({"--game", name}, error);
         REQUIRE(o);
         CHECK(o->setup.game == GameType::ten_ball);
     }
     std::string error;
-    CHECK_FALSE(tui::parse_game_options({"--game", "11ball"}, error));
+    CHECK_FALSE(termpool::parse_game_options({"--game", "11ball"}, error));
     CHECK(error.find("10ball") != std::string::npos);
 }
 
 TEST_CASE("the game's options carry the setup, with their own wording for bad models", "[setup]") {
     std::string error;
-    const auto o = tui::parse_game_options({"--game", "9ball", "--table", "7ft", "--friction",
-                                            "combined", "0.5", "0.25", "--seed", "3"},
-                                           error);
+    const auto o = termpool::parse_game_options({"--game", "9ball", "--table", "7ft", "--friction",
+                                                 "combined", "0.5", "0.25", "--seed", "3"},
+                                                error);
     REQUIRE(o);
     CHECK(o->setup.game == GameType::nine_ball);
     CHECK(o->setup.table == TableSize::seven_foot);
@@ -90,28 +90,28 @@ TEST_CASE("the game's options carry the setup, with their own wording for bad mo
     CHECK(o->seed == 3u);
     CHECK(make_table(o->setup).size == TableSize::seven_foot);
 
-    CHECK_FALSE(tui::parse_game_options({"--friction", "combined", "0.5"}, error));
+    CHECK_FALSE(termpool::parse_game_options({"--friction", "combined", "0.5"}, error));
     CHECK(error == "--friction combined needs A");
-    CHECK_FALSE(tui::parse_game_options({"--friction", "combined", "x"}, error));
+    CHECK_FALSE(termpool::parse_game_options({"--friction", "combined", "x"}, error));
     CHECK(error == "K must be a positive number"); // the K given is read before A is asked for
-    CHECK_FALSE(tui::parse_game_options({"--friction", "decay", "x"}, error));
+    CHECK_FALSE(termpool::parse_game_options({"--friction", "decay", "x"}, error));
     CHECK(error == "K must be a positive number");
-    CHECK_FALSE(tui::parse_game_options({"--friction", "slow"}, error));
+    CHECK_FALSE(termpool::parse_game_options({"--friction", "slow"}, error));
     CHECK(error == "unknown friction model 'slow' (physical, decay K, constant A or combined K A)");
 }
 
 TEST_CASE("--cue sets the shaft's end mass", "[setup][cue]") {
     std::string error;
-    CHECK(tui::parse_game_options({}, error)->setup.physics.cue_end_mass ==
+    CHECK(termpool::parse_game_options({}, error)->setup.physics.cue_end_mass ==
           standard_shaft_end_mass);
-    CHECK(tui::parse_game_options({"--cue", "low-deflection"}, error)->setup.physics.cue_end_mass ==
-          low_deflection_end_mass);
-    CHECK(tui::parse_game_options({"--cue", "none"}, error)->setup.physics.cue_end_mass == 0);
-    CHECK(tui::parse_game_options({"--cue", "standard"}, error)->setup.physics.cue_end_mass ==
+    CHECK(termpool::parse_game_options({"--cue", "low-deflection"}, error)
+              ->setup.physics.cue_end_mass == low_deflection_end_mass);
+    CHECK(termpool::parse_game_options({"--cue", "none"}, error)->setup.physics.cue_end_mass == 0);
+    CHECK(termpool::parse_game_options({"--cue", "standard"}, error)->setup.physics.cue_end_mass ==
           standard_shaft_end_mass);
-    CHECK_FALSE(tui::parse_game_options({"--cue", "ash"}, error));
+    CHECK_FALSE(termpool::parse_game_options({"--cue", "ash"}, error));
     CHECK(error == "--cue takes standard, low-deflection or none");
-    CHECK_FALSE(tui::parse_game_options({"--cue"}, error));
+    CHECK_FALSE(termpool::parse_game_options({"--cue"}, error));
     CHECK(error == "--cue needs a value");
 }
 

@@ -11,16 +11,16 @@
 
 #include <unistd.h>
 
+#include "player/stats_command.hpp"
+#include "player/stats_file.hpp"
+#include "player/stats_summary.hpp"
 #include "record_helpers.hpp"
 #include "rules_helpers.hpp"
-#include "tui/stats_command.hpp"
-#include "tui/stats_file.hpp"
-#include "tui/stats_summary.hpp"
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
 using namespace termpool;
 using namespace termpool::test;
-using termpool::tui::StatsStore;
+using termpool::StatsStore;
 
 #include "lines_of.hpp"
 #include "temp_dir.hpp"
@@ -122,8 +122,8 @@ std::vector<std::string> files_in(const std::string& dir) {
 }
 
 std::string parse_error(const std::string& text) {
-    const auto parsed = tui::parse_stats(text);
-    if (const auto* e = std::get_if<tui::StatsError>(&parsed))
+    const auto parsed = termpool::parse_stats(text);
+    if (const auto* e = std::get_if<termpool::StatsError>(&parsed))
         return std::to_string(e->line) + ": " + e->message;
     return "";
 }
@@ -344,7 +344,7 @@ TEST_CASE("stats of a whole game played by the computer add up", "[stats][game]"
         const auto stats = stats_of_record(record);
         REQUIRE(std::holds_alternative<std::array<PlayerStats, 2>>(stats));
         const auto& s = std::get<std::array<PlayerStats, 2>>(stats);
-        INFO(game_type_name(type) << ": " << tui::stats_summary(record.names, s.data()));
+        INFO(game_type_name(type) << ": " << termpool::stats_summary(record.names, s.data()));
         // Replaying the record hears the same shots as the game did.
         CHECK(s == live.both());
         CHECK(s[0].racks_won + s[1].racks_won == 1);
@@ -389,12 +389,12 @@ TEST_CASE("the totals file reads back what it wrote, UTF-8 names with spaces inc
     StatsStore store;
     const std::string names[2] = {"Bjørn Ås 北京", "CPU (hard)"};
     const PlayerStats game1[2] = {some_stats(1), some_stats(2)};
-    tui::add_game(store, names, game1);
+    termpool::add_game(store, names, game1);
     const std::string swapped[2] = {"CPU (hard)", "# not a comment"};
-    tui::add_game(store, swapped, game1);
+    termpool::add_game(store, swapped, game1);
     REQUIRE(store.players.size() == 3);
-    const std::string text = tui::format_stats(store);
-    const auto parsed = tui::parse_stats(text);
+    const std::string text = termpool::format_stats(store);
+    const auto parsed = termpool::parse_stats(text);
     REQUIRE(std::holds_alternative<StatsStore>(parsed));
     const StatsStore& back = std::get<StatsStore>(parsed);
     REQUIRE(back.players.size() == 3);
@@ -405,19 +405,19 @@ TEST_CASE("the totals file reads back what it wrote, UTF-8 names with spaces inc
     cpu.add(some_stats(1));
     CHECK(back.players[1].stats == cpu);
     CHECK(back.players[2].name == "# not a comment");
-    CHECK(tui::format_stats(back) == text);
+    CHECK(termpool::format_stats(back) == text);
 }
 
 TEST_CASE("names that would break a line or the terminal are cleaned", "[stats][file]") {
-    CHECK(tui::stats_name("  Ann\tLee\n ") == "Ann?Lee?");
-    CHECK(tui::stats_name("\x1b[31mred") == "?[31mred");
-    CHECK(tui::stats_name("caf\xc3") == "caf?");
-    CHECK(tui::stats_name("   ") == "?");
+    CHECK(termpool::stats_name("  Ann\tLee\n ") == "Ann?Lee?");
+    CHECK(termpool::stats_name("\x1b[31mred") == "?[31mred");
+    CHECK(termpool::stats_name("caf\xc3") == "caf?");
+    CHECK(termpool::stats_name("   ") == "?");
     StatsStore store;
     const std::string names[2] = {"Ann\nplayer 9 9 9 9 9 9 9 9 9 Eve", "Bob"};
     const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
-    tui::add_game(store, names, stats);
-    const auto parsed = tui::parse_stats(tui::format_stats(store));
+    termpool::add_game(store, names, stats);
+    const auto parsed = termpool::parse_stats(termpool::format_stats(store));
     REQUIRE(std::holds_alternative<StatsStore>(parsed));
     CHECK(std::get<StatsStore>(parsed).players.size() == 2);
 }
@@ -459,10 +459,10 @@ TEST_CASE("saving a game's figures adds them to the totals", "[stats][file]") {
     const std::string path = dir.path() + "/termpool/stats";
     const std::string names[2] = {"Ann Lee", "CPU (hard)"};
     const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
-    CHECK(tui::save_game_stats(path, names, stats) == "");
-    CHECK(tui::save_game_stats(path, names, stats) == "");
-    const tui::StatsFile file = tui::read_stats_file(path);
-    REQUIRE(file.state == tui::StatsFile::State::read);
+    CHECK(termpool::save_game_stats(path, names, stats) == "");
+    CHECK(termpool::save_game_stats(path, names, stats) == "");
+    const termpool::StatsFile file = termpool::read_stats_file(path);
+    REQUIRE(file.state == termpool::StatsFile::State::read);
     REQUIRE(file.store.players.size() == 2);
     PlayerStats twice = some_stats(1);
     twice.add(some_stats(1));
@@ -478,17 +478,17 @@ TEST_CASE("a damaged totals file is reported with its line and kept as .bad", "[
     spill(path, damaged);
     const std::string names[2] = {"Ann", "Bob"};
     const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
-    const std::string notice = tui::save_game_stats(path, names, stats);
+    const std::string notice = termpool::save_game_stats(path, names, stats);
     CHECK(notice ==
           path + ":3: missing the pot attempts; kept as " + path + ".bad, new totals started");
     CHECK(slurp(path + ".bad") == damaged);
-    const tui::StatsFile fresh = tui::read_stats_file(path);
-    REQUIRE(fresh.state == tui::StatsFile::State::read);
+    const termpool::StatsFile fresh = termpool::read_stats_file(path);
+    REQUIRE(fresh.state == termpool::StatsFile::State::read);
     CHECK(fresh.store.find("Ann")->stats == some_stats(1)); // this game only
 
     // A second damaged file never replaces the first.
     spill(path, "garbage\n");
-    CHECK(tui::save_game_stats(path, names, stats).find("kept as " + path + ".bad.1") !=
+    CHECK(termpool::save_game_stats(path, names, stats).find("kept as " + path + ".bad.1") !=
           std::string::npos);
     CHECK(slurp(path + ".bad") == damaged);
     CHECK(slurp(path + ".bad.1") == "garbage\n");
@@ -499,12 +499,12 @@ TEST_CASE("a failed write leaves the old totals whole and no temporary file", "[
     const std::string path = dir.path() + "/termpool/stats";
     const std::string names[2] = {"Ann", "Bob"};
     const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
-    REQUIRE(tui::save_game_stats(path, names, stats) == "");
+    REQUIRE(termpool::save_game_stats(path, names, stats) == "");
     const std::string before = slurp(path);
     // write_atomically writes PATH.tmp first: a directory in its way makes it fail.
     const std::string temporary = path + ".tmp";
     std::filesystem::create_directory(temporary);
-    const std::string notice = tui::save_game_stats(path, names, stats);
+    const std::string notice = termpool::save_game_stats(path, names, stats);
     CHECK(notice.starts_with("could not save the statistics: " + temporary));
     CHECK(slurp(path) == before);
     std::filesystem::remove(temporary);
@@ -524,12 +524,12 @@ TEST_CASE("the game-over summary fits 36 columns, one column per player", "[stat
     s[0].pots_made = 6;
     s[0].longest_run = 5;
     s[1].fouls = 2;
-    const std::string text = tui::stats_summary(names, s);
+    const std::string text = termpool::stats_summary(names, s);
     const auto lines = lines_of(text);
     REQUIRE(lines.size() == 7);
     for (const std::string& line : lines) {
         INFO(line);
-        CHECK(tui::display_width(line) <= tui::stats_summary_columns);
+        CHECK(termpool::display_width(line) <= termpool::stats_summary_columns);
     }
     // Cut names end in an ellipsis, so that two of them side by side read as two.
     CHECK(lines[0].find("北京北京\u2026") != std::string::npos);
@@ -543,7 +543,7 @@ TEST_CASE("the game-over summary fits 36 columns, one column per player", "[stat
 TEST_CASE("the stats table lines up names of any width", "[stats][tui]") {
     StatsStore store;
     store.players = {{"Ann", some_stats(1)}, {"北京 Bjørn", some_stats(2)}};
-    const auto lines = lines_of(tui::stats_table(store));
+    const auto lines = lines_of(termpool::stats_table(store));
     REQUIRE(lines.size() >= 3);
     CHECK(lines[0].starts_with("Player"));
     CHECK(lines[1].starts_with("Ann "));
@@ -551,8 +551,8 @@ TEST_CASE("the stats table lines up names of any width", "[stats][tui]") {
     CHECK(lines[1].find("56%") != std::string::npos); // 5/9
     CHECK(lines[2].find("50%") != std::string::npos); // 5/10
     // Every column is right-aligned, so every line ends in the same column.
-    CHECK(tui::display_width(lines[1]) == tui::display_width(lines[0]));
-    CHECK(tui::display_width(lines[2]) == tui::display_width(lines[0]));
+    CHECK(termpool::display_width(lines[1]) == termpool::display_width(lines[0]));
+    CHECK(termpool::display_width(lines[2]) == termpool::display_width(lines[0]));
 }
 
 TEST_CASE("termpool stats prints the totals, says when there are none, refuses damage",
@@ -567,7 +567,7 @@ TEST_CASE("termpool stats prints the totals, says when there are none, refuses d
 
     const std::string names[2] = {"Bjørn Ås", "CPU (hard)"};
     const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
-    REQUIRE(tui::save_game_stats(path, names, stats) == "");
+    REQUIRE(termpool::save_game_stats(path, names, stats) == "");
     r = run_stats(dir, state, "");
     CHECK(r.status == 0);
     CHECK(r.err.empty());
@@ -579,7 +579,7 @@ TEST_CASE("termpool stats prints the totals, says when there are none, refuses d
 
     r = run_stats(dir, state, "--reset 'Bjørn Ås'");
     CHECK(r.status == 0);
-    CHECK(tui::read_stats_file(path).store.players.size() == 1);
+    CHECK(termpool::read_stats_file(path).store.players.size() == 1);
     r = run_stats(dir, state, "--reset Nobody");
     CHECK(r.status == 1);
     CHECK(r.err.find("no statistics for 'Nobody'") != std::string::npos);

@@ -13,9 +13,9 @@
 #include "tui/aid_path.hpp"
 #include "tui/aim_state.hpp"
 #include "tui/draw.hpp"
-#include "tui/text_width.hpp"
 #include "tui/view.hpp"
 #include "tui_frames.hpp"
+#include <termpool/text_width.hpp>
 
 using namespace termpool;
 using namespace termpool::tui;

@@ -5,9 +5,9 @@
 #include <string>
 
 #include "physics_helpers.hpp"
+#include "player/player_name.hpp"
 #include "tui/aim.hpp"
-#include "tui/player_name.hpp"
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
 using namespace termpool;
 using namespace termpool::tui;

@@ -18,9 +18,9 @@
 #include "tui/grid_dump.hpp"
 #include "tui/help_text.hpp"
 #include "tui/pocket_cells.hpp"
-#include "tui/text_width.hpp"
 #include "tui/view.hpp"
 #include "tui_frames.hpp"
+#include <termpool/text_width.hpp>
 
 using namespace termpool;
 using namespace termpool::tui;

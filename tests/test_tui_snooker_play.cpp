@@ -15,14 +15,14 @@
 #include <variant>
 #include <vector>
 
+#include "player/options.hpp"
 #include "tmux_session.hpp"
 #include "tui/aim_state.hpp"
 #include "tui/messages.hpp"
 #include "tui/nomination.hpp"
-#include "tui/options.hpp"
 #include "tui/snooker_panel.hpp"
-#include "tui/text_width.hpp"
 #include "tui/view.hpp"
+#include <termpool/text_width.hpp>
 
 using namespace termpool;
 using namespace termpool::tui;

@@ -13,9 +13,9 @@
 #include <utility>
 #include <vector>
 
+#include "player/options.hpp"
 #include "tui/aim_state.hpp"
 #include "tui/computer_pacing.hpp"
-#include "tui/options.hpp"
 #include "tui/table_link.hpp"
 #include "tui/terminal.hpp"
 #include "tui/text_entry.hpp"

@@ -5,10 +5,10 @@
 #include <string>
 #include <termpool/race.hpp>
 
+#include "player/stats_file.hpp"
+#include "player/stats_summary.hpp"
 #include "tui/app.hpp"
 #include "tui/messages.hpp"
-#include "tui/stats_file.hpp"
-#include "tui/stats_summary.hpp"
 
 namespace termpool::tui {
 

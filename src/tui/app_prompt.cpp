@@ -3,8 +3,8 @@
 
 #include <string>
 
+#include "player/player_name.hpp"
 #include "tui/app.hpp"
-#include "tui/player_name.hpp"
 
 namespace termpool::tui {
 

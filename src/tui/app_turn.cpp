@@ -9,11 +9,11 @@
 #include <termpool/snooker_layout.hpp>
 #include <vector>
 
+#include "player/save_file.hpp"
 #include "tui/app.hpp"
 #include "tui/cue_ball_spot.hpp"
 #include "tui/messages.hpp"
 #include "tui/nomination.hpp"
-#include "tui/save_file.hpp"
 
 namespace termpool::tui {
 

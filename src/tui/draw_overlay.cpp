@@ -8,7 +8,7 @@
 
 #include "tui/draw.hpp"
 #include "tui/help_text.hpp"
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
 namespace termpool::tui {
 namespace {

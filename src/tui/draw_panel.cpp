@@ -19,7 +19,7 @@
 #include "tui/draw.hpp"
 #include "tui/pocket_cells.hpp"
 #include "tui/snooker_panel.hpp"
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
 namespace termpool::tui {
 namespace {

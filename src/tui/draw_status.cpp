@@ -9,7 +9,7 @@
 #include <string>
 
 #include "tui/draw.hpp"
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
 namespace termpool::tui {
 namespace {

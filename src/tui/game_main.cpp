@@ -11,11 +11,11 @@
 
 #include "files/keep_aside.hpp"
 #include "files/self_command.hpp"
+#include "player/config.hpp"
+#include "player/options.hpp"
+#include "player/save_file.hpp"
+#include "player/save_slots.hpp"
 #include "tui/app.hpp"
-#include "tui/config.hpp"
-#include "tui/options.hpp"
-#include "tui/save_file.hpp"
-#include "tui/save_slots.hpp"
 
 #include "tui/terminal.hpp"
 #include <termpool/record.hpp>

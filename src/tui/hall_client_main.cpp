@@ -8,8 +8,8 @@
 #include "hall/hall_main.hpp"
 #include "hall/socket_dir.hpp"
 #include "hall/token_store.hpp"
+#include "player/player_name.hpp"
 #include "tui/hall_session.hpp"
-#include "tui/player_name.hpp"
 
 namespace termpool::tui {
 namespace {

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <termpool/race.hpp>
 
+#include "player/player_name.hpp"
 #include "tui/ball_style.hpp"
 #include "tui/hall_session.hpp"
-#include "tui/player_name.hpp"
 
 namespace termpool::tui {
 

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
 namespace termpool::tui {
 

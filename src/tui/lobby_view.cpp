@@ -9,7 +9,7 @@
 
 #include "tui/ball_style.hpp"
 #include "tui/painter.hpp"
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
 namespace termpool::tui {
 namespace {

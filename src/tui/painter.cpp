@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <string>
 
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
 namespace termpool::tui {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "tui/draw.hpp"
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
 namespace termpool::tui {
 namespace {

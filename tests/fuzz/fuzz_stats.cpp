@@ -6,14 +6,14 @@
 #include <string_view>
 #include <variant>
 
-#include "tui/stats_file.hpp"
+#include "player/stats_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const auto parsed = termpool::tui::parse_stats(
+    const auto parsed = termpool::parse_stats(
         std::string_view(reinterpret_cast<const char*>(data), size));
-    if (const auto* store = std::get_if<termpool::tui::StatsStore>(&parsed)) {
-        const auto again = termpool::tui::parse_stats(termpool::tui::format_stats(*store));
-        if (!std::holds_alternative<termpool::tui::StatsStore>(again))
+    if (const auto* store = std::get_if<termpool::StatsStore>(&parsed)) {
+        const auto again = termpool::parse_stats(termpool::format_stats(*store));
+        if (!std::holds_alternative<termpool::StatsStore>(again))
             std::abort(); // a file the game writes must read back
     }
     return 0;

@@ -1,4 +1,4 @@
-#include "tui/stats_file.hpp"
+#include "player/stats_file.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -10,10 +10,10 @@
 
 #include "files/keep_aside.hpp"
 #include "files/xdg_dir.hpp"
-#include "tui/save_file.hpp"
-#include "tui/text_width.hpp"
+#include "player/save_file.hpp"
+#include <termpool/text_width.hpp>
 
-namespace termpool::tui {
+namespace termpool {
 namespace {
 
 constexpr std::string_view blanks = " \t\r\v\f";
@@ -277,4 +277,4 @@ std::string save_game_stats(const std::string& path, const std::string names[2],
     return notice;
 }
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace termpool::tui {
+namespace termpool {
 
 /// Longest name, in terminal columns (a CJK character counts two).
 inline constexpr int max_name_columns = 20;
@@ -16,4 +16,4 @@ inline constexpr int max_name_columns = 20;
 /// control character (C0, DEL, C1).
 std::optional<std::string> clean_player_name(std::string_view input, std::string& error);
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -12,7 +12,7 @@
 #include <termpool/table.hpp>
 #include <vector>
 
-namespace termpool::tui {
+namespace termpool {
 
 /// What the command line presets.
 struct GameOptions {
@@ -53,4 +53,4 @@ std::optional<int> parse_best_of(std::string_view text);
 std::optional<GameOptions> parse_game_options(const std::vector<std::string>& args,
                                               std::string& error, GameOptions defaults = {});
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -6,9 +6,9 @@
 
 #include "files/atomic_file.hpp"
 
-namespace termpool::tui {
+namespace termpool {
 
 /// $XDG_STATE_HOME/termpool, or ~/.local/state/termpool: where games are saved.
 std::string save_dir();
 
-} // namespace termpool::tui
+} // namespace termpool

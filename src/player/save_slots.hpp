@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace termpool::tui {
+namespace termpool {
 
 /// The path of slot `slot` (>= 1) in the save directory.
 std::string slot_path(int slot);
@@ -57,4 +57,4 @@ private:
 /// (State::unavailable), and the game plays there as before locks.
 SaveLock claim_free_slot(const std::function<bool(const std::string& path)>& may_take);
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -1,11 +1,11 @@
-#include "tui/config.hpp"
+#include "player/config.hpp"
 
 #include <termpool/text_lines.hpp>
 
 #include "files/xdg_dir.hpp"
-#include "tui/player_name.hpp"
+#include "player/player_name.hpp"
 
-namespace termpool::tui {
+namespace termpool {
 namespace {
 
 std::string_view trim(std::string_view s) {
@@ -84,4 +84,4 @@ std::optional<std::string> apply_config(std::string_view text, GameOptions& o,
     return std::nullopt;
 }
 
-} // namespace termpool::tui
+} // namespace termpool

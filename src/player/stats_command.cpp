@@ -1,12 +1,12 @@
-#include "tui/stats_command.hpp"
+#include "player/stats_command.hpp"
 
 #include <cstdio>
 
-#include "tui/save_file.hpp"
-#include "tui/stats_summary.hpp"
-#include "tui/text_width.hpp"
+#include "player/save_file.hpp"
+#include "player/stats_summary.hpp"
+#include <termpool/text_width.hpp>
 
-namespace termpool::tui {
+namespace termpool {
 namespace {
 
 constexpr const char* usage = "usage: termpool stats [--reset NAME] [--help]\n";
@@ -133,4 +133,4 @@ int stats_command(const std::vector<std::string>& args) {
     return 0;
 }
 
-} // namespace termpool::tui
+} // namespace termpool

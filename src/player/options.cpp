@@ -1,13 +1,13 @@
-#include "tui/options.hpp"
+#include "player/options.hpp"
 
-#include "tui/player_name.hpp"
+#include "player/player_name.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <termpool/race.hpp>
 
-namespace termpool::tui {
+namespace termpool {
 
 std::optional<int> parse_race_to(std::string_view text) {
     int n = 0;
@@ -203,4 +203,4 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
     return o;
 }
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -1,4 +1,4 @@
-#include "tui/save_slots.hpp"
+#include "player/save_slots.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -10,9 +10,9 @@
 #include <unistd.h>
 #include <utility>
 
-#include "tui/save_file.hpp"
+#include "player/save_file.hpp"
 
-namespace termpool::tui {
+namespace termpool {
 namespace {
 
 // More slots than anyone runs games at once; past it the last one is shared, unlocked.
@@ -114,4 +114,4 @@ SaveLock claim_free_slot(const std::function<bool(const std::string& path)>& may
     return SaveLock(slot_path(max_slots));
 }
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -1,10 +1,10 @@
-#include "tui/stats_summary.hpp"
+#include "player/stats_summary.hpp"
 
 #include <cmath>
 
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
-namespace termpool::tui {
+namespace termpool {
 namespace {
 
 constexpr int label_columns = 14; // "Break-and-runs"
@@ -56,4 +56,4 @@ std::string stats_summary(const std::string names[2], const PlayerStats s[2]) {
     return text;
 }
 
-} // namespace termpool::tui
+} // namespace termpool

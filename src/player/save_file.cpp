@@ -1,11 +1,11 @@
-#include "tui/save_file.hpp"
+#include "player/save_file.hpp"
 
 #include "files/xdg_dir.hpp"
 
-namespace termpool::tui {
+namespace termpool {
 
 std::string save_dir() {
     return xdg_dir("XDG_STATE_HOME", ".local/state") + "/termpool";
 }
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -5,7 +5,7 @@
 #include <string>
 #include <termpool/stats.hpp>
 
-namespace termpool::tui {
+namespace termpool {
 
 /// Widest line of stats_summary, in columns.
 inline constexpr int stats_summary_columns = 36;
@@ -18,4 +18,4 @@ std::string stats_summary(const std::string names[2], const PlayerStats s[2]);
 /// "75%", rounded to the nearest percent, or "-" before the first pot attempt.
 std::string pot_success_text(const PlayerStats& s);
 
-} // namespace termpool::tui
+} // namespace termpool

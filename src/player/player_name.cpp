@@ -1,12 +1,12 @@
 // clean_player_name: trim, refuse what a terminal cannot show safely, cut to the column limit.
 
-#include "tui/player_name.hpp"
+#include "player/player_name.hpp"
 
 #include <termpool/record.hpp>
 
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
-namespace termpool::tui {
+namespace termpool {
 namespace {
 
 std::string_view trim_spaces(std::string_view s) {
@@ -49,4 +49,4 @@ std::optional<std::string> clean_player_name(std::string_view input, std::string
     return std::string(name);
 }
 
-} // namespace termpool::tui
+} // namespace termpool

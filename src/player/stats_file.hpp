@@ -17,7 +17,7 @@
 #include <variant>
 #include <vector>
 
-namespace termpool::tui {
+namespace termpool {
 
 /// Version of the stats file written by this build.
 inline constexpr int stats_version = 1;
@@ -102,4 +102,4 @@ private:
 std::string save_game_stats(const std::string& path, const std::string names[2],
                             const PlayerStats stats[2]);
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -1,11 +1,11 @@
 // UTF-8 decoding and a small wcwidth for the ranges a player's name is likely to use.
 
-#include "tui/text_width.hpp"
+#include <termpool/text_width.hpp>
 
 #include <algorithm>
 #include <iterator>
 
-namespace termpool::tui {
+namespace termpool {
 namespace {
 
 struct Range {
@@ -222,4 +222,4 @@ std::vector<std::string> wrap_to_width(std::string_view text, int columns) {
     return out;
 }
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "tui/stats_file.hpp"
+#include "player/stats_file.hpp"
 
-namespace termpool::tui {
+namespace termpool {
 
 /// The totals as an aligned table (names padded by their display width), a header line
 /// first and a short legend after; one line per player, in the store's order.
@@ -19,4 +19,4 @@ std::string stats_table(const StatsStore& store);
 ///         no totals, 2 bad usage or a damaged file.
 int stats_command(const std::vector<std::string>& args);
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -7,9 +7,9 @@
 #include <string_view>
 #include <vector>
 
-#include "tui/options.hpp"
+#include "player/options.hpp"
 
-namespace termpool::tui {
+namespace termpool {
 
 /// The path of the config file.
 std::string config_path();
@@ -19,4 +19,4 @@ std::string config_path();
 std::optional<std::string> apply_config(std::string_view text, GameOptions& options,
                                         std::vector<std::string>& warnings);
 
-} // namespace termpool::tui
+} // namespace termpool

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace termpool::tui {
+namespace termpool {
 
 /// Decodes the UTF-8 sequence starting at s[i] into `cp` and advances `i` past it. Returns false
 /// (advancing by one byte) for an invalid sequence: a stray continuation byte, a truncated
@@ -39,4 +39,4 @@ std::string truncate_to_width(std::string_view s, int columns);
 /// inside a word only when it is wider than a line. Spaces at the breaks are dropped.
 std::vector<std::string> wrap_to_width(std::string_view text, int columns);
 
-} // namespace termpool::tui
+} // namespace termpool
