@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <termpool/assist.hpp>
 #include <termpool/level.hpp>
 #include <termpool/race.hpp>
 #include <termpool/rules.hpp>
@@ -19,9 +20,10 @@ namespace termpool {
 
 /// Newest version of the text form, read and written by this build. Version 2 added races,
 /// version 3 the cue (a `cue` line for a shaft other than the standard one, a shot's
-/// `elevation`), version 4 the check (a `physics` line and a `check` line). A record is written
-/// in the oldest version that holds it, so that older builds read it.
-inline constexpr int record_version = 4;
+/// `elevation`), version 4 the check (a `physics` line and a `check` line), version 5 the
+/// assist (an `assist` line for an assist other than standard). A record is written in the
+/// oldest version that holds it, so that older builds read it.
+inline constexpr int record_version = 5;
 
 /// One thing a player did, or the start of a match's next rack.
 struct RecordedAction {
@@ -56,7 +58,9 @@ struct GameRecord {
     std::optional<Level> computers[2];               ///< a computer in a seat, and its level
     int race_to = 1;                                 ///< racks to win the match; 0 or 1: one game
     BreakRule break_rule = BreakRule::alternate;     ///< who breaks each next rack
-    std::vector<RecordedAction> actions;             ///< in order
+    /// How much the aiming aid helps both seats (no line: standard, as in older records).
+    Assist assist = Assist::standard;
+    std::vector<RecordedAction> actions; ///< in order
     /// The state the actions led to when the record was written: a Match keeps it after every
     /// action; records of version 3 and older have none.
     std::optional<RecordCheck> check;

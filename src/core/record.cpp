@@ -66,6 +66,8 @@ bool needs_version_3(const GameRecord& r) {
 }
 
 int version_needed(const GameRecord& r) {
+    if (r.assist != Assist::standard)
+        return 5;
     if (r.check)
         return 4;
     return needs_version_3(r) ? 3 : needs_version_2(r) ? 2 : 1;
@@ -226,6 +228,8 @@ std::string format_record(const GameRecord& r) {
         out += "race " + std::to_string(r.race_to) + "\n";
         out += std::string("breaks ") + break_rule_name(r.break_rule) + "\n";
     }
+    if (r.assist != Assist::standard)
+        out += std::string("assist ") + assist_name(r.assist) + "\n";
     if (r.check)
         out += "physics " + std::to_string(r.check->physics_version) + "\n";
     for (const RecordedAction& a : r.actions)
@@ -284,6 +288,8 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
             return fail("'cue' lines need record version 3");
         if (version < 4 && (key == "physics" || key == "check"))
             return fail("'" + std::string(key) + "' lines need record version 4");
+        if (version < 5 && key == "assist")
+            return fail("'assist' lines need record version 5");
         if (checked && key != "end")
             return fail("only 'end' may follow the 'check' line");
         if (key == "game" && want(2)) {
@@ -355,6 +361,11 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
             if (!rule)
                 return fail("unknown break rule '" + std::string(f[1]) + "' (alternate or winner)");
             r.break_rule = *rule;
+        } else if (key == "assist" && want(2)) {
+            const auto assist = parse_assist(f[1]);
+            if (!assist)
+                return fail("unknown assist '" + std::string(f[1]) + "' (guided, standard or pro)");
+            r.assist = *assist;
         } else if (key == "physics" && want(2)) {
             if (physics)
                 return fail("a second 'physics' line");

@@ -71,6 +71,11 @@ std::optional<std::string> apply_config(std::string_view text, GameOptions& o,
             if (value != "on" && value != "off")
                 return fail("aim-aid is on or off, not '" + value + "'");
             o.aim_aid = value == "on";
+        } else if (key == "assist") {
+            const auto assist = parse_assist(value);
+            if (!assist)
+                return fail("assist is guided, standard or pro, not '" + value + "'");
+            o.assist = *assist;
         } else if (key == "level") {
             const auto level = parse_level(value);
             if (!level)

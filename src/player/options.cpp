@@ -182,6 +182,16 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
                 return std::nullopt;
             }
             o.race_to = race_for_best_of(*n);
+        } else if (a == "--assist") {
+            const std::string* v = value();
+            if (!v)
+                return std::nullopt;
+            const auto assist = parse_assist(*v);
+            if (!assist) {
+                error = "unknown assist '" + *v + "' (guided, standard or pro)";
+                return std::nullopt;
+            }
+            o.assist = *assist;
         } else if (a == "--breaks") {
             const std::string* v = value();
             if (!v)

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <termpool/assist.hpp>
 #include <termpool/level.hpp>
 #include <termpool/race.hpp>
 #include <termpool/rules.hpp>
@@ -22,6 +23,7 @@ struct GameOptions {
     GameSetup setup;
     bool timed_power = false;            ///< config power-mode: start in timed power mode
     bool aim_aid = true;                 ///< config aim-aid: show the aiming aid
+    Assist assist = Assist::standard;    ///< --assist, config assist: how much the aid helps
     Level default_level = Level::medium; ///< config level: for --vs-computer without one
     bool resume = false;                 ///< --resume [N|FILE]: continue a saved game
     std::string resume_from;             ///< --resume N or FILE; empty: the only one

@@ -39,6 +39,11 @@ constexpr const char* options_usage =
     "  --breaks alternate|winner\n"
     "                        who breaks each next rack of a match (default alternate)\n"
     "  --seed S              the first rack's seed, to set a game up again exactly\n"
+    "  --assist guided|standard|pro\n"
+    "                        how much the aiming aid helps (default standard): guided\n"
+    "                        opens at the easiest pot and draws the shot to the rails,\n"
+    "                        standard opens full on a legal ball, pro draws the cue\n"
+    "                        ball's line to its first contact only\n"
     "  --vs-computer [LEVEL] the computer is player 2; LEVEL is easy, medium, hard or pro\n"
     "                        (default medium, or the config file's level)\n"
     "  --watch [LEVEL]       the computer plays both sides\n"
@@ -398,7 +403,7 @@ int run_practice(const std::vector<std::string>& args) {
     constexpr const char* usage =
         "usage: termpool practice [--game 8ball|8ball-bar|9ball|10ball]\n"
         "                         [--table 7ft|8ft|9ft|snooker]\n"
-        "                         [--player1 NAME] [--seed S] [--friction MODEL]\n"
+        "                         [--player1 NAME] [--seed S] [--assist A] [--friction MODEL]\n"
         "                         [--cue-ball-mass KG] [--cue SHAFT] [--ascii]\n"
         "One player at the table, no referee: m moves a ball, r takes the last shot again,\n"
         "t racks again.\n";
