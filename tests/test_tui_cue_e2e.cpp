@@ -13,8 +13,10 @@ TEST_CASE("the game in tmux: e raises the cue, a jump is refused, the raised cue
           "[tui][e2e][cue]") {
     ScratchDir dir("termpool-test");
     Tmux t;
+    // Seed 1, the break at the aim guided proposes: the next turn is not Ann's.
     t.start("env XDG_STATE_HOME=" + dir.path + " TERM=xterm-256color LANG=C.UTF-8 " +
-            tmux_session::termpool_binary() + " --player1 Ann --player2 Bob --seed 1; sleep 60");
+            tmux_session::termpool_binary() +
+            " --player1 Ann --player2 Bob --seed 1 --assist guided; sleep 60");
     REQUIRE(t.wait_for_text("place the cue ball"));
     t.keys("Enter");
     REQUIRE(t.wait_for_text("[ shoot ]"));

@@ -12,10 +12,11 @@ using tmux_session::Tmux;
 TEST_CASE("game over shows the figures and keeps them for termpool stats", "[tui][e2e][stats]") {
     ScratchDir dir("termpool-test");
     Tmux t;
-    // Bar rules, rack seed 121: the full-power break at the proposed aim drops the 8, which wins.
+    // Bar rules, rack seed 121: the full-power break at the aim guided proposes drops the 8,
+    // which wins.
     t.start("env XDG_STATE_HOME=" + dir.path + " TERM=xterm-256color LANG=C.UTF-8 " +
             tmux_session::termpool_binary() +
-            " --game 8ball-bar --seed 121 --player1 Ann --player2 Bob; sleep 60");
+            " --game 8ball-bar --seed 121 --assist guided --player1 Ann --player2 Bob; sleep 60");
     REQUIRE(t.wait_for_text("place the cue ball"));
     t.keys("Enter");
     REQUIRE(t.wait_for_text("[ shoot ]"));

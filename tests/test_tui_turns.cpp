@@ -162,8 +162,9 @@ TEST_CASE("9-ball: Space at the start of each turn never hits a wrong ball first
     t.keys("q");
     t.keys("y");
 
-    // Replayed: every shot after the break went where the game proposed, at the easiest legal
-    // ball, and none that had a straight line to it hit a wrong ball first or no ball at all.
+    // Replayed: every shot after the break went where the game proposed (standard, the
+    // default: full at the easiest legal ball), and none that had a straight line to it hit a
+    // wrong ball first or no ball at all.
     auto parsed = termpool::parse_record(file_text(save));
     REQUIRE(std::holds_alternative<termpool::GameRecord>(parsed));
     const termpool::GameRecord& record = std::get<termpool::GameRecord>(parsed);
@@ -184,8 +185,9 @@ TEST_CASE("9-ball: Space at the start of each turn never hits a wrong ball first
         for (const termpool::Ball& b : game.balls())
             if (b.id == 0)
                 cue = b.position;
-        const auto ranked = termpool::tui::rank_targets(
-            game.table(), game.balls(), game.params().ball_radius, cue, game.legal_targets());
+        const auto ranked =
+            termpool::tui::rank_openings(game.table(), game.balls(), game.params().ball_radius, cue,
+                                         game.legal_targets(), record.assist);
         const termpool::Verdict v = game.play(a.strike, a.call);
         if (is_break || ranked.empty())
             continue;

@@ -105,12 +105,26 @@ double leave_box(const Table& table, Vec2 p, Vec2 d) {
     return t;
 }
 
-// The path from p along d up to the first contact, at most `max_length` long.
+// The path from p along d up to the first contact, at most `max_length` long; a leg that
+// ends on a cushion (not a jaw) goes on off it, mirrored, `rebounds` times.
 std::vector<Vec2> short_path(const Table& table, const std::vector<Ball>& balls, double R, Vec2 p,
-                             Vec2 d, int ignore_a, int ignore_b, double max_length) {
-    const Hit hit = cast(table, balls, R, p, d, ignore_a, ignore_b);
-    const double t = std::isfinite(hit.t) ? hit.t : leave_box(table, p, d);
-    return {p, p + d * std::min(t, max_length)};
+                             Vec2 d, int ignore_a, int ignore_b, double max_length,
+                             int rebounds = 0) {
+    std::vector<Vec2> path{p};
+    for (int leg = 0; leg <= rebounds; ++leg) {
+        const Hit hit = cast(table, balls, R, p, d, ignore_a, ignore_b);
+        const double t = std::isfinite(hit.t) ? hit.t : leave_box(table, p, d);
+        const double run = std::isfinite(t) ? std::min(t, max_length) : max_length;
+        p = p + d * run;
+        path.push_back(p);
+        const bool rail = hit.ball < 0 && hit.cushion >= 0 &&
+                          hit.cushion < static_cast<int>(table.cushions.size());
+        if (!rail || run < t)
+            break;
+        const Vec2 n = table.cushions[static_cast<std::size_t>(hit.cushion)].normal;
+        d = d - n * (2 * dot(d, n));
+    }
+    return path;
 }
 
 } // namespace
@@ -181,7 +195,8 @@ AimPreview preview_shot(const Table& table, const std::vector<Ball>& balls, doub
 }
 
 void add_contact_lines(AimPreview& out, const Table& table, const std::vector<Ball>& balls,
-                       double R, Vec2 contact, Vec2 d, int object_id, double aid_length) {
+                       double R, Vec2 contact, Vec2 d, int object_id, double aid_length,
+                       int rebounds) {
     const auto object =
         std::find_if(balls.begin(), balls.end(), [&](const Ball& b) { return b.id == object_id; });
     if (object == balls.end())
@@ -192,11 +207,12 @@ void add_contact_lines(AimPreview& out, const Table& table, const std::vector<Ba
     // The object ball leaves along the line of centres; the cue ball keeps the rest of its
     // velocity, which is at right angles to it (the tangent line).
     const Vec2 n = normalized(object->position - contact);
-    out.object_path = short_path(table, balls, R, object->position, n, 0, object_id, aid_length);
+    out.object_path =
+        short_path(table, balls, R, object->position, n, 0, object_id, aid_length, rebounds);
     const Vec2 tangent = d - n * dot(d, n);
     if (length(tangent) > 1e-6) {
-        out.deflect_path =
-            short_path(table, balls, R, contact, normalized(tangent), 0, object_id, aid_length);
+        out.deflect_path = short_path(table, balls, R, contact, normalized(tangent), 0, object_id,
+                                      aid_length, rebounds);
     }
 }
 
@@ -331,6 +347,26 @@ std::vector<TargetChoice> rank_targets(const Table& table, const std::vector<Bal
     std::stable_sort(out.begin(), out.end(), [](const TargetChoice& a, const TargetChoice& b) {
         return a.difficulty != b.difficulty ? a.difficulty < b.difficulty : a.ball < b.ball;
     });
+    return out;
+}
+
+std::vector<TargetChoice> rank_openings(const Table& table, const std::vector<Ball>& balls,
+                                        double R, Vec2 cue, const std::vector<int>& legal,
+                                        Assist assist) {
+    std::vector<TargetChoice> out = rank_targets(table, balls, R, cue, legal);
+    if (assist == Assist::guided)
+        return out;
+    // A full hit: the aim shows the ball, and the cut is the player's to find. A kick is aimed
+    // at the ball's image, and a ball with no line at its centre, already.
+    for (TargetChoice& t : out) {
+        if (t.line != TargetLine::straight)
+            continue;
+        const auto ball =
+            std::find_if(balls.begin(), balls.end(), [&](const Ball& b) { return b.id == t.ball; });
+        if (ball != balls.end())
+            t.aim_deg = clear_aim_at(table, balls, R, cue, *ball)
+                            .value_or(aim_from_pointer(cue, ball->position));
+    }
     return out;
 }
 

@@ -2,6 +2,7 @@
 // Pure input math for the game loop: aim angles, power, spin steps and the aiming aid's
 // geometry. Nothing here draws or reads input; it is all plain functions of numbers.
 
+#include <termpool/assist.hpp>
 #include <termpool/ball.hpp>
 #include <termpool/table.hpp>
 #include <vector>
@@ -48,8 +49,11 @@ double clamp_spin(double offset);
 /// View::object_path and View::deflect_path.
 struct AimPreview {
     std::vector<Vec2> cue_path;     ///< the cue ball's centre from its spot to its first contact
-    int object_ball = -1;           ///< id of the first ball met, -1 when a cushion comes first
-    int cushion = -1;               ///< index into Table::cushions of the cushion met, else -1
+                                    ///< (through a cushion to the next when asked: a kick)
+    int object_ball = -1;           ///< id of the first ball met, -1 when none is
+    int cushion = -1;               ///< index into Table::cushions of the first cushion met
+                                    ///< (before the ball, in a kick), else -1
+    std::vector<Vec2> kick_leg;     ///< a path through a rail: its part up to the rail
     bool has_ghost = false;         ///< a ball is met: `ghost` is where the cue ball touches it
     Vec2 ghost;                     ///< the cue ball's centre at contact
     std::vector<Vec2> object_path;  ///< the object ball's start along the line of centres
@@ -61,9 +65,11 @@ struct AimPreview {
 /// reaches `contact` touching ball `object_id`: the object ball and the ghost ball, the object
 /// ball's path along the line of centres and the cue ball's along the tangent line on the side
 /// away from the object ball (none for a full hit), each up to its own first contact and at
-/// most `aid_length` metres.
+/// most `aid_length` metres; with `rebounds`, a line that meets a cushion goes on off it (mirror
+/// reflection) that many times, each leg again at most `aid_length`.
 void add_contact_lines(AimPreview& out, const Table& table, const std::vector<Ball>& balls,
-                       double R, Vec2 contact, Vec2 d, int object_id, double aid_length);
+                       double R, Vec2 contact, Vec2 d, int object_id, double aid_length,
+                       int rebounds = 0);
 
 /// Casts the cue ball from `cue` at `aim_deg` against the balls on the table (circles of radius
 /// 2R around their centres; the cue ball, id 0, and pocketed balls are ignored) and against the
@@ -98,6 +104,15 @@ struct TargetChoice {
 /// and one with no line at all comes last, aimed at its centre.
 std::vector<TargetChoice> rank_targets(const Table& table, const std::vector<Ball>& balls, double R,
                                        Vec2 cue, const std::vector<int>& legal);
+
+/// The aims a turn opens with under `assist`, in `rank_targets`' order (the '[' and ']' keys
+/// go through them). Guided: rank_targets' own, at the ghost ball of each ball's easiest pot.
+/// Standard and pro: at the centre of the same balls, a full hit that pots nothing by itself
+/// unless the pot is straight (across the silhouette when another ball hides the centre, the
+/// kick's and the hidden ball's aims as ranked).
+std::vector<TargetChoice> rank_openings(const Table& table, const std::vector<Ball>& balls,
+                                        double R, Vec2 cue, const std::vector<int>& legal,
+                                        Assist assist);
 
 /// The ids of `rank_targets`, easiest first (for the '[' and ']' keys).
 std::vector<int> targets_easiest_first(const Table& table, const std::vector<Ball>& balls, double R,

@@ -23,6 +23,7 @@ void AimState::new_turn() {
     elevation_deg = 0;
     show_marker = false; // the pointer's mark belongs to the last aim
     dragging = false;
+    given_call.reset();
 }
 
 void AimState::set_break(bool is_break) {
@@ -89,37 +90,29 @@ void AimState::aim_at_target(const std::vector<TargetChoice>& order) {
 void AimState::update_preview(const Table& table, const PhysicsParams& params,
                               const std::vector<Ball>& balls, bool is_break,
                               const std::function<bool(int ball)>& calls_pocket) {
-    preview = preview_strike(table, params, balls, set_strike(is_break));
-    if (preview.object_ball != preview_ball)
+    // Lines as long as the table is round: every line runs to its rail or pocket.
+    const double whole_table = 2 * (table.length + table.width);
+    full_preview = preview_strike(table, params, balls, set_strike(is_break), whole_table, 1);
+    preview = shown_preview(full_preview, assist, params.ball_radius);
+    if (full_preview.object_ball != preview_ball)
         pocket_chosen = false;
-    preview_ball = preview.object_ball;
+    preview_ball = full_preview.object_ball;
     if (pocket_chosen)
         return;
     // Propose the obvious pocket: the one the object ball heads for most directly.
     called_pocket = 0;
-    if (preview.object_ball > 0 && calls_pocket(preview.object_ball) &&
-        preview.object_path.size() >= 2) {
-        const Vec2 from = preview.object_path.front();
-        const Vec2 dir = normalized(preview.object_path.back() - from);
+    const std::vector<Vec2>& object = full_preview.object_path;
+    if (preview_ball > 0 && calls_pocket(preview_ball) && object.size() >= 2) {
+        const Vec2 dir = normalized(object[1] - object[0]);
         double best = -2;
         for (const Pocket& pocket : table.pockets) {
-            const double c = dot(normalized(pocket.position - from), dir);
+            const double c = dot(normalized(pocket.position - object[0]), dir);
             if (c > best) {
                 best = c;
                 called_pocket = pocket.number;
             }
         }
     }
-}
-
-ShotCall AimState::call(const std::function<bool(int ball)>& calls_pocket) const {
-    ShotCall c;
-    c.push_out = push_out;
-    if (safety)
-        c.call.safety = true;
-    else if (preview_ball > 0 && calls_pocket(preview_ball) && called_pocket != 0)
-        c.call = {preview_ball, called_pocket, false};
-    return c;
 }
 
 } // namespace termpool::tui

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <functional>
+#include <optional>
 #include <string>
 #include <termpool/rules.hpp>
 #include <termpool/simulator.hpp>
@@ -40,8 +41,13 @@ struct AimState {
     bool nomination_chosen = false; ///< snooker: the player named it (else the aimed ball)
     int target_index = -1;          ///< which of the ranked targets the aim proposes
     TargetLine target_line = TargetLine::straight; ///< how the proposed aim reaches its ball
-    int preview_ball = -1;                         ///< the ball the aid shows the cue ball hitting
-    AimPreview preview;                            ///< the aid's paths
+    int preview_ball = -1;            ///< the ball the cue ball meets first (off one rail at most)
+    Assist assist = Assist::standard; ///< how much of the aid shows, and where a turn opens
+    AimPreview full_preview;          ///< the whole aid, off a rail: what the call reads
+    AimPreview preview;               ///< the aid's paths as `assist` shows them
+    /// The call of a shot someone else set up (the computer's, another terminal's being shown):
+    /// shown and made as it is.
+    std::optional<ShotCall> given_call;
 
     /// A new turn: no call, no spin, a level cue, no pointer mark, the easiest target first.
     void new_turn();
@@ -62,14 +68,13 @@ struct AimState {
     /// Turns the cue to the proposed target `target_index` of `order` (kept in range).
     void aim_at_target(const std::vector<TargetChoice>& order);
     /// Recomputes the aid from the simulator for the strike as set (at the bar's set power: in
-    /// timed mode the last one it stopped at), and proposes the pocket the object ball heads
-    /// for most directly when `calls_pocket` says the shot at it names one.
+    /// timed mode the last one it stopped at), the whole of it and as `assist` shows it, and
+    /// proposes the pocket the object ball heads for most directly when `calls_pocket` says the
+    /// shot at it names one. The ball met is the first one the cue ball reaches, straight or
+    /// off one rail, so that a kick calls its ball too.
     void update_preview(const Table& table, const PhysicsParams& params,
                         const std::vector<Ball>& balls, bool is_break,
                         const std::function<bool(int ball)>& calls_pocket);
-    /// The call of the shot as set: a safety, or the aimed ball into the chosen pocket when the
-    /// shot names one.
-    ShotCall call(const std::function<bool(int ball)>& calls_pocket) const;
 };
 
 } // namespace termpool::tui

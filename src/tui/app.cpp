@@ -10,6 +10,7 @@
 
 #include "tui/help_text.hpp"
 #include "tui/messages.hpp"
+#include "tui/shot_call.hpp"
 
 namespace termpool::tui {
 namespace {
@@ -27,6 +28,7 @@ Match first_match(const GameOptions& options, std::uint64_t seed) {
             header.names[p] = *options.names[p];
     header.race_to = options.race_to;
     header.break_rule = options.break_rule;
+    header.assist = options.assist;
     auto started = Match::start(header, seed + 1);
     if (Match* match = std::get_if<Match>(&started))
         return std::move(*match);
@@ -204,12 +206,24 @@ void App::compose_aiming(View& v) const {
     }
     v.show_marker = aim_.show_marker;
     v.marker = aim_.marker;
-    // The panel says what the shot will call: the aimed ball into the chosen pocket.
-    // Another terminal's call is not sent while it aims: this one's guess at it would mislead.
-    const bool calling = !aim_.safety && aim_.called_pocket != 0 && aim_.preview_ball > 0 &&
-                         calls_pocket(aim_.preview_ball) && (!in_hall() || hall_seat_to_act());
-    v.called_pocket = calling ? aim_.called_pocket : 0;
-    v.called_ball = calling ? aim_.preview_ball : 0;
+    // The panel says what the shot will call, as shoot() makes it. Another terminal's call is
+    // not sent while it aims (this one's guess at it would mislead), only with its shot.
+    const CallShown call = shot_call(aim_, targets(), [this](int b) { return calls_pocket(b); });
+    const bool own = (!in_hall() || hall_seat_to_act()) && !computer_to_act();
+    if (own || aim_.given_call) {
+        v.called_pocket = call.call.call.ball > 0 ? call.call.call.pocket : 0;
+        v.called_ball = call.call.call.ball;
+        v.call_off_ball = call.off_ball;
+        v.called_safety = call.call.call.safety;
+        v.foul_ball = own ? call.foul_ball : 0;
+    }
+    // Guided: the balls the shooter may not hit first are dimmed.
+    if (aim_.assist == Assist::guided && !practice_) {
+        const std::vector<int> legal = targets();
+        for (const Ball& b : game().balls())
+            if (b.id != 0 && std::find(legal.begin(), legal.end(), b.id) == legal.end())
+                v.dimmed_balls.push_back(b.id);
+    }
 }
 
 void App::compose_prompt(View& v) const {

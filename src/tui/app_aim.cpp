@@ -37,8 +37,8 @@ std::vector<int> App::targets() const {
 }
 
 void App::aim_at_easiest() {
-    aim_.aim_at_target(
-        rank_targets(table_, game().balls(), params_.ball_radius, cue_position(), targets()));
+    aim_.aim_at_target(rank_openings(table_, game().balls(), params_.ball_radius, cue_position(),
+                                     targets(), aim_.assist));
     update_preview();
 }
 

@@ -142,7 +142,8 @@ bool App::show_computer_aim(Clock::time_point now) {
     aim_.follow = move.shot.strike.follow;
     aim_.elevation_deg = move.shot.strike.elevation_deg;
     aim_.power = pacing_.power_at(t, game().is_break());
-    // Snooker: the panel shows the computer's own nomination, if it names one.
+    // The panel shows the call the shot makes; in snooker the computer's own nomination.
+    aim_.given_call = move.shot.call;
     aim_.nominated = move.shot.call.call.ball;
     aim_.nomination_chosen = snooker_play() && game().nomination_owed() && aim_.nominated != 0;
     update_preview();

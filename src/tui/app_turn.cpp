@@ -14,6 +14,7 @@
 #include "tui/cue_ball_spot.hpp"
 #include "tui/messages.hpp"
 #include "tui/nomination.hpp"
+#include "tui/shot_call.hpp"
 
 namespace termpool::tui {
 
@@ -69,6 +70,7 @@ void App::warn_of_third_foul() {
 
 void App::start_aiming() {
     mode_ = Mode::aiming;
+    aim_.assist = match_.record().assist; // the table's, for both seats
     aim_.set_break(game().is_break());
     aim_at_easiest();
     warn_of_third_foul();
@@ -157,8 +159,8 @@ void App::shoot() {
         return;
     }
     const double power = aim_.current_power(now);
-    ShotCall call =
-        game().call_as_taken(aim_.call([this](int ball) { return calls_pocket(ball); }));
+    ShotCall call = game().call_as_taken(
+        shot_call(aim_, targets(), [this](int ball) { return calls_pocket(ball); }).call);
     if (snooker_play()) {
         // The nomination the player named; without one the referee takes the ball hit first,
         // the aimed ball the panel proposed.

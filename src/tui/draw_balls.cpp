@@ -82,6 +82,11 @@ void draw_ball(const Frame& f, const Ball& b, bool wide, BallSet set, std::vecto
     placed.push_back({x, y, w, separated});
     const bool colour = f.paint.colour();
     Style style = ball_style(b.id, colour, set);
+    const std::vector<int>& dimmed = f.view.dimmed_balls;
+    if (std::find(dimmed.begin(), dimmed.end(), b.id) != dimmed.end()) {
+        // A ball the shooter may not hit first: its label faint on the cloth, still readable.
+        style = {Colour::dim, Colour::felt, false, false};
+    }
     if (b.id == 0) {
         const bool refused = f.view.placing && !f.view.placement_legal;
         style = {refused ? Colour::red : Colour::white, Colour::felt, true};

@@ -17,6 +17,7 @@
 #include "tui/aim.hpp"
 #include "tui/ball_style.hpp"
 #include "tui/draw.hpp"
+#include "tui/messages.hpp"
 #include "tui/pocket_cells.hpp"
 #include "tui/snooker_panel.hpp"
 #include <termpool/text_width.hpp>
@@ -140,13 +141,30 @@ Line header(const View& v, bool title) {
     return line;
 }
 
-// "calls the 8 in the top-left corner" while a pocket is called.
+// "the 4", or in snooker "the pink".
+std::string ball_words(const View& v, int id) {
+    return "the " + (ball_set(v) == BallSet::snooker ? snooker_ball_name(id) : std::to_string(id));
+}
+
+// What the shot calls: "calls the 8 in the top-left corner", a combination as one call ("calls
+// the 10 in the top-left corner, off the 5"), "calls a safety"; before any of it, a warning
+// when the aim meets first a ball it may not ("hitting the 4 first is a foul").
 std::string call_text(const View& v) {
+    if (v.foul_ball > 0)
+        return "hitting " + ball_words(v, v.foul_ball) + " first is a foul";
+    if (v.called_safety)
+        return "calls a safety";
     if (v.called_pocket < 1 || v.called_pocket > 6)
         return "";
-    const std::string ball =
-        v.called_ball > 0 ? "the " + std::to_string(v.called_ball) + " in " : "";
-    return "calls " + ball + "the " + pocket_name(v.called_pocket);
+    const std::string ball = v.called_ball > 0 ? ball_words(v, v.called_ball) + " in " : "";
+    const std::string off =
+        v.called_ball > 0 && v.call_off_ball > 0 ? ", off " + ball_words(v, v.call_off_ball) : "";
+    return "calls " + ball + "the " + pocket_name(v.called_pocket) + off;
+}
+
+// The call in the highlight; the warning of a foul in red.
+Style call_style(const View& v) {
+    return v.foul_ball > 0 ? Style{Colour::red, Colour::normal, true} : mark;
 }
 
 // Marker, name and, in a race, the racks won, the names padded to one column so that the
@@ -365,7 +383,7 @@ void draw_side_panel(const Frame& f) {
     }
     const std::string call = call_text(v);
     if (!call.empty()) {
-        put_lines(wrapped(call, width, mark));
+        put_lines(wrapped(call, width, call_style(v)));
         ++y;
     }
     if (v.aiming && !v.placing) {
@@ -462,7 +480,7 @@ void draw_below_panel(const Frame& f) {
     if (!loose.empty())
         left.push_back({{{loose, dim}}, 3});
     std::vector<Line> message = wrapped(v.message, beside ? mid_w : right - x, {});
-    std::vector<Line> call = wrapped(call_text(v), beside ? mid_w : right - x, mark);
+    std::vector<Line> call = wrapped(call_text(v), beside ? mid_w : right - x, call_style(v));
     if (!beside) {
         for (Line& line : message)
             left.push_back({line, 1});

@@ -157,6 +157,10 @@ struct View {
     Vec2 marker;                    ///< aim marker position on the table
     int called_pocket = 0;          ///< 1..6: highlight that pocket
     int called_ball = 0;            ///< the ball called into called_pocket (0: none named)
+    int call_off_ball = 0;          ///< a combination: the ball hit first, off which called_ball
+    bool called_safety = false;     ///< a safety is called
+    int foul_ball = 0;              ///< the aim meets first a ball it may not: the panel warns
+    std::vector<int> dimmed_balls;  ///< drawn dim: balls the shooter may not hit first
     bool placing = false;           ///< ball in hand: the cue ball follows the pointer
     bool placement_legal = true;    ///< whether the current spot is allowed
     bool help = false;              ///< show the help overlay
