@@ -75,6 +75,8 @@ TEST_CASE("hall protocol: every client message reads back", "[hall]") {
     client_round_trip(Create{GameType::eight_ball_bar, TableSize::eight_foot, 1});
     client_round_trip(Create{GameType::eight_ball, TableSize::snooker, 3});
     client_round_trip(Create{GameType::snooker, TableSize::snooker, 3});
+    client_round_trip(Create{GameType::eight_ball, TableSize::nine_foot, 1, Assist::guided});
+    client_round_trip(Create{GameType::nine_ball, TableSize::nine_foot, 2, Assist::pro});
     client_round_trip(Sit{12, 2});
     client_round_trip(Watch{9999});
     client_round_trip(Leave{});
@@ -93,6 +95,18 @@ TEST_CASE("hall protocol: every client message reads back", "[hall]") {
     client_round_trip(Sync{17, 0x0123456789abcdefull});
     client_round_trip(Sync{0, 0});
     client_round_trip(Ping{});
+}
+
+TEST_CASE("hall protocol: a table's assist is created and listed by name", "[hall]") {
+    CHECK(format_client(Create{GameType::eight_ball, TableSize::nine_foot, 3, Assist::guided}) ==
+          "create 8ball 9ft 3 guided\n");
+    const auto create = parse_client("create 9ball 7ft 1 pro");
+    REQUIRE(std::holds_alternative<ClientMessage>(create));
+    CHECK(std::get<Create>(std::get<ClientMessage>(create)).assist == Assist::pro);
+    const auto table = parse_server("table 2 8ball 9ft 1 guided waiting player Ann empty - 0");
+    REQUIRE(std::holds_alternative<ServerMessage>(table));
+    CHECK(std::get<TableView>(std::get<ServerMessage>(table)).assist == Assist::guided);
+    CHECK(std::get<TableView>(std::get<ServerMessage>(table)).seats[0].name == "Ann");
 }
 
 TEST_CASE("hall protocol: every server message reads back", "[hall]") {
@@ -114,6 +128,10 @@ TEST_CASE("hall protocol: every server message reads back", "[hall]") {
     table.state = TableState::waiting;
     server_round_trip(table);
     table.size = TableSize::snooker;
+    server_round_trip(table);
+    table.assist = Assist::guided;
+    server_round_trip(table);
+    table.assist = Assist::pro;
     server_round_trip(table);
     server_round_trip(PlayerView{"Ann", 0, 0});
     server_round_trip(PlayerView{"Ann", 3, 2});
@@ -161,18 +179,22 @@ TEST_CASE("hall protocol: malformed client lines are refused", "[hall]") {
         "ping ",
         "ping extra",
         "PING",
-        "hello 2 - ",
-        "hello 2 -",
-        "hello 2 abc Ann",
-        "hello 2 0123456789ABCDEF0123456789ABCDEF Ann",
-        "hello 2 - %20Ann",
-        "hello 2 - Ann%",
+        "hello 3 - ",
+        "hello 3 -",
+        "hello 3 abc Ann",
+        "hello 3 0123456789ABCDEF0123456789ABCDEF Ann",
+        "hello 3 - %20Ann",
+        "hello 3 - Ann%",
         "hello one - Ann",
-        "create 11ball 9ft 1",
-        "create 8ball 10ft 1",
-        "create 8ball 9ft 0",
-        "create 8ball 9ft 100",
-        "create 8ball 9ft +5",
+        "create 11ball 9ft 1 standard",
+        "create 8ball 10ft 1 standard",
+        "create 8ball 9ft 0 standard",
+        "create 8ball 9ft 100 standard",
+        "create 8ball 9ft +5 standard",
+        "create 8ball 9ft 1",
+        "create 8ball 9ft 1 helpful",
+        "create 8ball 9ft 1 Guided",
+        "create 8ball 9ft 1 pro extra",
         "sit 0 1",
         "sit 1 3",
         "sit 1  1",
@@ -225,24 +247,28 @@ TEST_CASE("hall protocol: oversized lines and other versions", "[hall]") {
     const std::string fits = "record 1 " + std::string(max_line_bytes - 1 - 9, 'x');
     CHECK(std::holds_alternative<ServerMessage>(parse_server(fits)));
 
-    // Version 1 had no elevation in `aim`: its clients are turned away.
+    // Version 1 had no elevation in `aim`, version 2 no assist in `create` and `table`: their
+    // clients are turned away.
     CHECK(client_refusal("hello 1 - Ann") == ErrorCode::version);
-    CHECK(client_refusal("hello 3 - Ann") == ErrorCode::version);
+    CHECK(client_refusal("hello 2 - Ann") == ErrorCode::version);
+    CHECK(client_refusal("hello 4 - Ann") == ErrorCode::version);
     CHECK(client_refusal("hello 0 - Ann") == ErrorCode::version);
-    CHECK(client_refusal("hello 3 some future format") == ErrorCode::version);
-    CHECK(server_refusal("welcome 1 " + kToken) == ErrorCode::version);
-    CHECK(server_refusal("welcome 3 " + kToken) == ErrorCode::version);
+    CHECK(client_refusal("hello 4 some future format") == ErrorCode::version);
+    CHECK(server_refusal("welcome 2 " + kToken) == ErrorCode::version);
+    CHECK(server_refusal("welcome 4 " + kToken) == ErrorCode::version);
 }
 
 TEST_CASE("hall protocol: malformed server lines are refused", "[hall]") {
     const std::vector<std::string> bad = {
-        "welcome 2 xyz",
+        "welcome 3 xyz",
         "error nonsense oops",
         "error refused tab\there",
-        "table 1 8ball 9ft 1 waiting empty Ann empty - 0",
-        "table 1 8ball 9ft 1 dancing empty - empty - 0",
-        "table 1 8ball 9ft 1 waiting player %2 empty - 0",
-        "table 1 8ball 9ft 1 waiting empty - empty - -1",
+        "table 1 8ball 9ft 1 standard waiting empty Ann empty - 0",
+        "table 1 8ball 9ft 1 standard dancing empty - empty - 0",
+        "table 1 8ball 9ft 1 standard waiting player %2 empty - 0",
+        "table 1 8ball 9ft 1 standard waiting empty - empty - -1",
+        "table 1 8ball 9ft 1 waiting empty - empty - 0",
+        "table 1 8ball 9ft 1 easy waiting empty - empty - 0",
         "player Ann 0 1",
         "record-end 1 3 123",
         "record-end 1 3 FEDCBA9876543210",

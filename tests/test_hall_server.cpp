@@ -244,7 +244,7 @@ TEST_CASE("hall server: bad input gets an error, the server goes on", "[hall]") 
     SECTION("a wrong protocol version ends the connection") {
         HallClient client;
         REQUIRE(client.connect(dir.path() + "/hall.sock") == "");
-        client.send_raw("hello 3 - Ann\n");
+        client.send_raw("hello 4 - Ann\n");
         CHECK(expect_error(client).code == ErrorCode::version);
         CHECK_FALSE(client.wait_for(is<Pong>, kWait));
         CHECK(client.closed());

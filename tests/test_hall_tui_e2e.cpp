@@ -19,6 +19,7 @@
 #include "hall_helpers.hpp"
 #include "temp_dir.hpp"
 #include "tmux_session.hpp"
+#include "tui/aim.hpp"
 
 using namespace termpool;
 using namespace termpool::hall;
@@ -327,4 +328,95 @@ TEST_CASE("hall faults: a terminal killed mid-shot takes its seat back, a server
     HallClient probe;
     REQUIRE(probe.connect(dir.path() + "/hall.sock").empty());
     CHECK(probe.server_pid() != server->pid());
+}
+
+TEST_CASE("a hall table's assist: chosen in the create form, shown in the lobby, played by "
+          "both seats",
+          "[hall][tui][e2e][assist]") {
+    TempDir dir("termpool-hall-tui");
+    auto server = serve(dir.path());
+    Tmux ann, bob;
+    open_terminal(ann, dir.path(), "Ann", 100, 32);
+    open_terminal(bob, dir.path(), "Bob", 100, 32);
+
+    // The form starts at standard; a goes to pro, then guided.
+    ann.keys("c");
+    REQUIRE(ann.wait_for_text("assist    standard"));
+    ann.keys("a");
+    REQUIRE(ann.wait_for_text("assist    pro"));
+    ann.keys("a");
+    REQUIRE(ann.wait_for_text("assist    guided"));
+    ann.keys("Enter");
+    REQUIRE(ann.wait_for_text("Waiting for an opponent"));
+    REQUIRE(lobby_shows_seated(bob, "Ann"));
+    CHECK(bob.wait_for_text("guided"));
+    bob.keys("Enter");
+    REQUIRE(ann.wait_for_text("Ann breaks"));
+
+    // A watcher follows the table: its copy of the match, and each seat's aim as it is sent.
+    HallClient cid = connected(dir.path(), "Cid");
+    REQUIRE(cid.send(Watch{1}));
+    expect<RecordEnd>(cid);
+    REQUIRE(cid.match(1));
+    CHECK(cid.match(1)->record().assist == Assist::guided);
+
+    // Each seat's turn opens at the easiest pot, as guided opens it, on either terminal; Space
+    // plays it. A seat that has shown its opening calls a safety next, so that the turn passes.
+    const Tmux* seat[2] = {&ann, &bob};
+    std::set<int> judged_seats;
+    for (int action = 0; action < 20 && judged_seats.size() < 2; ++action) {
+        CAPTURE(action);
+        const Match& m = *cid.match(1);
+        const PendingAction p = m.pending();
+        if (p.kind == Pending::over || p.kind == Pending::next_rack)
+            break;
+        const std::size_t seq = m.record().actions.size();
+        const Tmux& t = *seat[p.player - 1];
+        if (p.kind == Pending::place) {
+            REQUIRE(t.wait_for([](const std::string& s) {
+                return s.find("place the cue ball") != std::string::npos ||
+                       s.find("ball in hand") != std::string::npos;
+            }));
+            t.keys("Enter");
+        } else if (p.kind == Pending::choose) {
+            REQUIRE(t.wait_for_text("choose:"));
+            t.keys("1");
+        } else {
+            // The terminal's turn has begun once its aim comes: the opening aim.
+            const auto aim = cid.wait_for(
+                [&](const ServerMessage& msg) {
+                    const auto* shown = std::get_if<AimShown>(&msg);
+                    return shown && shown->seat == p.player;
+                },
+                kWait * 4);
+            REQUIRE(aim);
+            const bool is_break = m.game().is_break();
+            if (!is_break && !judged_seats.count(p.player)) {
+                const Game& g = m.game();
+                Vec2 cue;
+                for (const Ball& b : g.balls())
+                    if (b.id == 0)
+                        cue = b.position;
+                const auto open = tui::rank_openings(g.table(), g.balls(), g.params().ball_radius,
+                                                     cue, g.legal_targets(), Assist::guided);
+                REQUIRE_FALSE(open.empty());
+                CAPTURE(p.player);
+                CHECK(std::get<AimShown>(*aim).strike.angle_deg ==
+                      Approx(open[0].aim_deg).margin(1e-9));
+                judged_seats.insert(p.player);
+            } else if (!is_break) {
+                t.keys("0"); // a safety: the turn passes
+            }
+            t.keys("Space");
+        }
+        // The action comes back from the server; the shot rolls out at once on both screens.
+        REQUIRE(cid.wait_for(
+            [&](const ServerMessage&) {
+                return cid.match(1) && cid.match(1)->record().actions.size() > seq;
+            },
+            kWait * 4));
+        ann.keys("x");
+        bob.keys("x");
+    }
+    CHECK(judged_seats.size() == 2);
 }

@@ -79,6 +79,7 @@ TEST_CASE("the lobby's Race column holds a snooker best of 197 and its header li
     v.tables[1].game = GameType::snooker;
     v.tables[1].size = TableSize::snooker;
     v.tables[1].race_to = 99;
+    v.tables[1].assist = Assist::standard;
     const Grid g = render_lobby(v, Capabilities{}, 100, 32);
     INFO(all_text(g));
     std::string header, row;
@@ -89,11 +90,22 @@ TEST_CASE("the lobby's Race column holds a snooker best of 197 and its header li
         if (line.find("bo197") != std::string::npos)
             row = line;
     }
-    // A space between the race and the first seat.
-    CHECK(row.find("bo197 Bob (away)") != std::string::npos);
-    // The header's Race and Seat 1 start where the row's race and first seat do.
+    // A space between the race and the assist, and between the assist and the first seat.
+    CHECK(row.find("bo197 standard Bob (away)") != std::string::npos);
+    // The header's Race, Assist and Seat 1 start where the row's race, assist and first seat do.
     CHECK(header.find("Race") == row.find("bo197"));
+    CHECK(header.find("Assist") == row.find("standard"));
     CHECK(header.find("Seat 1") == row.find("Bob (away)"));
+}
+
+TEST_CASE("the lobby shows each table's assist", "[tui][lobby]") {
+    LobbyView v = two_tables();
+    v.tables[0].assist = Assist::guided;
+    v.tables[1].assist = Assist::pro;
+    const std::string text = all_text(render_lobby(v, Capabilities{}, 100, 32));
+    INFO(text);
+    CHECK(text.find("guided") != std::string::npos);
+    CHECK(text.find("pro ") != std::string::npos);
 }
 
 TEST_CASE("the lobby lists the tables, who is where, the message and the keys", "[tui][lobby]") {

@@ -183,6 +183,15 @@ public:
         }
         return seat;
     }
+    Assist assist() {
+        const std::string_view w = word();
+        if (!ok_)
+            return Assist::standard;
+        const std::optional<Assist> a = parse_assist(w);
+        if (!a)
+            fail("an assist is guided, standard or pro");
+        return a.value_or(Assist::standard);
+    }
     Strike strike() {
         Strike s;
         s.angle_deg = real(-720, 720, "an angle");
@@ -362,7 +371,8 @@ std::string format_client(const ClientMessage& message) {
                        },
                        [](const Create& m) {
                            return std::string("create ") + game_type_name(m.game) + " " +
-                                  table_size_name(m.size) + " " + std::to_string(m.race_to);
+                                  table_size_name(m.size) + " " + std::to_string(m.race_to) + " " +
+                                  assist_name(m.assist);
                        },
                        [](const Sit& m) {
                            return "sit " + std::to_string(m.table) + " " + std::to_string(m.seat);
@@ -398,8 +408,9 @@ std::string format_server(const ServerMessage& message) {
             [](const TableView& m) {
                 return "table " + std::to_string(m.number) + " " + game_type_name(m.game) + " " +
                        table_size_name(m.size) + " " + std::to_string(m.race_to) + " " +
-                       table_state_name(m.state) + " " + seat_words(m.seats[0]) + " " +
-                       seat_words(m.seats[1]) + " " + std::to_string(m.spectators);
+                       assist_name(m.assist) + " " + table_state_name(m.state) + " " +
+                       seat_words(m.seats[0]) + " " + seat_words(m.seats[1]) + " " +
+                       std::to_string(m.spectators);
             },
             [](const PlayerView& m) {
                 return "player " + encode_field(m.name) + " " + std::to_string(m.table) + " " +
@@ -481,6 +492,7 @@ std::variant<ClientMessage, ProtocolError> parse_client(std::string_view line) {
         if (r.ok() && !size)
             r.fail("a table is 7ft, 8ft, 9ft or snooker");
         m.race_to = r.integer(1, max_race_to, "a race");
+        m.assist = r.assist();
         if (r.ok()) {
             m.game = *game;
             m.size = *size;
@@ -607,6 +619,7 @@ std::variant<ServerMessage, ProtocolError> parse_server(std::string_view line) {
             m.size = *size;
         }
         m.race_to = r.integer(1, max_race_to, "a race");
+        m.assist = r.assist();
         const std::string_view state = r.word();
         bool known = false;
         for (const TableState s : {TableState::waiting, TableState::playing, TableState::over})

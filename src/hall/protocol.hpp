@@ -17,8 +17,9 @@
 /// Client to server:
 ///
 ///   hello VERSION TOKEN|- NAME        first message; "-" asks for a new token
-///   create GAME SIZE RACE             a new table: GAME 8ball|8ball-bar|9ball|10ball|snooker,
-///                                     SIZE 7ft|8ft|9ft|snooker, RACE 1..99
+///   create GAME SIZE RACE ASSIST      a new table: GAME 8ball|8ball-bar|9ball|10ball|snooker,
+///                                     SIZE 7ft|8ft|9ft|snooker, RACE 1..99, ASSIST guided|
+///                                     standard|pro (both seats' aiming aid)
 ///   sit TABLE SEAT                    take seat 1 or 2 (or take back one's own away seat)
 ///   watch TABLE                       follow a table as a spectator
 ///   leave                             leave the table (a seat in a started game stays, away)
@@ -39,7 +40,7 @@
 ///   welcome VERSION TOKEN             hello accepted; keep TOKEN to prove who you are later
 ///   error CODE TEXT                   a message refused (CODE: see ErrorCode), nothing changed
 ///   lobby-begin                       a lobby snapshot follows: table and player lines
-///   table N GAME SIZE RACE STATE KIND1 NAME1 KIND2 NAME2 SPECTATORS
+///   table N GAME SIZE RACE ASSIST STATE KIND1 NAME1 KIND2 NAME2 SPECTATORS
 ///                                     STATE waiting|playing|over; KIND empty|player|away|
 ///                                     computer (NAME "-" for an empty seat)
 ///   player NAME TABLE SEAT            someone in the hall: TABLE 0 in the lobby, SEAT 0
@@ -66,6 +67,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <termpool/assist.hpp>
 #include <termpool/level.hpp>
 #include <termpool/record.hpp>
 #include <termpool/rules.hpp>
@@ -76,8 +78,9 @@
 namespace termpool::hall {
 
 /// The protocol version this build speaks; `hello` and `welcome` carry it. Version 2 added the
-/// cue's elevation to `aim` (and shots' `elevation` field, from the record's version 3).
-inline constexpr int protocol_version = 2;
+/// cue's elevation to `aim` (and shots' `elevation` field, from the record's version 3),
+/// version 3 the assist to `create` and `table` (and the record's `assist` line, version 5).
+inline constexpr int protocol_version = 3;
 /// The longest line, in bytes, including its '\n'.
 inline constexpr std::size_t max_line_bytes = 4096;
 /// The longest chat line, in characters (UTF-8 code points).
@@ -122,11 +125,12 @@ struct Hello {
     std::string token;              ///< the client's token, empty for none ("-")
     std::string name;               ///< a valid player name
 };
-/// `create GAME SIZE RACE`.
+/// `create GAME SIZE RACE ASSIST`.
 struct Create {
     GameType game = GameType::eight_ball;  ///< the rules
     TableSize size = TableSize::nine_foot; ///< the table
     int race_to = 1;                       ///< 1 (a single game) to max_race_to
+    Assist assist = Assist::standard;      ///< the aiming aid of both seats
 };
 /// `sit TABLE SEAT`.
 struct Sit {
@@ -214,12 +218,13 @@ struct Error {
 };
 /// `lobby-begin`.
 struct LobbyBegin {};
-/// `table N GAME SIZE RACE STATE KIND1 NAME1 KIND2 NAME2 SPECTATORS`.
+/// `table N GAME SIZE RACE ASSIST STATE KIND1 NAME1 KIND2 NAME2 SPECTATORS`.
 struct TableView {
     int number = 1;                         ///< 1 to max_table_number
     GameType game = GameType::eight_ball;   ///< the rules
     TableSize size = TableSize::nine_foot;  ///< the table
     int race_to = 1;                        ///< 1 to max_race_to
+    Assist assist = Assist::standard;       ///< the aiming aid of both seats
     TableState state = TableState::waiting; ///< where it stands
     SeatView seats[2];                      ///< seat 1 and seat 2
     int spectators = 0;                     ///< how many watch

@@ -22,6 +22,7 @@ TableView Server::State::table_view(const Table& table, int spectators) const {
     view.game = table.match.setup().game;
     view.size = table.match.setup().table;
     view.race_to = std::max(1, table.match.record().race_to);
+    view.assist = table.match.record().assist;
     view.state = over(table)   ? TableState::over
                  : full(table) ? TableState::playing
                                : TableState::waiting;

@@ -21,6 +21,7 @@ std::variant<Match, MatchError> new_match(const Create& create, std::uint64_t se
     header.setup.table = create.size;
     header.seed = seed;
     header.race_to = create.race_to;
+    header.assist = create.assist; // in the record: both seats read it from there
     return Match::start(header, seed);
 }
 

@@ -60,6 +60,11 @@ void HallSession::handle_create_key(const Input& in) {
         create_.race_to = std::min(max_race_to, create_.race_to + 1);
     } else if (t == "-" || key == key_left || key == key_down) {
         create_.race_to = std::max(1, create_.race_to - 1);
+    } else if (t == "a") {
+        // Both seats play with it: standard, pro, guided, standard again.
+        create_.assist = create_.assist == Assist::standard ? Assist::pro
+                         : create_.assist == Assist::pro    ? Assist::guided
+                                                            : Assist::standard;
     } else if (t == "o") {
         // A person, then each computer level, then a person again.
         if (!opponent_)
@@ -154,6 +159,9 @@ std::string HallSession::create_form_text() const {
                       (create_.race_to == 1 ? " (a single frame)" : " frames")
                 : "+- race to   " + std::to_string(create_.race_to) +
                       (create_.race_to == 1 ? " (a single game)" : "")) +
+           "\n"
+           "a  assist    " +
+           assist_name(create_.assist) +
            "\n"
            "o  opponent  " +
            opponent + "\n\nEnter creates it, Esc goes back";

@@ -19,6 +19,8 @@ constexpr int min_width = 40, min_height = 10;
 constexpr int size_w = 8;
 // The Race column holds the longest race, a snooker best of 197 ("bo197"), and a space.
 constexpr int race_w = 6;
+// The Assist column holds the longest assist, "standard", and a space.
+constexpr int assist_w = 9;
 
 const Style dim{Colour::dim};
 const Style bold{Colour::normal, Colour::normal, true};
@@ -51,7 +53,8 @@ std::string table_row(const hall::TableView& t, int seat_w, bool extras) {
                padded(t.game == GameType::snooker && t.race_to > 1
                           ? "bo" + std::to_string(best_of_for_race(t.race_to))
                           : std::to_string(t.race_to),
-                      race_w);
+                      race_w) +
+               padded(assist_name(t.assist), assist_w);
     row += padded(seat_words(t.seats[0]), seat_w) + " " + padded(seat_words(t.seats[1]), seat_w) +
            " " + padded(hall::table_state_name(t.state), 8);
     if (extras)
@@ -62,7 +65,7 @@ std::string table_row(const hall::TableView& t, int seat_w, bool extras) {
 std::string header_row(int seat_w, bool extras) {
     std::string row = padded("#", 5) + padded("Game", 18);
     if (extras)
-        row += padded("Size", size_w) + padded("Race", race_w);
+        row += padded("Size", size_w) + padded("Race", race_w) + padded("Assist", assist_w);
     row += padded("Seat 1", seat_w) + " " + padded("Seat 2", seat_w) + " " + padded("State", 8);
     if (extras)
         row += " Watching";
@@ -148,7 +151,7 @@ Grid render_lobby(const LobbyView& v, const Capabilities& caps, int width, int h
         p.text(width - 1 - display_width(people), 0, people, dim);
 
     const bool extras = width >= 90;
-    const int fixed = 5 + 18 + 2 + 8 + (extras ? size_w + race_w + 9 : 0);
+    const int fixed = 5 + 18 + 2 + 8 + (extras ? size_w + race_w + assist_w + 9 : 0);
     const int seat_w = std::max(8, std::min(24, (width - 2 - fixed) / 2));
     const ListWindow window = list_window(v, height);
     const int list_top = window.top, list_rows = window.rows, keys_row = height - 1;
