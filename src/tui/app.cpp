@@ -46,8 +46,10 @@ App::App(Terminal& terminal, const GameOptions& options)
       match_(first_match(options, seed_++)) {
     shown_balls_ = game().balls();
     message_ = breaks_words(1);
-    aim_.time_power = options.timed_power;
-    aim_.show_aid = options.aim_aid;
+    for (AimState& seat : aims_) {
+        seat.time_power = options.timed_power;
+        seat.show_aid = options.aim_aid;
+    }
     if (options.watch)
         seat_computer(1, *options.watch);
     if (options.computer)
@@ -124,12 +126,11 @@ void App::compose(View& v) const {
         v.race_to = 0;
         // Another terminal's nomination is not sent while it aims: no guess at it.
         if (mode_ == Mode::aiming && (!in_hall() || hall_seat_to_act())) {
-            v.nominated = aim_.nominated;
-            v.nomination_chosen = aim_.nomination_chosen;
+            v.nominated = aim().nominated;
+            v.nomination_chosen = aim().nomination_chosen;
         }
     }
-    v.message =
-        save_problem_.empty() ? message_ : "Could not save: " + save_problem_ + "; " + message_;
+    v.message = save_problem_.empty() ? said() : "Could not save: " + save_problem_ + "; " + said();
     v.help = help_;
     v.help_page = help_page_;
     switch (mode_) {
@@ -142,7 +143,7 @@ void App::compose(View& v) const {
             b.position = place_;
             b.state = MotionState::stationary;
         }
-        if (message_.empty())
+        if (said().empty())
             v.message = name(g.shooter()) + ": place the cue ball";
         break;
     case Mode::aiming:
@@ -155,7 +156,7 @@ void App::compose(View& v) const {
         // What brought the choice (an illegal break, a push-out) goes in the box: it may sit
         // over the panel's message line.
         std::string text =
-            (message_.empty() ? "" : message_ + "\n\n") + name(g.chooser()) + ", choose:";
+            (said().empty() ? "" : said() + "\n\n") + name(g.chooser()) + ", choose:";
         for (std::size_t i = 0; i < g.choices().size(); ++i)
             text += "\n" + std::to_string(i + 1) + "  " +
                     choice_words(g.choices()[i], g.type(), g.free_ball_offered());
@@ -175,6 +176,8 @@ void App::compose(View& v) const {
     compose_prompt(v);
     if (in_hall())
         compose_hall(v);
+    if (log_)
+        v.overlay = log_page_text();
     if (confirm_quit_)
         v.overlay = in_hall() ? "Leave the table?  y / n" : "Quit the game?  y / n";
     if (confirm_concede_)
@@ -183,33 +186,33 @@ void App::compose(View& v) const {
 
 void App::compose_aiming(View& v) const {
     v.aiming = true;
-    v.aim_deg = aim_.aim_deg;
-    v.power = aim_.current_power(Clock::now());
+    v.aim_deg = aim().aim_deg;
+    v.power = aim().current_power(Clock::now());
     v.speed = speed_from_power(v.power, game().is_break());
-    v.time_power = aim_.time_power;
-    v.side = aim_.side;
-    v.follow = aim_.follow;
-    v.elevation_deg = aim_.elevation_deg;
+    v.time_power = aim().time_power;
+    v.side = aim().side;
+    v.follow = aim().follow;
+    v.elevation_deg = aim().elevation_deg;
     // Marked before Space is pressed: the power bar swings or the keys change the power, and
     // the same elevation turns from playable to a jump.
     v.strike_refused =
-        strike_problem(aim_.strike(game().is_break(), Clock::now()), params_).has_value();
-    v.show_aid = aim_.show_aid;
-    if (aim_.show_aid) {
-        v.cue_path = aim_.preview.cue_path;
-        v.has_ghost = aim_.preview.has_ghost;
-        v.ghost = aim_.preview.ghost;
-        v.object_path = aim_.preview.object_path;
-        v.deflect_path = aim_.preview.deflect_path;
+        strike_problem(aim().strike(game().is_break(), Clock::now()), params_).has_value();
+    v.show_aid = aim().show_aid;
+    if (aim().show_aid) {
+        v.cue_path = aim().preview.cue_path;
+        v.has_ghost = aim().preview.has_ghost;
+        v.ghost = aim().preview.ghost;
+        v.object_path = aim().preview.object_path;
+        v.deflect_path = aim().preview.deflect_path;
     }
-    v.show_marker = aim_.show_marker;
-    v.marker = aim_.marker;
+    v.show_marker = aim().show_marker;
+    v.marker = aim().marker;
     // The panel says what the shot will call: the aimed ball into the chosen pocket.
     // Another terminal's call is not sent while it aims: this one's guess at it would mislead.
-    const bool calling = !aim_.safety && aim_.called_pocket != 0 && aim_.preview_ball > 0 &&
-                         calls_pocket(aim_.preview_ball) && (!in_hall() || hall_seat_to_act());
-    v.called_pocket = calling ? aim_.called_pocket : 0;
-    v.called_ball = calling ? aim_.preview_ball : 0;
+    const bool calling = !aim().safety && aim().called_pocket != 0 && aim().preview_ball > 0 &&
+                         calls_pocket(aim().preview_ball) && (!in_hall() || hall_seat_to_act());
+    v.called_pocket = calling ? aim().called_pocket : 0;
+    v.called_ball = calling ? aim().preview_ball : 0;
 }
 
 void App::compose_prompt(View& v) const {
@@ -249,9 +252,9 @@ bool App::nudge(Vec2& spot, int key, const std::string& text) const {
         return false; // no cells to step by while "please enlarge" shows
     const double step = 1.0 / layout_.cells_per_metre;
     Vec2 by;
-    if (key == key_left || text == "h")
+    if (key == key_left)
         by = {-step, 0};
-    else if (key == key_right || text == "l")
+    else if (key == key_right)
         by = {step, 0};
     else if (key == key_up || text == "k")
         by = {0, 2 * step};
@@ -288,6 +291,10 @@ void App::handle(const Input& in) {
         return;
     if (in_hall() && handle_hall_key(in))
         return;
+    if (in.kind == Input::Kind::text && in.text == "l") {
+        open_log(); // `l` opens the rack's log on any screen at the table
+        return;
+    }
     if (replaying_) {
         handle_replay_key(in);
         return;
@@ -302,12 +309,16 @@ void App::handle(const Input& in) {
 }
 
 bool App::handle_overlay(const Input& in) {
+    if (handle_log(in))
+        return true;
     if (confirm_concede_) {
         if (in.kind == Input::Kind::mouse && !in.clicked)
             return true;
         confirm_concede_ = false;
-        if (in.kind == Input::Kind::text && (in.text == "y" || in.text == "Y"))
+        if (in.kind == Input::Kind::text && (in.text == "y" || in.text == "Y")) {
+            player_acts();
             concede();
+        }
         return true;
     }
     if (confirm_quit_) {
@@ -371,8 +382,10 @@ void App::handle_key(int key, const std::string& text) {
         return;
     case Mode::game_over:
         if (match_.pending().kind == Pending::next_rack) {
-            if (key == key_enter || text == " " || text == "r")
+            if (key == key_enter || text == " " || text == "r") {
+                player_acts();
                 next_rack();
+            }
             return;
         }
         if (in_hall())
@@ -390,9 +403,11 @@ void App::handle_key(int key, const std::string& text) {
             RecordedAction action;
             action.kind = RecordedAction::Kind::choose;
             action.choice = choices[static_cast<std::size_t>(text[0] - '1')];
+            player_acts();
             send_to_hall(action);
         } else if (text.size() == 1 && text[0] >= '1' &&
                    text[0] < '1' + static_cast<int>(choices.size())) {
+            player_acts();
             choose(choices[static_cast<std::size_t>(text[0] - '1')]);
             message_ = name(game().shooter()) + (game().is_break() ? " breaks" : " to shoot");
             start_turn();
@@ -452,7 +467,7 @@ void App::step() {
 }
 
 bool App::moving() const {
-    return mode_ == Mode::animating || (mode_ == Mode::aiming && aim_.time_power) ||
+    return mode_ == Mode::animating || (mode_ == Mode::aiming && aim().time_power) ||
            computer_to_act() || (replaying_ && !paused_) || !hall_queue_.empty();
 }
 

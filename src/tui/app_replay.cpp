@@ -24,6 +24,7 @@ void App::rewind_to(std::size_t action) {
     trajectory_.reset();
     before_shot_.reset();
     shown_balls_ = game().balls();
+    verdicts_.clear();
     mode_ = Mode::replay; // no aiming, no placing: the replay only shows
     message_ = "Replay (space pauses, Left/Right step a shot, x skips, q quits)";
 }
@@ -44,11 +45,10 @@ void App::replay_step() {
         };
         const auto shot = std::count_if(actions.begin(), actions.begin() + next_action_, is_shot);
         const auto shots = std::count_if(actions.begin(), actions.end(), is_shot);
-        const std::string last = message_.starts_with("Replay") ? "" : message_;
         play(a.strike, a.call);
+        // The verdict line keeps the shot before's verdict while this one rolls.
         message_ = "Replay, shot " + std::to_string(shot) + " of " + std::to_string(shots) +
-                   " (space pauses, Left/Right step, x skips, q quits)" +
-                   (last.empty() ? "" : ". Before: " + last);
+                   " (space pauses, Left/Right step, x skips, l log, q quits)";
         return;
     }
     message_ = "Replay ended: Left steps back, q quits";

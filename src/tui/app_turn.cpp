@@ -29,7 +29,7 @@ void App::begin() {
 
 void App::start_turn() {
     shown_balls_ = game().balls();
-    aim_.new_turn();
+    aim().new_turn();
     pacing_.stop();
     const PendingAction pending =
         practice_ ? PendingAction{Pending::shoot, 1, BallInHand::none, {}} : match_.pending();
@@ -69,7 +69,7 @@ void App::warn_of_third_foul() {
 
 void App::start_aiming() {
     mode_ = Mode::aiming;
-    aim_.set_break(game().is_break());
+    aim().set_break(game().is_break());
     aim_at_easiest();
     warn_of_third_foul();
     const std::string& who = name(game().shooter());
@@ -77,8 +77,10 @@ void App::start_aiming() {
     const bool computer = computer_to_act() || (in_hall() && !hall_seat_to_act());
     if (game().push_out_allowed()) {
         const std::string hint = "u declares a push-out";
-        message_ = message_.empty() ? who + ": aim and shoot, or " + hint : message_ + "; " + hint;
-    } else if (message_.empty() && !computer) {
+        message_ = !message_.empty()   ? message_ + "; " + hint
+                   : verdicts_.empty() ? who + ": aim and shoot, or " + hint
+                                       : hint;
+    } else if (message_.empty() && verdicts_.empty() && !computer) {
         // Short enough for the smallest panel; the help has the rest.
         message_ = who + ": aim (" + (term_.caps().mouse ? "mouse, " : "") +
                    "Left/Right), Space shoots" + (practice_ ? "; m moves a ball" : "");
@@ -88,9 +90,9 @@ void App::start_aiming() {
                     std::string(game().snooker().free_ball ? "a free ball: 2-7 nominates it"
                                                            : "2-7 nominates a colour");
     // The proposed aim cannot reach the ball straight: say so before Space is pressed.
-    if (aim_.target_line != TargetLine::straight && !computer)
+    if (aim().target_line != TargetLine::straight && !computer)
         message_ += (message_.empty() ? "" : "; ") +
-                    std::string(aim_.target_line == TargetLine::kick
+                    std::string(aim().target_line == TargetLine::kick
                                     ? "no straight line to a legal ball: a kick off one rail"
                                     : "no clear line to a legal ball");
 }
@@ -119,7 +121,8 @@ void App::concede() {
     }
     if (match_.concede(who) != MatchError::none)
         return;
-    message_ = name(who) + " concedes the frame \u2014 " + name(3 - who) + " wins it";
+    message_.clear();
+    tell(name(who) + " concedes the frame \u2014 " + name(3 - who) + " wins it");
     save();
     if (match_.score().match_winner() != 0 && !replaying_)
         save_stats();
@@ -136,12 +139,14 @@ bool App::try_place(Vec2 spot) {
         RecordedAction action;
         action.kind = RecordedAction::Kind::place;
         action.place = spot;
+        player_acts();
         return send_to_hall(action);
     }
     if (!place(spot)) {
         message_ = "The cue ball cannot go there: " + placement_problem(game(), spot);
         return false;
     }
+    player_acts();
     message_.clear();
     start_aiming();
     return true;
@@ -149,22 +154,23 @@ bool App::try_place(Vec2 spot) {
 
 void App::shoot() {
     const auto now = Clock::now();
-    const Strike strike = aim_.strike(game().is_break(), now);
+    const Strike strike = aim().strike(game().is_break(), now);
     // A cue the simulator cannot play (a jump shot, which it does not model) is not shot: the
     // player adjusts it.
     if (const std::optional<std::string> problem = strike_problem(strike, params_)) {
         message_ = "Not played: " + *problem;
         return;
     }
-    const double power = aim_.current_power(now);
+    const double power = aim().current_power(now);
     ShotCall call =
-        game().call_as_taken(aim_.call([this](int ball) { return calls_pocket(ball); }));
+        game().call_as_taken(aim().call([this](int ball) { return calls_pocket(ball); }));
     if (snooker_play()) {
         // The nomination the player named; without one the referee takes the ball hit first,
         // the aimed ball the panel proposed.
-        call.call = nomination_call(game(), aim_);
+        call.call = nomination_call(game(), aim());
     }
-    aim_.power = power;
+    aim().power = power;
+    player_acts();
     if (in_hall()) {
         RecordedAction action;
         action.kind = RecordedAction::Kind::shot;
@@ -244,7 +250,8 @@ void App::after_shot() {
         practice_shot_done();
         return;
     }
-    message_ = verdict_message(verdict_, shooter_before_, match_.record().names);
+    message_.clear();
+    tell(verdict_message(verdict_, shooter_before_, match_.record().names));
     save();
     if (verdict_.winner != 0 && match_.score().match_winner() != 0 && !replaying_ && !in_hall())
         save_stats();
