@@ -44,7 +44,7 @@ App::App(Terminal& terminal, const GameOptions& options)
       params_(game_physics(options.setup)), seed_(options.seed.value_or(static_cast<std::uint64_t>(
                                                 Clock::now().time_since_epoch().count()))),
       match_(first_match(options, seed_++)) {
-    shown_balls_ = game().balls();
+    show_.stop(game().balls());
     message_ = breaks_words(1);
     for (AimState& seat : aims_) {
         seat.time_power = options.timed_power;
@@ -77,24 +77,24 @@ const Game& App::game() const {
     if (practice_game_)
         return *practice_game_;
     // While a shot rolls the match has judged it already: show the game as it was.
-    return mode_ == Mode::animating && before_shot_ ? *before_shot_ : match_.game();
+    return mode_ == Mode::animating && show_.before() ? *show_.before() : match_.game();
 }
 
 const MatchState& App::score() const {
-    return mode_ == Mode::animating && before_shot_ ? score_before_ : match_.score();
+    return mode_ == Mode::animating && show_.before() ? show_.score_before() : match_.score();
 }
 
 void App::compose(View& v) const {
     const Game& g = game();
     v.table = &table_;
-    v.balls = mode_ == Mode::animating ? shown_balls_ : g.balls();
+    v.balls = mode_ == Mode::animating ? show_.balls() : g.balls();
     v.ball_radius = params_.ball_radius;
     v.game = g.type();
     v.names[0] = name(1);
     v.names[1] = name(2);
     // The panel marks who is at the table: at game over too, when the match's to_act() is
     // already the next rack's breaker.
-    v.shooter = mode_ == Mode::animating ? shooter_before_
+    v.shooter = mode_ == Mode::animating ? show_.shot().shooter
                 : g.chooser() != 0       ? g.chooser()
                                          : g.shooter();
     v.groups[0] = g.group_of(1);
@@ -378,7 +378,7 @@ void App::handle_key(int key, const std::string& text) {
         return;
     case Mode::animating:
         if (text == "x")
-            shot_start_ -= std::chrono::hours(1);
+            show_.hurry();
         return;
     case Mode::game_over:
         if (match_.pending().kind == Pending::next_rack) {
@@ -429,7 +429,7 @@ void App::handle_key(int key, const std::string& text) {
 void App::handle_mouse(const Input& in) {
     if (mode_ == Mode::animating) {
         if (in.clicked || in.pressed)
-            shot_start_ -= std::chrono::hours(1);
+            show_.hurry();
         return;
     }
     if (!layout_.fits)
@@ -449,13 +449,8 @@ void App::handle_mouse(const Input& in) {
 }
 
 void App::step() {
-    if (mode_ == Mode::animating) {
-        const double t = std::chrono::duration<double>(Clock::now() - shot_start_).count();
-        if (t >= result_.rest_time)
-            after_shot();
-        else
-            shown_balls_ = trajectory_->sample(t);
-    }
+    if (mode_ == Mode::animating && show_.advance(Clock::now()))
+        after_shot();
     if (in_hall())
         apply_hall_actions();
     else if (replaying_)

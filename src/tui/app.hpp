@@ -16,6 +16,7 @@
 #include "player/options.hpp"
 #include "tui/aim_state.hpp"
 #include "tui/computer_pacing.hpp"
+#include "tui/shot_show.hpp"
 #include "tui/table_link.hpp"
 #include "tui/terminal.hpp"
 #include "tui/text_entry.hpp"
@@ -92,7 +93,8 @@ private:
     bool nudge(Vec2& spot, int key, const std::string& text) const;
     void shoot();
     void play(const Strike& strike, const ShotCall& call);
-    void show_shot(PlayedShot shot, Trajectory trajectory, MatchState score_before, Game before);
+    void show_shot(PlayedShot shot, Trajectory trajectory, MatchState score_before,
+                   std::optional<Game> before);
     bool place(Vec2 spot);
     void choose(Choice choice);
     void save();
@@ -192,17 +194,8 @@ private:
     int held_ball_ = -1;
     Vec2 held_at_;
 
-    // The shot being shown: the match has judged it already, and shows the game as it was
-    // until the balls stop.
-    std::optional<Trajectory> trajectory_;
-    ShotResult result_;
-    Verdict verdict_;
-    std::optional<Game> before_shot_;
-    MatchState score_before_;
+    ShotShow show_;      // the shot rolling on screen
     Strike last_strike_; // practice: `r` sets it up again
-    int shooter_before_ = 1;
-    Clock::time_point shot_start_;
-    std::vector<Ball> shown_balls_;
 
     ComputerPacing pacing_; // the computer's move being shown
 

@@ -41,7 +41,7 @@ void App::hall_record(Match match) {
         hall_queue_.clear();
         awaiting_hall_ = resyncing_ = false;
         if (mode_ == Mode::animating)
-            message_ = name(shooter_before_) + " shoots";
+            message_ = name(show_.shot().shooter) + " shoots";
         else if (mode_ != Mode::game_over)
             message_ = hall_table_words();
         return;
@@ -65,8 +65,7 @@ void App::take_hall_table(Match match) {
     hall_queue_.clear();
     awaiting_hall_ = false;
     resyncing_ = false;
-    trajectory_.reset();
-    before_shot_.reset();
+    show_.stop(match_.game().balls());
     verdicts_.clear();
     message_ = hall_table_words();
     start_turn();
@@ -170,7 +169,7 @@ void App::apply_hall_actions() {
             return;
         }
         if (mode_ == Mode::animating && hall_queue_.size() > far_behind)
-            shot_start_ -= std::chrono::hours(1);
+            show_.hurry();
     }
     if (mode_ != Mode::animating)
         send_hall_aim();

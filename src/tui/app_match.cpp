@@ -16,8 +16,7 @@ void App::new_game(int breaker) {
     // The players keep their seats (and names) from the game before, the computers their
     // streams.
     match_ = std::move(match_).rematch(breaker, seed_++);
-    shown_balls_ = game().balls();
-    trajectory_.reset();
+    show_.stop(match_.game().balls());
     verdicts_.clear();
     message_ = breaks_words(breaker);
 }
@@ -33,7 +32,7 @@ void App::next_rack() {
     }
     if (match_.next_rack(breaker) != MatchError::none)
         return;
-    shown_balls_ = game().balls();
+    show_.stop(match_.game().balls());
     save();
     message_ = (snooker_play() ? "Frame " : "Rack ") + std::to_string(match_.rack()) + ": " +
                breaks_words(breaker);

@@ -37,10 +37,10 @@ void App::sync_practice() {
 
 void App::practice_shot_done() {
     bool cue_potted = false;
-    for (const Event& e : result_.events)
+    for (const Event& e : show_.shot().result.events)
         cue_potted |= e.kind == EventKind::pocket && e.ball == 0;
     sync_practice();
-    message_ = potted_words(result_) +
+    message_ = potted_words(show_.shot().result) +
                (cue_potted ? "; the cue ball is back on the head spot" : "") +
                ". r takes the shot again, m moves a ball";
     start_turn();

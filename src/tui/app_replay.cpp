@@ -21,9 +21,7 @@ void App::rewind_to(std::size_t action) {
     auto replayed = Match::replay(replay_record_, next_action_);
     if (Match* m = std::get_if<Match>(&replayed))
         match_ = std::move(*m);
-    trajectory_.reset();
-    before_shot_.reset();
-    shown_balls_ = game().balls();
+    show_.stop(match_.game().balls());
     verdicts_.clear();
     mode_ = Mode::replay; // no aiming, no placing: the replay only shows
     message_ = "Replay (space pauses, Left/Right step a shot, x skips, q quits)";
@@ -37,7 +35,7 @@ void App::replay_step() {
         const RecordedAction& a = actions[next_action_++];
         if (a.kind != RecordedAction::Kind::shot) {
             match_.apply(a);
-            shown_balls_ = game().balls();
+            show_.stop(match_.game().balls());
             continue;
         }
         const auto is_shot = [](const RecordedAction& r) {
@@ -58,7 +56,7 @@ void App::replay_step() {
 void App::handle_replay_key(const Input& in) {
     if (in.kind == Input::Kind::mouse) {
         if (in.clicked && mode_ == Mode::animating)
-            shot_start_ -= std::chrono::hours(1);
+            show_.hurry();
         return;
     }
     if (in.text == "q") {
@@ -69,7 +67,7 @@ void App::handle_replay_key(const Input& in) {
     } else if (in.text == " ") {
         paused_ = !paused_;
     } else if (in.text == "x" && mode_ == Mode::animating) {
-        shot_start_ -= std::chrono::hours(1);
+        show_.hurry();
     } else if (in.key == key_left || in.key == key_right) {
         // Step a whole shot: back to the start of the previous one, or on past the next.
         const std::vector<RecordedAction>& actions = replay_record_.actions;

@@ -28,7 +28,7 @@ void App::begin() {
 }
 
 void App::start_turn() {
-    shown_balls_ = game().balls();
+    show_.stop(game().balls());
     aim().new_turn();
     pacing_.stop();
     const PendingAction pending =
@@ -209,14 +209,12 @@ void App::save() {
 
 void App::play(const Strike& strike, const ShotCall& call) {
     last_strike_ = strike;
-    shooter_before_ = game().shooter();
     Trajectory trajectory(params_, game().balls().size());
     if (practice_) {
-        result_ = practice_->shoot(strike, &trajectory);
-        trajectory_ = std::move(trajectory);
-        shot_start_ = Clock::now();
-        mode_ = Mode::animating;
-        message_ = name(shooter_before_) + " shoots";
+        PlayedShot shot; // no referee: the simulation alone
+        shot.shooter = game().shooter();
+        shot.result = practice_->shoot(strike, &trajectory);
+        show_shot(std::move(shot), std::move(trajectory), score(), std::nullopt);
         return;
     }
     Game before = match_.game();
@@ -230,30 +228,27 @@ void App::play(const Strike& strike, const ShotCall& call) {
               std::move(before));
 }
 
-void App::show_shot(PlayedShot shot, Trajectory trajectory, MatchState score_before, Game before) {
+void App::show_shot(PlayedShot shot, Trajectory trajectory, MatchState score_before,
+                    std::optional<Game> before) {
     // The match has judged the shot already; the game as it was shows until the balls stop.
-    shooter_before_ = shot.shooter;
-    result_ = std::move(shot.result);
-    verdict_ = std::move(shot.verdict);
-    before_shot_ = std::move(before);
-    score_before_ = score_before;
-    trajectory_ = std::move(trajectory);
-    shot_start_ = Clock::now();
+    const int shooter = shot.shooter;
+    show_.start(std::move(shot), std::move(trajectory), std::move(before), score_before,
+                Clock::now());
     mode_ = Mode::animating;
-    message_ = name(shooter_before_) + " shoots"; // the last verdict is over
+    message_ = name(shooter) + " shoots";
 }
 
 void App::after_shot() {
-    trajectory_.reset();
-    before_shot_.reset();
+    show_.stop(show_.balls());
     if (practice_) {
         practice_shot_done();
         return;
     }
     message_.clear();
-    tell(verdict_message(verdict_, shooter_before_, match_.record().names));
+    const PlayedShot& shot = show_.shot();
+    tell(verdict_message(shot.verdict, shot.shooter, match_.record().names));
     save();
-    if (verdict_.winner != 0 && match_.score().match_winner() != 0 && !replaying_ && !in_hall())
+    if (shot.verdict.winner != 0 && match_.score().match_winner() != 0 && !replaying_ && !in_hall())
         save_stats();
     start_turn();
     if (replaying_)
