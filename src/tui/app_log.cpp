@@ -1,11 +1,12 @@
 // What happened at the table, told and kept: the verdict line holds the last shot's verdict
 // and what followed until the player here acts again, and `l` opens the rack's log, paged
-// like the help.
+// like the help. The overlays' keys (the log, the help, the questions) are read here too.
 
 #include <algorithm>
 #include <string>
 
 #include "tui/app.hpp"
+#include "tui/help_text.hpp"
 #include "tui/rack_log.hpp"
 
 namespace termpool::tui {
@@ -84,6 +85,45 @@ bool App::handle_log(const Input& in) {
     else if (t == "q" || t == "l" || key == key_escape || key == key_enter ||
              (in.kind == Input::Kind::mouse && in.clicked))
         log_.reset();
+    return true;
+}
+
+bool App::handle_overlay(const Input& in) {
+    if (handle_log(in))
+        return true;
+    if (confirm_concede_) {
+        if (in.kind == Input::Kind::mouse && !in.clicked)
+            return true;
+        confirm_concede_ = false;
+        if (in.kind == Input::Kind::text && (in.text == "y" || in.text == "Y")) {
+            player_acts();
+            concede();
+        }
+        return true;
+    }
+    if (confirm_quit_) {
+        // y, or q again (q q quits, as in many terminal programs).
+        if (in.kind == Input::Kind::text && (in.text == "y" || in.text == "Y" || in.text == "q"))
+            running_ = false;
+        else if (in.kind != Input::Kind::mouse || in.clicked)
+            confirm_quit_ = false;
+        return true;
+    }
+    if (!help_)
+        return false;
+    // Pages forward and back; Esc, q, ?, Enter or a click close it.
+    const int last = help_page_count(term_.width(), term_.height()) - 1;
+    const int key = in.kind == Input::Kind::key ? in.key : 0;
+    const std::string& t = in.text;
+    if (t == " " || t == "j" || key == key_page_down || key == key_down)
+        help_page_ = std::min(help_page_ + 1, last);
+    else if (t == "k" || key == key_page_up || key == key_up)
+        help_page_ = std::max(std::min(help_page_, last) - 1, 0);
+    else if (t == "q" || t == "?" || key == key_escape || key == key_enter ||
+             (in.kind == Input::Kind::mouse && in.clicked)) {
+        help_ = false;
+        help_page_ = 0;
+    }
     return true;
 }
 
