@@ -622,10 +622,17 @@ TEST_CASE("overlays and help are boxes on top of everything", "[tui]") {
     const int pages = help_page_count(120, 40);
     for (v.help_page = 0; v.help_page < pages; ++v.help_page)
         all += screen_text(draw(v, 120, 40));
-    for (const char* key :
-         {"Left Right", "H L",   "Up Down", "Space", "[ ]",   "w a s d", "W A S D",
-          "c ",         "p ",    "g ",      "1-6",   "n ",    "x ",      "? ",
-          "q ",         "Mouse", "move",    "drag",  "shoot", "release"})
+    for (const char* key : {"Left Right", "Shift+Left Right",
+                            "l ",         "Up Down",
+                            "Space",      "[ ]",
+                            "w a s d",    "W A S D",
+                            "c ",         "p ",
+                            "g ",         "1-6",
+                            "n ",         "x ",
+                            "? ",         "q ",
+                            "Mouse",      "move",
+                            "drag",       "shoot",
+                            "release"})
         CHECK(all.find(key) != std::string::npos);
 }
 

@@ -1,5 +1,5 @@
-// The App's frame: the session set up, input dispatched by mode, the View of each mode, and
-// the loop that draws and reads.
+// The App's frame: the session set up, input dispatched by mode, and the loop that draws
+// and reads (the View of each mode is composed in app_view.cpp).
 #include "tui/app.hpp"
 
 #include <algorithm>
@@ -44,10 +44,12 @@ App::App(Terminal& terminal, const GameOptions& options)
       params_(game_physics(options.setup)), seed_(options.seed.value_or(static_cast<std::uint64_t>(
                                                 Clock::now().time_since_epoch().count()))),
       match_(first_match(options, seed_++)) {
-    shown_balls_ = game().balls();
+    show_.stop(game().balls());
     message_ = breaks_words(1);
-    aim_.time_power = options.timed_power;
-    aim_.show_aid = options.aim_aid;
+    for (AimState& seat : aims_) {
+        seat.time_power = options.timed_power;
+        seat.show_aid = options.aim_aid;
+    }
     if (options.watch)
         seat_computer(1, *options.watch);
     if (options.computer)
@@ -75,163 +77,11 @@ const Game& App::game() const {
     if (practice_game_)
         return *practice_game_;
     // While a shot rolls the match has judged it already: show the game as it was.
-    return mode_ == Mode::animating && before_shot_ ? *before_shot_ : match_.game();
+    return mode_ == Mode::animating && show_.before() ? *show_.before() : match_.game();
 }
 
 const MatchState& App::score() const {
-    return mode_ == Mode::animating && before_shot_ ? score_before_ : match_.score();
-}
-
-void App::compose(View& v) const {
-    const Game& g = game();
-    v.table = &table_;
-    v.balls = mode_ == Mode::animating ? shown_balls_ : g.balls();
-    v.ball_radius = params_.ball_radius;
-    v.game = g.type();
-    v.names[0] = name(1);
-    v.names[1] = name(2);
-    // The panel marks who is at the table: at game over too, when the match's to_act() is
-    // already the next rack's breaker.
-    v.shooter = mode_ == Mode::animating ? shooter_before_
-                : g.chooser() != 0       ? g.chooser()
-                                         : g.shooter();
-    v.groups[0] = g.group_of(1);
-    v.groups[1] = g.group_of(2);
-    v.practice = practice_.has_value();
-    v.race_to = score().is_race() && !practice_ ? score().race_to : 0;
-    v.racks_won[0] = score().racks_won[0];
-    v.racks_won[1] = score().racks_won[1];
-    if (is_rotation_game(g.type())) {
-        v.fouls[0] = g.consecutive_fouls(1);
-        v.fouls[1] = g.consecutive_fouls(2);
-    }
-    if (g.type() == GameType::snooker) {
-        const SnookerState& s = g.snooker();
-        v.scores[0] = s.scores[0];
-        v.scores[1] = s.scores[1];
-        v.current_break = s.current_break;
-        v.highest_break[0] = s.highest_break[0];
-        v.highest_break[1] = s.highest_break[1];
-        v.ball_on = s.ball_on;
-        v.free_ball = s.free_ball;
-        v.points_remaining = g.points_remaining();
-        if (s.ball_on == BallOn::in_order) {
-            const std::vector<int> on = g.balls_on();
-            v.lowest_colour = on.empty() ? 0 : on.front();
-        }
-        // A match of frames is said as best of N (a race to 3 is best of 5).
-        v.best_of = score().is_race() ? best_of_for_race(score().race_to) : 0;
-        v.race_to = 0;
-        // Another terminal's nomination is not sent while it aims: no guess at it.
-        if (mode_ == Mode::aiming && (!in_hall() || hall_seat_to_act())) {
-            v.nominated = aim_.nominated;
-            v.nomination_chosen = aim_.nomination_chosen;
-        }
-    }
-    v.message =
-        save_problem_.empty() ? message_ : "Could not save: " + save_problem_ + "; " + message_;
-    v.help = help_;
-    v.help_page = help_page_;
-    switch (mode_) {
-    case Mode::placing:
-        v.placing = true;
-        v.placement_legal = g.legal_placement(place_);
-        for (Ball& b : v.balls) {
-            if (b.id != 0)
-                continue;
-            b.position = place_;
-            b.state = MotionState::stationary;
-        }
-        if (message_.empty())
-            v.message = name(g.shooter()) + ": place the cue ball";
-        break;
-    case Mode::aiming:
-        compose_aiming(v);
-        break;
-    case Mode::moving:
-        compose_moving(v);
-        break;
-    case Mode::choosing: {
-        // What brought the choice (an illegal break, a push-out) goes in the box: it may sit
-        // over the panel's message line.
-        std::string text =
-            (message_.empty() ? "" : message_ + "\n\n") + name(g.chooser()) + ", choose:";
-        for (std::size_t i = 0; i < g.choices().size(); ++i)
-            text += "\n" + std::to_string(i + 1) + "  " +
-                    choice_words(g.choices()[i], g.type(), g.free_ball_offered());
-        if (snooker_play())
-            text += "\nC  concede the frame";
-        v.overlay = text;
-        break;
-    }
-    case Mode::game_over:
-        v.overlay = game_over_text();
-        break;
-    case Mode::names:
-    case Mode::animating:
-    case Mode::replay:
-        break;
-    }
-    compose_prompt(v);
-    if (in_hall())
-        compose_hall(v);
-    if (confirm_quit_)
-        v.overlay = in_hall() ? "Leave the table?  y / n" : "Quit the game?  y / n";
-    if (confirm_concede_)
-        v.overlay = name(match_.to_act()) + ": concede the frame?  y / n";
-}
-
-void App::compose_aiming(View& v) const {
-    v.aiming = true;
-    v.aim_deg = aim_.aim_deg;
-    v.power = aim_.current_power(Clock::now());
-    v.speed = speed_from_power(v.power, game().is_break());
-    v.time_power = aim_.time_power;
-    v.side = aim_.side;
-    v.follow = aim_.follow;
-    v.elevation_deg = aim_.elevation_deg;
-    // Marked before Space is pressed: the power bar swings or the keys change the power, and
-    // the same elevation turns from playable to a jump.
-    v.strike_refused =
-        strike_problem(aim_.strike(game().is_break(), Clock::now()), params_).has_value();
-    v.show_aid = aim_.show_aid;
-    if (aim_.show_aid) {
-        v.cue_path = aim_.preview.cue_path;
-        v.has_ghost = aim_.preview.has_ghost;
-        v.ghost = aim_.preview.ghost;
-        v.object_path = aim_.preview.object_path;
-        v.deflect_path = aim_.preview.deflect_path;
-    }
-    v.show_marker = aim_.show_marker;
-    v.marker = aim_.marker;
-    // The panel says what the shot will call: the aimed ball into the chosen pocket.
-    // Another terminal's call is not sent while it aims: this one's guess at it would mislead.
-    const bool calling = !aim_.safety && aim_.called_pocket != 0 && aim_.preview_ball > 0 &&
-                         calls_pocket(aim_.preview_ball) && (!in_hall() || hall_seat_to_act());
-    v.called_pocket = calling ? aim_.called_pocket : 0;
-    v.called_ball = calling ? aim_.preview_ball : 0;
-}
-
-void App::compose_prompt(View& v) const {
-    const std::string title = "termpool \u2014 " + std::string(game_type_name(game().type()));
-    if (entry_.player != 0) {
-        v.overlay = title + "\n\nName of player " + std::to_string(entry_.player) + ": " +
-                    entry_.text + "_\n(Enter keeps \"" + name(entry_.player) + "\")";
-        if (entry_.player == 2 && mode_ == Mode::names)
-            v.overlay += "\n(or: computer [easy|medium|hard|pro])";
-    } else if (entry_.asking_race) {
-        const int race = std::max(1, options_.race_to);
-        if (snooker_play())
-            v.overlay = title + "\n\nBest of how many frames? " + entry_.text + "_\n(Enter keeps " +
-                        std::to_string(best_of_for_race(race)) + "; 1 is a single frame)";
-        else
-            v.overlay = title + "\n\nRace to how many racks? " + entry_.text + "_\n(Enter keeps " +
-                        std::to_string(race) + "; 1 is a single game)";
-    } else {
-        return;
-    }
-    if (!entry_.error.empty())
-        v.overlay += "\n" + entry_.error;
+    return mode_ == Mode::animating && show_.before() ? show_.score_before() : match_.score();
 }
 
 Grid App::frame(int width, int height) {
@@ -249,9 +99,9 @@ bool App::nudge(Vec2& spot, int key, const std::string& text) const {
         return false; // no cells to step by while "please enlarge" shows
     const double step = 1.0 / layout_.cells_per_metre;
     Vec2 by;
-    if (key == key_left || text == "h")
+    if (key == key_left)
         by = {-step, 0};
-    else if (key == key_right || text == "l")
+    else if (key == key_right)
         by = {step, 0};
     else if (key == key_up || text == "k")
         by = {0, 2 * step};
@@ -288,6 +138,10 @@ void App::handle(const Input& in) {
         return;
     if (in_hall() && handle_hall_key(in))
         return;
+    if (in.kind == Input::Kind::text && in.text == "l") {
+        open_log(); // `l` opens the rack's log on any screen at the table
+        return;
+    }
     if (replaying_) {
         handle_replay_key(in);
         return;
@@ -299,41 +153,6 @@ void App::handle(const Input& in) {
         return;
     }
     handle_key(in.key, in.text);
-}
-
-bool App::handle_overlay(const Input& in) {
-    if (confirm_concede_) {
-        if (in.kind == Input::Kind::mouse && !in.clicked)
-            return true;
-        confirm_concede_ = false;
-        if (in.kind == Input::Kind::text && (in.text == "y" || in.text == "Y"))
-            concede();
-        return true;
-    }
-    if (confirm_quit_) {
-        // y, or q again (q q quits, as in many terminal programs).
-        if (in.kind == Input::Kind::text && (in.text == "y" || in.text == "Y" || in.text == "q"))
-            running_ = false;
-        else if (in.kind != Input::Kind::mouse || in.clicked)
-            confirm_quit_ = false;
-        return true;
-    }
-    if (!help_)
-        return false;
-    // Pages forward and back; Esc, q, ?, Enter or a click close it.
-    const int last = help_page_count(term_.width(), term_.height()) - 1;
-    const int key = in.kind == Input::Kind::key ? in.key : 0;
-    const std::string& t = in.text;
-    if (t == " " || t == "j" || key == key_page_down || key == key_down)
-        help_page_ = std::min(help_page_ + 1, last);
-    else if (t == "k" || key == key_page_up || key == key_up)
-        help_page_ = std::max(std::min(help_page_, last) - 1, 0);
-    else if (t == "q" || t == "?" || key == key_escape || key == key_enter ||
-             (in.kind == Input::Kind::mouse && in.clicked)) {
-        help_ = false;
-        help_page_ = 0;
-    }
-    return true;
 }
 
 void App::handle_key(int key, const std::string& text) {
@@ -367,12 +186,14 @@ void App::handle_key(int key, const std::string& text) {
         return;
     case Mode::animating:
         if (text == "x")
-            shot_start_ -= std::chrono::hours(1);
+            show_.hurry();
         return;
     case Mode::game_over:
         if (match_.pending().kind == Pending::next_rack) {
-            if (key == key_enter || text == " " || text == "r")
+            if (key == key_enter || text == " " || text == "r") {
+                player_acts();
                 next_rack();
+            }
             return;
         }
         if (in_hall())
@@ -390,9 +211,11 @@ void App::handle_key(int key, const std::string& text) {
             RecordedAction action;
             action.kind = RecordedAction::Kind::choose;
             action.choice = choices[static_cast<std::size_t>(text[0] - '1')];
+            player_acts();
             send_to_hall(action);
         } else if (text.size() == 1 && text[0] >= '1' &&
                    text[0] < '1' + static_cast<int>(choices.size())) {
+            player_acts();
             choose(choices[static_cast<std::size_t>(text[0] - '1')]);
             message_ = name(game().shooter()) + (game().is_break() ? " breaks" : " to shoot");
             start_turn();
@@ -414,7 +237,7 @@ void App::handle_key(int key, const std::string& text) {
 void App::handle_mouse(const Input& in) {
     if (mode_ == Mode::animating) {
         if (in.clicked || in.pressed)
-            shot_start_ -= std::chrono::hours(1);
+            show_.hurry();
         return;
     }
     if (!layout_.fits)
@@ -434,13 +257,8 @@ void App::handle_mouse(const Input& in) {
 }
 
 void App::step() {
-    if (mode_ == Mode::animating) {
-        const double t = std::chrono::duration<double>(Clock::now() - shot_start_).count();
-        if (t >= result_.rest_time)
-            after_shot();
-        else
-            shown_balls_ = trajectory_->sample(t);
-    }
+    if (mode_ == Mode::animating && show_.advance(Clock::now()))
+        after_shot();
     if (in_hall())
         apply_hall_actions();
     else if (replaying_)
@@ -452,7 +270,7 @@ void App::step() {
 }
 
 bool App::moving() const {
-    return mode_ == Mode::animating || (mode_ == Mode::aiming && aim_.time_power) ||
+    return mode_ == Mode::animating || (mode_ == Mode::aiming && aim().time_power) ||
            computer_to_act() || (replaying_ && !paused_) || !hall_queue_.empty();
 }
 

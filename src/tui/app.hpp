@@ -16,6 +16,7 @@
 #include "player/options.hpp"
 #include "tui/aim_state.hpp"
 #include "tui/computer_pacing.hpp"
+#include "tui/shot_show.hpp"
 #include "tui/table_link.hpp"
 #include "tui/terminal.hpp"
 #include "tui/text_entry.hpp"
@@ -74,6 +75,9 @@ private:
     using Clock = std::chrono::steady_clock;
 
     const Game& game() const;
+    /// The cue of the seat at the table now (the shooter shown).
+    AimState& aim() { return aims_[game().shooter() == 2 ? 1 : 0]; }
+    const AimState& aim() const { return aims_[game().shooter() == 2 ? 1 : 0]; }
     const MatchState& score() const;
     const std::string& name(int player) const { return match_.name(player); }
     void new_game(int breaker);
@@ -89,7 +93,8 @@ private:
     bool nudge(Vec2& spot, int key, const std::string& text) const;
     void shoot();
     void play(const Strike& strike, const ShotCall& call);
-    void show_shot(PlayedShot shot, Trajectory trajectory, MatchState score_before, Game before);
+    void show_shot(PlayedShot shot, Trajectory trajectory, MatchState score_before,
+                   std::optional<Game> before);
     bool place(Vec2 spot);
     void choose(Choice choice);
     void save();
@@ -125,6 +130,14 @@ private:
     Vec2 cue_position() const;
     std::vector<int> targets() const;
     bool calls_pocket(int target) const;
+
+    // What happened (app_log.cpp): the verdict line and the rack's log.
+    void tell(std::string news);
+    void player_acts();
+    std::string said() const;
+    void open_log();
+    bool handle_log(const Input& in);
+    std::string log_page_text() const;
 
     // Practice (app_practice.cpp): no referee, any ball moved, the last shot taken again.
     void sync_practice();
@@ -169,7 +182,9 @@ private:
     bool confirm_quit_ = false;
     bool confirm_concede_ = false; // snooker: "Concede the frame?" waits for y or n
 
-    AimState aim_;
+    // Each seat's cue as it was last set: the computer's or the other terminal's shot turns
+    // its own seat's cue, never what the player here set.
+    AimState aims_[2];
     Vec2 place_; // ball in hand: where the cue ball would go
 
     // Practice: its table, read through a Game without referee state, and the ball being
@@ -179,17 +194,8 @@ private:
     int held_ball_ = -1;
     Vec2 held_at_;
 
-    // The shot being shown: the match has judged it already, and shows the game as it was
-    // until the balls stop.
-    std::optional<Trajectory> trajectory_;
-    ShotResult result_;
-    Verdict verdict_;
-    std::optional<Game> before_shot_;
-    MatchState score_before_;
+    ShotShow show_;      // the shot rolling on screen
     Strike last_strike_; // practice: `r` sets it up again
-    int shooter_before_ = 1;
-    Clock::time_point shot_start_;
-    std::vector<Ball> shown_balls_;
 
     ComputerPacing pacing_; // the computer's move being shown
 
@@ -215,7 +221,14 @@ private:
     std::optional<TextEntry> chat_entry_;
     std::optional<Strike> aim_sent_;
 
-    std::string message_;
+    std::string message_; // hints and prompts: whatever comes next replaces them
+    std::string notice_;  // the hall's word on the connection: first, until the table is back
+    // The last shot's verdict and what followed (the computer's or the other terminal's own
+    // verdicts and choices): shown until the player here acts again.
+    std::vector<std::string> verdicts_;
+    // The rack's log while it is open: its lines and the page shown.
+    std::optional<std::vector<std::string>> log_;
+    int log_page_ = 0;
     std::string save_problem_;       // why the last save failed, shown until one works
     Clock::time_point game_over_at_; // when the last rack ended
 };

@@ -33,6 +33,7 @@ void App::join_hall(Match match, TableLink link) {
 }
 
 void App::hall_record(Match match) {
+    notice_.clear(); // the table is back
     // Back after a reconnect to the table as this copy has it (the usual case): whatever is on
     // screen, a shot rolling included, goes on.
     if (in_hall() && match.record().actions.size() == match_.record().actions.size() &&
@@ -40,7 +41,7 @@ void App::hall_record(Match match) {
         hall_queue_.clear();
         awaiting_hall_ = resyncing_ = false;
         if (mode_ == Mode::animating)
-            message_ = name(shooter_before_) + " shoots";
+            message_ = name(show_.shot().shooter) + " shoots";
         else if (mode_ != Mode::game_over)
             message_ = hall_table_words();
         return;
@@ -64,8 +65,8 @@ void App::take_hall_table(Match match) {
     hall_queue_.clear();
     awaiting_hall_ = false;
     resyncing_ = false;
-    trajectory_.reset();
-    before_shot_.reset();
+    show_.stop(match_.game().balls());
+    verdicts_.clear();
     message_ = hall_table_words();
     start_turn();
 }
@@ -83,12 +84,12 @@ void App::hall_aim(int seat, const Strike& strike) {
     if (mode_ != Mode::aiming || !hall_queue_.empty() || seat != game().shooter() ||
         (link_ && seat == link_->seat))
         return;
-    aim_.aim_deg = strike.angle_deg;
-    aim_.power = power_from_speed(strike.speed, game().is_break());
-    aim_.side = strike.side;
-    aim_.follow = strike.follow;
-    aim_.elevation_deg = strike.elevation_deg;
-    aim_.show_marker = false;
+    aim().aim_deg = strike.angle_deg;
+    aim().power = power_from_speed(strike.speed, game().is_break());
+    aim().side = strike.side;
+    aim().follow = strike.follow;
+    aim().elevation_deg = strike.elevation_deg;
+    aim().show_marker = false;
     update_preview();
 }
 
@@ -112,7 +113,7 @@ void App::hall_refused(const std::string& why) {
 }
 
 void App::hall_notice(const std::string& text) {
-    message_ = text;
+    notice_ = text;
 }
 
 bool App::hall_seat_to_act() const {
@@ -152,7 +153,7 @@ void App::apply_hall_actions() {
                 move.kind = Pending::shoot;
                 move.shot.strike = next.action.strike;
                 move.shot.call = next.action.call;
-                pacing_.start(move, aim_.aim_deg, now);
+                pacing_.start(move, aim().aim_deg, now);
             }
             if (!show_computer_aim(now))
                 return;
@@ -168,7 +169,7 @@ void App::apply_hall_actions() {
             return;
         }
         if (mode_ == Mode::animating && hall_queue_.size() > far_behind)
-            shot_start_ -= std::chrono::hours(1);
+            show_.hurry();
     }
     if (mode_ != Mode::animating)
         send_hall_aim();
@@ -199,9 +200,10 @@ bool App::apply_hall_action(const RecordedAction& action) {
         start_aiming();
         break;
     case RecordedAction::Kind::choose:
-        message_ = action.choice == Choice::concede
-                       ? name(actor) + " concedes the frame \u2014 " + name(3 - actor) + " wins it"
-                       : name(actor) + ": " + choice;
+        message_.clear();
+        tell(action.choice == Choice::concede
+                 ? name(actor) + " concedes the frame \u2014 " + name(3 - actor) + " wins it"
+                 : name(actor) + ": " + choice);
         start_turn();
         break;
     case RecordedAction::Kind::rack:
@@ -219,7 +221,7 @@ void App::send_hall_aim() {
     // The cue as it is now, each time it changes; the session keeps to the server's rate.
     if (mode_ != Mode::aiming || hall_waits() || !link_->aim)
         return;
-    const Strike strike = aim_.strike(game().is_break(), Clock::now());
+    const Strike strike = aim().strike(game().is_break(), Clock::now());
     if (aim_sent_ && aim_sent_->speed == strike.speed && aim_sent_->angle_deg == strike.angle_deg &&
         aim_sent_->side == strike.side && aim_sent_->follow == strike.follow &&
         aim_sent_->elevation_deg == strike.elevation_deg)
@@ -253,7 +255,8 @@ bool App::handle_hall_key(const Input& in) {
         chat_entry_.emplace();
         return true;
     }
-    const bool leave_or_help = in.kind == Input::Kind::text && (in.text == "q" || in.text == "?");
+    const bool leave_or_help =
+        in.kind == Input::Kind::text && (in.text == "q" || in.text == "?" || in.text == "l");
     // A shot rolling can be hurried on any screen; the rest is the shooter's, once the
     // server's last word is in.
     if (mode_ == Mode::animating || leave_or_help)
@@ -299,7 +302,7 @@ void App::compose_hall(View& v) const {
 
 std::string App::hall_game_over_text() const {
     const MatchState& s = match_.score();
-    std::string text = message_;
+    std::string text = said();
     if (s.is_race()) {
         text += "\n\nRace to " + std::to_string(s.race_to) + ": " + name(1) + " " +
                 std::to_string(s.racks_won[0]) + ", " + name(2) + " " +

@@ -16,8 +16,8 @@ void App::new_game(int breaker) {
     // The players keep their seats (and names) from the game before, the computers their
     // streams.
     match_ = std::move(match_).rematch(breaker, seed_++);
-    shown_balls_ = game().balls();
-    trajectory_.reset();
+    show_.stop(match_.game().balls());
+    verdicts_.clear();
     message_ = breaks_words(breaker);
 }
 
@@ -32,7 +32,7 @@ void App::next_rack() {
     }
     if (match_.next_rack(breaker) != MatchError::none)
         return;
-    shown_balls_ = game().balls();
+    show_.stop(match_.game().balls());
     save();
     message_ = (snooker_play() ? "Frame " : "Rack ") + std::to_string(match_.rack()) + ": " +
                breaks_words(breaker);
@@ -58,7 +58,7 @@ std::string App::game_over_text() const {
     const PlayerStats figures[2] = {match_.tally().of(1), match_.tally().of(2)};
     const std::string summary = "\n\n" + stats_summary(match_.record().names, figures);
     if (!s.is_race())
-        return message_ + summary + "\n\nr  rematch (loser breaks)\nn  new game\nq  quit";
+        return said() + summary + "\n\nr  rematch (loser breaks)\nn  new game\nq  quit";
     // Snooker says a match of frames as best of N.
     const bool frames = snooker_play();
     const std::string race =
@@ -66,11 +66,10 @@ std::string App::game_over_text() const {
                 : "Race to " + std::to_string(s.race_to)) +
         ": " + score_words();
     if (const int winner = s.match_winner())
-        return message_ + "\n\n" + name(winner) + " wins the match\n" + race + summary +
+        return said() + "\n\n" + name(winner) + " wins the match\n" + race + summary +
                "\n\nr  rematch (loser breaks)\nn  new match\nq  quit";
-    return message_ + "\n\n" + race + summary + "\n\nEnter  next " +
-           (frames ? "frame (" : "rack (") + name(match_.next_breaker()) +
-           " breaks)\nq      quit (the match is saved)";
+    return said() + "\n\n" + race + summary + "\n\nEnter  next " + (frames ? "frame (" : "rack (") +
+           name(match_.next_breaker()) + " breaks)\nq      quit (the match is saved)";
 }
 
 bool App::computer_to_act() const {
@@ -96,7 +95,7 @@ void App::computer_turn() {
         const std::optional<ComputerMove> move = match_.computer_move();
         if (!move)
             return;
-        pacing_.start(*move, aim_.aim_deg, now);
+        pacing_.start(*move, aim().aim_deg, now);
         if (move->kind == Pending::place)
             place_ = move->spot;
         return;
@@ -114,7 +113,8 @@ void App::computer_turn() {
         const std::string words =
             choice_words(move.choice, game().type(), game().free_ball_offered());
         choose(move.choice);
-        message_ = who + ": " + words;
+        message_.clear();
+        tell(who + ": " + words);
         start_turn();
         return;
     }
@@ -137,14 +137,14 @@ void App::computer_turn() {
 bool App::show_computer_aim(Clock::time_point now) {
     const ComputerMove& move = pacing_.move();
     const double t = pacing_.elapsed(now);
-    aim_.aim_deg = pacing_.aim_at(t);
-    aim_.side = move.shot.strike.side;
-    aim_.follow = move.shot.strike.follow;
-    aim_.elevation_deg = move.shot.strike.elevation_deg;
-    aim_.power = pacing_.power_at(t, game().is_break());
+    aim().aim_deg = pacing_.aim_at(t);
+    aim().side = move.shot.strike.side;
+    aim().follow = move.shot.strike.follow;
+    aim().elevation_deg = move.shot.strike.elevation_deg;
+    aim().power = pacing_.power_at(t, game().is_break());
     // Snooker: the panel shows the computer's own nomination, if it names one.
-    aim_.nominated = move.shot.call.call.ball;
-    aim_.nomination_chosen = snooker_play() && game().nomination_owed() && aim_.nominated != 0;
+    aim().nominated = move.shot.call.call.ball;
+    aim().nomination_chosen = snooker_play() && game().nomination_owed() && aim().nominated != 0;
     update_preview();
     return pacing_.due(now);
 }
@@ -154,6 +154,7 @@ void App::resume(Match match) {
     // The computers take up their seats with new streams, as a new game's do.
     match_.reseed_computers(seed_);
     entry_.player = 0;
+    verdicts_.clear();
     // Where the game stands comes first here: the player needs it before any news.
     message_ = "Game resumed: " + resumed_words();
     for (const std::string& n : options_.notices)

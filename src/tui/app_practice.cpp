@@ -37,10 +37,10 @@ void App::sync_practice() {
 
 void App::practice_shot_done() {
     bool cue_potted = false;
-    for (const Event& e : result_.events)
+    for (const Event& e : show_.shot().result.events)
         cue_potted |= e.kind == EventKind::pocket && e.ball == 0;
     sync_practice();
-    message_ = potted_words(result_) +
+    message_ = potted_words(show_.shot().result) +
                (cue_potted ? "; the cue ball is back on the head spot" : "") +
                ". r takes the shot again, m moves a ball";
     start_turn();
@@ -55,12 +55,12 @@ bool App::handle_practice_key(const std::string& text) {
             // The same aim, spin and elevation (the power bar kept its setting, and a break taken
             // again has the break's full bar back), ready to adjust.
             mode_ = Mode::aiming;
-            aim_.set_break(game().is_break());
-            aim_.aim_deg = last_strike_.angle_deg;
-            aim_.side = last_strike_.side;
-            aim_.follow = last_strike_.follow;
-            aim_.elevation_deg = last_strike_.elevation_deg;
-            aim_.show_marker = false;
+            aim().set_break(game().is_break());
+            aim().aim_deg = last_strike_.angle_deg;
+            aim().side = last_strike_.side;
+            aim().follow = last_strike_.follow;
+            aim().elevation_deg = last_strike_.elevation_deg;
+            aim().show_marker = false;
             message_ = "The balls are back: take the shot again";
             update_preview();
         } else {

@@ -21,9 +21,8 @@ void App::rewind_to(std::size_t action) {
     auto replayed = Match::replay(replay_record_, next_action_);
     if (Match* m = std::get_if<Match>(&replayed))
         match_ = std::move(*m);
-    trajectory_.reset();
-    before_shot_.reset();
-    shown_balls_ = game().balls();
+    show_.stop(match_.game().balls());
+    verdicts_.clear();
     mode_ = Mode::replay; // no aiming, no placing: the replay only shows
     message_ = "Replay (space pauses, Left/Right step a shot, x skips, q quits)";
 }
@@ -36,7 +35,7 @@ void App::replay_step() {
         const RecordedAction& a = actions[next_action_++];
         if (a.kind != RecordedAction::Kind::shot) {
             match_.apply(a);
-            shown_balls_ = game().balls();
+            show_.stop(match_.game().balls());
             continue;
         }
         const auto is_shot = [](const RecordedAction& r) {
@@ -44,11 +43,10 @@ void App::replay_step() {
         };
         const auto shot = std::count_if(actions.begin(), actions.begin() + next_action_, is_shot);
         const auto shots = std::count_if(actions.begin(), actions.end(), is_shot);
-        const std::string last = message_.starts_with("Replay") ? "" : message_;
         play(a.strike, a.call);
+        // The verdict line keeps the shot before's verdict while this one rolls.
         message_ = "Replay, shot " + std::to_string(shot) + " of " + std::to_string(shots) +
-                   " (space pauses, Left/Right step, x skips, q quits)" +
-                   (last.empty() ? "" : ". Before: " + last);
+                   " (space pauses, Left/Right step, x skips, l log, q quits)";
         return;
     }
     message_ = "Replay ended: Left steps back, q quits";
@@ -58,7 +56,7 @@ void App::replay_step() {
 void App::handle_replay_key(const Input& in) {
     if (in.kind == Input::Kind::mouse) {
         if (in.clicked && mode_ == Mode::animating)
-            shot_start_ -= std::chrono::hours(1);
+            show_.hurry();
         return;
     }
     if (in.text == "q") {
@@ -69,7 +67,7 @@ void App::handle_replay_key(const Input& in) {
     } else if (in.text == " ") {
         paused_ = !paused_;
     } else if (in.text == "x" && mode_ == Mode::animating) {
-        shot_start_ -= std::chrono::hours(1);
+        show_.hurry();
     } else if (in.key == key_left || in.key == key_right) {
         // Step a whole shot: back to the start of the previous one, or on past the next.
         const std::vector<RecordedAction>& actions = replay_record_.actions;

@@ -28,8 +28,8 @@ void App::begin() {
 }
 
 void App::start_turn() {
-    shown_balls_ = game().balls();
-    aim_.new_turn();
+    show_.stop(game().balls());
+    aim().new_turn();
     pacing_.stop();
     const PendingAction pending =
         practice_ ? PendingAction{Pending::shoot, 1, BallInHand::none, {}} : match_.pending();
@@ -69,7 +69,7 @@ void App::warn_of_third_foul() {
 
 void App::start_aiming() {
     mode_ = Mode::aiming;
-    aim_.set_break(game().is_break());
+    aim().set_break(game().is_break());
     aim_at_easiest();
     warn_of_third_foul();
     const std::string& who = name(game().shooter());
@@ -77,8 +77,10 @@ void App::start_aiming() {
     const bool computer = computer_to_act() || (in_hall() && !hall_seat_to_act());
     if (game().push_out_allowed()) {
         const std::string hint = "u declares a push-out";
-        message_ = message_.empty() ? who + ": aim and shoot, or " + hint : message_ + "; " + hint;
-    } else if (message_.empty() && !computer) {
+        message_ = !message_.empty()   ? message_ + "; " + hint
+                   : verdicts_.empty() ? who + ": aim and shoot, or " + hint
+                                       : hint;
+    } else if (message_.empty() && verdicts_.empty() && !computer) {
         // Short enough for the smallest panel; the help has the rest.
         message_ = who + ": aim (" + (term_.caps().mouse ? "mouse, " : "") +
                    "Left/Right), Space shoots" + (practice_ ? "; m moves a ball" : "");
@@ -88,9 +90,9 @@ void App::start_aiming() {
                     std::string(game().snooker().free_ball ? "a free ball: 2-7 nominates it"
                                                            : "2-7 nominates a colour");
     // The proposed aim cannot reach the ball straight: say so before Space is pressed.
-    if (aim_.target_line != TargetLine::straight && !computer)
+    if (aim().target_line != TargetLine::straight && !computer)
         message_ += (message_.empty() ? "" : "; ") +
-                    std::string(aim_.target_line == TargetLine::kick
+                    std::string(aim().target_line == TargetLine::kick
                                     ? "no straight line to a legal ball: a kick off one rail"
                                     : "no clear line to a legal ball");
 }
@@ -119,7 +121,8 @@ void App::concede() {
     }
     if (match_.concede(who) != MatchError::none)
         return;
-    message_ = name(who) + " concedes the frame \u2014 " + name(3 - who) + " wins it";
+    message_.clear();
+    tell(name(who) + " concedes the frame \u2014 " + name(3 - who) + " wins it");
     save();
     if (match_.score().match_winner() != 0 && !replaying_)
         save_stats();
@@ -136,12 +139,14 @@ bool App::try_place(Vec2 spot) {
         RecordedAction action;
         action.kind = RecordedAction::Kind::place;
         action.place = spot;
+        player_acts();
         return send_to_hall(action);
     }
     if (!place(spot)) {
         message_ = "The cue ball cannot go there: " + placement_problem(game(), spot);
         return false;
     }
+    player_acts();
     message_.clear();
     start_aiming();
     return true;
@@ -149,22 +154,23 @@ bool App::try_place(Vec2 spot) {
 
 void App::shoot() {
     const auto now = Clock::now();
-    const Strike strike = aim_.strike(game().is_break(), now);
+    const Strike strike = aim().strike(game().is_break(), now);
     // A cue the simulator cannot play (a jump shot, which it does not model) is not shot: the
     // player adjusts it.
     if (const std::optional<std::string> problem = strike_problem(strike, params_)) {
         message_ = "Not played: " + *problem;
         return;
     }
-    const double power = aim_.current_power(now);
+    const double power = aim().current_power(now);
     ShotCall call =
-        game().call_as_taken(aim_.call([this](int ball) { return calls_pocket(ball); }));
+        game().call_as_taken(aim().call([this](int ball) { return calls_pocket(ball); }));
     if (snooker_play()) {
         // The nomination the player named; without one the referee takes the ball hit first,
         // the aimed ball the panel proposed.
-        call.call = nomination_call(game(), aim_);
+        call.call = nomination_call(game(), aim());
     }
-    aim_.power = power;
+    aim().power = power;
+    player_acts();
     if (in_hall()) {
         RecordedAction action;
         action.kind = RecordedAction::Kind::shot;
@@ -203,14 +209,12 @@ void App::save() {
 
 void App::play(const Strike& strike, const ShotCall& call) {
     last_strike_ = strike;
-    shooter_before_ = game().shooter();
     Trajectory trajectory(params_, game().balls().size());
     if (practice_) {
-        result_ = practice_->shoot(strike, &trajectory);
-        trajectory_ = std::move(trajectory);
-        shot_start_ = Clock::now();
-        mode_ = Mode::animating;
-        message_ = name(shooter_before_) + " shoots";
+        PlayedShot shot; // no referee: the simulation alone
+        shot.shooter = game().shooter();
+        shot.result = practice_->shoot(strike, &trajectory);
+        show_shot(std::move(shot), std::move(trajectory), score(), std::nullopt);
         return;
     }
     Game before = match_.game();
@@ -224,29 +228,27 @@ void App::play(const Strike& strike, const ShotCall& call) {
               std::move(before));
 }
 
-void App::show_shot(PlayedShot shot, Trajectory trajectory, MatchState score_before, Game before) {
+void App::show_shot(PlayedShot shot, Trajectory trajectory, MatchState score_before,
+                    std::optional<Game> before) {
     // The match has judged the shot already; the game as it was shows until the balls stop.
-    shooter_before_ = shot.shooter;
-    result_ = std::move(shot.result);
-    verdict_ = std::move(shot.verdict);
-    before_shot_ = std::move(before);
-    score_before_ = score_before;
-    trajectory_ = std::move(trajectory);
-    shot_start_ = Clock::now();
+    const int shooter = shot.shooter;
+    show_.start(std::move(shot), std::move(trajectory), std::move(before), score_before,
+                Clock::now());
     mode_ = Mode::animating;
-    message_ = name(shooter_before_) + " shoots"; // the last verdict is over
+    message_ = name(shooter) + " shoots";
 }
 
 void App::after_shot() {
-    trajectory_.reset();
-    before_shot_.reset();
+    show_.stop(show_.balls());
     if (practice_) {
         practice_shot_done();
         return;
     }
-    message_ = verdict_message(verdict_, shooter_before_, match_.record().names);
+    message_.clear();
+    const PlayedShot& shot = show_.shot();
+    tell(verdict_message(shot.verdict, shot.shooter, match_.record().names));
     save();
-    if (verdict_.winner != 0 && match_.score().match_winner() != 0 && !replaying_ && !in_hall())
+    if (shot.verdict.winner != 0 && match_.score().match_winner() != 0 && !replaying_ && !in_hall())
         save_stats();
     start_turn();
     if (replaying_)
