@@ -186,3 +186,28 @@ TEST_CASE("the App's own files stay under 300 lines", "[layers]") {
         CHECK(lines < 300);
     }
 }
+
+TEST_CASE("the App has one action path: hall, practice and replay live in their drivers",
+          "[layers]") {
+    // Every input becomes an action for the table's driver (table_driver.hpp); what differs
+    // between local play, the hall, a replay and practice is the driver's, not the App's.
+    static const std::regex branch(R"(\bin_hall\s*\(|\bpractice_\b|\breplaying_\b|\blink_\b)");
+    int app_files = 0;
+    for (const fs::path& file : sources("src/tui")) {
+        const std::string name = file.filename().string();
+        if (!name.starts_with("app"))
+            continue;
+        ++app_files;
+        std::ifstream in(file);
+        int number = 0;
+        for (std::string line; std::getline(in, line);) {
+            ++number;
+            INFO(file.generic_string() << ":" << number << ": " << line);
+            CHECK_FALSE(std::regex_search(line, branch));
+        }
+    }
+    CHECK(app_files >= 4);
+    for (const char* driver :
+         {"local_driver.cpp", "hall_driver.cpp", "replay_driver.cpp", "practice_driver.cpp"})
+        CHECK(fs::exists(fs::path("src/tui") / driver));
+}

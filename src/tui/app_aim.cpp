@@ -22,39 +22,17 @@ Vec2 App::cue_position() const {
     return table_.head_spot();
 }
 
-bool App::calls_pocket(int target) const {
-    return !practice_ && match_.calls_pocket(target); // no referee, no calls
-}
-
-std::vector<int> App::targets() const {
-    if (!practice_)
-        return game().legal_targets();
-    std::vector<int> all; // no referee: every ball is fair
-    for (const Ball& b : game().balls())
-        if (b.id != 0 && b.state != MotionState::pocketed)
-            all.push_back(b.id);
-    return all;
-}
-
 void App::aim_at_easiest() {
-    aim().aim_at_target(
-        rank_targets(table_, game().balls(), params_.ball_radius, cue_position(), targets()));
+    aim().aim_at_target(rank_targets(table_, game().balls(), params_.ball_radius, cue_position(),
+                                     driver_->targets()));
     update_preview();
 }
 
 void App::update_preview() {
     aim().update_preview(table_, params_, game().balls(), game().is_break(),
-                         [this](int ball) { return calls_pocket(ball); });
-    propose_nomination();
-}
-
-bool App::snooker_play() const {
-    return !practice_ && game().type() == GameType::snooker;
-}
-
-void App::propose_nomination() {
+                         [this](int ball) { return driver_->calls_pocket(ball); });
     if (snooker_play())
-        tui::propose_nomination(game(), aim());
+        propose_nomination(game(), aim());
 }
 
 bool App::nominate_key(const std::string& text) {
@@ -89,7 +67,7 @@ void App::handle_aiming_key(int key, const std::string& text) {
         return;
     } else if (text == "[" || text == "]") {
         aim().target_index += text == "]" ? 1 : -1;
-        const int n = static_cast<int>(targets().size());
+        const int n = static_cast<int>(driver_->targets().size());
         if (n > 0)
             aim().target_index = (aim().target_index % n + n) % n;
         aim_at_easiest();
@@ -115,7 +93,7 @@ void App::handle_aiming_key(int key, const std::string& text) {
         aim().push_out = !aim().push_out;
         message_ =
             aim().push_out ? "Push-out: no foul but a scratch; then the other player chooses" : "";
-    } else if (text == "0" && !practice_) {
+    } else if (text == "0" && driver_->referee()) {
         aim().safety = !aim().safety;
         message_ = aim().safety ? "Safety called: the turn passes whatever drops" : "";
     } else if (text.size() == 1 && text[0] >= '1' && text[0] <= '6') {

@@ -18,7 +18,7 @@ constexpr std::size_t verdicts_kept = 3; // the player's own verdict and the lat
 
 void App::tell(std::string news) {
     // A replay shows the shot just played; at the table the player's own verdict stays first.
-    if (replaying_)
+    if (driver_->watching())
         verdicts_.clear();
     verdicts_.push_back(std::move(news));
     if (verdicts_.size() > verdicts_kept)
@@ -30,7 +30,7 @@ void App::player_acts() {
 }
 
 std::string App::said() const {
-    std::string text = notice_;
+    std::string text = driver_->notice();
     for (const std::string& verdict : verdicts_)
         text += (text.empty() ? "" : ". ") + verdict;
     if (!message_.empty())
@@ -39,7 +39,8 @@ std::string App::said() const {
 }
 
 void App::open_log() {
-    log_ = practice_ ? std::vector<std::string>{} : rack_log(match_.record(), match_.rack());
+    log_ = driver_->referee() ? rack_log(driver_->match().record(), driver_->match().rack())
+                              : std::vector<std::string>{};
     log_page_ = 0;
 }
 
@@ -57,10 +58,11 @@ std::string App::log_page_text() const {
     const int rows = log_rows(term_.height());
     const int pages = std::max(1, (static_cast<int>(lines.size()) + rows - 1) / rows);
     const int page = std::min(log_page_, pages - 1);
-    std::string text = practice_ ? "Practice: no referee, no log"
-                                 : (snooker_play() ? "Frame " : "Rack ") +
-                                       std::to_string(match_.rack()) + ": the shots";
-    if (lines.empty() && !practice_)
+    std::string text = !driver_->referee()
+                           ? "Practice: no referee, no log"
+                           : (snooker_play() ? "Frame " : "Rack ") +
+                                 std::to_string(driver_->match().rack()) + ": the shots";
+    if (lines.empty() && driver_->referee())
         text += "\n\nNo shot yet";
     for (int i = page * rows; i < std::min(static_cast<int>(lines.size()), (page + 1) * rows); ++i)
         text += "\n" + lines[static_cast<std::size_t>(i)];

@@ -13,20 +13,20 @@ namespace termpool::tui {
 void App::compose(View& v) const {
     const Game& g = game();
     v.table = &table_;
-    v.balls = mode_ == Mode::animating ? show_.balls() : g.balls();
+    v.balls = mode_ == Mode::rolling ? show_.balls() : g.balls();
     v.ball_radius = params_.ball_radius;
     v.game = g.type();
     v.names[0] = name(1);
     v.names[1] = name(2);
     // The panel marks who is at the table: at game over too, when the match's to_act() is
     // already the next rack's breaker.
-    v.shooter = mode_ == Mode::animating ? show_.shot().shooter
-                : g.chooser() != 0       ? g.chooser()
-                                         : g.shooter();
+    v.shooter = mode_ == Mode::rolling ? show_.shot().shooter
+                : g.chooser() != 0     ? g.chooser()
+                                       : g.shooter();
     v.groups[0] = g.group_of(1);
     v.groups[1] = g.group_of(2);
-    v.practice = practice_.has_value();
-    v.race_to = score().is_race() && !practice_ ? score().race_to : 0;
+    v.practice = !driver_->referee();
+    v.race_to = score().is_race() && driver_->referee() ? score().race_to : 0;
     v.racks_won[0] = score().racks_won[0];
     v.racks_won[1] = score().racks_won[1];
     if (is_rotation_game(g.type())) {
@@ -51,12 +51,13 @@ void App::compose(View& v) const {
         v.best_of = score().is_race() ? best_of_for_race(score().race_to) : 0;
         v.race_to = 0;
         // Another terminal's nomination is not sent while it aims: no guess at it.
-        if (mode_ == Mode::aiming && (!in_hall() || hall_seat_to_act())) {
+        if (mode_ == Mode::aiming && driver_->shows_call()) {
             v.nominated = aim().nominated;
             v.nomination_chosen = aim().nomination_chosen;
         }
     }
-    v.message = save_problem_.empty() ? said() : "Could not save: " + save_problem_ + "; " + said();
+    const std::string problem = driver_->problem();
+    v.message = problem.empty() ? said() : "Could not save: " + problem + "; " + said();
     v.help = help_;
     v.help_page = help_page_;
     switch (mode_) {
@@ -75,39 +76,37 @@ void App::compose(View& v) const {
     case Mode::aiming:
         compose_aiming(v);
         break;
-    case Mode::moving:
-        compose_moving(v);
+    case Mode::choosing:
+        v.overlay = choice_text();
         break;
-    case Mode::choosing: {
-        // What brought the choice (an illegal break, a push-out) goes in the box: it may sit
-        // over the panel's message line.
-        std::string text =
-            (said().empty() ? "" : said() + "\n\n") + name(g.chooser()) + ", choose:";
-        for (std::size_t i = 0; i < g.choices().size(); ++i)
-            text += "\n" + std::to_string(i + 1) + "  " +
-                    choice_words(g.choices()[i], g.type(), g.free_ball_offered());
-        if (snooker_play())
-            text += "\nC  concede the frame";
-        v.overlay = text;
-        break;
-    }
-    case Mode::game_over:
-        v.overlay = game_over_text();
+    case Mode::over:
+        v.overlay = driver_->game_over_text(told_.empty() ? said() : told_);
         break;
     case Mode::names:
-    case Mode::animating:
-    case Mode::replay:
+    case Mode::rolling:
         break;
     }
     compose_prompt(v);
-    if (in_hall())
-        compose_hall(v);
+    driver_->compose(v, screen());
     if (log_)
         v.overlay = log_page_text();
     if (confirm_quit_)
-        v.overlay = in_hall() ? "Leave the table?  y / n" : "Quit the game?  y / n";
+        v.overlay = driver_->quit_question();
     if (confirm_concede_)
-        v.overlay = name(match_.to_act()) + ": concede the frame?  y / n";
+        v.overlay = name(driver_->match().to_act()) + ": concede the frame?  y / n";
+}
+
+std::string App::choice_text() const {
+    // What brought the choice (an illegal break, a push-out) goes in the box: it may sit over
+    // the panel's message line.
+    const Game& g = game();
+    std::string text = (said().empty() ? "" : said() + "\n\n") + name(g.chooser()) + ", choose:";
+    for (std::size_t i = 0; i < g.choices().size(); ++i)
+        text += "\n" + std::to_string(i + 1) + "  " +
+                choice_words(g.choices()[i], g.type(), g.free_ball_offered());
+    if (snooker_play())
+        text += "\nC  concede the frame";
+    return text;
 }
 
 void App::compose_aiming(View& v) const {
@@ -136,7 +135,7 @@ void App::compose_aiming(View& v) const {
     // The panel says what the shot will call: the aimed ball into the chosen pocket.
     // Another terminal's call is not sent while it aims: this one's guess at it would mislead.
     const bool calling = !aim().safety && aim().called_pocket != 0 && aim().preview_ball > 0 &&
-                         calls_pocket(aim().preview_ball) && (!in_hall() || hall_seat_to_act());
+                         driver_->calls_pocket(aim().preview_ball) && driver_->shows_call();
     v.called_pocket = calling ? aim().called_pocket : 0;
     v.called_ball = calling ? aim().preview_ball : 0;
 }
