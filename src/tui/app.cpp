@@ -186,6 +186,7 @@ void App::compose_aiming(View& v) const {
     v.aim_deg = aim_.aim_deg;
     v.power = aim_.current_power(Clock::now());
     v.speed = speed_from_power(v.power, game().is_break());
+    v.is_break = game().is_break();
     v.time_power = aim_.time_power;
     v.side = aim_.side;
     v.follow = aim_.follow;
@@ -247,16 +248,16 @@ bool App::nudge(Vec2& spot, int key, const std::string& text) const {
     // it may be put down (on_playing_surface), a pocket's mouth included.
     if (!layout_.fits)
         return false; // no cells to step by while "please enlarge" shows
-    const double step = 1.0 / layout_.cells_per_metre;
+    const double step = 1.0 / layout_.cells_per_metre, row = 1.0 / layout_.rows_per_metre;
     Vec2 by;
     if (key == key_left || text == "h")
         by = {-step, 0};
     else if (key == key_right || text == "l")
         by = {step, 0};
     else if (key == key_up || text == "k")
-        by = {0, 2 * step};
+        by = {0, row};
     else if (key == key_down || text == "j")
-        by = {0, -2 * step};
+        by = {0, -row};
     else
         return false;
     const Vec2 stepped = step_on_table(table_, spot, by, params_.ball_radius);

@@ -49,8 +49,10 @@ void draw_pocket_labels(const Frame& f);
 void draw_aim(const Frame& f);
 /// True when balls 10..15 get two-cell labels at this scale (see wide_labels).
 bool labels_wide(const Frame& f);
-/// The balls on the table; returns the cells their labels took.
+/// The balls on the table, each on the cell of its centre; returns the cells they took.
 std::vector<std::pair<int, int>> draw_balls(const Frame& f);
+/// True when a ball on the table covers table point `point` (a spot under it is not drawn).
+bool under_a_ball(const View& v, Vec2 point);
 /// The power bar, speed, power mode, spin and elevation line and shoot button.
 void draw_status(const Frame& f);
 /// The game and the race, players with racks won, groups and their pocketed balls (9-ball:

@@ -88,7 +88,8 @@ struct Layout {
     bool fits = false;          ///< false when the terminal is smaller than the minimum
     int min_width = 40;         ///< the minimum size, for the "please enlarge" message
     int min_height = 14;        ///< the minimum size
-    double cells_per_metre = 0; ///< columns per metre; rows per metre is half of it
+    double cells_per_metre = 0; ///< columns per metre
+    double rows_per_metre = 0;  ///< rows per metre: about half of cells_per_metre (make_layout)
     double table_left = 0;      ///< column of x = 0 (the cushion nose), fractional
     double table_top = 0;       ///< row of y = W (the top cushion nose), fractional
     int panel_x = 0, panel_y = 0, panel_width = 0, panel_height = 0; ///< the text panel
@@ -113,20 +114,22 @@ inline bool on_shoot_button(const Layout& l, int x, int y) {
 }
 
 /// Chooses the largest table that fits a terminal of `width` x `height` cells, leaving room for
-/// the panel (to the right, or below when the terminal is narrow) and the status rows.
+/// the panel (to the right, or below when the terminal is narrow) and the status rows. The felt
+/// has an odd number of rows and 4 k + 2 columns, so that the long axis and the foot and head
+/// spots lie in the middle of cells: a rack drawn at its balls' own cells is then symmetric.
 Layout make_layout(const Table& table, int width, int height);
 
 /// Column and row (fractional) of the table point p; y grows upward on the table and downward
 /// on the screen.
 inline void to_cell(const Layout& l, double table_width, Vec2 p, double& col, double& row) {
     col = l.table_left + p.x * l.cells_per_metre;
-    row = l.table_top + (table_width - p.y) * l.cells_per_metre / 2;
+    row = l.table_top + (table_width - p.y) * l.rows_per_metre;
 }
 
 /// The table point under the centre of cell (col, row).
 inline Vec2 from_cell(const Layout& l, double table_width, double col, double row) {
     return {(col + 0.5 - l.table_left) / l.cells_per_metre,
-            table_width - (row + 0.5 - l.table_top) * 2 / l.cells_per_metre};
+            table_width - (row + 0.5 - l.table_top) / l.rows_per_metre};
 }
 
 /// Everything the renderer needs for one frame. The front end fills it; the renderer draws it.
@@ -143,6 +146,7 @@ struct View {
     double aim_deg = 0;             ///< cue direction, degrees counter-clockwise from +x
     double power = 0;               ///< 0..1 of the power bar
     double speed = 0;               ///< the cue-ball speed that power gives, m/s
+    bool is_break = false;          ///< a break: full power is max_break_speed, not max_shot_speed
     bool time_power = false;        ///< power mode: false = distance, true = oscillating bar
     double side = 0, follow = 0;    ///< tip offsets, fractions of R (-0.5..0.5)
     double elevation_deg = 0;       ///< the cue's elevation above the cloth, degrees (0..80)
