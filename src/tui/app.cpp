@@ -203,6 +203,7 @@ void App::compose_aiming(View& v) const {
         v.object_path = aim_.preview.object_path;
         v.deflect_path = aim_.preview.deflect_path;
     }
+    v.close_up = aim_.close_up_view(game().balls());
     v.show_marker = aim_.show_marker;
     v.marker = aim_.marker;
     // The panel says what the shot will call: the aimed ball into the chosen pocket.

@@ -70,7 +70,8 @@ bool App::nominate_key(const std::string& text) {
 void App::handle_aiming_key(int key, const std::string& text) {
     // Keys move the aim away from the pointer, so its mark goes.
     if (key == key_left || key == key_right || key == key_shift_left || key == key_shift_right ||
-        text == "h" || text == "l" || text == "H" || text == "L" || text == "[" || text == "]")
+        text == "h" || text == "l" || text == "H" || text == "L" || text == "," || text == "." ||
+        text == "[" || text == "]")
         aim_.show_marker = false;
     if (key == key_left || text == "h")
         aim_.aim_deg = turn(aim_.aim_deg, 1);
@@ -80,6 +81,10 @@ void App::handle_aiming_key(int key, const std::string& text) {
         aim_.aim_deg = turn(aim_.aim_deg, 0.1);
     else if (text == "L" || key == key_shift_right)
         aim_.aim_deg = turn(aim_.aim_deg, -0.1);
+    else if (text == ",")
+        aim_.aim_deg = turn(aim_.aim_deg, 0.01);
+    else if (text == ".")
+        aim_.aim_deg = turn(aim_.aim_deg, -0.01);
     else if (key == key_up || text == "k")
         aim_.power = std::min(1.0, aim_.power + power_step);
     else if (key == key_down || text == "j")
@@ -103,6 +108,10 @@ void App::handle_aiming_key(int key, const std::string& text) {
     } else if (text == "g") {
         aim_.show_aid = !aim_.show_aid;
         message_ = aim_.show_aid ? "Aiming aid on" : "Aiming aid off (g brings it back)";
+    } else if (text == "z") {
+        aim_.close_up = !aim_.close_up;
+        message_ = aim_.close_up ? "Close-up of the contact: , and . turn the aim 0.01 degree"
+                                 : "Close-up off (z brings it back)";
     } else if (snooker_play() && nominate_key(text)) {
         return;
     } else if (text == "u" && game().push_out_allowed()) {

@@ -132,6 +132,17 @@ inline Vec2 from_cell(const Layout& l, double table_width, double col, double ro
             table_width - (row + 0.5 - l.table_top) / l.rows_per_metre};
 }
 
+/// The close-up of the contact the aid predicts (z): the cue ball and the ball it meets about
+/// ten times larger, for judging a thin cut. Filled while aiming from the aid's prediction.
+struct CloseUp {
+    bool shown = false; ///< z turned it on
+    int ball = -1;      ///< the object ball met first, -1 when none is (a cushion first)
+    Vec2 cue;           ///< the cue ball's centre at contact (the ghost ball)
+    Vec2 object;        ///< the object ball's centre
+    Vec2 heading{1, 0}; ///< the cue ball's direction as it arrives (unit)
+    Vec2 departure;     ///< the object ball's predicted direction (unit; zero when unknown)
+};
+
 /// Everything the renderer needs for one frame. The front end fills it; the renderer draws it.
 struct View {
     const Table* table = nullptr;                    ///< the table geometry
@@ -157,6 +168,7 @@ struct View {
     Vec2 ghost;                     ///< where the cue ball touches the first object ball
     std::vector<Vec2> object_path;  ///< predicted direction of the object ball after contact
     std::vector<Vec2> deflect_path; ///< predicted direction of the cue ball after contact
+    CloseUp close_up;               ///< the inset of the contact, when shown
     bool show_marker = false;       ///< draw the mouse aim marker
     Vec2 marker;                    ///< aim marker position on the table
     int called_pocket = 0;          ///< 1..6: highlight that pocket
