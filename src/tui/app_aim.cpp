@@ -48,7 +48,7 @@ bool App::nominate_key(const std::string& text) {
 void App::handle_aiming_key(int key, const std::string& text) {
     // Keys move the aim away from the pointer, so its mark goes.
     if (key == key_left || key == key_right || key == key_shift_left || key == key_shift_right ||
-        text == "[" || text == "]")
+        text == "," || text == "." || text == "[" || text == "]")
         aim().show_marker = false;
     if (key == key_left)
         aim().aim_deg = turn(aim().aim_deg, 1);
@@ -58,6 +58,10 @@ void App::handle_aiming_key(int key, const std::string& text) {
         aim().aim_deg = turn(aim().aim_deg, 0.1);
     else if (key == key_shift_right)
         aim().aim_deg = turn(aim().aim_deg, -0.1);
+    else if (text == ",")
+        aim().aim_deg = turn(aim().aim_deg, 0.01);
+    else if (text == ".")
+        aim().aim_deg = turn(aim().aim_deg, -0.01);
     else if (key == key_up || text == "k")
         aim().power = std::min(1.0, aim().power + power_step);
     else if (key == key_down || text == "j")
@@ -87,6 +91,13 @@ void App::handle_aiming_key(int key, const std::string& text) {
         for (AimState& seat : aims_)
             seat.show_aid = shown;
         message_ = aim().show_aid ? "Aiming aid on" : "Aiming aid off (g brings it back)";
+    } else if (text == "z") {
+        // The close-up, like the aid, is this terminal's way of looking: both seats' cues.
+        const bool shown = !aim().close_up;
+        for (AimState& seat : aims_)
+            seat.close_up = shown;
+        message_ = shown ? "Close-up of the contact: , and . turn the aim 0.01 degree"
+                         : "Close-up off (z brings it back)";
     } else if (snooker_play() && nominate_key(text)) {
         return;
     } else if (text == "u" && game().push_out_allowed()) {

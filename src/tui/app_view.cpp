@@ -114,6 +114,7 @@ void App::compose_aiming(View& v) const {
     v.aim_deg = aim().aim_deg;
     v.power = aim().current_power(Clock::now());
     v.speed = speed_from_power(v.power, game().is_break());
+    v.is_break = game().is_break();
     v.time_power = aim().time_power;
     v.side = aim().side;
     v.follow = aim().follow;
@@ -130,6 +131,7 @@ void App::compose_aiming(View& v) const {
         v.object_path = aim().preview.object_path;
         v.deflect_path = aim().preview.deflect_path;
     }
+    v.close_up = aim().close_up_view(game().balls());
     v.show_marker = aim().show_marker;
     v.marker = aim().marker;
     // The panel says what the shot will call: the aimed ball into the chosen pocket.

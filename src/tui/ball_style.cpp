@@ -52,6 +52,10 @@ std::string ball_label(int id, bool utf8, bool wide, BallSet set) {
     return "?";
 }
 
+std::string ball_mark(bool utf8) {
+    return utf8 ? "\u2022" : "*";
+}
+
 Style ball_style(int id, bool colour, BallSet set) {
     Style s;
     if (set == BallSet::snooker) {

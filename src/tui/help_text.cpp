@@ -11,7 +11,7 @@ namespace termpool::tui {
 const std::string& help_text() {
     static const std::string text = "Keys\n"
                                     "Left Right        turn the aim 1 degree\n"
-                                    "Shift+Left Right  turn the aim 0.1 degree\n"
+                                    "Shift+Left Right  0.1 degree; , . 0.01 degree\n"
                                     "Up Down  k j      more / less power\n"
                                     "Space  Enter      shoot\n"
                                     "[ ]               previous / next target ball\n"
@@ -22,6 +22,7 @@ const std::string& help_text() {
                                     "v                 level the cue\n"
                                     "p                 power mode: distance / timed\n"
                                     "g                 aiming aid on / off\n"
+                                    "z                 close-up of the contact on / off\n"
                                     "1-6               call a pocket\n"
                                     "0                 call safety (on / off)\n"
                                     "u                 9-ball, 10-ball: push-out after the break\n"

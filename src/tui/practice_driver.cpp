@@ -150,7 +150,7 @@ std::optional<DriverReply> PracticeDriver::handle_moving(const Input& in, const 
         }
         if (!(in.clicked || in.pressed))
             return DriverReply{};
-        // The ball under the pointer: within a cell of it.
+        // The ball under the pointer: within a cell of its centre.
         const double reach = std::max(2 * params_.ball_radius, 1.5 / layout.cells_per_metre);
         int nearest = -1;
         double best = reach * reach;
