@@ -198,6 +198,18 @@ Palette palette(Colour c) {
     return {-1, -1};
 }
 
+bool set_drawing_modes(bool colour) {
+    cbreak();
+    noecho();
+    nonl();
+    keypad(stdscr, TRUE);
+    if (colour) {
+        start_color();
+        use_default_colors();
+    }
+    return curs_set(0) != ERR;
+}
+
 void restore_terminal_modes() {
     if (motion_tracking_on)
         write_raw(mouse_motion_off);
@@ -220,11 +232,8 @@ Terminal::Terminal(bool ascii, bool no_colour) {
         throw std::runtime_error("cannot use this terminal (is TERM set?)");
     if (!std::getenv("ESCDELAY"))
         set_escdelay(100);
-    cbreak();
-    noecho();
-    nonl();
-    keypad(stdscr, TRUE);
-    cursor_hidden = curs_set(0) != ERR;
+    const bool colour_wanted = !no_colour && !std::getenv("NO_COLOR") && has_colors();
+    cursor_hidden = set_drawing_modes(colour_wanted);
     // Tracking goes on only where curses decodes the reports: terminfo announces them (kmous;
     // vt100 has none) and mousemask finds support. Elsewhere a click would arrive as keys, its
     // button byte a Space that shoots.
@@ -237,14 +246,7 @@ Terminal::Terminal(bool ascii, bool no_colour) {
     caps_.mouse = motion_tracking_on;
     alternate_screen_ = has_string_capability("smcup");
 
-    const bool colour_wanted = !no_colour && !std::getenv("NO_COLOR");
-    if (colour_wanted && has_colors()) {
-        start_color();
-        use_default_colors();
-        caps_.colours = COLORS >= 256 ? 256 : 8;
-    } else {
-        caps_.colours = 0;
-    }
+    caps_.colours = !colour_wanted ? 0 : COLORS >= 256 ? 256 : 8;
 
     struct sigaction action {};
     action.sa_handler = on_signal;

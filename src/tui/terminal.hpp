@@ -65,6 +65,12 @@ private:
 /// sends only the cells that changed. Terminal::draw and the byte benchmark share it.
 void paint(const Grid& grid, int colours, ColourPairs& pairs);
 
+/// Sets the current curses screen up the way the game draws on it: keys unbuffered and not
+/// echoed, Enter as typed, function keys decoded, the cursor hidden; with `colour`, colours
+/// over the terminal's own default. Terminal's constructor and the byte benchmark share it, so
+/// that the benchmark's bytes are the game's. Returns whether the cursor could be hidden.
+bool set_drawing_modes(bool colour);
+
 /// The terminal, for as long as the value lives.
 class Terminal {
 public:
