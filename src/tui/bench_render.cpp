@@ -7,7 +7,6 @@
 
 #include "tui/break_scene.hpp"
 #include "tui/render_bench.hpp"
-#include "tui/render_figures.hpp"
 
 namespace termpool::tui {
 namespace {
@@ -20,11 +19,8 @@ double mean_of(const std::vector<double>& values) {
 
 } // namespace
 
-BreakBytes measure_break_bytes(int width, int height, const std::string& term) {
+BreakBytes break_figures(const PtyCapture& capture) {
     BreakBytes figures;
-    const BreakScene scene;
-    const PtyCapture capture = capture_through_pty(
-        width, height, scene.frames(), [&](int i) { return scene.grid(i, width, height); }, term);
     figures.error = capture.error;
     if (!capture.error.empty() || capture.sent.size() < 2)
         return figures;
@@ -45,6 +41,12 @@ BreakBytes measure_break_bytes(int width, int height, const std::string& term) {
     figures.draw_wall_us = mean_of(capture.draw_wall_us);
     figures.draw_cpu_us = mean_of(capture.draw_cpu_us);
     return figures;
+}
+
+BreakBytes measure_break_bytes(int width, int height, const std::string& term) {
+    const BreakScene scene;
+    return break_figures(capture_through_pty(
+        width, height, scene.frames(), [&](int i) { return scene.grid(i, width, height); }, term));
 }
 
 int bench_render(const std::string& cpu) {

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "tui/render_figures.hpp"
+
 namespace termpool::tui {
 
 /// The bytes a terminal received per animation frame of the break (BreakScene), through a pty.
@@ -20,6 +22,9 @@ struct BreakBytes {
     double draw_wall_us = 0; ///< mean wall time of curses' paint and doupdate per frame
     double draw_cpu_us = 0;  ///< the same, CPU time
 };
+
+/// The figures of a capture of BreakScene: frame 0 the aiming one, the others the animation.
+BreakBytes break_figures(const PtyCapture& capture);
 
 /// The break drawn at `width` x `height` through a pty with terminfo `term`.
 BreakBytes measure_break_bytes(int width, int height, const std::string& term);

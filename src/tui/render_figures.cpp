@@ -205,13 +205,14 @@ PtyCapture capture_through_pty(int width, int height, int frames,
     if (LINES != height || COLS != width)
         resize_term(height, width);
     set_drawing_modes(has_colors());
-    const int colours = !has_colors() ? 0 : COLORS >= 256 ? 256 : 8;
+    Capabilities caps;
+    caps.colours = !has_colors() ? 0 : COLORS >= 256 ? 256 : 8;
     ColourPairs pairs;
     for (int i = 0; i < frames; ++i) {
         const Grid grid = frame(i);
         const auto wall_start = std::chrono::steady_clock::now();
         const double cpu_start = thread_cpu_us();
-        paint(grid, colours, pairs);
+        paint(grid, caps, pairs);
         std::fflush(out);
         capture.draw_cpu_us.push_back(thread_cpu_us() - cpu_start);
         capture.draw_wall_us.push_back(
