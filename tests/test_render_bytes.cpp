@@ -103,6 +103,15 @@ TEST_CASE("bytes through a pty: nothing for an unchanged frame, few for one cell
     }
 }
 
+TEST_CASE("a terminfo entry that is not there is named, with the package that has it",
+          "[tui][render]") {
+    const PtyCapture capture = capture_through_pty(
+        40, 12, 1, [](int) { return Grid(40, 12); }, "termpool-no-such-term");
+    CHECK(capture.sent.empty());
+    CHECK(capture.error.find("termpool-no-such-term") != std::string::npos);
+    CHECK(capture.error.find("ncurses-base") != std::string::npos);
+}
+
 TEST_CASE("a break through a pty: the terminal shows every frame as drawn", "[tui][render]") {
     const BreakScene scene;
     for (const auto& [width, height] : {std::pair{80, 24}, {100, 32}, {200, 60}}) {

@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <fcntl.h>
+#include <memory>
 #include <mutex>
 #include <ncursesw/curses.h>
 #include <poll.h>
@@ -39,11 +40,33 @@ struct Fd {
     explicit Fd(int f) : fd(f) {}
     Fd(const Fd&) = delete;
     Fd& operator=(const Fd&) = delete;
-    ~Fd() { close_now(); }
-    void close_now() {
+    ~Fd() {
         if (fd >= 0)
             ::close(fd);
-        fd = -1;
+    }
+};
+
+// A stdio stream on a copy of a descriptor, closed when the value goes.
+using Stream = std::unique_ptr<FILE, int (*)(FILE*)>;
+Stream stream_on(int fd, const char* mode) {
+    const int copy = fd >= 0 ? ::dup(fd) : -1;
+    FILE* file = copy >= 0 ? ::fdopen(copy, mode) : nullptr;
+    if (!file && copy >= 0)
+        ::close(copy);
+    return Stream(file, &std::fclose);
+}
+
+// A curses screen, ended and freed when the value goes (before its streams are closed).
+struct Screen {
+    SCREEN* screen;
+    explicit Screen(SCREEN* s) : screen(s) {}
+    Screen(const Screen&) = delete;
+    Screen& operator=(const Screen&) = delete;
+    ~Screen() {
+        if (!screen)
+            return;
+        endwin();
+        delscreen(screen);
     }
 };
 
@@ -181,24 +204,18 @@ PtyCapture capture_through_pty(int width, int height, int frames,
     if (!opened)
         return capture;
     const Fd slave(::open(slave_path.c_str(), O_RDWR | O_NOCTTY | O_CLOEXEC));
-    FILE* out = slave.fd >= 0 ? fdopen(dup(slave.fd), "w") : nullptr;
-    FILE* in = slave.fd >= 0 ? fdopen(dup(slave.fd), "r") : nullptr;
+    const Stream out = stream_on(slave.fd, "w");
+    const Stream in = stream_on(slave.fd, "r");
     if (!out || !in) {
         capture.error = "cannot open the pseudo-terminal's slave side " + slave_path;
-        if (out)
-            std::fclose(out);
-        if (in)
-            std::fclose(in);
         return capture;
     }
     MasterReader reader(master.fd);
-    SCREEN* screen = newterm(term.c_str(), out, in);
-    if (!screen) {
+    const Screen screen(newterm(term.c_str(), out.get(), in.get()));
+    if (!screen.screen) {
         capture.error = "no terminfo entry for " + term +
                         " (Debian and Ubuntu: xterm-256color is in the package ncurses-base, "
                         "most others in ncurses-term)";
-        std::fclose(out);
-        std::fclose(in);
         return capture;
     }
     // LINES and COLUMNS in the environment would override the pty's size.
@@ -213,7 +230,7 @@ PtyCapture capture_through_pty(int width, int height, int frames,
         const auto wall_start = std::chrono::steady_clock::now();
         const double cpu_start = thread_cpu_us();
         paint(grid, caps, pairs);
-        std::fflush(out);
+        std::fflush(out.get());
         capture.draw_cpu_us.push_back(thread_cpu_us() - cpu_start);
         capture.draw_wall_us.push_back(
             std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - wall_start)
@@ -228,10 +245,6 @@ PtyCapture capture_through_pty(int width, int height, int frames,
         capture.error = "the pseudo-terminal's output did not arrive";
     capture.sent = reader.frames();
     capture.sent.resize(std::min(capture.sent.size(), static_cast<std::size_t>(frames)));
-    endwin();
-    delscreen(screen);
-    std::fclose(out);
-    std::fclose(in);
     return capture;
 }
 
