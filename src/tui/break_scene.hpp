@@ -2,6 +2,7 @@
 // The frames of a full-power 8-ball break as the game shows them, the same on every run: the
 // benchmarks and the byte tests draw them.
 
+#include <cstdint>
 #include <termpool/params.hpp>
 #include <termpool/simulator.hpp>
 #include <termpool/table.hpp>
