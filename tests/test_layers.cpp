@@ -1,5 +1,5 @@
 // The layers the project promises, checked on its sources: curses only where the terminal is
-// owned (and the byte benchmark that writes frames through curses to a file); the core
+// owned (and the byte benchmark that draws frames through curses into a pty); the core
 // includes no front end, no command and none of src/ but its own files; the commands and the
 // front end do not include each other and use the core through include/termpool/ only; the
 // hall (src/hall) is a layer of its own that uses the core the same way, and neither the core
