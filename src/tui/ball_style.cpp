@@ -65,7 +65,7 @@ Style ball_style(int id, bool colour, BallSet set) {
         s.reverse = !colour;
         if (colour) {
             s.bg = ball_colour(id, set);
-            s.fg = id == snooker_black ? Colour::white : Colour::black;
+            s.fg = id == snooker_black ? Colour::white : Colour::ink;
         }
         return s;
     }
@@ -84,7 +84,7 @@ Style ball_style(int id, bool colour, BallSet set) {
         s.fg = ball_colour(id);
         s.bg = Colour::white;
     } else {
-        s.fg = Colour::black;
+        s.fg = Colour::ink;
         s.bg = ball_colour(id);
     }
     return s;

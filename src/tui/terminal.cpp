@@ -167,6 +167,10 @@ Palette palette(Colour c) {
         return {231, COLOR_WHITE};
     case Colour::black:
         return {16, COLOR_BLACK};
+    case Colour::ink:
+        // Colour 0 rather than 16: a moving ball's digits are sent every frame, and "ESC [30m"
+        // is half of "ESC [38;5;16m". Dark digits on a bright ball read in any palette.
+        return {COLOR_BLACK, COLOR_BLACK};
     case Colour::yellow:
         return {220, COLOR_YELLOW};
     case Colour::blue:

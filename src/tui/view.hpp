@@ -22,6 +22,7 @@ enum class Colour : std::uint8_t {
     pocket,   ///< a pocket hole
     white,    ///< the cue ball, stripes' background, light text
     black,    ///< the 8, dark text
+    ink,      ///< a ball's dark digits: the terminal's own black (the shortest escape)
     yellow,   ///< 1 and 9
     blue,     ///< 2 and 10
     red,      ///< 3 and 11, the power bar
