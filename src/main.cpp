@@ -2,6 +2,7 @@
 
 #include "cli/commands.hpp"
 #include "hall/hall_main.hpp"
+#include "player/saves_command.hpp"
 #include "player/stats_command.hpp"
 #include "tui/bench_render.hpp"
 #include "tui/game_main.hpp"
@@ -27,6 +28,7 @@ void print_usage(std::ostream& out) {
            "commands:\n"
            "  practice [--game G]   practise alone at the table\n"
            "  stats [--reset NAME]  the players' totals over their finished games\n"
+           "  saves [--remove N]    the saved games to continue, newest first; remove one\n"
            "  replay [FILE]         play a saved game back (default: the game saved last)\n"
            "  simulate [FILE]       run the physics simulator on a scenario (standard input\n"
            "                        if FILE is omitted or -)\n"
@@ -99,6 +101,9 @@ int main(int argc, char** argv) {
         }
         if (command == "stats") {
             return termpool::stats_command(rest);
+        }
+        if (command == "saves") {
+            return termpool::saves_command(rest);
         }
     } catch (const std::exception& e) {
         std::cerr << "termpool: error: " << e.what() << '\n';

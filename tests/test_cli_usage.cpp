@@ -39,7 +39,7 @@ TEST_CASE("every command's --help and -h print its usage on stdout and exit 0", 
     const ScratchDir dir("termpool-usage");
     const std::string bin = "'" + termpool_binary() + "'";
     for (const std::string command : {"", "simulate", "bench", "replay", "experiment", "selfplay",
-                                      "practice", "stats", "--ascii", "--player1 Ann"}) {
+                                      "practice", "stats", "saves", "--ascii", "--player1 Ann"}) {
         for (const std::string help : {"--help", "-h"}) {
             const std::string args = command.empty() ? help : command + " " + help;
             INFO("termpool " << args);
@@ -74,6 +74,7 @@ TEST_CASE("the usage names every option of the game and every command", "[cli][u
                              "--version",
                              "practice [--game G]",
                              "stats",
+                             "saves [--remove N]",
                              "replay [FILE]",
                              "simulate [FILE]",
                              "bench [--breaks N] [--shots N] [--seed S]",

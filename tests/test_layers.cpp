@@ -1,5 +1,5 @@
 // The layers the project promises, checked on its sources: curses only where the terminal is
-// owned (and the byte benchmark that writes frames through curses to a file); the core
+// owned (and the byte benchmark that draws frames through curses into a pty); the core
 // includes no front end, no command and none of src/ but its own files; the commands and the
 // front end do not include each other and use the core through include/termpool/ only; the
 // hall (src/hall) is a layer of its own that uses the core the same way, and neither the core
@@ -171,4 +171,43 @@ TEST_CASE("the public headers include only each other and the standard library",
                                    fs::exists(fs::path("include") / inc.target);
         CHECK((public_header || standard_header(inc)));
     }
+}
+
+TEST_CASE("the App's own files stay under 300 lines", "[layers]") {
+    // The table's session holds the loop, the overlays and the dispatch; the modes and the
+    // drivers of the table live in files of their own.
+    for (const char* path : {"src/tui/app.cpp", "src/tui/app.hpp"}) {
+        std::ifstream in(path);
+        REQUIRE(in);
+        int lines = 0;
+        for (std::string line; std::getline(in, line);)
+            ++lines;
+        CAPTURE(path);
+        CHECK(lines < 300);
+    }
+}
+
+TEST_CASE("the App has one action path: hall, practice and replay live in their drivers",
+          "[layers]") {
+    // Every input becomes an action for the table's driver (table_driver.hpp); what differs
+    // between local play, the hall, a replay and practice is the driver's, not the App's.
+    static const std::regex branch(R"(\bin_hall\s*\(|\bpractice_\b|\breplaying_\b|\blink_\b)");
+    int app_files = 0;
+    for (const fs::path& file : sources("src/tui")) {
+        const std::string name = file.filename().string();
+        if (!name.starts_with("app"))
+            continue;
+        ++app_files;
+        std::ifstream in(file);
+        int number = 0;
+        for (std::string line; std::getline(in, line);) {
+            ++number;
+            INFO(file.generic_string() << ":" << number << ": " << line);
+            CHECK_FALSE(std::regex_search(line, branch));
+        }
+    }
+    CHECK(app_files >= 4);
+    for (const char* driver :
+         {"local_driver.cpp", "hall_driver.cpp", "replay_driver.cpp", "practice_driver.cpp"})
+        CHECK(fs::exists(fs::path("src/tui") / driver));
 }

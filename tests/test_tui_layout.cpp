@@ -1,6 +1,8 @@
 // Terminal layout: the table's size and place for several terminal sizes, the panel beside or
 // below it, and the mapping between table metres and cells both ways.
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdlib>
 #include <termpool/table.hpp>
 
 #include "tui/view.hpp"
@@ -61,10 +63,33 @@ TEST_CASE("the table keeps its 2:1 shape with cells twice as tall as wide", "[tu
     for (const auto& [w, h] : sizes) {
         CAPTURE(w, h);
         const Layout l = make_layout(table, w, h);
-        // Columns per metre c, rows per metre c / 2: L c columns by W c / 2 rows, and L = 2 W.
+        // L c columns by W r rows, r about c / 2, and L = 2 W: 4 columns a row, stretched by
+        // at most 2 columns over the length.
         CHECK(l.felt_cols == Approx(table.length * l.cells_per_metre));
-        CHECK(l.felt_rows == Approx(table.width * l.cells_per_metre / 2));
-        CHECK(l.felt_cols == 4 * l.felt_rows);
+        CHECK(l.felt_rows == Approx(table.width * l.rows_per_metre));
+        CHECK(std::abs(l.felt_cols - 4 * l.felt_rows) <= 2);
+    }
+}
+
+TEST_CASE("the long axis and the foot and head spots lie in the middle of cells", "[tui]") {
+    // So that a rack drawn at its balls' own cells is symmetric, and its apex ball is on the
+    // foot spot's cell rather than on either side of an edge by a tenth of a millimetre.
+    for (const TableSize size :
+         {TableSize::seven_foot, TableSize::eight_foot, TableSize::nine_foot, TableSize::snooker}) {
+        const Table t = make_table(size);
+        for (const auto& [w, h] : sizes) {
+            CAPTURE(static_cast<int>(size), w, h);
+            const Layout l = make_layout(t, w, h);
+            REQUIRE(l.fits);
+            CHECK(l.felt_rows % 2 == 1);
+            CHECK(l.felt_cols % 4 == 2);
+            for (const Vec2 spot : {t.foot_spot(), t.head_spot()}) {
+                double col, row;
+                to_cell(l, t.width, spot, col, row);
+                CHECK(col - std::floor(col) == Approx(0.5));
+                CHECK(row - std::floor(row) == Approx(0.5));
+            }
+        }
     }
 }
 
@@ -94,11 +119,12 @@ TEST_CASE("the largest table that fits: bigger terminals never get smaller table
         CHECK(l.felt_rows >= previous);
         previous = l.felt_rows;
     }
-    // At 80x24 the surface is 64 x 16: 16 rows + 2 rails + 2 status rows + 4 panel rows (title,
-    // players, and the legend with the help hint) = 24.
+    // At 80x24 the surface is 62 x 15: 16 rows + 2 rails + 2 status rows + 4 panel rows (title,
+    // players, and the legend with the help hint) = 24 would fit, but the rows are odd; 62
+    // columns is 4 a row, and 2 more to put the spots in the middle of columns.
     const Layout l = make_layout(table, 80, 24);
-    CHECK(l.felt_rows == 16);
-    CHECK(l.felt_cols == 64);
+    CHECK(l.felt_rows == 15);
+    CHECK(l.felt_cols == 62);
 }
 
 TEST_CASE("below 40x14 the layout does not fit", "[tui]") {
@@ -160,7 +186,7 @@ TEST_CASE("the 7ft and 8ft tables are laid out the same way", "[tui]") {
         const Table t = make_table(size);
         const Layout l = make_layout(t, 100, 32);
         REQUIRE(l.fits);
-        CHECK(l.felt_cols == 4 * l.felt_rows);
+        CHECK(std::abs(l.felt_cols - 4 * l.felt_rows) <= 2);
         CHECK(frame_of(l).inside(100, 32));
     }
 }

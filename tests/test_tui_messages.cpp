@@ -1,7 +1,11 @@
 // The message line: the referee's verdicts in the players' words.
 #include <catch2/catch.hpp>
 
+#include <termpool/record.hpp>
+#include <variant>
+
 #include "tui/messages.hpp"
+#include "tui/rack_log.hpp"
 
 using namespace termpool;
 using namespace termpool::tui;
@@ -79,4 +83,22 @@ TEST_CASE("a snooker foul names the points and says in-off, not scratch",
     v.miss = true;
     CHECK(verdict_message(v, 1, names) ==
           "Foul and a miss: wrong ball first \u2014 7 points to Bob; Bob chooses");
+}
+
+TEST_CASE("the rack's log tells each shot: shooter, call, pots and verdict", "[tui][messages]") {
+    const auto parsed =
+        parse_record("termpool-record 1\ngame 8ball\ntable 9ft\nseed 3\nbreaker 1\n"
+                     "player1 Ann\nplayer2 Bob\nshot 12 0 0 0\nshot 2 90 0 0\nend\n");
+    REQUIRE(std::holds_alternative<GameRecord>(parsed));
+    const GameRecord& record = std::get<GameRecord>(parsed);
+    const std::vector<std::string> log = rack_log(record, 1);
+    REQUIRE(log.size() == 2);
+    CHECK(log[0] == "1. Ann, break: pocketed 3 \u2014 Ann shoots again");
+    CHECK(log[1] == "2. Ann: nothing pocketed \u2014 Switch player: Bob to shoot");
+    // Another rack has no shots yet; a record that does not replay has no log.
+    CHECK(rack_log(record, 2).empty());
+    GameRecord broken = record;
+    broken.actions.insert(broken.actions.begin(), RecordedAction{});
+    broken.actions.front().kind = RecordedAction::Kind::rack;
+    CHECK(rack_log(broken, 1).empty());
 }

@@ -132,7 +132,8 @@ TEST_CASE("a race: the score after a rack, the next rack, the match winner", "[t
     REQUIRE(final_score.match_winner() != 0);
     write_save(done.path, whole);
     Tmux t;
-    t.start(game(done.path, "--resume"));
+    // A finished match is never offered to continue: it is opened by its file.
+    t.start(game(done.path, "--resume " + done.path + "/termpool/game.save"));
     REQUIRE(t.wait_for_text("wins the match"));
     const std::string winner = final_score.match_winner() == 1 ? "Ann" : "Bob";
     CHECK(t.screen().find(winner + " wins the match") != std::string::npos);

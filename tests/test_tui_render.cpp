@@ -14,6 +14,7 @@
 #include <termpool/rack.hpp>
 #include <termpool/table_physics.hpp>
 
+#include "ball_cells.hpp"
 #include "tui/ball_style.hpp"
 #include "tui/grid_dump.hpp"
 #include "tui/help_text.hpp"
@@ -24,7 +25,10 @@
 
 using namespace termpool;
 using namespace termpool::tui;
+using termpool::test::cell_at;
 using termpool::test::crowded_view;
+using termpool::test::glyphs_of;
+using termpool::test::misplaced_balls;
 using termpool::test::rack_view;
 
 namespace {
@@ -124,11 +128,18 @@ std::string words(const std::string& text) {
     return out;
 }
 
-// True for a cell of a ball's label: a digit, a letter A-F or the cue ball.
+// True for a cell of a ball's label: a digit, a letter A-F, the cue ball or the mark of a
+// ball whose number gave way.
 bool is_label_glyph(const std::string& glyph, bool utf8) {
-    return glyph == ball_label(0, utf8, false) ||
+    return glyph == ball_label(0, utf8, false) || glyph == ball_mark(utf8) ||
            (glyph.size() == 1 && (std::isdigit(static_cast<unsigned char>(glyph[0])) ||
                                   (glyph[0] >= 'A' && glyph[0] <= 'F')));
+}
+
+// What is wrong with where v's balls are drawn in g (see misplaced_balls).
+std::vector<std::string> misplaced(const Grid& g, const View& v, const Layout& l, bool utf8) {
+    return misplaced_balls(glyphs_of(g), v.balls, l, table.width,
+                           {utf8, wide_labels(l.cells_per_metre, R), ball_set(v)});
 }
 
 bool is_cue_glyph(const std::string& g) {
@@ -230,7 +241,7 @@ TEST_CASE("ball styles: solids on their colour, stripes on white, monochrome by 
             CHECK(c.bg == Colour::black);
             CHECK((m.reverse && m.bold));
         } else if (b.id < 8) {
-            CHECK(c.fg == Colour::black);
+            CHECK(c.fg == Colour::ink); // dark digits in the terminal's own black
             CHECK(c.bold);
             CHECK(c.bg != Colour::white);
             CHECK(m.reverse);
@@ -387,18 +398,15 @@ TEST_CASE("lines never cover a ball", "[tui]") {
                 v.show_aid = aid;
                 const Layout l = make_layout(table, w, h);
                 const Grid g = render(v, l, mode.caps, w, h);
-                const int fx = static_cast<int>(l.table_left), fy = static_cast<int>(l.table_top);
                 const bool wide = wide_labels(l.cells_per_metre, R);
-                std::size_t label_cells = 0;
-                for (const Ball& b : v.balls)
-                    label_cells += b.id == 0 ? 1 : ball_label(b.id, true, wide).size();
-                std::size_t seen = 0;
-                for (int y = fy; y < fy + l.felt_rows; ++y)
-                    for (int x = fx; x < fx + l.felt_cols; ++x) {
-                        const std::string& glyph = g.at(x, y).glyph;
-                        seen += is_label_glyph(glyph, mode.caps.utf8);
-                    }
-                CHECK(seen == label_cells);
+                View bare = v;
+                bare.aiming = false;
+                const Grid without = render(bare, l, mode.caps, w, h);
+                CHECK(misplaced(g, v, l, mode.caps.utf8) == std::vector<std::string>{});
+                for (const Ball& b : v.balls) {
+                    const auto [x, y] = cell_at(l, table.width, b.position);
+                    CHECK(g.at(x, y).glyph == without.at(x, y).glyph);
+                }
                 if (w != 200)
                     continue;
                 // Big enough that each ball has its own cell: the one holding its centre.
@@ -519,6 +527,7 @@ TEST_CASE("calling a pocket labels all six and lights the called one", "[tui]") 
 
 TEST_CASE("the status rows show power, speed, mode and spin", "[tui]") {
     View v = rack_view(table);
+    v.is_break = false;
     v.power = 0.5;
     v.speed = 3.4;
     v.side = 0.2;
@@ -539,8 +548,47 @@ TEST_CASE("the status rows show power, speed, mode and spin", "[tui]") {
         CHECK(second.rfind("spin: side +0.2 follow -0.3", 0) == 0);
         CHECK(second.find("timed") != std::string::npos);
         CHECK(g.at(7, l.status_y).style.fg == Colour::red);
+        // 3.4 m/s of a scale to the break's 12 m/s: 8.5 of 30 cells; past 7 m/s, out of a
+        // shot's reach, dots.
         if (!utf8)
-            CHECK(first.find("[###############---------------]") != std::string::npos);
+            CHECK(first.find("[#########---------............]") != std::string::npos);
+    }
+}
+
+TEST_CASE("the power bar's scale reaches the break's speed: a full break is not a full shot",
+          "[tui]") {
+    const auto bar = [](double speed, bool is_break, bool utf8) {
+        View v = rack_view(table);
+        v.is_break = is_break;
+        v.power = power_from_speed(speed, is_break);
+        v.speed = speed;
+        const Layout l = make_layout(table, 100, 32);
+        const Grid g = render(v, l, {256, utf8}, 100, 32);
+        const std::string row = row_text(g, l.status_y);
+        const std::size_t open = row.find('['), close = row.find(']');
+        REQUIRE(close != std::string::npos);
+        return row.substr(open + 1, close - open - 1);
+    };
+    const auto count = [](const std::string& s, const std::string& glyph) {
+        int n = 0;
+        for (std::size_t at = s.find(glyph); at != std::string::npos; at = s.find(glyph, at + 1))
+            ++n;
+        return n;
+    };
+    for (const bool utf8 : {true, false}) {
+        CAPTURE(utf8);
+        const std::string shot = bar(max_shot_speed, false, utf8);
+        const std::string brk = bar(max_break_speed, true, utf8);
+        CAPTURE(shot, brk);
+        CHECK(shot != brk);
+        const std::string full = utf8 ? "\u2588" : "#";
+        // The break fills all 30 cells; the shot 7/12 of them, the rest dotted out of reach.
+        CHECK(count(brk, full) == 30);
+        CHECK(count(shot, full) == (utf8 ? 17 : 18));
+        CHECK(count(shot, utf8 ? "\u00B7" : ".") == 12);
+        // Half power of each: the break's bar is the longer, as its speed is.
+        CHECK(count(bar(speed_from_power(0.5, true), true, utf8), full) >
+              count(bar(speed_from_power(0.5, false), false, utf8), full));
     }
 }
 
@@ -622,10 +670,17 @@ TEST_CASE("overlays and help are boxes on top of everything", "[tui]") {
     const int pages = help_page_count(120, 40);
     for (v.help_page = 0; v.help_page < pages; ++v.help_page)
         all += screen_text(draw(v, 120, 40));
-    for (const char* key :
-         {"Left Right", "H L",   "Up Down", "Space", "[ ]",   "w a s d", "W A S D",
-          "c ",         "p ",    "g ",      "1-6",   "n ",    "x ",      "? ",
-          "q ",         "Mouse", "move",    "drag",  "shoot", "release"})
+    for (const char* key : {"Left Right", "Shift+Left Right",
+                            "l ",         "Up Down",
+                            "Space",      "[ ]",
+                            "w a s d",    "W A S D",
+                            "c ",         "p ",
+                            "g ",         "1-6",
+                            "n ",         "x ",
+                            "? ",         "q ",
+                            "Mouse",      "move",
+                            "drag",       "shoot",
+                            "release"})
         CHECK(all.find(key) != std::string::npos);
 }
 
@@ -635,48 +690,6 @@ const std::pair<int, int> all_sizes[] = {{80, 24},  {100, 32}, {200, 60}, {120, 
                                          {200, 40}, {40, 14},  {60, 40},  {300, 90}};
 const Capabilities tiers[] = {{256, true},  {8, true},  {0, true},
                               {256, false}, {8, false}, {0, false}};
-
-// The labels on the felt, row by row: each run of digits is one token (what a reader sees as
-// one number), each letter and the cue ball one token of its own.
-std::vector<std::string> felt_tokens(const Grid& g, const Layout& l, bool utf8) {
-    std::vector<std::string> tokens;
-    const int fx = static_cast<int>(std::lround(l.table_left));
-    const int fy = static_cast<int>(std::lround(l.table_top));
-    for (int y = fy; y < fy + l.felt_rows; ++y) {
-        std::string run;
-        for (int x = fx; x <= fx + l.felt_cols; ++x) {
-            const std::string glyph = x < fx + l.felt_cols ? g.at(x, y).glyph : " ";
-            const bool digit =
-                glyph.size() == 1 && std::isdigit(static_cast<unsigned char>(glyph[0]));
-            if (digit) {
-                run += glyph;
-                continue;
-            }
-            if (!run.empty())
-                tokens.push_back(run), run.clear();
-            if ((glyph.size() == 1 && glyph[0] >= 'A' && glyph[0] <= 'F') ||
-                glyph == ball_label(0, utf8, false))
-                tokens.push_back(glyph);
-        }
-    }
-    std::sort(tokens.begin(), tokens.end());
-    return tokens;
-}
-
-// The labels the balls on the table should have: their numbers, but the letters A-F for
-// 10-15 where a ball is under three columns wide.
-std::vector<std::string> expected_tokens(const View& v, const Layout& l, bool utf8) {
-    std::vector<std::string> tokens;
-    const bool wide = 2 * R * l.cells_per_metre >= 3;
-    for (const Ball& b : v.balls)
-        if (b.state != MotionState::pocketed)
-            tokens.push_back(b.id == 0 ? (utf8 ? "\u25CF" : "o")
-                             : b.id < 10 || wide
-                                 ? std::to_string(b.id)
-                                 : std::string(1, static_cast<char>('A' + b.id - 10)));
-    std::sort(tokens.begin(), tokens.end());
-    return tokens;
-}
 
 View nine_ball_view() {
     View v = rack_view(table);
@@ -703,7 +716,8 @@ View rack_without_one() {
 
 } // namespace
 
-TEST_CASE("every ball reads as its own number or letter, in every tier and at every size",
+TEST_CASE("every ball is drawn on the cell of its centre and no two numbers run together, in "
+          "every tier and at every size",
           "[tui]") {
     const std::pair<const char*, View> views[] = {{"rack", rack_view(table)},
                                                   {"crowded", crowded_view(table)},
@@ -716,8 +730,23 @@ TEST_CASE("every ball reads as its own number or letter, in every tier and at ev
                 CAPTURE(name, w, h, caps.colours, caps.utf8);
                 const Layout l = make_layout(table, w, h);
                 const Grid g = render(v, l, caps, w, h);
-                // Every ball once, by its own label, and no two numbers run together.
-                CHECK(felt_tokens(g, l, caps.utf8) == expected_tokens(v, l, caps.utf8));
+                CHECK(misplaced(g, v, l, caps.utf8) == std::vector<std::string>{});
+                // A ball with a cell of its own and no number beside it shows its own label.
+                for (const Ball& b : v.balls) {
+                    if (b.state == MotionState::pocketed)
+                        continue;
+                    const auto [x, y] = cell_at(l, table.width, b.position);
+                    bool crowded = false;
+                    for (const Ball& o : v.balls)
+                        if (&o != &b && o.state != MotionState::pocketed) {
+                            const auto [ox, oy] = cell_at(l, table.width, o.position);
+                            crowded = crowded || (oy == y && std::abs(ox - x) <= 2);
+                        }
+                    const bool wide = wide_labels(l.cells_per_metre, R);
+                    const std::string label = ball_label(b.id, caps.utf8, wide);
+                    if (!crowded && label.size() == 1)
+                        CHECK(g.at(x, y).glyph == label);
+                }
             }
     // Two-cell numbers where a ball is three columns across, single letters below that.
     CHECK(wide_labels(make_layout(table, 200, 60).cells_per_metre, R));
@@ -725,6 +754,36 @@ TEST_CASE("every ball reads as its own number or letter, in every tier and at ev
     CHECK(ball_label(12, true, false) == "C");
     CHECK(ball_label(12, false, true) == "12");
     CHECK(ball_label(9, true, false) == "9");
+}
+
+TEST_CASE("where two numbers would touch, one gives way to a mark in its ball's style", "[tui]") {
+    // The 1 and the 7 in neighbouring cells (overlapping: the renderer draws what it is
+    // given): drawn first, the 1 keeps its number.
+    View v = cue_only(0, {0.3, 0.3});
+    v.aiming = false;
+    Ball one, seven, twelve;
+    one.id = 1, seven.id = 7, twelve.id = 12;
+    const Layout l = make_layout(table, 100, 32);
+    one.position = from_cell(l, table.width, 40, 10);
+    seven.position = from_cell(l, table.width, 41, 10);
+    twelve.position = from_cell(l, table.width, 42, 10);
+    v.balls.insert(v.balls.end(), {seven, one, twelve});
+    for (const Capabilities& caps : tiers) {
+        CAPTURE(caps.colours, caps.utf8);
+        const Grid g = render(v, l, caps, 100, 32);
+        CHECK(g.at(40, 10).glyph == "1");
+        CHECK(g.at(41, 10).glyph == ball_mark(caps.utf8));
+        CHECK(g.at(41, 10).style == (caps.colours ? ball_style(7, true) : ball_style(7, false)));
+        // A letter reads as no part of a number: the 12 keeps its letter beside the 7.
+        CHECK(g.at(42, 10).glyph == "C");
+        CHECK(misplaced(g, v, l, caps.utf8) == std::vector<std::string>{});
+    }
+    // Two balls in one cell: the first drawn covers the other; the cue ball is always drawn.
+    Ball cue_ball = v.balls[0];
+    cue_ball.position = one.position + Vec2{0.001, 0};
+    v.balls = {one, cue_ball};
+    const Grid g = render(v, l, {256, true}, 100, 32);
+    CHECK(g.at(40, 10).glyph == "\u25CF");
 }
 
 TEST_CASE("the 8-colour tier draws the 256-colour frame: the terminal maps the roles", "[tui]") {
@@ -1026,19 +1085,12 @@ TEST_CASE("an overlay box covers no ball", "[tui]") {
             const Grid g = render(v, l, caps, w, h);
             CHECK(screen_text(g).find("Bob, choose:") != std::string::npos);
             // Every ball's cells are as they were without the box.
-            REQUIRE(felt_tokens(bare, l, caps.utf8) == expected_tokens(v, l, caps.utf8));
-            const int fx = static_cast<int>(std::lround(l.table_left));
-            const int fy = static_cast<int>(std::lround(l.table_top));
-            int balls = 0;
-            for (int y = fy; y < fy + l.felt_rows; ++y)
-                for (int x = fx; x < fx + l.felt_cols; ++x) {
-                    const std::string& glyph = bare.at(x, y).glyph;
-                    if (is_label_glyph(glyph, caps.utf8)) {
-                        ++balls;
-                        CHECK(g.at(x, y) == bare.at(x, y));
-                    }
-                }
-            CHECK(balls >= 10);
+            REQUIRE(misplaced(bare, v, l, caps.utf8) == std::vector<std::string>{});
+            for (const Ball& b : v.balls) {
+                const auto [x, y] = cell_at(l, table.width, b.position);
+                CHECK(is_label_glyph(bare.at(x, y).glyph, caps.utf8));
+                CHECK(g.at(x, y) == bare.at(x, y));
+            }
         }
     // Centred when the middle is clear.
     View empty = v;

@@ -15,6 +15,7 @@
 #include <termpool/table_physics.hpp>
 #include <vector>
 
+#include "ball_cells.hpp"
 #include "tmux_session.hpp"
 #include "tui/ball_style.hpp"
 #include "tui/braille.hpp"
@@ -288,7 +289,8 @@ TEST_CASE("snooker balls show their values: reds 1, yellow 2 to black 7, in ever
     CHECK(colours.count(Colour::red) == 0);
     CHECK(ball_style(snooker_black, true, BallSet::snooker).fg == Colour::white);
 
-    // On the cloth: fifteen 1s, one of each colour and the cue ball, at every size that has
+    // On the cloth: one of each colour and the cue ball, and a 1 on each cell that holds the
+    // centre of a red and of no colour (reds a cell apart share it), at every size that has
     // room for the pack, in every tier.
     const View v = rack_view();
     REQUIRE(ball_set(v) == BallSet::snooker);
@@ -313,7 +315,16 @@ TEST_CASE("snooker balls show their values: reds 1, yellow 2 to black 7, in ever
                     if (c.glyph == ball_label(0, mode.caps.utf8, false))
                         ++seen["cue"];
                 }
-            CHECK(seen["1"] == 15);
+            std::set<Cell2> red_cells, others;
+            for (const Ball& b : v.balls)
+                (is_snooker_red(b.id) ? red_cells : others).insert(cell_of(l, b.position));
+            std::size_t reds = 0;
+            for (const Cell2 c : red_cells)
+                reds += others.count(c) == 0;
+            CHECK(seen["1"] == static_cast<int>(reds));
+            CHECK(termpool::test::misplaced_balls(
+                      termpool::test::glyphs_of(g), v.balls, l, snooker.width,
+                      {mode.caps.utf8, false, BallSet::snooker}) == std::vector<std::string>{});
             for (const char* colour : {"2", "3", "4", "5", "6", "7"}) {
                 CAPTURE(colour);
                 CHECK(seen[colour] == 1);
@@ -384,9 +395,12 @@ TEST_CASE("pool balls on the snooker table keep their numbers, and their head st
         for (int y = fy; y < fy + l.felt_rows; ++y)
             for (int x = fx; x < fx + l.felt_cols; ++x)
                 felt += g.at(x, y).glyph;
-        // 1..9 and A..F at this size, as on a pool table.
-        for (int id = 1; id <= 15; ++id)
-            CHECK(felt.find(ball_label(id, mode.caps.utf8, false)) != std::string::npos);
+        // 1..9 and A..F at this size, as on a pool table, each on its own cell (or a mark
+        // where its number would touch another).
+        CHECK(termpool::test::misplaced_balls(
+                  termpool::test::glyphs_of(g), v.balls, l, snooker.width,
+                  {mode.caps.utf8, false, BallSet::pool}) == std::vector<std::string>{});
+        CHECK(felt.find("8") != std::string::npos); // drawn first after the cue ball
         // The kitchen's line beside the baulk line, and the snooker marks still there.
         const int head = cell_of(l, {snooker.head_string_x(), 0.1}).x;
         const int line = cell_of(l, {snooker_baulk_x(snooker), 0.1}).x;
@@ -421,11 +435,11 @@ TEST_CASE("the snooker table keeps its 2:1 shape and fits the terminal at every 
         CAPTURE(w, h);
         const Layout l = make_layout(snooker, w, h);
         REQUIRE(l.fits);
-        // Rows per metre are half the columns per metre: W c / 2 rows, L c columns (cut to
-        // whole cells), so a metre looks as long both ways.
-        CHECK(l.felt_rows == Approx(snooker.width * l.cells_per_metre / 2));
-        CHECK(l.felt_cols == static_cast<int>(std::floor(snooker.length * l.cells_per_metre)));
-        CHECK(std::abs(l.felt_cols - 4 * l.felt_rows) <= 1 + l.felt_rows / 100);
+        // Rows per metre r about half the columns per metre c: W r rows, L c columns, the
+        // columns within 2 of the true shape's 2 L r, so a metre looks as long both ways.
+        CHECK(l.felt_rows == Approx(snooker.width * l.rows_per_metre));
+        CHECK(l.felt_cols == Approx(snooker.length * l.cells_per_metre));
+        CHECK(std::abs(l.felt_cols - 2 * snooker.length * l.rows_per_metre) <= 2);
         const int x0 = static_cast<int>(std::lround(l.table_left)) - rail_cols;
         const int y0 = static_cast<int>(std::lround(l.table_top)) - rail_rows;
         CHECK(x0 >= 0);

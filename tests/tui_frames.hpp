@@ -28,6 +28,7 @@ inline tui::View rack_view(const Table& table, double aim_deg = 1.5) {
     v.aim_deg = aim_deg;
     v.power = 0.55;
     v.speed = tui::speed_from_power(v.power, true);
+    v.is_break = true;
     v.side = 0.1;
     v.follow = -0.2;
     const tui::AimPreview p =

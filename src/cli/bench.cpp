@@ -32,7 +32,8 @@ constexpr const char* usage = "usage: termpool bench [--breaks N] [--shots N] [-
                               "              10000)\n"
                               "  --seed S    seed of the break angles and the shots (default 1)\n"
                               "  --render    time the terminal front end instead: frame\n"
-                              "              composition and bytes sent per animation frame\n";
+                              "              composition, and the bytes a terminal receives\n"
+                              "              per frame of a break (through a pty)\n";
 
 constexpr double break_speed = 12.0;        // m/s, a firm break
 constexpr double break_angle_jitter = 0.5;  // degrees either way, so that breaks differ

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "tui/aid_path.hpp"
 
@@ -113,6 +114,30 @@ void AimState::update_preview(const Table& table, const PhysicsParams& params,
             }
         }
     }
+}
+
+CloseUp AimState::close_up_view(const std::vector<Ball>& balls) const {
+    CloseUp c;
+    c.shown = close_up;
+    const double a = aim_deg * std::numbers::pi / 180;
+    c.heading = {std::cos(a), std::sin(a)};
+    // The cue ball's last stretch before the contact: squirt and swerve turn it off the aim.
+    const std::vector<Vec2>& path = preview.cue_path;
+    if (path.size() >= 2 && length(path.back() - path[path.size() - 2]) > 0)
+        c.heading = normalized(path.back() - path[path.size() - 2]);
+    if (!preview.has_ghost || preview.object_ball < 0)
+        return c;
+    for (const Ball& b : balls)
+        if (b.id == preview.object_ball && b.state != MotionState::pocketed) {
+            c.ball = b.id;
+            c.object = b.position;
+        }
+    c.cue = preview.ghost;
+    // The object ball's first direction: under guided its line goes on off a cushion.
+    const std::vector<Vec2>& out = preview.object_path;
+    if (out.size() >= 2 && length(out[1] - out[0]) > 0)
+        c.departure = normalized(out[1] - out[0]);
+    return c;
 }
 
 } // namespace termpool::tui

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "tui/aim.hpp"
+#include "tui/view.hpp"
 
 namespace termpool::tui {
 
@@ -29,6 +30,7 @@ struct AimState {
     double side = 0, follow = 0;    ///< tip offsets, fractions of R
     double elevation_deg = 0;       ///< the cue's elevation above the cloth, degrees
     bool show_aid = true;           ///< draw the aiming aid
+    bool close_up = false;          ///< draw the close-up of the contact (z)
     bool show_marker = false;       ///< draw the pointer's mark
     Vec2 marker;                    ///< where the pointer aimed
     bool dragging = false;          ///< a button is held: its distance sets the power
@@ -75,6 +77,9 @@ struct AimState {
     void update_preview(const Table& table, const PhysicsParams& params,
                         const std::vector<Ball>& balls, bool is_break,
                         const std::function<bool(int ball)>& calls_pocket);
+    /// The close-up of the contact the aid predicts, for View::close_up (not shown unless
+    /// `close_up` is on; no ball when the cue ball meets a cushion first).
+    CloseUp close_up_view(const std::vector<Ball>& balls) const;
 };
 
 } // namespace termpool::tui

@@ -22,46 +22,24 @@ Vec2 App::cue_position() const {
     return table_.head_spot();
 }
 
-bool App::calls_pocket(int target) const {
-    return !practice_ && match_.calls_pocket(target); // no referee, no calls
-}
-
-std::vector<int> App::targets() const {
-    if (!practice_)
-        return game().legal_targets();
-    std::vector<int> all; // no referee: every ball is fair
-    for (const Ball& b : game().balls())
-        if (b.id != 0 && b.state != MotionState::pocketed)
-            all.push_back(b.id);
-    return all;
-}
-
 void App::aim_at_easiest() {
-    aim_.aim_at_target(rank_openings(table_, game().balls(), params_.ball_radius, cue_position(),
-                                     targets(), aim_.assist));
+    aim().aim_at_target(rank_openings(table_, game().balls(), params_.ball_radius, cue_position(),
+                                      driver_->targets(), aim().assist));
     update_preview();
 }
 
 void App::update_preview() {
-    aim_.update_preview(table_, params_, game().balls(), game().is_break(),
-                        [this](int ball) { return calls_pocket(ball); });
-    propose_nomination();
-}
-
-bool App::snooker_play() const {
-    return !practice_ && game().type() == GameType::snooker;
-}
-
-void App::propose_nomination() {
+    aim().update_preview(table_, params_, game().balls(), game().is_break(),
+                         [this](int ball) { return driver_->calls_pocket(ball); });
     if (snooker_play())
-        tui::propose_nomination(game(), aim_);
+        propose_nomination(game(), aim());
 }
 
 bool App::nominate_key(const std::string& text) {
     // Snooker's digits name a colour by its value; the pool keys for pockets and safety mean
     // nothing here.
     const std::optional<std::string> said =
-        nomination_key(game(), aim_, text, name(game().shooter()));
+        nomination_key(game(), aim(), text, name(game().shooter()));
     if (said)
         message_ = *said;
     return said.has_value();
@@ -70,57 +48,74 @@ bool App::nominate_key(const std::string& text) {
 void App::handle_aiming_key(int key, const std::string& text) {
     // Keys move the aim away from the pointer, so its mark goes.
     if (key == key_left || key == key_right || key == key_shift_left || key == key_shift_right ||
-        text == "h" || text == "l" || text == "H" || text == "L" || text == "[" || text == "]")
-        aim_.show_marker = false;
-    if (key == key_left || text == "h")
-        aim_.aim_deg = turn(aim_.aim_deg, 1);
-    else if (key == key_right || text == "l")
-        aim_.aim_deg = turn(aim_.aim_deg, -1);
-    else if (text == "H" || key == key_shift_left)
-        aim_.aim_deg = turn(aim_.aim_deg, 0.1);
-    else if (text == "L" || key == key_shift_right)
-        aim_.aim_deg = turn(aim_.aim_deg, -0.1);
+        text == "," || text == "." || text == "[" || text == "]")
+        aim().show_marker = false;
+    if (key == key_left)
+        aim().aim_deg = turn(aim().aim_deg, 1);
+    else if (key == key_right)
+        aim().aim_deg = turn(aim().aim_deg, -1);
+    else if (key == key_shift_left)
+        aim().aim_deg = turn(aim().aim_deg, 0.1);
+    else if (key == key_shift_right)
+        aim().aim_deg = turn(aim().aim_deg, -0.1);
+    else if (text == ",")
+        aim().aim_deg = turn(aim().aim_deg, 0.01);
+    else if (text == ".")
+        aim().aim_deg = turn(aim().aim_deg, -0.01);
     else if (key == key_up || text == "k")
-        aim_.power = std::min(1.0, aim_.power + power_step);
+        aim().power = std::min(1.0, aim().power + power_step);
     else if (key == key_down || text == "j")
-        aim_.power = std::max(0.0, aim_.power - power_step);
+        aim().power = std::max(0.0, aim().power - power_step);
     else if (key == key_enter || text == " ") {
         shoot();
         return;
     } else if (text == "[" || text == "]") {
-        aim_.target_index += text == "]" ? 1 : -1;
-        const int n = static_cast<int>(targets().size());
+        aim().target_index += text == "]" ? 1 : -1;
+        const int n = static_cast<int>(driver_->targets().size());
         if (n > 0)
-            aim_.target_index = (aim_.target_index % n + n) % n;
+            aim().target_index = (aim().target_index % n + n) % n;
         aim_at_easiest();
         return;
     } else if (text == "p") {
-        aim_.time_power = !aim_.time_power;
-        aim_.power_start = Clock::now();
-        message_ = aim_.time_power
+        // How the power is set is the terminal's way, for every seat.
+        const bool timed = !aim().time_power;
+        for (AimState& seat : aims_) {
+            seat.time_power = timed;
+            seat.power_start = Clock::now();
+        }
+        message_ = aim().time_power
                        ? "Timed power: the bar swings, Space stops it and shoots"
                        : "Distance power: the keys, or the pointer's distance in a drag";
     } else if (text == "g") {
-        aim_.show_aid = !aim_.show_aid;
-        message_ = aim_.show_aid ? "Aiming aid on" : "Aiming aid off (g brings it back)";
+        const bool shown = !aim().show_aid;
+        for (AimState& seat : aims_)
+            seat.show_aid = shown;
+        message_ = aim().show_aid ? "Aiming aid on" : "Aiming aid off (g brings it back)";
+    } else if (text == "z") {
+        // The close-up, like the aid, is this terminal's way of looking: both seats' cues.
+        const bool shown = !aim().close_up;
+        for (AimState& seat : aims_)
+            seat.close_up = shown;
+        message_ = shown ? "Close-up of the contact: , and . turn the aim 0.01 degree"
+                         : "Close-up off (z brings it back)";
     } else if (snooker_play() && nominate_key(text)) {
         return;
     } else if (text == "u" && game().push_out_allowed()) {
-        aim_.push_out = !aim_.push_out;
+        aim().push_out = !aim().push_out;
         message_ =
-            aim_.push_out ? "Push-out: no foul but a scratch; then the other player chooses" : "";
-    } else if (text == "0" && !practice_) {
-        aim_.safety = !aim_.safety;
-        message_ = aim_.safety ? "Safety called: the turn passes whatever drops" : "";
+            aim().push_out ? "Push-out: no foul but a scratch; then the other player chooses" : "";
+    } else if (text == "0" && driver_->referee()) {
+        aim().safety = !aim().safety;
+        message_ = aim().safety ? "Safety called: the turn passes whatever drops" : "";
     } else if (text.size() == 1 && text[0] >= '1' && text[0] <= '6') {
-        aim_.called_pocket = text[0] - '0';
-        aim_.pocket_chosen = true;
-        aim_.safety = false;
-    } else if (!aim_.elevation_key(text)) {
-        aim_.spin_key(text);
+        aim().called_pocket = text[0] - '0';
+        aim().pocket_chosen = true;
+        aim().safety = false;
+    } else if (!aim().elevation_key(text)) {
+        aim().spin_key(text);
     }
-    aim_.side = std::round(aim_.side * 100) / 100;
-    aim_.follow = std::round(aim_.follow * 100) / 100;
+    aim().side = std::round(aim().side * 100) / 100;
+    aim().follow = std::round(aim().follow * 100) / 100;
     update_preview();
 }
 
@@ -132,36 +127,36 @@ void App::handle_aiming_mouse(const Input& in) {
     }
     if (in.clicked) {
         if (const int pocket = pocket_at(table_, layout_, in.x, in.y);
-            pocket != 0 && aim_.called_pocket != 0) {
-            aim_.called_pocket = pocket;
-            aim_.pocket_chosen = true;
+            pocket != 0 && aim().called_pocket != 0) {
+            aim().called_pocket = pocket;
+            aim().pocket_chosen = true;
             return;
         }
-        if (aim_.time_power) {
+        if (aim().time_power) {
             shoot();
             return;
         }
     }
-    aim_.marker = pointer;
-    aim_.show_marker = true;
-    aim_.aim_deg = aim_from_pointer(cue_position(), pointer);
+    aim().marker = pointer;
+    aim().show_marker = true;
+    aim().aim_deg = aim_from_pointer(cue_position(), pointer);
     // Hovering only aims; the pointer's distance sets the power while a button is held, so
     // a power set with the keys survives a look around the table.
-    const bool holding = in.pressed || aim_.dragging;
-    if (!aim_.time_power && holding)
-        aim_.power = power_from_distance(length(pointer - cue_position()));
+    const bool holding = in.pressed || aim().dragging;
+    if (!aim().time_power && holding)
+        aim().power = power_from_distance(length(pointer - cue_position()));
     if (in.pressed) {
-        if (aim_.time_power) {
+        if (aim().time_power) {
             shoot();
             return;
         }
-        aim_.dragging = true;
-        aim_.drag_moved = false;
-    } else if (in.moved && aim_.dragging) {
-        aim_.drag_moved = true;
-    } else if (in.released && aim_.dragging) {
-        aim_.dragging = false;
-        if (aim_.drag_moved) {
+        aim().dragging = true;
+        aim().drag_moved = false;
+    } else if (in.moved && aim().dragging) {
+        aim().drag_moved = true;
+    } else if (in.released && aim().dragging) {
+        aim().dragging = false;
+        if (aim().drag_moved) {
             update_preview();
             shoot();
             return;

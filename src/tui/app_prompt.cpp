@@ -8,13 +8,6 @@
 
 namespace termpool::tui {
 
-void App::seat_computer(int player, Level level) {
-    match_.seat_computer(player, level);
-    // Two computers (watching) are told apart by their seat.
-    const std::string seat = options_.watch ? " " + std::to_string(player) : "";
-    match_.rename(player, "CPU" + seat + " (" + level_name(level) + ")");
-}
-
 void App::handle_text_entry(const Input& in) {
     if (entry_.edit(in) || in.kind != Input::Kind::key)
         return;
@@ -35,7 +28,7 @@ void App::take_name() {
             entry_.error = "levels: easy, medium, hard, pro";
             return;
         }
-        seat_computer(2, *level);
+        driver_->seat_computer(2, *level);
         entry_.clear();
         entry_.player = 0;
         ask_race();
@@ -47,14 +40,14 @@ void App::take_name() {
         entry_.error = error;
         return;
     }
-    if (name && match_.rename(entry_.player, *name) != MatchError::none) {
+    if (name && driver_->rename(entry_.player, *name) != MatchError::none) {
         entry_.error = match_error_text(MatchError::bad_name);
         return;
     }
     entry_.clear();
     const bool starting = mode_ == Mode::names;
-    if (starting && entry_.player == 1 && !options_.names[1] && !match_.seat(2).computer &&
-        !practice_) {
+    if (starting && entry_.player == 1 && !options_.names[1] &&
+        !driver_->match().seat(2).computer && driver_->referee()) {
         entry_.player = 2;
         return;
     }
@@ -65,7 +58,7 @@ void App::take_name() {
 
 void App::ask_race() {
     // The last question of the name prompt: how long a match (practice has none).
-    if (practice_) {
+    if (!driver_->referee()) {
         begin();
         return;
     }
@@ -89,7 +82,7 @@ void App::handle_race_entry(const Input& in) {
         const std::optional<int> race =
             frames ? (best_of ? std::optional<int>(race_for_best_of(*best_of)) : std::nullopt)
                    : parse_race_to(entry_.text);
-        if (!race || match_.set_race(*race) != MatchError::none) {
+        if (!race || driver_->set_race(*race) != MatchError::none) {
             entry_.error = frames ? "best of an odd number of frames: 1, 3, 5, ..."
                                   : "a race is 1 to " + std::to_string(max_race_to) + " racks";
             return;

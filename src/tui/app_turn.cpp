@@ -1,27 +1,24 @@
-// A turn at the table: the match says what it waits for and the App goes into that mode;
-// placing, shooting and choosing become the match's actions, each saved as it is taken, and a
-// shot is shown rolling before its verdict.
+// A turn at the table: the driver says what the table waits for and the App goes into that
+// mode; placing, shooting and choosing become actions submitted to the driver, the actions of
+// others come from it (paced like a player's when a computer's), and a shot is shown rolling
+// before its verdict is told.
 
-#include <algorithm>
 #include <optional>
 #include <string>
 #include <termpool/setup.hpp>
-#include <termpool/snooker_layout.hpp>
-#include <vector>
 
-#include "player/save_file.hpp"
 #include "tui/app.hpp"
 #include "tui/cue_ball_spot.hpp"
 #include "tui/messages.hpp"
 #include "tui/nomination.hpp"
 #include "tui/shot_call.hpp"
+#include "tui/table_news.hpp"
 
 namespace termpool::tui {
 
 void App::begin() {
-    message_ = practice_
-                   ? "Practice: no referee. m moves a ball, r takes a shot again, t racks again"
-                   : breaks_words(game().shooter());
+    message_ = driver_->referee() ? breaks_words(driver_->match(), game().shooter())
+                                  : driver_->table_words();
     // News from before the game (a config warning, where it is saved) leads the first line.
     for (auto n = options_.notices.rbegin(); n != options_.notices.rend(); ++n)
         message_ = *n + "; " + message_;
@@ -29,16 +26,14 @@ void App::begin() {
 }
 
 void App::start_turn() {
-    shown_balls_ = game().balls();
-    aim_.new_turn();
+    show_.stop(game().balls());
     pacing_.stop();
-    const PendingAction pending =
-        practice_ ? PendingAction{Pending::shoot, 1, BallInHand::none, {}} : match_.pending();
+    const PendingAction pending = driver_->pending();
     if (pending.kind == Pending::over || pending.kind == Pending::next_rack) {
-        mode_ = Mode::game_over;
-        game_over_at_ = Clock::now();
+        mode_ = Mode::over;
         return;
     }
+    aim().new_turn();
     if (pending.kind == Pending::choose) {
         mode_ = Mode::choosing;
         return;
@@ -70,189 +65,202 @@ void App::warn_of_third_foul() {
 
 void App::start_aiming() {
     mode_ = Mode::aiming;
-    aim_.assist = match_.record().assist; // the table's, for both seats
-    aim_.set_break(game().is_break());
+    aim().assist = driver_->match().record().assist; // the table's, for both seats
+    aim().set_break(game().is_break());
     aim_at_easiest();
     warn_of_third_foul();
     const std::string& who = name(game().shooter());
-    // Someone else's turn (the computer's, or another terminal's in the hall): no how-to.
-    const bool computer = computer_to_act() || (in_hall() && !hall_seat_to_act());
-    if (game().push_out_allowed()) {
+    // Someone else's turn (the computer's, or another terminal's): no how-to.
+    const bool elsewhere = !driver_->may_act();
+    if (game().push_out_allowed() && !elsewhere) {
         const std::string hint = "u declares a push-out";
-        message_ = message_.empty() ? who + ": aim and shoot, or " + hint : message_ + "; " + hint;
-    } else if (message_.empty() && !computer) {
+        message_ = !message_.empty()   ? message_ + "; " + hint
+                   : verdicts_.empty() ? who + ": aim and shoot, or " + hint
+                                       : hint;
+    } else if (message_.empty() && verdicts_.empty() && !elsewhere) {
         // Short enough for the smallest panel; the help has the rest.
-        message_ = who + ": aim (" + (term_.caps().mouse ? "mouse, " : "") +
-                   "Left/Right), Space shoots" + (practice_ ? "; m moves a ball" : "");
+        message_ =
+            who + ": aim (" + (term_.caps().mouse ? "mouse, " : "") + "Left/Right), Space shoots";
     }
-    if (snooker_play() && game().nomination_owed() && !computer)
+    if (snooker_play() && game().nomination_owed() && !elsewhere)
         message_ += (message_.empty() ? who + ": " : "; ") +
                     std::string(game().snooker().free_ball ? "a free ball: 2-7 nominates it"
                                                            : "2-7 nominates a colour");
     // The proposed aim cannot reach the ball straight: say so before Space is pressed.
-    if (aim_.target_line != TargetLine::straight && !computer)
+    if (aim().target_line != TargetLine::straight && !elsewhere)
         message_ += (message_.empty() ? "" : "; ") +
-                    std::string(aim_.target_line == TargetLine::kick
+                    std::string(aim().target_line == TargetLine::kick
                                     ? "no straight line to a legal ball: a kick off one rail"
                                     : "no clear line to a legal ball");
 }
 
-std::string App::breaks_words(int breaker) const {
-    return name(breaker) + " breaks: place the cue ball " +
-           ball_in_hand_words(game().type() == GameType::snooker ? BallInHand::d
-                                                                 : BallInHand::kitchen);
+void App::act(const RecordedAction& action) {
+    // The player here acts: the verdicts told since their last action have been read.
+    player_acts();
+    std::string refusal;
+    if (std::optional<TableNews> news = driver_->submit(action, refusal))
+        show(std::move(*news));
+    else if (!refusal.empty())
+        message_ = "Not taken: " + refusal;
 }
 
-void App::ask_concede() {
-    // Only the player to act concedes, and only at this terminal's seat in the hall.
-    if (computer_to_act() || (in_hall() && !hall_seat_to_act()) || game().winner() != 0)
-        return;
-    confirm_concede_ = true;
-}
-
-void App::concede() {
-    const int who = match_.to_act();
-    if (in_hall()) {
-        RecordedAction action;
-        action.kind = RecordedAction::Kind::choose;
-        action.choice = Choice::concede;
-        send_to_hall(action);
+void App::show(TableNews news) {
+    if (news.shot && news.trajectory) {
+        // The driver has judged the shot already; the game as it was shows until the balls
+        // stop, and then its verdict is told.
+        message_ = name(news.shot->shooter) + " shoots";
+        told_ = news.words;
+        show_.start(std::move(*news.shot), std::move(*news.trajectory), std::move(news.before),
+                    news.score_before, Clock::now());
+        mode_ = Mode::rolling;
         return;
     }
-    if (match_.concede(who) != MatchError::none)
-        return;
-    message_ = name(who) + " concedes the frame \u2014 " + name(3 - who) + " wins it";
-    save();
-    if (match_.score().match_winner() != 0 && !replaying_)
-        save_stats();
+    message_.clear();
+    if (!news.words.empty()) {
+        tell(news.words);
+        told_ = news.words;
+    }
     start_turn();
 }
 
-bool App::try_place(Vec2 spot) {
-    if (in_hall()) {
-        // The server places it; the aim starts when its word comes back.
-        if (!game().legal_placement(spot)) {
-            message_ = "The cue ball cannot go there: " + placement_problem(game(), spot);
-            return false;
-        }
-        RecordedAction action;
-        action.kind = RecordedAction::Kind::place;
-        action.place = spot;
-        return send_to_hall(action);
-    }
-    if (!place(spot)) {
-        message_ = "The cue ball cannot go there: " + placement_problem(game(), spot);
-        return false;
-    }
+void App::after_shot() {
+    show_.stop(show_.balls());
     message_.clear();
-    start_aiming();
-    return true;
+    if (driver_->referee())
+        tell(told_);
+    else
+        message_ = told_; // practice: no verdict, only what dropped
+    start_turn();
+}
+
+void App::take_upcoming(Clock::time_point now) {
+    const Upcoming* next = driver_->upcoming(now);
+    if (!next)
+        return;
+    if (next->paced && !pace(*next, now))
+        return;
+    pacing_.stop();
+    const bool hurry = next->hurry;
+    if (std::optional<TableNews> news = driver_->take()) {
+        show(std::move(*news));
+        if (hurry && mode_ == Mode::rolling)
+            show_.hurry();
+    }
+}
+
+bool App::pace(const Upcoming& next, Clock::time_point now) {
+    // The computer's move is shown like a player's: it places the cue ball, turns the cue to
+    // its aim, fills the power bar, then shoots. Its cue is its own seat's: the player's cue
+    // keeps what the player set.
+    const RecordedAction& action = next.action;
+    if (!pacing_.showing()) {
+        ComputerMove move;
+        move.kind = action.kind == RecordedAction::Kind::place    ? Pending::place
+                    : action.kind == RecordedAction::Kind::choose ? Pending::choose
+                                                                  : Pending::shoot;
+        move.spot = action.place;
+        move.choice = action.choice;
+        move.shot.strike = action.strike;
+        move.shot.call = action.call;
+        pacing_.start(move, aim().aim_deg, now);
+        if (action.kind == RecordedAction::Kind::place)
+            place_ = action.place;
+    }
+    if (action.kind != RecordedAction::Kind::shot)
+        return pacing_.due(now);
+    if (mode_ != Mode::aiming)
+        return true;
+    const double t = pacing_.elapsed(now);
+    AimState& cue = aim();
+    cue.aim_deg = pacing_.aim_at(t);
+    cue.side = action.strike.side;
+    cue.follow = action.strike.follow;
+    cue.elevation_deg = action.strike.elevation_deg;
+    cue.power = pacing_.power_at(t, game().is_break());
+    // The panel shows the call the shot makes; in snooker the computer's own nomination.
+    cue.given_call = action.call;
+    cue.nominated = action.call.call.ball;
+    cue.nomination_chosen = snooker_play() && game().nomination_owed() && cue.nominated != 0;
+    update_preview();
+    return pacing_.due(now);
+}
+
+void App::try_place(Vec2 spot) {
+    if (!game().legal_placement(spot)) {
+        message_ = "The cue ball cannot go there: " + placement_problem(game(), spot);
+        return;
+    }
+    RecordedAction action;
+    action.kind = RecordedAction::Kind::place;
+    action.place = spot;
+    act(action);
 }
 
 void App::shoot() {
     const auto now = Clock::now();
-    const Strike strike = aim_.strike(game().is_break(), now);
+    const Strike strike = aim().strike(game().is_break(), now);
     // A cue the simulator cannot play (a jump shot, which it does not model) is not shot: the
     // player adjusts it.
     if (const std::optional<std::string> problem = strike_problem(strike, params_)) {
         message_ = "Not played: " + *problem;
         return;
     }
-    const double power = aim_.current_power(now);
-    ShotCall call = game().call_as_taken(
-        shot_call(aim_, targets(), [this](int ball) { return calls_pocket(ball); }).call);
-    if (snooker_play()) {
-        // The nomination the player named; without one the referee takes the ball hit first,
-        // the aimed ball the panel proposed.
-        call.call = nomination_call(game(), aim_);
-    }
-    aim_.power = power;
-    if (in_hall()) {
-        RecordedAction action;
-        action.kind = RecordedAction::Kind::shot;
-        action.strike = strike;
-        action.call = call;
-        send_to_hall(action);
+    const double power = aim().current_power(now);
+    RecordedAction action;
+    action.kind = RecordedAction::Kind::shot;
+    action.strike = strike;
+    // The call the panel shows (shot_call), as the referee takes it.
+    const auto calls = [this](int ball) { return driver_->calls_pocket(ball); };
+    action.call = game().call_as_taken(shot_call(aim(), driver_->targets(), calls).call);
+    // Snooker: the nomination the player named; without one the referee takes the ball hit
+    // first, the aimed ball the panel proposed.
+    if (snooker_play())
+        action.call.call = nomination_call(game(), aim());
+    aim().power = power;
+    act(action);
+}
+
+void App::ask_concede() {
+    // Only the player to act concedes, and only at this terminal's seat.
+    if (driver_->may_act() && game().winner() == 0)
+        confirm_concede_ = true;
+}
+
+void App::concede() {
+    RecordedAction action;
+    action.kind = RecordedAction::Kind::choose;
+    action.choice = Choice::concede;
+    act(action);
+}
+
+void App::handle_choice_key(const std::string& text) {
+    const auto& choices = game().choices();
+    if (text.size() != 1 || text[0] < '1' || text[0] >= '1' + static_cast<int>(choices.size()))
+        return;
+    RecordedAction action;
+    action.kind = RecordedAction::Kind::choose;
+    action.choice = choices[static_cast<std::size_t>(text[0] - '1')];
+    act(action);
+}
+
+void App::handle_over_key(int key, const std::string& text) {
+    if (driver_->pending().kind == Pending::next_rack) {
+        if (key == key_enter || text == " " || text == "r") {
+            RecordedAction action;
+            action.kind = RecordedAction::Kind::rack;
+            action.breaker = driver_->match().next_breaker();
+            act(action);
+        }
         return;
     }
-    play(strike, call);
-}
-
-bool App::place(Vec2 spot) {
-    if (match_.place(match_.to_act(), spot) != MatchError::none)
-        return false;
-    save();
-    return true;
-}
-
-void App::choose(Choice choice) {
-    if (match_.choose(match_.to_act(), choice) == MatchError::none)
-        save();
-}
-
-void App::save() {
-    // A replay shows a game, practice has none: neither writes over a saved game. The hall's
-    // server keeps its tables itself.
-    if (replaying_ || practice_ || in_hall())
-        return;
-    // The record is the whole game: rewritten after every action, so a dropped connection
-    // loses at most the shot in flight. A failure stays on the message line until a save works
-    // again: other messages come and go, and the player must not miss that the game is not
-    // being kept.
-    save_problem_.clear();
-    write_atomically(options_.save_path, format_record(match_.record()), save_problem_);
-}
-
-void App::play(const Strike& strike, const ShotCall& call) {
-    last_strike_ = strike;
-    shooter_before_ = game().shooter();
-    Trajectory trajectory(params_, game().balls().size());
-    if (practice_) {
-        result_ = practice_->shoot(strike, &trajectory);
-        trajectory_ = std::move(trajectory);
-        shot_start_ = Clock::now();
-        mode_ = Mode::animating;
-        message_ = name(shooter_before_) + " shoots";
-        return;
+    // A new game between the same seats, where the table offers one (not in the hall: a new
+    // game is a new table, from the lobby).
+    if ((text == "r" || text == "n") && driver_->rematch(text == "r" ? 3 - game().winner() : 1)) {
+        player_acts();
+        show_.stop(game().balls());
+        message_ = breaks_words(driver_->match(), game().shooter());
+        start_turn();
     }
-    Game before = match_.game();
-    const MatchState score = match_.score();
-    auto played = match_.shoot(match_.to_act(), strike, call, &trajectory);
-    if (const MatchError* refused = std::get_if<MatchError>(&played)) {
-        message_ = std::string("The shot was refused: ") + match_error_text(*refused);
-        return;
-    }
-    show_shot(std::move(std::get<PlayedShot>(played)), std::move(trajectory), score,
-              std::move(before));
-}
-
-void App::show_shot(PlayedShot shot, Trajectory trajectory, MatchState score_before, Game before) {
-    // The match has judged the shot already; the game as it was shows until the balls stop.
-    shooter_before_ = shot.shooter;
-    result_ = std::move(shot.result);
-    verdict_ = std::move(shot.verdict);
-    before_shot_ = std::move(before);
-    score_before_ = score_before;
-    trajectory_ = std::move(trajectory);
-    shot_start_ = Clock::now();
-    mode_ = Mode::animating;
-    message_ = name(shooter_before_) + " shoots"; // the last verdict is over
-}
-
-void App::after_shot() {
-    trajectory_.reset();
-    before_shot_.reset();
-    if (practice_) {
-        practice_shot_done();
-        return;
-    }
-    message_ = verdict_message(verdict_, shooter_before_, match_.record().names);
-    save();
-    if (verdict_.winner != 0 && match_.score().match_winner() != 0 && !replaying_ && !in_hall())
-        save_stats();
-    start_turn();
-    if (replaying_)
-        mode_ = Mode::replay; // the replay shows the next action itself
 }
 
 } // namespace termpool::tui

@@ -52,6 +52,10 @@ std::string ball_label(int id, bool utf8, bool wide, BallSet set) {
     return "?";
 }
 
+std::string ball_mark(bool utf8) {
+    return utf8 ? "\u2022" : "*";
+}
+
 Style ball_style(int id, bool colour, BallSet set) {
     Style s;
     if (set == BallSet::snooker) {
@@ -61,7 +65,7 @@ Style ball_style(int id, bool colour, BallSet set) {
         s.reverse = !colour;
         if (colour) {
             s.bg = ball_colour(id, set);
-            s.fg = id == snooker_black ? Colour::white : Colour::black;
+            s.fg = id == snooker_black ? Colour::white : Colour::ink;
         }
         return s;
     }
@@ -80,7 +84,7 @@ Style ball_style(int id, bool colour, BallSet set) {
         s.fg = ball_colour(id);
         s.bg = Colour::white;
     } else {
-        s.fg = Colour::black;
+        s.fg = Colour::ink;
         s.bg = ball_colour(id);
     }
     return s;

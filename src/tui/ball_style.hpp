@@ -35,6 +35,10 @@ bool wide_labels(double cells_per_metre, double ball_radius);
 /// colour reads in monochrome and ASCII too and no label is two cells wide.
 std::string ball_label(int id, bool utf8, bool wide, BallSet set = BallSet::pool);
 
+/// The glyph of a ball drawn without its label, where its number would run into another
+/// ("•", "*" in ASCII); its style still says which ball it is, as the legend shows.
+std::string ball_mark(bool utf8);
+
 /// The style of object ball `id`, on the table and in the legend. Colour: solids dark bold
 /// digits on their colour, the 8 a white digit on black, stripes the colour on white.
 /// Monochrome: solids reversed, stripes bold, the 8 reversed and bold. Snooker: dark bold

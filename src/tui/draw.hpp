@@ -1,6 +1,6 @@
 #pragma once
 // The parts of a frame, each drawn by its own file into a shared Painter. render.cpp calls them
-// in order: table, aim, balls, labels, status rows, panel, overlays.
+// in order: table, aim, balls, labels, close-up, status rows, panel, overlays.
 
 #include <string>
 #include <utility>
@@ -49,8 +49,23 @@ void draw_pocket_labels(const Frame& f);
 void draw_aim(const Frame& f);
 /// True when balls 10..15 get two-cell labels at this scale (see wide_labels).
 bool labels_wide(const Frame& f);
-/// The balls on the table; returns the cells their labels took.
+/// The balls on the table, each on the cell of its centre; returns the cells they took.
 std::vector<std::pair<int, int>> draw_balls(const Frame& f);
+/// True when a ball on the table covers table point `point` (a spot under it is not drawn).
+bool under_a_ball(const View& v, Vec2 point);
+/// Where the close-up goes: cells [x, x + w) x [y, y + h), border included, in a corner of the
+/// felt, as tall as it can be while it covers neither the contact nor the cue ball on the
+/// table (the corner farthest from the contact first); w = 0 when the felt is too small.
+struct CloseUpBox {
+    int x = 0, y = 0, w = 0, h = 0; ///< the box, border included
+};
+/// The close-up's box for this frame (see CloseUpBox).
+CloseUpBox close_up_box(const Frame& f);
+/// The cut angle of a close-up's contact, degrees: between the cue ball's heading and the line
+/// of centres (0 full ball, towards 90 ever thinner).
+double close_up_cut_deg(const CloseUp& c);
+/// The close-up of the contact (View::close_up), while aiming and when shown.
+void draw_close_up(const Frame& f);
 /// The power bar, speed, power mode, spin and elevation line and shoot button.
 void draw_status(const Frame& f);
 /// The game and the race, players with racks won, groups and their pocketed balls (9-ball:

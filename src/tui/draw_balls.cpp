@@ -1,14 +1,20 @@
-// The balls: one label each ("3", "C" or, on a big table, "12"), on the cells that hold its
-// centre. Two numbers never touch on a row, so that a 1 beside a 5 never reads as 15: a ball
-// whose cells are taken, or whose number would touch another number, goes to the nearest free
-// cells with a blank between the numbers (a rack is about 7 x 4 cells at 80x24, so some balls
-// move a cell or two). A letter (10..15 on small tables) or the cue ball's round glyph never
-// reads as part of a number, so they may touch anything. No ball is ever hidden while there is
-// room. The cue ball is placed first and always sits exactly. A snooker set has no two-digit
-// label ("1" a red, "2".."7" the colours, see ball_label), so its labels may touch anything.
+// The balls: each on the cell that holds its centre, never moved to make room, so that a rack
+// looks like a rack and a ball's cell says where it is. Where labels would clash the label
+// gives way, not the ball:
+//  - two centres in one cell: the ball drawn first keeps the cell and covers the other;
+//  - a number beside another number on a row would read as one ("1" "5" as 15): the later
+//    ball shows a plain mark (ball_mark) in its own style instead, which the legend's styles
+//    tell apart;
+//  - a two-cell number ("12" on a big table) takes its centre cell and the neighbour nearer
+//    its centre, else the other neighbour, else it shrinks to the mark.
+// A letter (10..15 on small tables), the cue ball's glyph and snooker's values (no two-digit
+// one, see ball_label) never read as part of a number, so they may touch anything. The order
+// decides who gives way: the cue ball first, then the ball the game turns on (the 8, 9 or 10;
+// snooker's colours), then the rest by number, lowest (the ball on in 9- and 10-ball) first.
 
 #include <algorithm>
 #include <cmath>
+#include <termpool/snooker_layout.hpp>
 #include <vector>
 
 #include "tui/ball_style.hpp"
@@ -18,51 +24,64 @@ namespace termpool::tui {
 namespace {
 
 struct Placed {
-    int x, y, w;    // cells [x, x + w) of row y
-    bool separated; // a number: keeps a blank column from the numbers beside it
+    int x, y, w; // cells [x, x + w) of row y
+    bool number; // a pool number: no other number may touch it on its row
 };
 
-// How far (cells) a label may move from its ball to find a free spot with gaps.
-constexpr int reach_x = 3, reach_y = 2;
+bool taken(const std::vector<Placed>& placed, int x, int y, int w) {
+    return std::any_of(placed.begin(), placed.end(),
+                       [&](const Placed& p) { return p.y == y && x < p.x + p.w && p.x < x + w; });
+}
 
-// True when a label on [x, x + w) of row y overlaps a placed label, or touches one where both
-// are numbers.
-bool blocked(const std::vector<Placed>& placed, int x, int y, int w, bool separated) {
+// True when a number on [x, x + w) of row y would touch a placed number.
+bool touches_number(const std::vector<Placed>& placed, int x, int y, int w) {
     return std::any_of(placed.begin(), placed.end(), [&](const Placed& p) {
-        if (p.y != y)
-            return false;
-        const int gap = separated && p.separated ? 1 : 0;
-        return x < p.x + p.w + gap && p.x < x + w + gap;
+        return p.number && p.y == y && x <= p.x + p.w && p.x <= x + w;
     });
 }
 
-bool on_felt(const Frame& f, int x, int y, int w) {
-    return f.on_felt(x, y) && f.on_felt(x + w - 1, y);
+bool on_frame(const Frame& f, int x, int y, int w) {
+    return f.on_frame(x, y) && f.on_frame(x + w - 1, y);
 }
 
-// The cells for a label of width w centred at fractional cell position (col, row): the
-// exact ones when free, else the nearest free spot within `rx` x `ry` cells (screen distance,
-// a row being two columns tall).
-bool choose_cells(const Frame& f, const std::vector<Placed>& placed, double col, double row, int w,
-                  bool separated, int rx, int ry, int& x, int& y) {
-    const int x0 = static_cast<int>(std::floor(col - (w - 1) / 2.0));
-    const int y0 = static_cast<int>(std::floor(row));
-    if (on_felt(f, x0, y0, w) && !blocked(placed, x0, y0, w, separated)) {
-        x = x0, y = y0;
-        return true;
+// The game's deciding ball, drawn right after the cue ball: 0 when there is none.
+int deciding_ball(GameType game) {
+    switch (game) {
+    case GameType::eight_ball:
+    case GameType::eight_ball_bar:
+        return 8;
+    case GameType::nine_ball:
+        return 9;
+    case GameType::ten_ball:
+        return 10;
+    case GameType::snooker:
+        return 0;
     }
-    double best = 1e300;
-    for (int dy = -ry; dy <= ry; ++dy)
-        for (int dx = -rx; dx <= rx; ++dx) {
-            const int cx = x0 + dx, cy = y0 + dy;
-            if (!on_felt(f, cx, cy, w) || blocked(placed, cx, cy, w, separated))
-                continue;
-            const double ex = cx + w / 2.0 - col, ey = 2 * (cy + 0.5 - row);
-            const double d = ex * ex + ey * ey;
-            if (d < best)
-                best = d, x = cx, y = cy;
-        }
-    return best < 1e300;
+    return 0;
+}
+
+// Lower draws first (see the file comment).
+int draw_rank(const Ball& b, const View& v, BallSet set) {
+    if (b.id == 0)
+        return 0;
+    if (set == BallSet::snooker)
+        return (is_snooker_colour(b.id) ? 100 : 200) + b.id;
+    return b.id == deciding_ball(v.game) ? 1 : 100 + b.id;
+}
+
+Style style_of(const Frame& f, const Ball& b, BallSet set) {
+    const bool colour = f.paint.colour();
+    const std::vector<int>& dimmed = f.view.dimmed_balls;
+    if (b.id != 0 && std::find(dimmed.begin(), dimmed.end(), b.id) != dimmed.end())
+        // A ball the shooter may not hit first: its label faint on the cloth, still readable.
+        return {Colour::dim, Colour::felt, false, false};
+    if (b.id != 0)
+        return ball_style(b.id, colour, set);
+    const bool refused = f.view.placing && !f.view.placement_legal;
+    Style style{refused ? Colour::red : Colour::white, Colour::felt, true};
+    // Without colour a refused spot shows as a reversed cue ball.
+    style.reverse = refused && !colour;
+    return style;
 }
 
 void draw_ball(const Frame& f, const Ball& b, bool wide, BallSet set, std::vector<Placed>& placed) {
@@ -70,35 +89,33 @@ void draw_ball(const Frame& f, const Ball& b, bool wide, BallSet set, std::vecto
     to_cell(f.layout, f.table_width(), b.position, col, row);
     if (!(std::fabs(col) < 1e6) || !(std::fabs(row) < 1e6))
         return;
-    const std::string label = ball_label(b.id, f.paint.utf8(), wide, set);
-    const int w = static_cast<int>(label.size()) == 2 ? 2 : 1; // "●" is 3 bytes, 1 column
-    const bool separated =
-        set == BallSet::pool && label.find_first_of("0123456789") != std::string::npos;
-    int x = 0, y = 0;
-    // With gaps close by; failing that (a crowd against a cushion), touching but never hidden.
-    if (!choose_cells(f, placed, col, row, w, separated, reach_x, reach_y, x, y) &&
-        !choose_cells(f, placed, col, row, w, false, reach_x, reach_y, x, y))
+    const int x = static_cast<int>(std::floor(col)), y = static_cast<int>(std::floor(row));
+    // Off the cloth and rails (a ball in flight past a pocket): not drawn. On a cell already
+    // drawn: covered by that ball.
+    if (!f.on_frame(x, y) || taken(placed, x, y, 1))
         return;
-    placed.push_back({x, y, w, separated});
-    const bool colour = f.paint.colour();
-    Style style = ball_style(b.id, colour, set);
-    const std::vector<int>& dimmed = f.view.dimmed_balls;
-    if (std::find(dimmed.begin(), dimmed.end(), b.id) != dimmed.end()) {
-        // A ball the shooter may not hit first: its label faint on the cloth, still readable.
-        style = {Colour::dim, Colour::felt, false, false};
-    }
-    if (b.id == 0) {
-        const bool refused = f.view.placing && !f.view.placement_legal;
-        style = {refused ? Colour::red : Colour::white, Colour::felt, true};
-        // Without colour a refused spot shows as a reversed cue ball.
-        style.reverse = refused && !colour;
-    }
-    if (w == 2) {
-        f.paint.put(x, y, label.substr(0, 1), style);
-        f.paint.put(x + 1, y, label.substr(1), style);
-    } else {
+    std::string label = ball_label(b.id, f.paint.utf8(), wide, set);
+    const bool number = set == BallSet::pool && b.id >= 1 && b.id <= 15 &&
+                        label.find_first_not_of("0123456789") == std::string::npos;
+    const Style style = style_of(f, b, set);
+    if (number && label.size() == 2) {
+        // The pair of cells centred nearer the ball's centre first.
+        const int first = col - x < 0.5 ? x - 1 : x;
+        for (const int left : {first, 2 * x - 1 - first})
+            if (on_frame(f, left, y, 2) && !taken(placed, left, y, 2) &&
+                !touches_number(placed, left, y, 2)) {
+                placed.push_back({left, y, 2, true});
+                f.paint.put(left, y, label.substr(0, 1), style);
+                f.paint.put(left + 1, y, label.substr(1), style);
+                return;
+            }
+    } else if (!number || !touches_number(placed, x, y, 1)) {
+        placed.push_back({x, y, 1, number});
         f.paint.put(x, y, label, style);
+        return;
     }
+    placed.push_back({x, y, 1, false});
+    f.paint.put(x, y, ball_mark(f.paint.utf8()), style);
 }
 
 } // namespace
@@ -108,14 +125,15 @@ bool labels_wide(const Frame& f) {
 }
 
 std::vector<std::pair<int, int>> draw_balls(const Frame& f) {
+    const BallSet set = ball_set(f.view);
     std::vector<const Ball*> order;
     for (const Ball& b : f.view.balls)
         if (b.state != MotionState::pocketed)
             order.push_back(&b);
-    std::stable_sort(order.begin(), order.end(),
-                     [](const Ball* a, const Ball* b) { return a->id < b->id; });
+    std::stable_sort(order.begin(), order.end(), [&](const Ball* a, const Ball* b) {
+        return draw_rank(*a, f.view, set) < draw_rank(*b, f.view, set);
+    });
     const bool wide = labels_wide(f);
-    const BallSet set = ball_set(f.view);
     std::vector<Placed> placed;
     for (const Ball* b : order)
         draw_ball(f, *b, wide, set, placed);
@@ -124,6 +142,12 @@ std::vector<std::pair<int, int>> draw_balls(const Frame& f) {
         for (int k = 0; k < p.w; ++k)
             cells.emplace_back(p.x + k, p.y);
     return cells;
+}
+
+bool under_a_ball(const View& v, Vec2 point) {
+    return std::any_of(v.balls.begin(), v.balls.end(), [&](const Ball& b) {
+        return b.state != MotionState::pocketed && length(b.position - point) < v.ball_radius;
+    });
 }
 
 } // namespace termpool::tui

@@ -2,7 +2,8 @@
 // the same scale as everything else on the table. In UTF-8 the line and the D are Braille dots
 // (one dot wide, so that they stay fine at any size); in ASCII the line is '|' and the D is
 // drawn with the glyph nearest its direction in each cell it crosses ('-', '/', '(', '\').
-// The balls are drawn afterwards and cover them.
+// The balls are drawn afterwards and cover them; a spot under a ball is not drawn at all, as
+// a dot beside the ball's cell would look like a spot left free.
 
 #include <algorithm>
 #include <cmath>
@@ -108,7 +109,8 @@ void draw_snooker_marks(const Frame& f) {
         draw_plain(f, table);
     for (int colour = snooker_yellow; colour <= snooker_black; ++colour) {
         int x, y;
-        if (f.cell_of(snooker_spot(table, colour), x, y) && f.on_felt(x, y))
+        const Vec2 spot = snooker_spot(table, colour);
+        if (!under_a_ball(f.view, spot) && f.cell_of(spot, x, y) && f.on_felt(x, y))
             f.paint.put(x, y, f.paint.utf8() ? "\u00B7" : "+", faint);
     }
 }

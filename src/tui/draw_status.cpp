@@ -1,27 +1,38 @@
 // The status rows under the table while aiming:
-//   power [██████▌     ] 3.4 m/s                 [ shoot ]
+//   power [██████▌   ········] 3.4 m/s                 [ shoot ]
 //   spin: side +0.2 follow -0.3 elev 30°         distance
-// (the spin line shorter where the rows are narrow: "spin +0.2 -0.3 elev 30°")
+// (the spin line shorter where the rows are narrow: "spin +0.2 -0.3 elev 30°"). The bar is a
+// scale of speed up to the break's max_break_speed; in any other shot the part past
+// max_shot_speed, which it cannot reach, is dotted, so a full-power shot is seen to be slower
+// than a full-power break.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
 
+#include "tui/aim.hpp"
 #include "tui/draw.hpp"
 #include <termpool/text_width.hpp>
 
 namespace termpool::tui {
 namespace {
 
-// The bar's cells: whole blocks, one partial block in eighths (UTF-8), then blanks.
-void draw_bar(Painter& p, int x, int y, int cells, double power, Style fill) {
-    const double filled = std::clamp(std::isfinite(power) ? power : 0.0, 0.0, 1.0) * cells;
+// The bar's cells: whole blocks, one partial block in eighths (UTF-8), then blanks up to
+// `reach` (a fraction of the bar, as `filled` is), then dots.
+void draw_bar(Painter& p, int x, int y, int cells, double filled, double reach, Style fill) {
+    const auto fraction = [](double v) { return std::clamp(std::isfinite(v) ? v : 0.0, 0.0, 1.0); };
+    const double full = fraction(filled) * cells;
+    // A cell the reach ends in is still reachable: the bar's last eighths show there.
+    const int reachable = static_cast<int>(std::ceil(fraction(reach) * cells - 1e-9));
     static const char* const eighths[8] = {" ",      "\u258F", "\u258E", "\u258D",
                                            "\u258C", "\u258B", "\u258A", "\u2589"};
+    const Style beyond{Colour::dim, Colour::normal};
     for (int i = 0; i < cells; ++i) {
-        const double part = std::clamp(filled - i, 0.0, 1.0);
-        if (p.utf8()) {
+        const double part = std::clamp(full - i, 0.0, 1.0);
+        if (i >= reachable && part <= 0) {
+            p.put(x + i, y, p.utf8() ? "\u00B7" : ".", beyond);
+        } else if (p.utf8()) {
             const int e = static_cast<int>(std::floor(part * 8));
             p.put(x + i, y, e >= 8 ? "\u2588" : eighths[e], fill);
         } else {
@@ -75,7 +86,8 @@ void draw_status(const Frame& f) {
     const int bar = std::min(30, width - fixed);
     if (bar >= 3) {
         int x = x0 + p.text(x0, y, "power [", {});
-        draw_bar(p, x, y, bar, v.power, red);
+        const double top = v.is_break ? max_break_speed : max_shot_speed;
+        draw_bar(p, x, y, bar, v.speed / max_break_speed, top / max_break_speed, red);
         x += bar;
         x += p.text(x, y, "]", {});
         p.text(x, y, speed, {});

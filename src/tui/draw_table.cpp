@@ -43,7 +43,8 @@ void draw_pockets(const Frame& f) {
             f.paint.put(x, y, " ", hole);
 }
 
-// A faint dotted line on the head string and a dot on the foot spot; on the snooker table its
+// A faint dotted line on the head string and a dot on the foot spot, unless a ball covers it
+// (the dot beside a racked apex ball would look like the spot missed); on the snooker table its
 // own marks instead, and the head string only while pool balls are played on it (their ball in
 // hand goes behind it). The pink's spot is the foot spot.
 void draw_markings(const Frame& f) {
@@ -66,7 +67,8 @@ void draw_markings(const Frame& f) {
             f.paint.put(x, y, glyph, faint);
     }
     int fx, fy;
-    if (!snooker && f.cell_of(table.foot_spot(), fx, fy) && f.on_felt(fx, fy))
+    if (!snooker && !under_a_ball(f.view, table.foot_spot()) &&
+        f.cell_of(table.foot_spot(), fx, fy) && f.on_felt(fx, fy))
         f.paint.put(fx, fy, f.paint.utf8() ? "\u00B7" : ".", faint);
 }
 

@@ -6,6 +6,7 @@
 #include <functional>
 #include <stdexcept>
 #include <sys/stat.h>
+#include <unistd.h>
 #include <utility>
 #include <variant>
 
@@ -14,7 +15,11 @@
 #include "player/config.hpp"
 #include "player/options.hpp"
 #include "player/save_file.hpp"
+#include "player/save_list.hpp"
+#include "player/save_prompt.hpp"
+#include "player/save_read.hpp"
 #include "player/save_slots.hpp"
+#include "player/save_summary.hpp"
 #include "tui/app.hpp"
 
 #include "tui/terminal.hpp"
@@ -54,8 +59,9 @@ constexpr const char* options_usage =
     "                        the cue's shaft: how much side spin squirts the cue ball\n"
     "                        (default standard; none: no squirt)\n"
     "  --ascii               plain ASCII, no colour\n"
-    "  --resume [N | FILE]   continue a saved game: the only one, save N (1 is game.save,\n"
-    "                        N is game-N.save) or FILE; with several, list them\n"
+    "  --resume [N | FILE]   continue an unfinished game: the only one, save N (1 is\n"
+    "                        game.save, N is game-N.save) or FILE; with several, pick one\n"
+    "                        from the list, newest first (d N removes save N)\n"
     "  -h, --help            print this help and exit\n"
     "Defaults come from $XDG_CONFIG_HOME/termpool/config (~/.config/termpool/config);\n"
     "games are saved in $XDG_STATE_HOME/termpool/ (~/.local/state/termpool/).\n";
@@ -64,64 +70,20 @@ void print_game_usage(std::FILE* out) {
     std::fprintf(out, "usage: termpool [OPTIONS]   (commands: termpool --help)\n%s", options_usage);
 }
 
-// A saved game or match, read and replayed (once) to where it stands.
-// A save read back: the match replayed to where its record stands.
-std::variant<Match, RecordError> load_game(const std::string& text) {
-    auto parsed = parse_record(text);
-    if (auto* problem = std::get_if<RecordError>(&parsed))
-        return *problem;
-    return Match::replay(std::get<GameRecord>(parsed));
+// Where a slot's save that is not a game went, in words: it is moved aside, never over an
+// older one, and never overwritten.
+std::string keep_bad_save(const std::string& path) {
+    std::string why;
+    if (const auto kept = keep_aside(path, why))
+        return "it is kept as " + *kept;
+    return "it could not be moved aside (" + why + ")";
 }
 
-// True when the save holds a game or match that is over: a new game may take its place.
-bool finished(const Match& saved) {
-    return saved.pending().kind == Pending::over;
-}
-
-// A save read from disk, or why not: missing (nothing), unreadable (error), or not a game
-// (problem; a slot's save is then moved aside as .bad, never overwritten).
-struct SaveRead {
-    std::optional<std::string> text;
-    std::string error;
-    std::optional<RecordError> problem;
-    std::string kept_as;       // where a save that is not a game went
-    std::string kept_as_error; // why it could not be moved there
-    std::optional<Match> loaded;
-};
-
-// Where a save that is not a game was kept, in words.
-std::string kept_words(const SaveRead& r) {
-    return r.kept_as.empty() ? "it could not be moved aside (" + r.kept_as_error + ")"
-                             : "it is kept as " + r.kept_as;
-}
-
-SaveRead read_save(const std::string& path) {
-    SaveRead r;
-    r.text = read_whole_file(path, r.error);
-    if (!r.text)
-        return r;
-    auto result = load_game(*r.text);
-    if (auto* problem = std::get_if<RecordError>(&result)) {
-        r.problem = *problem;
-        // A slot's save that cannot be read is moved aside, never over an older one.
-        if (slot_of(path) != 0) {
-            std::string why;
-            if (const auto kept = keep_aside(path, why))
-                r.kept_as = *kept;
-            else
-                r.kept_as_error = why;
-        }
-    } else {
-        r.loaded.emplace(std::move(std::get<Match>(result)));
-    }
-    return r;
-}
-
-void report_bad_save(const std::string& path, const SaveRead& read) {
-    std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), read.problem->line,
-                 read.problem->message.c_str());
+// Says on stderr why the save at `path` is not a game; a slot's is moved aside.
+void report_bad_save(const std::string& path, const RecordError& problem) {
+    std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), problem.line, problem.message.c_str());
     if (slot_of(path) != 0)
-        std::fprintf(stderr, "termpool: %s\n", kept_words(read).c_str());
+        std::fprintf(stderr, "termpool: %s\n", keep_bad_save(path).c_str());
 }
 
 // The options a record was played with; how it is shown (ASCII, colour) stays as given.
@@ -170,13 +132,11 @@ std::string resume_command(const std::string& path) {
 // After curses has ended: where the game is and how to go on with it, when there is a game.
 void tell_where_saved(const std::string& path, const std::optional<std::string>& before,
                       bool resumed) {
-    std::string ignored;
-    const std::optional<std::string> after = read_whole_file(path, ignored);
-    if (!after || (!resumed && after == before))
+    const SaveContents after = read_save(path);
+    if (!after.text || (!resumed && after.text == before))
         return; // nothing was played (the names were never entered)
     // A game that is over has nothing to continue: it can be watched again.
-    const auto loaded = load_game(*after);
-    if (const auto* game = std::get_if<Match>(&loaded); game && finished(*game)) {
+    if (after.game && finished(*after.game)) {
         std::printf("Game over, saved in %s; watch it again with: %s replay %s\n",
                     display_path(path).c_str(), self_command().c_str(), display_path(path).c_str());
         return;
@@ -185,41 +145,20 @@ void tell_where_saved(const std::string& path, const std::optional<std::string>&
                 resume_command(path).c_str());
 }
 
-// One line of the --resume list: the slot, the players, the game, how far, when.
-std::string describe(int slot, const std::string& path, const Match& saved) {
-    const GameRecord& r = saved.record();
-    const auto shots = std::count_if(r.actions.begin(), r.actions.end(), [](const auto& a) {
-        return a.kind == RecordedAction::Kind::shot;
-    });
-    const MatchState& score = saved.score();
-    const int winner = score.is_race() ? score.match_winner() : saved.game().winner();
-    std::string progress = winner != 0 ? "won by " + r.names[winner - 1]
-                                       : std::to_string(shots) + (shots == 1 ? " shot" : " shots");
-    if (score.is_race() && winner == 0)
-        progress += ", race to " + std::to_string(score.race_to) + " at " +
-                    std::to_string(score.racks_won[0]) + "-" + std::to_string(score.racks_won[1]);
-    char when[32] = "";
-    struct stat st {};
-    if (::stat(path.c_str(), &st) == 0) {
-        std::tm local{};
-        if (localtime_r(&st.st_mtime, &local))
-            std::strftime(when, sizeof when, "%Y-%m-%d %H:%M", &local);
-    }
-    char line[512];
-    std::snprintf(line, sizeof line, "  %d  %s v %s, %s, %s, %s, saved %s  (%s)", slot,
-                  r.names[0].c_str(), r.names[1].c_str(), game_type_name(r.setup.game),
-                  table_size_name(r.setup.table), progress.c_str(), when,
-                  display_path(path).c_str());
-    return line;
-}
-
 // A save chosen to go on with, locked for as long as the game runs.
 struct Chosen {
     SaveLock lock;
     Match game;
 };
 
-// `--resume N` or `--resume FILE`: that save, or the exit status after saying why not.
+// The unfinished save `save` to go on with, its lock kept.
+Chosen continue_with(SlotSave& save) {
+    return Chosen{std::move(save.lock), std::move(*save.contents.game)};
+}
+
+// `--resume N` or `--resume FILE`: that save, or the exit status after saying why not. A
+// finished game is not continued by number (the lists never offer it); a FILE named is
+// opened whatever it holds.
 std::variant<Chosen, int> resume_named(const std::string& which) {
     const bool number =
         std::all_of(which.begin(), which.end(), [](char c) { return c >= '0' && c <= '9'; });
@@ -241,57 +180,72 @@ std::variant<Chosen, int> resume_named(const std::string& which) {
                      display_path(path).c_str());
         return 1;
     }
-    SaveRead read = read_save(path);
+    SaveContents read = read_save(path);
     if (read.problem) {
-        report_bad_save(path, read);
+        report_bad_save(path, *read.problem);
         return 2;
     }
-    if (!read.loaded) {
+    if (!read.game) {
         std::fprintf(stderr, "termpool: no saved game to resume (%s)\n",
                      read.error.empty() ? path.c_str() : read.error.c_str());
         return 1;
     }
-    return Chosen{std::move(lock), std::move(*read.loaded)};
+    if (number && finished(*read.game)) {
+        std::fprintf(stderr,
+                     "termpool: save %d is a finished game, not one to continue; watch it again "
+                     "with: %s replay %s\n",
+                     slot, self_command().c_str(), display_path(path).c_str());
+        return 2;
+    }
+    return Chosen{std::move(lock), std::move(*read.game)};
 }
 
-// Plain `--resume`: the one save no other game holds, or a list of them to pick from.
+// Plain `--resume`: the one unfinished save no other game holds, or a list of them to pick
+// from (asked in a terminal, printed otherwise). Finished games are never offered.
 std::variant<Chosen, int> resume_only() {
-    std::vector<Chosen> free;
+    std::vector<SlotSave> free;
     std::vector<std::string> busy;
-    bool bad = false;
-    for (const int slot : existing_slots()) {
-        const std::string path = slot_path(slot);
-        SaveLock lock(path);
-        if (lock.state() == SaveLock::State::busy) {
-            busy.push_back(display_path(path));
-            continue;
-        }
-        SaveRead read = read_save(path);
-        if (read.problem) {
-            report_bad_save(path, read);
+    bool bad = false, over = false;
+    for (SlotSave& save : read_slot_saves()) {
+        const SaveContents& c = save.contents;
+        if (save.in_use())
+            busy.push_back(display_path(save.path()));
+        else if (c.problem) {
+            report_bad_save(save.path(), *c.problem);
             bad = true;
-        } else if (read.loaded) {
-            free.push_back(Chosen{std::move(lock), std::move(*read.loaded)});
-        } else if (!read.error.empty()) {
-            std::fprintf(stderr, "termpool: cannot read %s\n", read.error.c_str());
-        }
+        } else if (!c.error.empty())
+            std::fprintf(stderr, "termpool: %s\n", c.error.c_str());
+        else if (c.unfinished())
+            free.push_back(std::move(save));
+        else
+            over |= c.game.has_value();
     }
-    if (free.size() == 1)
-        return std::move(free.front());
     if (free.empty()) {
         if (bad)
             return 2;
         std::string why = display_path(save_dir());
         for (const std::string& b : busy)
             why += "; " + b + " is in use by another termpool game";
+        if (over)
+            why += "; finished games are kept for " + self_command() + " replay";
         std::fprintf(stderr, "termpool: no saved game to resume (%s)\n", why.c_str());
         return 1;
     }
-    std::printf("Saved games you can continue (%s --resume N, or --resume FILE):\n",
-                self_command().c_str());
-    for (const Chosen& c : free)
-        std::printf("%s\n", describe(slot_of(c.lock.path()), c.lock.path(), c.game).c_str());
-    return 0;
+    if (free.size() == 1)
+        return continue_with(free.front());
+    if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO)) {
+        // No one to ask: the list, and the player picks with --resume N.
+        std::printf("Saved games you can continue, newest first (%s --resume N):\n",
+                    self_command().c_str());
+        const std::time_t now = std::time(nullptr);
+        for (const SlotSave& save : free)
+            std::printf("%s\n", save_line(save, now).c_str());
+        return 0;
+    }
+    const std::optional<std::size_t> picked = pick_save(free, stdin, stdout, std::time(nullptr));
+    if (!picked)
+        return 0;
+    return continue_with(free[*picked]);
 }
 
 int resume_game(const GameOptions& options, const std::vector<std::string>& notices) {
@@ -312,12 +266,14 @@ int resume_game(const GameOptions& options, const std::vector<std::string>& noti
 int new_game(GameOptions options, std::vector<std::string> notices) {
     // A slot is taken only when its save is missing, over, or not a game at all (moved aside
     // then): a game left unfinished stays for --resume.
-    SaveRead read;
+    SaveContents read;
+    std::string kept; // where a save that is not a game went
     bool skipped = false;
     const SaveLock lock = claim_free_slot([&](const std::string& slot) {
         read = read_save(slot);
-        const bool free = read.problem || (!read.text && read.error.empty()) ||
-                          (read.loaded && finished(*read.loaded));
+        if (read.problem)
+            kept = keep_bad_save(slot);
+        const bool free = new_game_may_take(read);
         skipped |= !free;
         return free;
     });
@@ -331,7 +287,7 @@ int new_game(GameOptions options, std::vector<std::string> notices) {
     if (read.problem) {
         std::fprintf(stderr, "%s:%d: %s\n", path.c_str(), read.problem->line,
                      read.problem->message.c_str());
-        notices.push_back("The old save could not be read; " + kept_words(read));
+        notices.push_back("The old save could not be read; " + kept);
     }
     options.save_path = path;
     options.notices = std::move(notices);

@@ -22,6 +22,8 @@ const char* colour_name(Colour c) {
         return "white";
     case Colour::black:
         return "black";
+    case Colour::ink:
+        return "ink";
     case Colour::yellow:
         return "yellow";
     case Colour::blue:

@@ -41,7 +41,7 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
     } else if (const auto* m = std::get_if<hall::Error>(&message)) {
         const std::string words = m->text.empty() ? hall::error_code_name(m->code) : m->text;
         if (app_ && table_ != 0)
-            app_->hall_refused(words);
+            app_->hall()->refused(words);
         else
             message_ = "The hall said: " + words;
         if (m->code == hall::ErrorCode::replaced || m->code == hall::ErrorCode::version) {
@@ -115,16 +115,16 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
             offer_ = *m;
     } else if (const auto* m = std::get_if<hall::SeatChange>(&message)) {
         if (app_ && m->table == table_)
-            app_->hall_seat(m->seat, hall_seat_of(m->view));
+            app_->hall()->seat(m->seat, hall_seat_of(m->view));
     } else if (const auto* m = std::get_if<hall::ActionDone>(&message)) {
         if (app_ && m->table == table_)
-            app_->hall_action(m->seq, m->hash, m->action);
+            app_->hall()->action(m->seq, m->hash, m->action);
     } else if (const auto* m = std::get_if<hall::AimShown>(&message)) {
         if (app_ && m->table == table_)
-            app_->hall_aim(m->seat, m->strike);
+            app_->hall()->aim(m->seat, m->strike);
     } else if (const auto* m = std::get_if<hall::ChatShown>(&message)) {
         if (app_ && m->table == table_)
-            app_->hall_chat(m->name, m->text);
+            app_->hall()->chat(m->name, m->text);
     }
 }
 
@@ -151,7 +151,7 @@ void HallSession::record_ended(const hall::RecordEnd& end) {
 
 void HallSession::enter_table(Match match) {
     if (app_) {
-        app_->hall_record(std::move(match));
+        app_->hall()->record(std::move(match));
         show_seats();
         return;
     }
@@ -166,7 +166,7 @@ void HallSession::enter_table(Match match) {
     link.seat = seat_;
     link.act = [this](const RecordedAction& action) {
         if (!welcomed_) {
-            app_->hall_refused("the hall is away; play it again once it is back");
+            app_->hall()->refused("the hall is away; play it again once it is back");
             return;
         }
         aim_waiting_.reset(); // the shot is on its way: the cue before it is old news
@@ -205,7 +205,7 @@ void HallSession::show_seats() {
         return;
     if (const hall::TableView* t = table_view(table_))
         for (int s = 1; s <= 2; ++s)
-            app_->hall_seat(s, hall_seat_of(t->seats[s - 1]));
+            app_->hall()->seat(s, hall_seat_of(t->seats[s - 1]));
 }
 
 const hall::TableView* HallSession::table_view(int number) const {

@@ -13,12 +13,18 @@ constexpr int panel_gap = 1;         // blank column between the table and a sid
 constexpr int status_rows = 2;       // power bar, spin line
 constexpr int below_panel_rows = 4;  // title, two players, the legend and help hint
 constexpr int shoot_button_cols = 9; // "[ shoot ]"
+constexpr int min_status_cols = 28;  // "spin +0.25 -0.25 elev 80.5°", the spin line's shortest
 
 // The playing surface for `cols` x `rows` cells available to it. Rows are worth two columns,
 // so the scale is limited by whichever of L / cols and W / (2 rows) is tighter. Whole rows keep
-// the cushion lines on cell edges; for the 2:1 tables the columns are then whole too.
+// the cushion lines on cell edges. The rows are odd, so that the long axis (y = W / 2), where
+// a rack's middle ball, the spots and the cue ball on the head spot lie, runs through the
+// middle of a row and not along an edge where a tenth of a millimetre decides the row. The
+// columns are 2 more than a multiple of 4, the nearest such to the 2:1 shape, for the same
+// reason lengthwise: the foot and head spots (L / 4 from the ends) fall in the middle of a
+// column. That stretches the table by at most 2 columns, under 4 % from 60 columns up.
 struct Surface {
-    double cells_per_metre = 0;
+    double cols_per_metre = 0, rows_per_metre = 0;
     int cols = 0, rows = 0;
 };
 
@@ -28,10 +34,18 @@ Surface fit_surface(const Table& table, int cols, int rows) {
     const double limit = std::min(cols / table.length, 2.0 * rows / table.width);
     Surface s;
     s.rows = static_cast<int>(std::floor(table.width * limit / 2 + 1e-9));
+    if (s.rows % 2 == 0)
+        --s.rows;
     if (s.rows < 1)
         return {};
-    s.cells_per_metre = 2.0 * s.rows / table.width;
-    s.cols = std::min(cols, static_cast<int>(std::floor(table.length * s.cells_per_metre + 1e-9)));
+    s.rows_per_metre = s.rows / table.width;
+    const double shape = 2 * table.length * s.rows_per_metre; // the columns of the true shape
+    s.cols = 4 * static_cast<int>(std::lround((shape - 2) / 4)) + 2;
+    if (s.cols > cols)
+        s.cols -= 4;
+    if (s.cols < 2)
+        return {};
+    s.cols_per_metre = s.cols / table.length;
     return s;
 }
 
@@ -47,8 +61,11 @@ Layout make_layout(const Table& table, int width, int height) {
                                      height - frame_extra_rows - status_rows);
     const Surface below = fit_surface(table, width - frame_extra_cols,
                                       height - frame_extra_rows - status_rows - below_panel_rows);
-    // Whichever gives the bigger table; the side panel on a tie, as it leaves the rows free.
-    l.panel_below = below.rows > side.rows;
+    // Whichever gives the bigger table (rows, then columns); the side panel on a tie, as it
+    // leaves the rows free, unless it leaves the status rows too narrow for the spin line.
+    const bool side_room = width - side_panel_cols - panel_gap >= min_status_cols;
+    l.panel_below =
+        !side_room || below.rows > side.rows || (below.rows == side.rows && below.cols > side.cols);
     const Surface s = l.panel_below ? below : side;
     if (s.rows < 1)
         return l;
@@ -59,7 +76,8 @@ Layout make_layout(const Table& table, int width, int height) {
     const int frame_y = 0;
 
     l.fits = true;
-    l.cells_per_metre = s.cells_per_metre;
+    l.cells_per_metre = s.cols_per_metre;
+    l.rows_per_metre = s.rows_per_metre;
     l.felt_cols = s.cols;
     l.felt_rows = s.rows;
     l.table_left = frame_x + rail_cols;

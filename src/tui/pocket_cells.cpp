@@ -48,7 +48,7 @@ PocketCells pocket_cells(const Table& table, const Layout& layout, int number) {
     }
     if (left || right) {
         for (int row = 0; row < layout.felt_rows; ++row) {
-            const double mid = table.width - (row + 0.5) * 2 / c;
+            const double mid = table.width - (row + 0.5) / layout.rows_per_metre;
             if (std::fabs(mid - P.y) <= reach_y)
                 for (int k = 0; k < rail_cols; ++k)
                     add(side_col + k, felt_y + row);

@@ -74,6 +74,7 @@ Grid render(const View& view, const Layout& layout, const Capabilities& caps, in
         draw_aim(frame);
         ball_cells = draw_balls(frame);
         draw_pocket_labels(frame);
+        draw_close_up(frame);
         draw_status(frame);
     }
     draw_panel(frame);

@@ -3,9 +3,14 @@
 
 namespace termpool::tui {
 
-/// Renders the same mid-break frame (a seeded 8-ball break 0.3 s after the strike, colour and
-/// UTF-8, with the panel and a message) `frames` times at `width` x `height` and returns the
-/// mean microseconds per frame, layout included.
-double time_render_us(int width, int height, int frames);
+/// Mean time to compose one frame, layout included.
+struct RenderTime {
+    double wall_us = 0; ///< wall-clock microseconds per frame
+    double cpu_us = 0;  ///< CPU microseconds per frame (this thread's)
+};
+
+/// Renders the same frame of BreakScene (0.3 s into the break: colour and UTF-8, with the
+/// panel and its message) `frames` times at `width` x `height`.
+RenderTime time_render(int width, int height, int frames);
 
 } // namespace termpool::tui

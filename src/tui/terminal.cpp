@@ -13,6 +13,8 @@
 #include <string_view>
 #include <unistd.h>
 
+#include "tui/blank_cells.hpp"
+
 namespace termpool::tui {
 namespace {
 
@@ -165,6 +167,10 @@ Palette palette(Colour c) {
         return {231, COLOR_WHITE};
     case Colour::black:
         return {16, COLOR_BLACK};
+    case Colour::ink:
+        // Colour 0 rather than 16: a moving ball's digits are sent every frame, and "ESC [30m"
+        // is half of "ESC [38;5;16m". Dark digits on a bright ball read in any palette.
+        return {COLOR_BLACK, COLOR_BLACK};
     case Colour::yellow:
         return {220, COLOR_YELLOW};
     case Colour::blue:
@@ -198,6 +204,22 @@ Palette palette(Colour c) {
     return {-1, -1};
 }
 
+bool set_drawing_modes(bool colour) {
+    cbreak();
+    noecho();
+    nonl();
+    keypad(stdscr, TRUE);
+    if (colour) {
+        start_color();
+        use_default_colors();
+    }
+    const bool hidden = curs_set(0) != ERR;
+    // A hidden cursor may stay where the last change left it: curses then sends no move to
+    // park it after each frame (9 bytes a frame at 100x32). A visible one is parked, as before.
+    leaveok(stdscr, hidden);
+    return hidden;
+}
+
 void restore_terminal_modes() {
     if (motion_tracking_on)
         write_raw(mouse_motion_off);
@@ -220,11 +242,8 @@ Terminal::Terminal(bool ascii, bool no_colour) {
         throw std::runtime_error("cannot use this terminal (is TERM set?)");
     if (!std::getenv("ESCDELAY"))
         set_escdelay(100);
-    cbreak();
-    noecho();
-    nonl();
-    keypad(stdscr, TRUE);
-    cursor_hidden = curs_set(0) != ERR;
+    const bool colour_wanted = !no_colour && !std::getenv("NO_COLOR") && has_colors();
+    cursor_hidden = set_drawing_modes(colour_wanted);
     // Tracking goes on only where curses decodes the reports: terminfo announces them (kmous;
     // vt100 has none) and mousemask finds support. Elsewhere a click would arrive as keys, its
     // button byte a Space that shoots.
@@ -237,14 +256,7 @@ Terminal::Terminal(bool ascii, bool no_colour) {
     caps_.mouse = motion_tracking_on;
     alternate_screen_ = has_string_capability("smcup");
 
-    const bool colour_wanted = !no_colour && !std::getenv("NO_COLOR");
-    if (colour_wanted && has_colors()) {
-        start_color();
-        use_default_colors();
-        caps_.colours = COLORS >= 256 ? 256 : 8;
-    } else {
-        caps_.colours = 0;
-    }
+    caps_.colours = !colour_wanted ? 0 : COLORS >= 256 ? 256 : 8;
 
     struct sigaction action {};
     action.sa_handler = on_signal;
@@ -280,38 +292,63 @@ int Terminal::signal_number() {
     return pending_signal;
 }
 
-short ColourPairs::pair_for(const Style& style, int colours) {
-    if (colours == 0)
-        return 0;
-    const int key = static_cast<int>(style.fg) << 8 | static_cast<int>(style.bg);
+short ColourPairs::pair_of(short fg, short bg) {
+    const int key = (fg + 1) << 16 | (bg + 1);
     for (const auto& [k, pair] : pairs_)
         if (k == key)
             return pair;
     const short next = static_cast<short>(pairs_.size() + 1);
     if (next >= COLOR_PAIRS)
         return 0;
-    auto pick = [&](Colour c) { return colours == 256 ? palette(c).c256 : palette(c).c8; };
-    init_pair(next, pick(style.fg), pick(style.bg));
+    init_pair(next, fg, bg);
     pairs_.emplace_back(key, next);
     return next;
 }
 
-void paint(const Grid& grid, int colours, ColourPairs& pairs) {
+short ColourPairs::pair_for(const Style& style, int colours) {
+    if (colours == 0)
+        return 0;
+    auto pick = [&](Colour c) { return colours == 256 ? palette(c).c256 : palette(c).c8; };
+    return pair_of(pick(style.fg), pick(style.bg));
+}
+
+short ColourPairs::blank_pair_for(Colour bg, int colours) {
+    if (colours == 0)
+        return 0;
+    return pair_of(0, colours == 256 ? palette(bg).c256 : palette(bg).c8);
+}
+
+void paint(const Grid& grid, const Capabilities& caps, ColourPairs& pairs) {
+    // Most of what a terminal receives during a shot is colour and attribute changes: a moving
+    // ball is two changed cells, the cloth where it was and its label where it is, and curses
+    // sends both colours of each new pair, and resets all attributes before switching bold on
+    // or off. A blank of the cloth is therefore sent bold, as the labels are, with foreground
+    // colour 0, which has the shortest escape; a blank shows neither (blank_cells.hpp).
+    //
+    // curses also takes rows of the same characters (it compares characters only) for rows
+    // that moved: where three or more line up it scrolls that region of the terminal and then
+    // redraws whole the row it uncovered, hundreds of bytes for a ball that moved a row among
+    // the cloth's identical rows. So that no two rows are alike, one blank of each row of cloth
+    // is sent as a no-break space, at a column of the row's own (with UTF-8 only).
     erase();
     const int rows = std::min(grid.height, LINES), cols = std::min(grid.width, COLS);
     for (int y = 0; y < rows; ++y) {
+        const int signature_x = caps.utf8 ? signature_column(grid, y) : -1;
         for (int x = 0; x < cols; ++x) {
             // The bottom-right cell would scroll some terminals: leave it alone.
             if (y == LINES - 1 && x == COLS - 1)
                 continue;
             const Cell& cell = grid.at(x, y);
+            const bool blank = coloured_blank(cell);
             attr_t attrs = A_NORMAL;
-            if (cell.style.bold)
+            if (cell.style.bold || blank)
                 attrs |= A_BOLD;
             if (cell.style.reverse)
                 attrs |= A_REVERSE;
-            attr_set(attrs, pairs.pair_for(cell.style, colours), nullptr);
-            mvaddstr(y, x, cell.glyph.c_str());
+            const short pair = blank ? pairs.blank_pair_for(cell.style.bg, caps.colours)
+                                     : pairs.pair_for(cell.style, caps.colours);
+            attr_set(attrs, pair, nullptr);
+            mvaddstr(y, x, x == signature_x ? no_break_space : cell.glyph.c_str());
         }
     }
     attr_set(A_NORMAL, 0, nullptr);
@@ -320,7 +357,7 @@ void paint(const Grid& grid, int colours, ColourPairs& pairs) {
 }
 
 void Terminal::draw(const Grid& grid) {
-    paint(grid, caps_.colours, pairs_);
+    paint(grid, caps_, pairs_);
 }
 
 Input Terminal::read(int timeout_ms, int watched_fd) {

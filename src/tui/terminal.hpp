@@ -51,19 +51,31 @@ struct Palette {
 /// The colours of a role.
 Palette palette(Colour role);
 
-/// Curses colour pairs, made on first use for each (foreground, background) role pair.
+/// Curses colour pairs, made on first use for each (foreground, background) colour pair.
 class ColourPairs {
 public:
     /// The pair for a style's colours; 0 (the default pair) in monochrome or when out of pairs.
     short pair_for(const Style& style, int colours);
+    /// The pair for a blank cell of background `bg`: the foreground, which a blank does not
+    /// show, is colour 0, whose escape is the shortest (see paint).
+    short blank_pair_for(Colour bg, int colours);
 
 private:
-    std::vector<std::pair<int, short>> pairs_; // (fg << 8 | bg) -> pair number
+    short pair_of(short fg, short bg);
+    std::vector<std::pair<int, short>> pairs_; // (fg, bg) colour numbers -> pair number
 };
 
 /// Copies a grid into curses' screen with erase, one full draw and one doupdate: curses then
-/// sends only the cells that changed. Terminal::draw and the byte benchmark share it.
-void paint(const Grid& grid, int colours, ColourPairs& pairs);
+/// sends only the cells that changed, and the blanks of the cloth go in the way that costs the
+/// fewest bytes (see blank_cells.hpp). Terminal::draw and the byte benchmark share it.
+void paint(const Grid& grid, const Capabilities& caps, ColourPairs& pairs);
+
+/// Sets the current curses screen up the way the game draws on it: keys unbuffered and not
+/// echoed, Enter as typed, function keys decoded, the cursor hidden (and then left where the
+/// last change put it); with `colour`, colours over the terminal's own default. Terminal's
+/// constructor and the byte benchmark share it, so that the benchmark's bytes are the game's.
+/// Returns whether the cursor could be hidden.
+bool set_drawing_modes(bool colour);
 
 /// The terminal, for as long as the value lives.
 class Terminal {

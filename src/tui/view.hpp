@@ -22,6 +22,7 @@ enum class Colour : std::uint8_t {
     pocket,   ///< a pocket hole
     white,    ///< the cue ball, stripes' background, light text
     black,    ///< the 8, dark text
+    ink,      ///< a ball's dark digits: the terminal's own black (the shortest escape)
     yellow,   ///< 1 and 9
     blue,     ///< 2 and 10
     red,      ///< 3 and 11, the power bar
@@ -88,7 +89,8 @@ struct Layout {
     bool fits = false;          ///< false when the terminal is smaller than the minimum
     int min_width = 40;         ///< the minimum size, for the "please enlarge" message
     int min_height = 14;        ///< the minimum size
-    double cells_per_metre = 0; ///< columns per metre; rows per metre is half of it
+    double cells_per_metre = 0; ///< columns per metre
+    double rows_per_metre = 0;  ///< rows per metre: about half of cells_per_metre (make_layout)
     double table_left = 0;      ///< column of x = 0 (the cushion nose), fractional
     double table_top = 0;       ///< row of y = W (the top cushion nose), fractional
     int panel_x = 0, panel_y = 0, panel_width = 0, panel_height = 0; ///< the text panel
@@ -113,21 +115,34 @@ inline bool on_shoot_button(const Layout& l, int x, int y) {
 }
 
 /// Chooses the largest table that fits a terminal of `width` x `height` cells, leaving room for
-/// the panel (to the right, or below when the terminal is narrow) and the status rows.
+/// the panel (to the right, or below when the terminal is narrow) and the status rows. The felt
+/// has an odd number of rows and 4 k + 2 columns, so that the long axis and the foot and head
+/// spots lie in the middle of cells: a rack drawn at its balls' own cells is then symmetric.
 Layout make_layout(const Table& table, int width, int height);
 
 /// Column and row (fractional) of the table point p; y grows upward on the table and downward
 /// on the screen.
 inline void to_cell(const Layout& l, double table_width, Vec2 p, double& col, double& row) {
     col = l.table_left + p.x * l.cells_per_metre;
-    row = l.table_top + (table_width - p.y) * l.cells_per_metre / 2;
+    row = l.table_top + (table_width - p.y) * l.rows_per_metre;
 }
 
 /// The table point under the centre of cell (col, row).
 inline Vec2 from_cell(const Layout& l, double table_width, double col, double row) {
     return {(col + 0.5 - l.table_left) / l.cells_per_metre,
-            table_width - (row + 0.5 - l.table_top) * 2 / l.cells_per_metre};
+            table_width - (row + 0.5 - l.table_top) / l.rows_per_metre};
 }
+
+/// The close-up of the contact the aid predicts (z): the cue ball and the ball it meets about
+/// ten times larger, for judging a thin cut. Filled while aiming from the aid's prediction.
+struct CloseUp {
+    bool shown = false; ///< z turned it on
+    int ball = -1;      ///< the object ball met first, -1 when none is (a cushion first)
+    Vec2 cue;           ///< the cue ball's centre at contact (the ghost ball)
+    Vec2 object;        ///< the object ball's centre
+    Vec2 heading{1, 0}; ///< the cue ball's direction as it arrives (unit)
+    Vec2 departure;     ///< the object ball's predicted direction (unit; zero when unknown)
+};
 
 /// Everything the renderer needs for one frame. The front end fills it; the renderer draws it.
 struct View {
@@ -143,6 +158,7 @@ struct View {
     double aim_deg = 0;             ///< cue direction, degrees counter-clockwise from +x
     double power = 0;               ///< 0..1 of the power bar
     double speed = 0;               ///< the cue-ball speed that power gives, m/s
+    bool is_break = false;          ///< a break: full power is max_break_speed, not max_shot_speed
     bool time_power = false;        ///< power mode: false = distance, true = oscillating bar
     double side = 0, follow = 0;    ///< tip offsets, fractions of R (-0.5..0.5)
     double elevation_deg = 0;       ///< the cue's elevation above the cloth, degrees (0..80)
@@ -153,6 +169,7 @@ struct View {
     Vec2 ghost;                     ///< where the cue ball touches the first object ball
     std::vector<Vec2> object_path;  ///< predicted direction of the object ball after contact
     std::vector<Vec2> deflect_path; ///< predicted direction of the cue ball after contact
+    CloseUp close_up;               ///< the inset of the contact, when shown
     bool show_marker = false;       ///< draw the mouse aim marker
     Vec2 marker;                    ///< aim marker position on the table
     int called_pocket = 0;          ///< 1..6: highlight that pocket

@@ -1,0 +1,59 @@
+// The rack's log, replayed from the record: the match judges each shot again as it was.
+
+#include "tui/rack_log.hpp"
+
+#include <termpool/match.hpp>
+
+#include "tui/messages.hpp"
+#include "tui/pocket_cells.hpp"
+
+namespace termpool::tui {
+namespace {
+
+std::string ball_words(int id, GameType game) {
+    return game == GameType::snooker ? snooker_ball_name(id) : std::to_string(id);
+}
+
+// What the shooter declared: a safety, a push-out, or the ball and pocket called.
+std::string call_words(const ShotCall& call, GameType game) {
+    if (call.push_out)
+        return ", push-out";
+    if (call.call.safety)
+        return ", safety";
+    if (call.call.ball > 0 && call.call.pocket > 0)
+        return ", calls the " + ball_words(call.call.ball, game) + " in the " +
+               pocket_name(call.call.pocket);
+    if (call.call.ball > 0 && game == GameType::snooker)
+        return ", nominates " + ball_words(call.call.ball, game);
+    return "";
+}
+
+std::string shot_line(int number, const PlayedShot& shot, const GameRecord& record) {
+    const GameType game = record.setup.game;
+    std::string line = std::to_string(number) + ". " + record.names[shot.shooter == 2 ? 1 : 0] +
+                       (shot.was_break ? ", break" : "") + call_words(shot.call, game) + ": ";
+    if (shot.verdict.pocketed.empty()) {
+        line += "nothing pocketed";
+    } else {
+        line += "pocketed";
+        for (const int id : shot.verdict.pocketed)
+            line += " " + (id == 0 ? std::string("cue ball") : ball_words(id, game));
+    }
+    return line + " \u2014 " + verdict_message(shot.verdict, shot.shooter, record.names);
+}
+
+} // namespace
+
+std::vector<std::string> rack_log(const GameRecord& record, int rack) {
+    std::vector<std::string> lines;
+    int number = 0;
+    const auto heard = [&](const PlayedShot& shot) {
+        if (shot.rack == rack)
+            lines.push_back(shot_line(++number, shot, record));
+    };
+    if (!std::holds_alternative<Match>(Match::replay(record, record.actions.size(), heard)))
+        return {};
+    return lines;
+}
+
+} // namespace termpool::tui

@@ -1,0 +1,72 @@
+#include "tui/table_news.hpp"
+
+#include <termpool/setup.hpp>
+
+#include "tui/messages.hpp"
+
+namespace termpool::tui {
+
+std::optional<TableNews> take_action(Match& match, const RecordedAction& action,
+                                     MatchError& error) {
+    TableNews news;
+    news.action = action;
+    news.actor = match.to_act();
+    // Said before the choice is taken: its words depend on what was offered.
+    const std::string choice =
+        choice_words(action.choice, match.game().type(), match.game().free_ball_offered());
+    const int rack = match.rack();
+    if (action.kind == RecordedAction::Kind::shot) {
+        news.before = match.game();
+        news.score_before = match.score();
+        news.trajectory.emplace(game_physics(match.setup()), match.game().balls().size());
+        news.shot.emplace();
+    }
+    error = match.apply(action, news.trajectory ? &*news.trajectory : nullptr,
+                        news.shot ? &*news.shot : nullptr);
+    if (error != MatchError::none)
+        return std::nullopt;
+    const std::string& who = match.name(news.actor);
+    switch (action.kind) {
+    case RecordedAction::Kind::shot:
+        news.words = verdict_message(news.shot->verdict, news.shot->shooter, match.record().names);
+        break;
+    case RecordedAction::Kind::choose:
+        news.words =
+            action.choice == Choice::concede
+                ? who + " concedes the frame \u2014 " + match.name(3 - news.actor) + " wins it"
+                : who + ": " + choice + "; " + match.name(match.game().shooter()) +
+                      (match.game().is_break() ? " breaks" : " to shoot");
+        break;
+    case RecordedAction::Kind::rack:
+        news.words = match.rack() != rack ? rack_words(match, action.breaker) : "";
+        break;
+    case RecordedAction::Kind::place:
+        break;
+    }
+    return news;
+}
+
+std::string breaks_words(const Match& match, int breaker) {
+    return match.name(breaker) + " breaks: place the cue ball " +
+           ball_in_hand_words(match.game().type() == GameType::snooker ? BallInHand::d
+                                                                       : BallInHand::kitchen);
+}
+
+std::string rack_words(const Match& match, int breaker) {
+    return (match.game().type() == GameType::snooker ? "Frame " : "Rack ") +
+           std::to_string(match.rack()) + ": " + breaks_words(match, breaker);
+}
+
+std::string standing_words(const Match& match) {
+    const Game& g = match.game();
+    if (const int winner = g.winner()) {
+        if (match.pending().kind == Pending::next_rack)
+            return match.name(winner) + " won rack " + std::to_string(match.rack());
+        return match.name(winner) + " won";
+    }
+    if (const int chooser = g.chooser())
+        return match.name(chooser) + " to choose";
+    return match.name(g.shooter()) + " to play";
+}
+
+} // namespace termpool::tui

@@ -1,0 +1,94 @@
+// Every event told and kept, through the real binary in tmux: the player's foul stays on the
+// verdict line while the computer places and plays, the computer's shot leaves the player's
+// power as it was, `l` opens the rack's log, and a replay shows each shot's verdict.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <string>
+
+#include "tmux_session.hpp"
+
+using namespace tmux_session;
+
+namespace {
+
+// 9-ball, seed 1, against the computer: Ann turns the cue 60 degrees off the aim guided opens
+// the break with and breaks, hitting a wrong ball first; the animation is skipped.
+void foul_on_the_break(const Tmux& t, const ScratchDir& dir) {
+    t.start(game_command(
+        dir, "--game 9ball --player1 Ann --vs-computer --seed 1 --race 1 --assist guided"));
+    REQUIRE(t.wait_for_text("place the cue ball"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    t.repeat("Left", 60);
+    t.keys("Space");
+    REQUIRE(t.wait_for_text("Ann shoots"));
+    t.keys("x");
+    REQUIRE(t.wait_for_text("Foul: wrong ball first"));
+}
+
+} // namespace
+
+TEST_CASE("the player's foul stays on screen while the computer places and plays", "[tui][e2e]") {
+    const ScratchDir dir("termpool-verdicts");
+    Tmux t;
+    foul_on_the_break(t, dir);
+    // The computer puts the cue ball down, turns its cue for about three seconds and shoots:
+    // the foul is still told.
+    REQUIRE(t.wait_for_text("CPU (medium) shoots"));
+    CHECK(t.screen().find("Foul: wrong ball first") != std::string::npos);
+}
+
+TEST_CASE("l opens the rack's log with each shot's verdict", "[tui][e2e]") {
+    const ScratchDir dir("termpool-verdicts");
+    Tmux t;
+    foul_on_the_break(t, dir);
+    t.keys("l");
+    REQUIRE(t.wait_for_text("Rack 1: the shots"));
+    CHECK(t.wait_for_text("1. Ann, break: pocketed 7"));
+    CHECK(t.screen().find("wrong ball first") != std::string::npos);
+    t.keys("Escape");
+    CHECK(t.wait_gone("Rack 1: the shots"));
+}
+
+TEST_CASE("the computer's shot leaves the player's power as it was", "[tui][e2e]") {
+    const ScratchDir dir("termpool-verdicts");
+    Tmux t;
+    // The break at the aim guided opens it with leaves the table to the computer.
+    t.start(
+        game_command(dir, "--player1 Ann --vs-computer easy --seed 1 --race 1 --assist guided"));
+    REQUIRE(t.wait_for_text("place the cue ball"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("] 12.0 m/s"));
+    t.keys("Space");
+    REQUIRE(t.wait_for_text("Ann shoots"));
+    t.keys("x");
+    // The computer plays its shot at 1.6 m/s; Ann's bar is hers again: the 2.3 m/s of her
+    // shots before the break.
+    REQUIRE(t.wait_for_text("CPU (easy) to shoot"));
+    REQUIRE(t.wait_for_text("CPU (easy) shoots"));
+    t.keys("x");
+    REQUIRE(t.wait_for([](const std::string& s) {
+        return s.find("\u25B6 Ann") != std::string::npos &&
+               s.find("[ shoot ]") != std::string::npos;
+    }));
+    CHECK(t.wait_for_text("] 2.3 m/s", 2));
+}
+
+TEST_CASE("a replay shows each shot's verdict", "[tui][e2e]") {
+    const ScratchDir dir("termpool-replay");
+    {
+        std::ofstream out(dir.path + "/game.save");
+        out << "termpool-record 1\ngame 8ball\ntable 9ft\nseed 3\nbreaker 1\nplayer1 Ann\n"
+               "player2 Bob\nshot 12 0 0 0\nshot 2 90 0 0\nend\n";
+    }
+    Tmux t;
+    t.start(game_command(dir, "replay " + dir.path + "/game.save"));
+    REQUIRE(t.wait_for_text("Replay, shot 1 of 2"));
+    t.keys("x");
+    // The break's verdict while the second shot rolls, then the second's once it stops.
+    REQUIRE(t.wait_for_text("Replay, shot 2 of 2"));
+    CHECK(t.screen().find("Ann shoots again") != std::string::npos);
+    t.keys("x");
+    REQUIRE(t.wait_for_text("Replay ended"));
+    CHECK(t.wait_for_text("Switch player: Bob to shoot", 1));
+}
