@@ -47,7 +47,7 @@ void App::use(std::unique_ptr<TableDriver> driver) {
     hall_ = nullptr;
     table_ = make_table(driver_->match().setup());
     params_ = game_physics(driver_->match().setup());
-    show_.stop(driver_->game().balls());
+    mode_ = NamesMode{};
     verdicts_.clear();
 }
 
@@ -80,12 +80,14 @@ HallDriver& App::join_hall(Match match, TableLink link) {
 
 const Game& App::game() const {
     // While a shot rolls the match has judged it already: show the game as it was.
-    return mode_ == Mode::rolling && show_.before() ? *show_.before() : driver_->game();
+    const RollingMode* rolling = as<RollingMode>();
+    return rolling && rolling->show.before() ? *rolling->show.before() : driver_->game();
 }
 
 const MatchState& App::score() const {
-    return mode_ == Mode::rolling && show_.before() ? show_.score_before()
-                                                    : driver_->match().score();
+    const RollingMode* rolling = as<RollingMode>();
+    return rolling && rolling->show.before() ? rolling->show.score_before()
+                                             : driver_->match().score();
 }
 
 bool App::snooker_play() const {
@@ -93,7 +95,7 @@ bool App::snooker_play() const {
 }
 
 ScreenFacts App::screen() const {
-    return {mode_ == Mode::rolling, mode_ == Mode::over, mode_ == Mode::choosing,
+    return {as<RollingMode>() != nullptr, as<OverMode>() != nullptr, as<ChoosingMode>() != nullptr,
             confirm_quit_ || confirm_concede_};
 }
 
@@ -134,8 +136,7 @@ void App::handle(const Input& in) {
     }
     // Whoever acts elsewhere (the computer, the other terminal, the record), this one may
     // still leave, read the help, or hurry a shot along.
-    if (!driver_->may_act() && mode_ != Mode::rolling && mode_ != Mode::over && text != "q" &&
-        text != "?")
+    if (!driver_->may_act() && !as<RollingMode>() && !as<OverMode>() && text != "q" && text != "?")
         return;
     if (in.kind == Input::Kind::mouse)
         handle_mouse(in);
@@ -162,7 +163,7 @@ void App::apply(const DriverReply& reply) {
 
 void App::handle_key(int key, const std::string& text) {
     if (text == "q") {
-        if (mode_ == Mode::over || driver_->quit_question().empty())
+        if (as<OverMode>() || driver_->quit_question().empty())
             running_ = false;
         else
             confirm_quit_ = true;
@@ -174,65 +175,54 @@ void App::handle_key(int key, const std::string& text) {
         return;
     }
     if (text == "C" && snooker_play() &&
-        (mode_ == Mode::placing || mode_ == Mode::aiming || mode_ == Mode::choosing)) {
+        (as<PlacingMode>() || as<AimingMode>() || as<ChoosingMode>())) {
         ask_concede();
         return;
     }
-    if (text == "n" && mode_ != Mode::over && mode_ != Mode::rolling && driver_->may_rename()) {
+    if (text == "n" && !as<OverMode>() && !as<RollingMode>() && driver_->may_rename()) {
         entry_.player = driver_->match().to_act();
         entry_.text.clear();
         return;
     }
-    switch (mode_) {
-    case Mode::names:
-        return;
-    case Mode::rolling:
-        if (text == "x")
-            show_.hurry();
-        return;
-    case Mode::over:
-        handle_over_key(key, text);
-        return;
-    case Mode::choosing:
-        handle_choice_key(text);
-        return;
-    case Mode::placing:
-        if (!step_spot(place_, key, text, layout_, table_, params_.ball_radius,
-                       game().ball_in_hand() == BallInHand::d) &&
-            (key == key_enter || text == " "))
-            try_place(place_);
-        return;
-    case Mode::aiming:
-        handle_aiming_key(key, text);
-        return;
-    }
+    std::visit([&](auto& mode) { on_key(mode, key, text); }, mode_);
+}
+
+void App::on_key(PlacingMode& placing, int key, const std::string& text) {
+    if (!step_spot(placing.spot, key, text, layout_, table_, params_.ball_radius,
+                   game().ball_in_hand() == BallInHand::d) &&
+        (key == key_enter || text == " "))
+        try_place(placing.spot);
+}
+
+void App::on_key(RollingMode& rolling, int, const std::string& text) {
+    if (text == "x")
+        rolling.show.hurry();
 }
 
 void App::handle_mouse(const Input& in) {
-    if (mode_ == Mode::rolling) {
+    if (RollingMode* rolling = as<RollingMode>()) {
         if (in.clicked || in.pressed)
-            show_.hurry();
+            rolling->show.hurry();
         return;
     }
     if (!layout_.fits)
         return;
-    if (mode_ == Mode::placing) {
-        place_ = from_cell(layout_, table_.width, in.x, in.y);
+    if (PlacingMode* placing = as<PlacingMode>()) {
+        placing->spot = from_cell(layout_, table_.width, in.x, in.y);
         if (in.clicked || in.released)
-            try_place(place_);
+            try_place(placing->spot);
         return;
     }
-    if (mode_ == Mode::aiming)
+    if (as<AimingMode>())
         handle_aiming_mouse(in);
 }
 
 void App::step() {
     const Clock::time_point now = Clock::now();
-    if (mode_ == Mode::rolling && show_.advance(now))
+    if (RollingMode* rolling = as<RollingMode>(); rolling && rolling->show.advance(now))
         after_shot();
     if (driver_->take_reset()) {
         // The table was replaced under this screen (the hall's record, a replay's step).
-        mode_ = Mode::placing;
         verdicts_.clear();
         told_.clear();
         message_ = driver_->table_words();
@@ -241,7 +231,7 @@ void App::step() {
     if (std::string m = driver_->take_message(); !m.empty())
         message_ = std::move(m);
     if (const std::optional<SeatAim> seat = driver_->take_seat_aim();
-        seat && mode_ == Mode::aiming && seat->seat == game().shooter()) {
+        seat && as<AimingMode>() && seat->seat == game().shooter()) {
         // The other terminal's cue turns its own seat's cue here.
         AimState& cue = aims_[seat->seat == 2 ? 1 : 0];
         cue.aim_deg = seat->strike.angle_deg;
@@ -252,15 +242,15 @@ void App::step() {
         cue.show_marker = false;
         update_preview();
     }
-    if (mode_ != Mode::names && mode_ != Mode::rolling)
+    if (!as<NamesMode>() && !as<RollingMode>())
         take_upcoming(now);
-    if (mode_ == Mode::aiming && driver_->may_act())
+    if (as<AimingMode>() && driver_->may_act())
         driver_->aim_set(aim().strike(game().is_break(), now));
 }
 
 bool App::moving() const {
-    return mode_ == Mode::rolling || (mode_ == Mode::aiming && aim().time_power) ||
-           pacing_.showing() || driver_->busy();
+    return as<RollingMode>() || (as<AimingMode>() && aim().time_power) || pacing_.showing() ||
+           driver_->busy();
 }
 
 int App::run() {
@@ -279,7 +269,7 @@ int App::run() {
     }
     // Quitting, or a signal: the game so far is kept (a shot still rolling is not: it replays
     // from its start).
-    if (mode_ != Mode::names)
+    if (!as<NamesMode>())
         driver_->leave();
     return 0;
 }

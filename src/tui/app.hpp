@@ -17,6 +17,7 @@
 #include "tui/hall_driver.hpp"
 #include "tui/shot_show.hpp"
 #include "tui/table_driver.hpp"
+#include "tui/table_modes.hpp"
 #include "tui/terminal.hpp"
 #include "tui/text_entry.hpp"
 #include "tui/view.hpp"
@@ -53,9 +54,11 @@ public:
     bool moving() const;
 
 private:
-    // What the table waits for here; the match (through the driver) decides which.
-    enum class Mode { names, placing, aiming, rolling, choosing, over };
     using Clock = std::chrono::steady_clock;
+
+    /// The mode now, when it is an `M` (null otherwise).
+    template <class M> M* as() { return std::get_if<M>(&mode_); }
+    template <class M> const M* as() const { return std::get_if<M>(&mode_); }
 
     void use(std::unique_ptr<TableDriver> driver);
     const Game& game() const;
@@ -81,13 +84,16 @@ private:
     void shoot();
     void ask_concede();
     void concede();
-    void handle_choice_key(const std::string& text);
-    void handle_over_key(int key, const std::string& text);
 
     // Input (app.cpp, app_aim.cpp).
     void handle_key(int key, const std::string& text);
+    void on_key(NamesMode&, int, const std::string&) {}
+    void on_key(PlacingMode& placing, int key, const std::string& text);
+    void on_key(AimingMode&, int key, const std::string& text);
+    void on_key(RollingMode& rolling, int key, const std::string& text);
+    void on_key(ChoosingMode&, int key, const std::string& text);
+    void on_key(OverMode&, int key, const std::string& text);
     void handle_mouse(const Input& in);
-    void handle_aiming_key(int key, const std::string& text);
     void handle_aiming_mouse(const Input& in);
     void apply(const DriverReply& reply);
     void aim_at_easiest();
@@ -97,9 +103,13 @@ private:
 
     // The View (app_view.cpp).
     void compose(View& view) const;
-    void compose_aiming(View& view) const;
+    void compose_mode(const NamesMode&, View&) const {}
+    void compose_mode(const PlacingMode& placing, View& view) const;
+    void compose_mode(const AimingMode&, View& view) const;
+    void compose_mode(const RollingMode&, View&) const {}
+    void compose_mode(const ChoosingMode&, View& view) const;
+    void compose_mode(const OverMode&, View& view) const;
     void compose_prompt(View& view) const;
-    std::string choice_text() const;
 
     // The prompts (app_prompt.cpp): names, the computer, the race.
     void handle_text_entry(const Input& in);
@@ -123,7 +133,7 @@ private:
     HallDriver* hall_ = nullptr;          // the driver, when it is the hall's
     Table table_;
     PhysicsParams params_;
-    Mode mode_ = Mode::names;
+    TableMode mode_; // what the table waits for here (table_modes.hpp)
     Layout layout_;
     bool running_ = true;
 
@@ -138,8 +148,6 @@ private:
     // Each seat's cue as it was last set: the computer's or the other terminal's shot turns
     // its own seat's cue, never what the player here set.
     AimState aims_[2];
-    Vec2 place_;            // ball in hand: where the cue ball would go
-    ShotShow show_;         // the shot rolling on screen
     ComputerPacing pacing_; // the computer's move being shown
 
     std::string message_; // hints and prompts: whatever comes next replaces them

@@ -45,7 +45,7 @@ bool App::nominate_key(const std::string& text) {
     return said.has_value();
 }
 
-void App::handle_aiming_key(int key, const std::string& text) {
+void App::on_key(AimingMode&, int key, const std::string& text) {
     // Keys move the aim away from the pointer, so its mark goes.
     if (key == key_left || key == key_right || key == key_shift_left || key == key_shift_right ||
         text == "," || text == "." || text == "[" || text == "]")

@@ -13,7 +13,7 @@ void App::handle_text_entry(const Input& in) {
         return;
     if (in.key == key_enter) {
         take_name();
-    } else if (in.key == key_escape && mode_ != Mode::names) {
+    } else if (in.key == key_escape && !as<NamesMode>()) {
         entry_.player = 0;
         entry_.clear();
     }
@@ -21,7 +21,7 @@ void App::handle_text_entry(const Input& in) {
 
 void App::take_name() {
     // At the start, player 2 may be the computer: "computer" or "computer LEVEL".
-    if (mode_ == Mode::names && entry_.player == 2 && entry_.text.starts_with("computer")) {
+    if (as<NamesMode>() != nullptr && entry_.player == 2 && entry_.text.starts_with("computer")) {
         const std::string rest = entry_.text.size() > 9 ? entry_.text.substr(9) : "";
         const auto level = rest.empty() ? std::optional<Level>(Level::medium) : parse_level(rest);
         if (!level) {
@@ -45,7 +45,7 @@ void App::take_name() {
         return;
     }
     entry_.clear();
-    const bool starting = mode_ == Mode::names;
+    const bool starting = as<NamesMode>() != nullptr;
     if (starting && entry_.player == 1 && !options_.names[1] &&
         !driver_->match().seat(2).computer && driver_->referee()) {
         entry_.player = 2;

@@ -26,16 +26,18 @@ void App::begin() {
 }
 
 void App::start_turn() {
-    show_.stop(game().balls());
     pacing_.stop();
+    // Aiming until the pending action says otherwise; a shot shown before is over, so the game
+    // is the driver's as it stands now.
+    mode_ = AimingMode{};
     const PendingAction pending = driver_->pending();
     if (pending.kind == Pending::over || pending.kind == Pending::next_rack) {
-        mode_ = Mode::over;
+        mode_ = OverMode{};
         return;
     }
     aim().new_turn();
     if (pending.kind == Pending::choose) {
-        mode_ = Mode::choosing;
+        mode_ = ChoosingMode{};
         return;
     }
     if (pending.kind == Pending::place) {
@@ -47,8 +49,7 @@ void App::start_turn() {
         const bool must_move =
             !cue || cue->state == MotionState::pocketed || !g.legal_placement(cue->position);
         warn_of_third_foul();
-        mode_ = Mode::placing;
-        place_ = must_move ? first_cue_ball_spot(g, table_.head_spot()) : cue->position;
+        mode_ = PlacingMode{must_move ? first_cue_ball_spot(g, table_.head_spot()) : cue->position};
         return;
     }
     start_aiming();
@@ -64,7 +65,7 @@ void App::warn_of_third_foul() {
 }
 
 void App::start_aiming() {
-    mode_ = Mode::aiming;
+    mode_ = AimingMode{};
     aim().assist = driver_->match().record().assist; // the table's, for both seats
     aim().set_break(game().is_break());
     aim_at_easiest();
@@ -110,9 +111,10 @@ void App::show(TableNews news) {
         // stop, and then its verdict is told.
         message_ = name(news.shot->shooter) + " shoots";
         told_ = news.words;
-        show_.start(std::move(*news.shot), std::move(*news.trajectory), std::move(news.before),
-                    news.score_before, Clock::now());
-        mode_ = Mode::rolling;
+        RollingMode rolling;
+        rolling.show.start(std::move(*news.shot), std::move(*news.trajectory),
+                           std::move(news.before), news.score_before, Clock::now());
+        mode_ = std::move(rolling);
         return;
     }
     message_.clear();
@@ -124,7 +126,6 @@ void App::show(TableNews news) {
 }
 
 void App::after_shot() {
-    show_.stop(show_.balls());
     message_.clear();
     if (driver_->referee())
         tell(told_);
@@ -143,8 +144,8 @@ void App::take_upcoming(Clock::time_point now) {
     const bool hurry = next->hurry;
     if (std::optional<TableNews> news = driver_->take()) {
         show(std::move(*news));
-        if (hurry && mode_ == Mode::rolling)
-            show_.hurry();
+        if (RollingMode* rolling = as<RollingMode>(); rolling && hurry)
+            rolling->show.hurry();
     }
 }
 
@@ -163,12 +164,13 @@ bool App::pace(const Upcoming& next, Clock::time_point now) {
         move.shot.strike = action.strike;
         move.shot.call = action.call;
         pacing_.start(move, aim().aim_deg, now);
-        if (action.kind == RecordedAction::Kind::place)
-            place_ = action.place;
+        if (PlacingMode* placing = as<PlacingMode>();
+            placing && action.kind == RecordedAction::Kind::place)
+            placing->spot = action.place;
     }
     if (action.kind != RecordedAction::Kind::shot)
         return pacing_.due(now);
-    if (mode_ != Mode::aiming)
+    if (!as<AimingMode>())
         return true;
     const double t = pacing_.elapsed(now);
     AimState& cue = aim();
@@ -233,7 +235,7 @@ void App::concede() {
     act(action);
 }
 
-void App::handle_choice_key(const std::string& text) {
+void App::on_key(ChoosingMode&, int, const std::string& text) {
     const auto& choices = game().choices();
     if (text.size() != 1 || text[0] < '1' || text[0] >= '1' + static_cast<int>(choices.size()))
         return;
@@ -243,7 +245,7 @@ void App::handle_choice_key(const std::string& text) {
     act(action);
 }
 
-void App::handle_over_key(int key, const std::string& text) {
+void App::on_key(OverMode&, int key, const std::string& text) {
     if (driver_->pending().kind == Pending::next_rack) {
         if (key == key_enter || text == " " || text == "r") {
             RecordedAction action;
@@ -257,7 +259,6 @@ void App::handle_over_key(int key, const std::string& text) {
     // game is a new table, from the lobby).
     if ((text == "r" || text == "n") && driver_->rematch(text == "r" ? 3 - game().winner() : 1)) {
         player_acts();
-        show_.stop(game().balls());
         message_ = breaks_words(driver_->match(), game().shooter());
         start_turn();
     }

@@ -13,17 +13,18 @@ namespace termpool::tui {
 
 void App::compose(View& v) const {
     const Game& g = game();
+    const RollingMode* rolling = as<RollingMode>();
     v.table = &table_;
-    v.balls = mode_ == Mode::rolling ? show_.balls() : g.balls();
+    v.balls = rolling ? rolling->show.balls() : g.balls();
     v.ball_radius = params_.ball_radius;
     v.game = g.type();
     v.names[0] = name(1);
     v.names[1] = name(2);
     // The panel marks who is at the table: at game over too, when the match's to_act() is
     // already the next rack's breaker.
-    v.shooter = mode_ == Mode::rolling ? show_.shot().shooter
-                : g.chooser() != 0     ? g.chooser()
-                                       : g.shooter();
+    v.shooter = rolling            ? rolling->show.shot().shooter
+                : g.chooser() != 0 ? g.chooser()
+                                   : g.shooter();
     v.groups[0] = g.group_of(1);
     v.groups[1] = g.group_of(2);
     v.practice = !driver_->referee();
@@ -52,7 +53,7 @@ void App::compose(View& v) const {
         v.best_of = score().is_race() ? best_of_for_race(score().race_to) : 0;
         v.race_to = 0;
         // Another terminal's nomination is not sent while it aims: no guess at it.
-        if (mode_ == Mode::aiming && driver_->shows_call()) {
+        if (as<AimingMode>() && driver_->shows_call()) {
             v.nominated = aim().nominated;
             v.nomination_chosen = aim().nomination_chosen;
         }
@@ -61,32 +62,7 @@ void App::compose(View& v) const {
     v.message = problem.empty() ? said() : "Could not save: " + problem + "; " + said();
     v.help = help_;
     v.help_page = help_page_;
-    switch (mode_) {
-    case Mode::placing:
-        v.placing = true;
-        v.placement_legal = g.legal_placement(place_);
-        for (Ball& b : v.balls) {
-            if (b.id != 0)
-                continue;
-            b.position = place_;
-            b.state = MotionState::stationary;
-        }
-        if (said().empty())
-            v.message = name(g.shooter()) + ": place the cue ball";
-        break;
-    case Mode::aiming:
-        compose_aiming(v);
-        break;
-    case Mode::choosing:
-        v.overlay = choice_text();
-        break;
-    case Mode::over:
-        v.overlay = driver_->game_over_text(told_.empty() ? said() : told_);
-        break;
-    case Mode::names:
-    case Mode::rolling:
-        break;
-    }
+    std::visit([&](const auto& mode) { compose_mode(mode, v); }, mode_);
     compose_prompt(v);
     driver_->compose(v, screen());
     if (log_)
@@ -97,7 +73,25 @@ void App::compose(View& v) const {
         v.overlay = name(driver_->match().to_act()) + ": concede the frame?  y / n";
 }
 
-std::string App::choice_text() const {
+void App::compose_mode(const PlacingMode& placing, View& v) const {
+    const Game& g = game();
+    v.placing = true;
+    v.placement_legal = g.legal_placement(placing.spot);
+    for (Ball& b : v.balls) {
+        if (b.id != 0)
+            continue;
+        b.position = placing.spot;
+        b.state = MotionState::stationary;
+    }
+    if (said().empty())
+        v.message = name(g.shooter()) + ": place the cue ball";
+}
+
+void App::compose_mode(const OverMode&, View& v) const {
+    v.overlay = driver_->game_over_text(told_.empty() ? said() : told_);
+}
+
+void App::compose_mode(const ChoosingMode&, View& v) const {
     // What brought the choice (an illegal break, a push-out) goes in the box: it may sit over
     // the panel's message line.
     const Game& g = game();
@@ -107,10 +101,10 @@ std::string App::choice_text() const {
                 choice_words(g.choices()[i], g.type(), g.free_ball_offered());
     if (snooker_play())
         text += "\nC  concede the frame";
-    return text;
+    v.overlay = text;
 }
 
-void App::compose_aiming(View& v) const {
+void App::compose_mode(const AimingMode&, View& v) const {
     v.aiming = true;
     v.aim_deg = aim().aim_deg;
     v.power = aim().current_power(Clock::now());
@@ -161,7 +155,7 @@ void App::compose_prompt(View& v) const {
     if (entry_.player != 0) {
         v.overlay = title + "\n\nName of player " + std::to_string(entry_.player) + ": " +
                     entry_.text + "_\n(Enter keeps \"" + name(entry_.player) + "\")";
-        if (entry_.player == 2 && mode_ == Mode::names)
+        if (entry_.player == 2 && as<NamesMode>())
             v.overlay += "\n(or: computer [easy|medium|hard|pro])";
     } else if (entry_.asking_race) {
         const int race = std::max(1, options_.race_to);

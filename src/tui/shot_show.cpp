@@ -24,10 +24,4 @@ bool ShotShow::advance(Clock::time_point now) {
     return false;
 }
 
-void ShotShow::stop(std::vector<Ball> still) {
-    trajectory_.reset();
-    before_.reset();
-    balls_ = std::move(still);
-}
-
 } // namespace termpool::tui

@@ -18,19 +18,15 @@ public:
     /// game and the score as they stood before it (none in practice: no referee).
     void start(PlayedShot shot, Trajectory trajectory, std::optional<Game> before,
                const MatchState& score_before, Clock::time_point now);
-    /// True from `start` until `stop`.
-    bool rolling() const { return trajectory_.has_value(); }
     /// Moves the balls shown on to `now`; true once they have come to rest.
     bool advance(Clock::time_point now);
     /// The balls come to rest at once (x, a click, a terminal that fell behind).
     void hurry() { start_ -= std::chrono::hours(1); }
-    /// Ends the show; the balls shown become `still`.
-    void stop(std::vector<Ball> still);
     /// The balls as shown now.
     const std::vector<Ball>& balls() const { return balls_; }
     /// The shot shown (or last shown): who played it, the verdict, the simulation.
     const PlayedShot& shot() const { return shot_; }
-    /// The game as it stood before the shot, while it rolls (null in practice, or once over).
+    /// The game as it stood before the shot (null when the driver gave none).
     const Game* before() const { return before_ ? &*before_ : nullptr; }
     /// The score as it stood before the shot.
     const MatchState& score_before() const { return score_before_; }
