@@ -139,6 +139,31 @@ std::optional<Scenario> kick_spot(const Game& g) {
     return std::nullopt;
 }
 
+// The first ball the cue ball placed at `cue` meets when struck as `strike`, -1 for none.
+int first_contact(const Game& g, Vec2 cue, const Strike& strike) {
+    Game played = g;
+    REQUIRE(played.place_cue_ball(cue));
+    return played.play(strike, {}).first_contact;
+}
+
+// A kick the mirror aim misses: the lowest ball hidden as for kick_spot, and the strike at the
+// mirror aim in the rail, at the opening's power, meets another ball first or none.
+std::optional<Scenario> missed_kick_spot(const Game& g) {
+    const std::optional<Scenario> s = kick_spot(g);
+    if (!s)
+        return std::nullopt;
+    const auto mirror = tui::rank_openings(g.table(), g.balls(), g.params().ball_radius, s->cue,
+                                           g.legal_targets(), Assist::standard);
+    const tui::AimState aim = opened(g, s->cue, g.legal_targets(), Assist::standard);
+    if (mirror.empty() || mirror[0].line != tui::TargetLine::kick)
+        return std::nullopt;
+    Strike strike = aim.set_strike(false);
+    strike.angle_deg = mirror[0].aim_deg;
+    if (first_contact(g, s->cue, strike) == s->target)
+        return std::nullopt;
+    return s;
+}
+
 // The lowest ball in plain view, half a metre away: a cell near it whose pointer aims a cut
 // of 15 to 45 degrees that meets it first, its object ball's line running on a long way.
 std::optional<Scenario> cut_spot(const Game& g) {
@@ -512,6 +537,38 @@ TEST_CASE("the call in tmux: a warning before a foul, a kick called with a pocke
     CHECK(shots.back().call.call.ball == shown.first);
     CHECK(shots.back().call.call.pocket == shown.second);
     CHECK(shots.back().call.call.pocket == 4);
+}
+
+TEST_CASE("Space on the proposed kick meets the legal ball first", "[tui][e2e][assist][kick]") {
+    const ScratchDir dir("termpool-assist");
+    Tmux t;
+    // A position where the mirror aim in the rail misses the lowest ball: the old proposal.
+    const Scenario kick = find_scenario(missed_kick_spot);
+    const std::string save = dir.path + "/kick.save";
+    write_save(kick.record, Assist::standard, save);
+    t.start(game_command(dir, "--resume " + save), width, height);
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    REQUIRE(t.wait_for_text("a kick off one rail", 5, "e2e", true));
+    const std::size_t before = shots_of(file_text(save)).size();
+    t.keys("Space");
+    t.keys("x");
+    REQUIRE(t.wait_for(
+        [&](const std::string&) { return shots_of(file_text(save)).size() > before; }, 20));
+    t.kill_session();
+
+    // The shot saved, played on the game it was shot in: the lowest ball met first.
+    const auto saved = parse_record(file_text(save));
+    REQUIRE(std::holds_alternative<GameRecord>(saved));
+    const GameRecord& record = std::get<GameRecord>(saved);
+    const auto replayed = Match::replay(record, record.actions.size() - 1);
+    REQUIRE(std::holds_alternative<Match>(replayed));
+    Game game = std::get<Match>(replayed).game();
+    const RecordedAction& shot = record.actions.back();
+    REQUIRE(shot.kind == RecordedAction::Kind::shot);
+    const Verdict v = game.play(shot.strike, shot.call);
+    CHECK(v.first_contact == kick.target);
+    CHECK(v.foul != Foul::wrong_ball_first);
+    CHECK(v.foul != Foul::no_contact);
 }
 
 TEST_CASE("the computer's call shown while it aims is the call it makes", "[tui][e2e][assist]") {

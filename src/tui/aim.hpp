@@ -83,8 +83,11 @@ AimPreview preview_shot(const Table& table, const std::vector<Ball>& balls, doub
 /// How the cue ball reaches a target.
 enum class TargetLine {
     straight, ///< straight: the cue ball meets it before any other ball
-    kick,     ///< hidden: off one rail (mirror aim)
+    kick,     ///< hidden: off one rail (mirror aim; a turn's opening settles it: refine_kick)
     none,     ///< hidden from every line tried: aimed at its centre all the same
+    /// hidden: off one rail at the mirror aim, which the simulator found no aim near to make
+    /// meet the ball first (refine_kick): the kick may well foul
+    uncertain_kick,
 };
 
 /// A target ball with its easiest pocket.

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "tui/aid_path.hpp"
+#include "tui/kick_aim.hpp"
 
 namespace termpool::tui {
 namespace {
@@ -20,6 +21,7 @@ void AimState::new_turn() {
     nominated = 0;
     nomination_chosen = false;
     target_index = -1;
+    kick_ball = -1;
     side = follow = 0;
     elevation_deg = 0;
     show_marker = false; // the pointer's mark belongs to the last aim
@@ -81,16 +83,29 @@ Strike AimState::set_strike(bool is_break) const {
 
 void AimState::aim_at_target(const std::vector<TargetChoice>& order) {
     target_line = TargetLine::straight;
+    kick_ball = -1;
     if (order.empty())
         return;
     target_index = std::clamp(target_index, 0, static_cast<int>(order.size()) - 1);
-    aim_deg = order[static_cast<std::size_t>(target_index)].aim_deg;
-    target_line = order[static_cast<std::size_t>(target_index)].line;
+    const TargetChoice& target = order[static_cast<std::size_t>(target_index)];
+    aim_deg = target.aim_deg;
+    target_line = target.line;
+    kick_ball = target.line == TargetLine::kick ? target.ball : -1;
+    kick_mirror_deg = aim_deg;
 }
 
 void AimState::update_preview(const Table& table, const PhysicsParams& params,
                               const std::vector<Ball>& balls, bool is_break,
                               const std::function<bool(int ball)>& calls_pocket) {
+    // A kick just proposed: the mirror aim ignores the rail's rebound, throw and spin, and
+    // would often miss or meet another ball first. Settled once, at the strike as set now.
+    if (kick_ball >= 0 && aim_deg == kick_mirror_deg) {
+        if (const auto settled = refine_kick(table, params, balls, set_strike(is_break), kick_ball))
+            aim_deg = *settled;
+        else
+            target_line = TargetLine::uncertain_kick;
+    }
+    kick_ball = -1;
     // Lines as long as the table is round: every line runs to its rail or pocket.
     const double whole_table = 2 * (table.length + table.width);
     full_preview = preview_strike(table, params, balls, set_strike(is_break), whole_table, 1);

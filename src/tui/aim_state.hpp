@@ -43,6 +43,8 @@ struct AimState {
     bool nomination_chosen = false; ///< snooker: the player named it (else the aimed ball)
     int target_index = -1;          ///< which of the ranked targets the aim proposes
     TargetLine target_line = TargetLine::straight; ///< how the proposed aim reaches its ball
+    int kick_ball = -1;               ///< a kick just proposed, to settle (refine_kick), -1: none
+    double kick_mirror_deg = 0;       ///< that kick's mirror aim, as aim_at_target set it
     int preview_ball = -1;            ///< the ball the cue ball meets first (off one rail at most)
     Assist assist = Assist::standard; ///< how much of the aid shows, and where a turn opens
     AimPreview full_preview;          ///< the whole aid, off a rail: what the call reads
@@ -67,13 +69,18 @@ struct AimState {
     Strike strike(bool is_break, Clock::time_point now) const;
     /// The strike the cue as set gives at the bar's set power.
     Strike set_strike(bool is_break) const;
-    /// Turns the cue to the proposed target `target_index` of `order` (kept in range).
+    /// Turns the cue to the proposed target `target_index` of `order` (kept in range). A kick
+    /// is aimed at the ball's mirror image and settled by the next update_preview.
     void aim_at_target(const std::vector<TargetChoice>& order);
     /// Recomputes the aid from the simulator for the strike as set (at the bar's set power: in
     /// timed mode the last one it stopped at), the whole of it and as `assist` shows it, and
     /// proposes the pocket the object ball heads for most directly when `calls_pocket` says the
     /// shot at it names one. The ball met is the first one the cue ball reaches, straight or
-    /// off one rail, so that a kick calls its ball too.
+    /// off one rail, so that a kick calls its ball too. A kick aim_at_target just proposed (the
+    /// aim not turned since) is first settled with the simulator (refine_kick) at the power,
+    /// spin and elevation set now, the turn's opening ones: one that meets its ball first off
+    /// the rail, or, when none near the mirror aim does, the mirror aim as an uncertain kick.
+    /// The player may change the power after; the aim is not settled again.
     void update_preview(const Table& table, const PhysicsParams& params,
                         const std::vector<Ball>& balls, bool is_break,
                         const std::function<bool(int ball)>& calls_pocket);
