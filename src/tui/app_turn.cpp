@@ -15,6 +15,21 @@
 #include "tui/table_news.hpp"
 
 namespace termpool::tui {
+namespace {
+
+// How the proposed aim reaches a ball it cannot see straight.
+std::string line_words(TargetLine line) {
+    switch (line) {
+    case TargetLine::kick:
+        return "no straight line to a legal ball: a kick off one rail";
+    case TargetLine::uncertain_kick:
+        return "no straight line to a legal ball: a kick off one rail that may not reach it";
+    default:
+        return "no clear line to a legal ball";
+    }
+}
+
+} // namespace
 
 void App::begin() {
     message_ = driver_->referee() ? breaks_words(driver_->match(), game().shooter())
@@ -89,10 +104,7 @@ void App::start_aiming() {
                                                            : "2-7 nominates a colour");
     // The proposed aim cannot reach the ball straight: say so before Space is pressed.
     if (aim().target_line != TargetLine::straight && !elsewhere)
-        message_ += (message_.empty() ? "" : "; ") +
-                    std::string(aim().target_line == TargetLine::kick
-                                    ? "no straight line to a legal ball: a kick off one rail"
-                                    : "no clear line to a legal ball");
+        message_ += (message_.empty() ? "" : "; ") + line_words(aim().target_line);
 }
 
 void App::act(const RecordedAction& action) {
