@@ -208,3 +208,27 @@ TEST_CASE("the close-up writes inside the grid at any size", "[tui][closeup]") {
                 CHECK(g.cells.size() == static_cast<std::size_t>(std::max(w, 0) * std::max(h, 0)));
             }
 }
+
+TEST_CASE("the close-up takes the corner where it hides no ball", "[tui][closeup]") {
+    // The contact up and to the right, a ball in the corner farthest from it (where the inset
+    // would go) and near two others: the inset goes to the fourth, and every ball stays in
+    // sight.
+    const Vec2 cue{1.4, 0.8}, object{1.9, 0.82};
+    for (const auto& [w, h] : {std::pair{100, 32}, {80, 24}, {200, 60}}) {
+        CAPTURE(w, h);
+        View v = aiming(cue, object, 0);
+        v.balls.push_back(ball(1, {0.25, 0.22}));
+        v.balls.push_back(ball(2, {2.3, 1.05}));
+        v.balls.push_back(ball(3, {2.3, 0.22}));
+        const Layout l = make_layout(table, w, h);
+        const Grid g = render(v, l, Capabilities{256, true}, w, h);
+        const Inset in = find_inset(g, true);
+        REQUIRE(in.x >= 0);
+        for (const Ball& b : v.balls) {
+            CAPTURE(b.id);
+            double col, row;
+            to_cell(l, table.width, b.position, col, row);
+            CHECK_FALSE((col >= in.x && col < in.x + in.w && row >= in.y && row < in.y + in.h));
+        }
+    }
+}

@@ -111,6 +111,13 @@ void App::on_key(AimingMode&, int key, const std::string& text) {
         aim().called_pocket = text[0] - '0';
         aim().pocket_chosen = true;
         aim().safety = false;
+        update_preview();
+        // The call changed: the safety's word goes, and a pocket with no ball in line says why
+        // the panel names none.
+        message_ = aim().preview_ball > 0
+                       ? ""
+                       : "No ball in line to call: aim at a ball, then 1-6 names its pocket";
+        return;
     } else if (!aim().elevation_key(text)) {
         aim().spin_key(text);
     }

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -88,12 +89,25 @@ CloseUpBox close_up_box(const Frame& f) {
     }
     if (c.ball >= 0 && !keep.empty())
         gx = keep.front().first, gy = keep.front().second;
-    // The corner farthest from the contact whose box covers none of them: the tallest box
-    // that has one, else the tallest in the farthest corner.
+    // Every ball on the table must stay in sight too: the corner whose box covers none of the
+    // points above and the fewest balls (none at best, shrinking the box for it), the farthest
+    // from the contact among equals; else the tallest box in the farthest corner.
+    std::vector<std::pair<int, int>> ball_cells;
+    for (const Ball& b : f.view.balls) {
+        int x, y;
+        if (b.state != MotionState::pocketed && f.cell_of(b.position, x, y))
+            ball_cells.emplace_back(x, y);
+    }
+    struct Pick {
+        CloseUpBox box;
+        long covered = 0;
+        double distance = -1;
+    };
     CloseUpBox fallback;
+    std::optional<Pick> fewest;
     for (int h = tallest; h >= lowest; --h) {
-        CloseUpBox best;
-        double best_distance = -1, far_distance = -1;
+        std::optional<Pick> best;
+        double far_distance = -1;
         for (const int right : {0, 1})
             for (const int bottom : {0, 1}) {
                 const CloseUpBox at{right ? f.felt_x + f.felt_w - w : f.felt_x,
@@ -102,15 +116,21 @@ CloseUpBox close_up_box(const Frame& f) {
                     std::hypot(at.x + at.w / 2.0 - gx, 2 * (at.y + at.h / 2.0 - gy));
                 if (h == tallest && distance > far_distance)
                     far_distance = distance, fallback = at;
-                const bool covers = std::any_of(keep.begin(), keep.end(), [&](const auto& k) {
-                    return inside(at, k.first, k.second);
-                });
-                if (!covers && distance > best_distance)
-                    best_distance = distance, best = at;
+                const auto under = [&](const auto& k) { return inside(at, k.first, k.second); };
+                if (std::any_of(keep.begin(), keep.end(), under))
+                    continue;
+                const long covered = std::count_if(ball_cells.begin(), ball_cells.end(), under);
+                if (!best || covered < best->covered ||
+                    (covered == best->covered && distance > best->distance))
+                    best = Pick{at, covered, distance};
             }
-        if (best.w > 0)
-            return best;
+        if (best && best->covered == 0)
+            return best->box;
+        if (best && (!fewest || best->covered < fewest->covered))
+            fewest = best;
     }
+    if (fewest)
+        return fewest->box;
     return fallback;
 }
 

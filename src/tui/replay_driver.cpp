@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "tui/messages.hpp"
 #include "tui/table_news.hpp"
 
 namespace termpool::tui {
@@ -31,11 +32,23 @@ ReplayDriver::ReplayDriver(GameRecord record)
 void ReplayDriver::rewind_to(std::size_t action) {
     // Rebuild the match from the start without animation, up to (not including) `action`.
     next_ = std::min(action, record_.actions.size());
-    auto replayed = Match::replay(record_, next_);
+    std::optional<PlayedShot> last; // the shot the replay now stands after, to be told again
+    auto replayed = Match::replay(record_, next_, [&](const PlayedShot& shot) { last = shot; });
     if (Match* m = std::get_if<Match>(&replayed))
         match_ = std::move(*m);
     upcoming_.reset();
     reset_ = true;
+    if (last)
+        message_ = verdict_message(last->verdict, last->shooter, record_.names) + ". " +
+                   shot_words("after shot");
+}
+
+std::string ReplayDriver::shot_words(const std::string& which) const {
+    const auto& all = record_.actions;
+    const auto shot = std::count_if(all.begin(), all.begin() + static_cast<long>(next_), is_shot);
+    const auto shots = std::count_if(all.begin(), all.end(), is_shot);
+    return "Replay, " + which + " " + std::to_string(shot) + " of " + std::to_string(shots) +
+           " (space pauses, Left/Right step, x skips, q quits)";
 }
 
 std::string ReplayDriver::table_words() const {
@@ -68,14 +81,8 @@ std::optional<TableNews> ReplayDriver::take() {
     const RecordedAction& action = record_.actions[next_++];
     MatchError error = MatchError::none;
     std::optional<TableNews> news = take_action(match_, action, error);
-    if (news && is_shot(action)) {
-        const auto& all = record_.actions;
-        const auto shot =
-            std::count_if(all.begin(), all.begin() + static_cast<long>(next_), is_shot);
-        const auto shots = std::count_if(all.begin(), all.end(), is_shot);
-        message_ = "Replay, shot " + std::to_string(shot) + " of " + std::to_string(shots) +
-                   " (space pauses, Left/Right step, x skips, q quits)";
-    }
+    if (news && is_shot(action))
+        message_ = shot_words("shot");
     return news;
 }
 

@@ -33,6 +33,8 @@ public:
 
 private:
     void rewind_to(std::size_t action);
+    /// "Replay, shot 3 of 12 (keys)": where the replay stands, `which` naming the shot.
+    std::string shot_words(const std::string& which) const;
 
     GameRecord record_;
     Match match_;
