@@ -48,7 +48,7 @@ namespace {
 
 // Lines of the log a page holds on this screen: the box's border, title and footer aside.
 int log_rows(int height) {
-    return std::max(3, height - 8);
+    return std::max(3, height - 9);
 }
 
 } // namespace

@@ -27,9 +27,12 @@ int covered(const Box& b, const std::vector<std::pair<int, int>>& keep) {
 // else the place covering the fewest, nearest the centre.
 Box place_box(const Frame& f, int w, int h, const std::vector<std::pair<int, int>>& keep) {
     const Painter& p = f.paint;
+    // A box as wide as the screen keeps off the last row: the terminal's bottom-right cell is
+    // never written (it would scroll some terminals), and the box's corner would be missing.
+    const int lowest = p.height() - h - (w >= p.width() ? 1 : 0);
     const auto clamp_box = [&](int x, int y) {
         return Box{std::clamp(x, 0, std::max(0, p.width() - w)),
-                   std::clamp(y, 0, std::max(0, p.height() - h)), w, h};
+                   std::clamp(y, 0, std::max(0, lowest)), w, h};
     };
     const Box centred = clamp_box((p.width() - w) / 2, (p.height() - h) / 2);
     if (covered(centred, keep) == 0)
@@ -42,7 +45,7 @@ Box place_box(const Frame& f, int w, int h, const std::vector<std::pair<int, int
         return panel;
     Box best = centred;
     long best_cost = LONG_MAX;
-    for (int y = 0; y + h <= p.height(); ++y)
+    for (int y = 0; y <= lowest; ++y)
         for (int x = 0; x + w <= p.width(); ++x) {
             const Box b{x, y, w, h};
             // Distance in screen terms, a row being two columns tall.
