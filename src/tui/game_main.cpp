@@ -137,7 +137,9 @@ void tell_where_saved(const std::string& path, const std::optional<std::string>&
         return; // nothing was played (the names were never entered)
     // A game that is over has nothing to continue: it can be watched again.
     if (after.game && finished(*after.game)) {
-        std::printf("Game over, saved in %s; watch it again with: %s replay %s\n",
+        // The next new game takes the slot of a finished one: say so, or the advice goes stale.
+        std::printf("Game over, saved in %s until a new game takes its place; watch it again "
+                    "with: %s replay %s\n",
                     display_path(path).c_str(), self_command().c_str(), display_path(path).c_str());
         return;
     }
