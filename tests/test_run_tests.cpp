@@ -78,4 +78,14 @@ TEST_CASE("run-tests: one closing line for both runs, skipped cases, a run that 
     r = run_tests(died);
     CHECK(r.last_line == "tests: 7 passed, 1 failed");
     CHECK(r.status == 1);
+
+    // Every test passed, then a leak report at exit changed the status: the run's line says so,
+    // and the exit status is a failure.
+    const std::string leaked =
+        stand_in(dir, "All tests passed (9 assertions in 7 test cases)\n==1==ERROR: leaks", 23,
+                 "All tests passed (4 assertions in 3 test cases)", 0);
+    const std::string out = run("sh tools/run-tests " + leaked + " 2>&1; echo \"status $?\"");
+    CHECK(out.find("run unit: 7 passed, 0 failed") != std::string::npos);
+    CHECK(out.find("exit status 23 after its tests") != std::string::npos);
+    CHECK(out.find("status 1") != std::string::npos);
 }
