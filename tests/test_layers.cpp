@@ -191,7 +191,8 @@ TEST_CASE("the App has one action path: hall, practice and replay live in their 
           "[layers]") {
     // Every input becomes an action for the table's driver (table_driver.hpp); what differs
     // between local play, the hall, a replay and practice is the driver's, not the App's.
-    static const std::regex branch(R"(\bin_hall\s*\(|\bpractice_\b|\breplaying_\b|\blink_\b)");
+    static const std::regex branch(
+        R"(\bin_hall\s*\(|\bpractice_\b|\breplaying_\b|\blink_\b|\bhall_\b|\bhall\s*\(\))");
     int app_files = 0;
     for (const fs::path& file : sources("src/tui")) {
         const std::string name = file.filename().string();

@@ -247,6 +247,12 @@ TEST_CASE("the assist is set by --assist and the config, kept in the save's head
     REQUIRE(std::holds_alternative<RecordError>(early));
     CHECK(std::get<RecordError>(early).line == 3);
     CHECK(std::get<RecordError>(early).message == "'assist' lines need record version 5");
+    // Two assist lines: the second is an error, not a silent winner.
+    const auto twice =
+        parse_record("termpool-record 5\ngame 8ball\nassist pro\nassist guided\nend\n");
+    REQUIRE(std::holds_alternative<RecordError>(twice));
+    CHECK(std::get<RecordError>(twice).line == 4);
+    CHECK(std::get<RecordError>(twice).message == "a second 'assist' line");
 }
 
 namespace {

@@ -1,6 +1,7 @@
 #pragma once
-// Display width of UTF-8 text, without curses or the C locale: the panel lays names out in
-// columns and the name prompt limits them, and both must agree with what a terminal shows.
+/// \file
+/// Display width of UTF-8 text, without curses or the C locale: what lays text out in columns
+/// (a player's name, a table of figures) must agree with what a terminal shows.
 
 #include <cstddef>
 #include <string>

@@ -256,6 +256,7 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
     bool header = false, ended = false, checked = false;
     std::uint64_t version = 0;
     std::optional<int> physics;
+    bool assist_seen = false; // a second assist line would silently win
     for (const TextLine& text_line : text_lines(text)) {
         const std::string_view line = text_line.text;
         line_number = text_line.number;
@@ -362,6 +363,9 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
                 return fail("unknown break rule '" + std::string(f[1]) + "' (alternate or winner)");
             r.break_rule = *rule;
         } else if (key == "assist" && want(2)) {
+            if (assist_seen)
+                return fail("a second 'assist' line");
+            assist_seen = true;
             const auto assist = parse_assist(f[1]);
             if (!assist)
                 return fail("unknown assist '" + std::string(f[1]) + "' (guided, standard or pro)");

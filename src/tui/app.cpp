@@ -44,7 +44,6 @@ App::App(Terminal& terminal, const GameOptions& options)
 
 void App::use(std::unique_ptr<TableDriver> driver) {
     driver_ = std::move(driver);
-    hall_ = nullptr;
     table_ = make_table(driver_->match().setup());
     params_ = game_physics(driver_->match().setup());
     mode_ = NamesMode{};
@@ -72,7 +71,6 @@ HallDriver& App::join_hall(Match match, TableLink link) {
     auto hall = std::make_unique<HallDriver>(std::move(match), std::move(link));
     HallDriver& joined = *hall;
     use(std::move(hall));
-    hall_ = &joined;
     entry_.player = 0;
     entry_.clear();
     return joined;
@@ -267,8 +265,8 @@ int App::run() {
             in = term_.read(0);
         }
     }
-    // Quitting, or a signal: the game so far is kept (a shot still rolling is not: it replays
-    // from its start).
+    // Quitting, or a signal: the game so far is kept (a shot still rolling too: the driver
+    // kept it when it was played).
     if (!as<NamesMode>())
         driver_->leave();
     return 0;

@@ -36,10 +36,8 @@ public:
     /// Plays a saved game back instead of playing: space pauses, Left/Right step a shot.
     void start_replay(const GameRecord& record);
     /// Takes up the hall's table at `match`, playing `link.seat` (0: watching); the hall
-    /// session feeds the server's news to the driver returned.
+    /// session feeds the server's news to the driver returned, which lives as long as the App.
     HallDriver& join_hall(Match match, TableLink link);
-    /// The hall's table, while this App plays one (null otherwise).
-    HallDriver* hall() { return hall_; }
 
     // The loop's parts, for a front end with a loop of its own (the hall's).
     /// Moves time on: the shot rolling, the computer's or the hall's next move.
@@ -130,7 +128,6 @@ private:
     GameOptions options_;
     std::uint64_t seed_;
     std::unique_ptr<TableDriver> driver_; // where the actions go: the one path of the table
-    HallDriver* hall_ = nullptr;          // the driver, when it is the hall's
     Table table_;
     PhysicsParams params_;
     TableMode mode_; // what the table waits for here (table_modes.hpp)

@@ -108,13 +108,16 @@ void App::start_aiming() {
 }
 
 void App::act(const RecordedAction& action) {
-    // The player here acts: the verdicts told since their last action have been read.
-    player_acts();
     std::string refusal;
-    if (std::optional<TableNews> news = driver_->submit(action, refusal))
+    std::optional<TableNews> news = driver_->submit(action, refusal);
+    if (!refusal.empty()) {
+        message_ = "Not taken: " + refusal; // nothing was done: the verdicts stay
+        return;
+    }
+    // The player here acted: the verdicts told since their last action have been read.
+    player_acts();
+    if (news)
         show(std::move(*news));
-    else if (!refusal.empty())
-        message_ = "Not taken: " + refusal;
 }
 
 void App::show(TableNews news) {
@@ -259,7 +262,7 @@ void App::on_key(ChoosingMode&, int, const std::string& text) {
 
 void App::on_key(OverMode&, int key, const std::string& text) {
     if (driver_->pending().kind == Pending::next_rack) {
-        if (key == key_enter || text == " " || text == "r") {
+        if (driver_->may_act() && (key == key_enter || text == " " || text == "r")) {
             RecordedAction action;
             action.kind = RecordedAction::Kind::rack;
             action.breaker = driver_->match().next_breaker();

@@ -1,6 +1,7 @@
 #include "tui/hall_driver.hpp"
 
 #include <algorithm>
+#include <termpool/text_width.hpp>
 
 #include "tui/table_news.hpp"
 
@@ -13,9 +14,13 @@ constexpr std::size_t chat_chars = 200;
 // catches up with the table.
 constexpr std::size_t far_behind = 12;
 
+// Characters typed: code points (the server counts them so), an invalid byte as one.
 std::size_t code_points(const std::string& text) {
-    return static_cast<std::size_t>(
-        std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+    std::size_t count = 0;
+    char32_t cp = 0;
+    for (std::size_t i = 0; i < text.size(); ++count)
+        decode_utf8(text, i, cp);
+    return count;
 }
 
 bool same_strike(const Strike& a, const Strike& b) {

@@ -37,7 +37,7 @@ int HallSession::run() {
         receive();
         if (app_) {
             app_->step();
-            if (const auto copy = app_->hall()->take_sync_request())
+            if (const auto copy = driver_->take_sync_request())
                 send(hall::Sync{copy->actions, copy->hash});
             if (!app_->running())
                 leave_table();
@@ -113,8 +113,8 @@ void HallSession::lost_connection(const std::string& why) {
     std::snprintf(delay, sizeof delay, "%.2g", std::chrono::duration<double>(wait).count());
     message_ = "The hall is away (" + why + "); trying again in " + delay + " s (r: now)";
     if (app_)
-        app_->hall()->set_notice(std::string("The hall is away: trying again in ") + delay +
-                                 " s; your seat waits");
+        driver_->set_notice(std::string("The hall is away: trying again in ") + delay +
+                            " s; your seat waits");
 }
 
 void HallSession::receive() {

@@ -97,6 +97,7 @@ private:
     int seat_ = 0;
     std::string record_text_;
     std::optional<App> app_;
+    HallDriver* driver_ = nullptr; // app_'s table driver, which the server's news goes to
     int rejoin_table_ = 0;
     int rejoin_seat_ = 0;
 

@@ -41,7 +41,7 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
     } else if (const auto* m = std::get_if<hall::Error>(&message)) {
         const std::string words = m->text.empty() ? hall::error_code_name(m->code) : m->text;
         if (app_ && table_ != 0)
-            app_->hall()->refused(words);
+            driver_->refused(words);
         else
             message_ = "The hall said: " + words;
         if (m->code == hall::ErrorCode::replaced || m->code == hall::ErrorCode::version) {
@@ -49,6 +49,7 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
             // version): this one stops until asked.
             stopped_ = true;
             app_.reset();
+            driver_ = nullptr;
             table_ = seat_ = rejoin_table_ = rejoin_seat_ = 0;
             message_ = m->code == hall::ErrorCode::replaced
                            ? name_ + " came into the hall from another terminal, which plays on; "
@@ -81,6 +82,7 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
             // The table closed under us (a game not started is not kept over a restart).
             message_ = "Table " + std::to_string(table_) + " is gone";
             app_.reset();
+            driver_ = nullptr;
             table_ = seat_ = rejoin_table_ = rejoin_seat_ = 0;
         }
         show_seats();
@@ -108,6 +110,7 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
     } else if (const auto* m = std::get_if<hall::Left>(&message)) {
         if (m->table == table_) {
             app_.reset();
+            driver_ = nullptr;
             table_ = seat_ = 0;
         }
     } else if (const auto* m = std::get_if<hall::Yours>(&message)) {
@@ -115,16 +118,16 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
             offer_ = *m;
     } else if (const auto* m = std::get_if<hall::SeatChange>(&message)) {
         if (app_ && m->table == table_)
-            app_->hall()->seat(m->seat, hall_seat_of(m->view));
+            driver_->seat(m->seat, hall_seat_of(m->view));
     } else if (const auto* m = std::get_if<hall::ActionDone>(&message)) {
         if (app_ && m->table == table_)
-            app_->hall()->action(m->seq, m->hash, m->action);
+            driver_->action(m->seq, m->hash, m->action);
     } else if (const auto* m = std::get_if<hall::AimShown>(&message)) {
         if (app_ && m->table == table_)
-            app_->hall()->aim(m->seat, m->strike);
+            driver_->aim(m->seat, m->strike);
     } else if (const auto* m = std::get_if<hall::ChatShown>(&message)) {
         if (app_ && m->table == table_)
-            app_->hall()->chat(m->name, m->text);
+            driver_->chat(m->name, m->text);
     }
 }
 
@@ -151,7 +154,7 @@ void HallSession::record_ended(const hall::RecordEnd& end) {
 
 void HallSession::enter_table(Match match) {
     if (app_) {
-        app_->hall()->record(std::move(match));
+        driver_->record(std::move(match));
         show_seats();
         return;
     }
@@ -166,7 +169,7 @@ void HallSession::enter_table(Match match) {
     link.seat = seat_;
     link.act = [this](const RecordedAction& action) {
         if (!welcomed_) {
-            app_->hall()->refused("the hall is away; play it again once it is back");
+            driver_->refused("the hall is away; play it again once it is back");
             return;
         }
         aim_waiting_.reset(); // the shot is on its way: the cue before it is old news
@@ -184,7 +187,7 @@ void HallSession::enter_table(Match match) {
         send(hall::Chat{text});
         return true;
     };
-    app_->join_hall(std::move(match), std::move(link));
+    driver_ = &app_->join_hall(std::move(match), std::move(link));
     show_seats();
 }
 
@@ -195,6 +198,7 @@ void HallSession::leave_table() {
                    (seat_ != 0 ? " (a seat in a game under way waits for you)" : "");
     }
     app_.reset();
+    driver_ = nullptr;
     table_ = seat_ = 0;
     rejoin_table_ = rejoin_seat_ = 0;
     aim_waiting_.reset();
@@ -205,7 +209,7 @@ void HallSession::show_seats() {
         return;
     if (const hall::TableView* t = table_view(table_))
         for (int s = 1; s <= 2; ++s)
-            app_->hall()->seat(s, hall_seat_of(t->seats[s - 1]));
+            driver_->seat(s, hall_seat_of(t->seats[s - 1]));
 }
 
 const hall::TableView* HallSession::table_view(int number) const {

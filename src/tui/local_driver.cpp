@@ -119,7 +119,7 @@ const Upcoming* LocalDriver::upcoming(Clock::time_point now) {
         return &*upcoming_;
     }
     rack_over_seen_ = false;
-    if (!match_.computer_to_act())
+    if (computer_refused_ || !match_.computer_to_act())
         return nullptr;
     const std::optional<ComputerMove> move = match_.computer_move();
     if (!move)
@@ -133,7 +133,14 @@ std::optional<TableNews> LocalDriver::take() {
         return std::nullopt;
     const RecordedAction action = upcoming_->action;
     std::string refusal;
-    return apply(action, refusal);
+    std::optional<TableNews> news = apply(action, refusal);
+    if (!news) {
+        // Asking again would bring the same move: say so once, and wait for the player to
+        // leave (the game is saved as it stands).
+        computer_refused_ = true;
+        message_ = "The computer's move was refused (" + refusal + "); q quits, the game is saved";
+    }
+    return news;
 }
 
 bool LocalDriver::rematch(int breaker) {
@@ -141,6 +148,7 @@ bool LocalDriver::rematch(int breaker) {
     // streams.
     match_ = std::move(match_).rematch(breaker, seed_++);
     upcoming_.reset();
+    computer_refused_ = false;
     return true;
 }
 

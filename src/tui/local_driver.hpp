@@ -4,6 +4,7 @@
 // its moves here.
 
 #include <termpool/match.hpp>
+#include <utility>
 
 #include "player/options.hpp"
 #include "tui/table_driver.hpp"
@@ -34,6 +35,7 @@ public:
     MatchError seat_computer(int player, Level level) override;
     MatchError set_race(int race_to) override;
     std::string problem() const override { return save_problem_; }
+    std::string take_message() override { return std::exchange(message_, {}); }
     std::string game_over_text(const std::string& told) const override;
     void leave() override { save(); }
 
@@ -48,7 +50,9 @@ private:
     std::optional<Upcoming> upcoming_; // the computer's move, asked once per decision
     Clock::time_point rack_over_at_;   // two computers: when the rack they played ended
     bool rack_over_seen_ = false;
-    std::string save_problem_; // why the last save failed, until one works
+    std::string save_problem_;      // why the last save failed, until one works
+    bool computer_refused_ = false; // the Match refused the computer's move: it is not asked again
+    std::string message_;           // that refusal, for the message line
 };
 
 } // namespace termpool::tui

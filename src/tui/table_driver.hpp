@@ -31,15 +31,15 @@ struct TableNews {
 
 /// An action someone else has decided and the table has not yet taken.
 struct Upcoming {
-    RecordedAction action;
-    bool paced = false; ///< a computer's: shown like a player's (the cue turns, the bar fills)
-    bool hurry = false; ///< the terminal is far behind: a shot comes to rest at once
+    RecordedAction action; ///< what will be done
+    bool paced = false;    ///< a computer's: shown like a player's (the cue turns, the bar fills)
+    bool hurry = false;    ///< the terminal is far behind: a shot comes to rest at once
 };
 
 /// Another terminal's cue, as it sets it.
 struct SeatAim {
-    int seat = 0;
-    Strike strike;
+    int seat = 0;  ///< the seat aiming: 1 or 2
+    Strike strike; ///< its cue as set
 };
 
 /// What a driver's own key did, for the App.
@@ -95,13 +95,15 @@ public:
     virtual bool rematch(int /*breaker*/) { return false; }
     /// True when the players may be renamed here.
     virtual bool may_rename() const { return false; }
-    /// Renames `player`, seats a computer, or sets the race (before the first action).
+    /// Renames `player`.
     virtual MatchError rename(int /*player*/, const std::string& /*name*/) {
         return MatchError::not_offered;
     }
+    /// Seats a computer of `level` in `player`'s seat (named after it).
     virtual MatchError seat_computer(int /*player*/, Level /*level*/) {
         return MatchError::not_offered;
     }
+    /// Sets the race before the first action.
     virtual MatchError set_race(int /*race_to*/) { return MatchError::not_offered; }
 
     /// A key or click of the driver's own (the hall's chat, practice's moves, the replay's

@@ -1,7 +1,8 @@
 #pragma once
 // What the table waits for at this terminal, one type per mode with the data only it has. The
-// driver's pending action decides which (App::start_turn); each mode reads its own input and
-// draws its own part of the View (app_modes.cpp).
+// driver's pending action decides which (App::start_turn); each mode reads its own input
+// (App::on_key, in app.cpp, app_aim.cpp and app_turn.cpp) and draws its own part of the View
+// (App::compose_mode, in app_view.cpp).
 
 #include <string>
 #include <termpool/vec.hpp>
