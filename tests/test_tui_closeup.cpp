@@ -9,6 +9,7 @@
 #include <termpool/params.hpp>
 #include <vector>
 
+#include "tui/aid_path.hpp"
 #include "tui/aim.hpp"
 #include "tui/aim_state.hpp"
 #include "tui/ball_style.hpp"
@@ -41,7 +42,8 @@ View aiming(Vec2 cue, Vec2 object, double aim_deg, bool close_up = true) {
     AimState aim;
     aim.aim_deg = aim_deg;
     aim.close_up = close_up;
-    aim.preview = preview_shot(table, v.balls, R, cue, aim_deg);
+    aim.full_preview = preview_shot(table, v.balls, R, cue, aim_deg);
+    aim.preview = aim.full_preview;
     v.close_up = aim.close_up_view(v.balls);
     return v;
 }
@@ -230,5 +232,24 @@ TEST_CASE("the close-up takes the corner where it hides no ball", "[tui][closeup
             to_cell(l, table.width, b.position, col, row);
             CHECK_FALSE((col >= in.x && col < in.x + in.w && row >= in.y && row < in.y + in.h));
         }
+    }
+}
+
+TEST_CASE("the close-up shows the contact at every assist, the way out only where it is shown",
+          "[tui][closeup]") {
+    // Pro draws nothing after the first contact, yet the contact itself is the cue's: the
+    // inset still shows the ball met and where, without the object ball's line out.
+    const Vec2 cue{0.8, 0.5}, object{1.8, 0.55};
+    const std::vector<Ball> balls = {ball(0, cue), ball(5, object)};
+    for (const Assist level : {Assist::guided, Assist::standard, Assist::pro}) {
+        CAPTURE(static_cast<int>(level));
+        AimState aim;
+        aim.close_up = true;
+        aim.full_preview = preview_shot(table, balls, R, cue, 0);
+        aim.preview = shown_preview(aim.full_preview, level, R);
+        const CloseUp c = aim.close_up_view(balls);
+        CHECK(c.ball == 5);
+        CHECK(length(c.cue - aim.full_preview.ghost) == 0);
+        CHECK((length(c.departure) > 0) == (level != Assist::pro));
     }
 }

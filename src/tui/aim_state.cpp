@@ -136,19 +136,23 @@ CloseUp AimState::close_up_view(const std::vector<Ball>& balls) const {
     c.shown = close_up;
     const double a = aim_deg * std::numbers::pi / 180;
     c.heading = {std::cos(a), std::sin(a)};
+    // The contact is the cue's own business at every assist (pro draws the path to it too), so
+    // the close-up reads it from the whole aid; only what comes after the contact, the object
+    // ball's way out, is the assist's to show or hide.
+    const AimPreview& whole = full_preview;
     // The cue ball's last stretch before the contact: squirt and swerve turn it off the aim.
-    const std::vector<Vec2>& path = preview.cue_path;
+    const std::vector<Vec2>& path = whole.cue_path;
     if (path.size() >= 2 && length(path.back() - path[path.size() - 2]) > 0)
         c.heading = normalized(path.back() - path[path.size() - 2]);
-    if (!preview.has_ghost || preview.object_ball < 0)
+    if (!whole.has_ghost || whole.object_ball < 0)
         return c;
     for (const Ball& b : balls)
-        if (b.id == preview.object_ball && b.state != MotionState::pocketed) {
+        if (b.id == whole.object_ball && b.state != MotionState::pocketed) {
             c.ball = b.id;
             c.object = b.position;
         }
-    c.cue = preview.ghost;
-    // The object ball's first direction: under guided its line goes on off a cushion.
+    c.cue = whole.ghost;
+    // The object ball's first direction, where the assist shows it.
     const std::vector<Vec2>& out = preview.object_path;
     if (out.size() >= 2 && length(out[1] - out[0]) > 0)
         c.departure = normalized(out[1] - out[0]);
