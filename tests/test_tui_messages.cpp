@@ -102,3 +102,27 @@ TEST_CASE("the rack's log tells each shot: shooter, call, pots and verdict", "[t
     broken.actions.front().kind = RecordedAction::Kind::rack;
     CHECK(rack_log(broken, 1).empty());
 }
+
+TEST_CASE("the rack's log grows shot by shot as the rebuilt one would read", "[tui][messages]") {
+    // Each shot adds its line as it is told; the log of the record rebuilt afterwards agrees,
+    // and the first shot of the next rack starts the log afresh.
+    const auto parsed =
+        parse_record("termpool-record 1\ngame 8ball\ntable 9ft\nseed 3\nbreaker 1\n"
+                     "player1 Ann\nplayer2 Bob\nshot 12 0 0 0\nshot 2 90 0 0\nend\n");
+    REQUIRE(std::holds_alternative<GameRecord>(parsed));
+    const GameRecord& record = std::get<GameRecord>(parsed);
+    GameRecord empty = record;
+    empty.actions.clear();
+    RackLog log;
+    log.rebuild(empty, 1);
+    CHECK(log.lines(1).empty());
+    const auto heard = [&](const PlayedShot& shot) { log.add(shot, record); };
+    REQUIRE(std::holds_alternative<Match>(Match::replay(record, record.actions.size(), heard)));
+    CHECK(log.lines(1) == rack_log(record, 1));
+    CHECK(log.lines(2).empty());
+    PlayedShot next_rack;
+    next_rack.rack = 2;
+    log.add(next_rack, record);
+    CHECK(log.lines(2).size() == 1);
+    CHECK(log.lines(1).empty());
+}

@@ -44,6 +44,7 @@ App::App(Terminal& terminal, const GameOptions& options)
 
 void App::use(std::unique_ptr<TableDriver> driver) {
     driver_ = std::move(driver);
+    rack_log_.rebuild(driver_->match().record(), driver_->match().rack());
     table_ = make_table(driver_->match().setup());
     params_ = game_physics(driver_->match().setup());
     mode_ = NamesMode{};
@@ -223,6 +224,7 @@ void App::step() {
         // The table was replaced under this screen (the hall's record, a replay's step).
         verdicts_.clear();
         told_.clear();
+        rack_log_.rebuild(driver_->match().record(), driver_->match().rack());
         message_ = driver_->table_words();
         start_turn();
     }

@@ -15,6 +15,7 @@
 #include "tui/aim_state.hpp"
 #include "tui/computer_pacing.hpp"
 #include "tui/hall_driver.hpp"
+#include "tui/rack_log.hpp"
 #include "tui/shot_show.hpp"
 #include "tui/table_driver.hpp"
 #include "tui/table_modes.hpp"
@@ -152,6 +153,7 @@ private:
     // verdicts and choices): shown until the player here acts again.
     std::vector<std::string> verdicts_;
     std::string told_; // the last verdict, for the box at the end of a rack
+    RackLog rack_log_; // the rack's shots as they were told
     // The rack's log while it is open: its lines and the page shown.
     std::optional<std::vector<std::string>> log_;
     int log_page_ = 0;

@@ -39,8 +39,9 @@ std::string App::said() const {
 }
 
 void App::open_log() {
-    log_ = driver_->referee() ? rack_log(driver_->match().record(), driver_->match().rack())
-                              : std::vector<std::string>{};
+    // The shots told so far: one rolling now is in the log once its verdict is told.
+    log_ =
+        driver_->referee() ? rack_log_.lines(driver_->match().rack()) : std::vector<std::string>{};
     log_page_ = 0;
 }
 

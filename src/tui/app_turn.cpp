@@ -141,6 +141,8 @@ void App::show(TableNews news) {
 }
 
 void App::after_shot() {
+    if (const RollingMode* rolling = as<RollingMode>(); rolling && driver_->referee())
+        rack_log_.add(rolling->show.shot(), driver_->match().record());
     message_.clear();
     if (driver_->referee())
         tell(told_);

@@ -56,4 +56,21 @@ std::vector<std::string> rack_log(const GameRecord& record, int rack) {
     return lines;
 }
 
+void RackLog::rebuild(const GameRecord& record, int rack) {
+    rack_ = rack;
+    lines_ = rack_log(record, rack);
+}
+
+void RackLog::add(const PlayedShot& shot, const GameRecord& record) {
+    if (shot.rack != rack_) {
+        rack_ = shot.rack;
+        lines_.clear();
+    }
+    lines_.push_back(shot_line(static_cast<int>(lines_.size()) + 1, shot, record));
+}
+
+std::vector<std::string> RackLog::lines(int rack) const {
+    return rack == rack_ ? lines_ : std::vector<std::string>{};
+}
+
 } // namespace termpool::tui
