@@ -15,7 +15,8 @@ BreakScene::BreakScene(std::uint64_t seed)
     : table_(make_table(TableSize::nine_foot)),
       rack_(make_rack(table_, params_, RackType::eight_ball, game_rack_seed(seed, 0))),
       trajectory_(params_, rack_.size()) {
-    // As App::start_aiming sets a break up: full power, the easiest target's aim, the aid.
+    // As App::start_aiming sets a break up at the default assist (standard): full power, full on
+    // the easiest target, the aid.
     std::vector<int> targets;
     Vec2 cue;
     for (const Ball& b : rack_) {
@@ -26,7 +27,9 @@ BreakScene::BreakScene(std::uint64_t seed)
     }
     aim_.new_turn();
     aim_.set_break(true);
-    aim_.aim_at_target(rank_targets(table_, rack_, params_.ball_radius, cue, targets));
+    aim_.assist = Assist::standard;
+    aim_.aim_at_target(
+        rank_openings(table_, rack_, params_.ball_radius, cue, targets, Assist::standard));
     aim_.update_preview(table_, params_, rack_, true, [](int) { return false; });
     const ShotResult result =
         simulate_shot(table_, params_, rack_, aim_.set_strike(true), &trajectory_);
