@@ -1,9 +1,9 @@
 // termpool entry point: dispatches to the subcommands.
 
 #include "cli/commands.hpp"
+#include "cli/saves_command.hpp"
+#include "cli/stats_command.hpp"
 #include "hall/hall_main.hpp"
-#include "player/saves_command.hpp"
-#include "player/stats_command.hpp"
 #include "tui/bench_render.hpp"
 #include "tui/game_main.hpp"
 #include "tui/hall_session.hpp"
@@ -100,10 +100,10 @@ int main(int argc, char** argv) {
             return termpool::tui::run_hall(rest);
         }
         if (command == "stats") {
-            return termpool::stats_command(rest);
+            return termpool::cli::stats_command(rest);
         }
         if (command == "saves") {
-            return termpool::saves_command(rest);
+            return termpool::cli::saves_command(rest);
         }
     } catch (const std::exception& e) {
         std::cerr << "termpool: error: " << e.what() << '\n';

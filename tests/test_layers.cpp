@@ -144,7 +144,8 @@ TEST_CASE("the file helpers include only the public headers, each other and the 
 TEST_CASE("what the player keeps between games draws nothing and knows no front end", "[layers]") {
     // Saves, save slots, statistics, config, options and names live in src/player so that any
     // front end (the terminal game, the hall's, a future one) can use them: they include the
-    // public headers, each other, the file helpers and the system, never a screen.
+    // public headers, each other, the file helpers and the system, never a screen. What prints
+    // or asks (termpool stats, termpool saves, the --resume question) is a front end's.
     const std::vector<Include> all = includes("src/player");
     REQUIRE(all.size() > 20);
     for (const Include& inc : all) {
@@ -153,8 +154,8 @@ TEST_CASE("what the player keeps between games draws nothing and knows no front 
         if (!inc.angled)
             CHECK((inc.target.starts_with("player/") || inc.target.starts_with("files/")));
     }
-    for (const char* moved : {"save_file", "save_slots", "stats_file", "stats_summary",
-                              "stats_command", "config", "options", "player_name"}) {
+    for (const char* moved : {"save_file", "save_slots", "stats_file", "stats_summary", "config",
+                              "options", "player_name"}) {
         INFO(moved);
         CHECK_FALSE(fs::exists(fs::path("src/tui") / (std::string(moved) + ".cpp")));
         CHECK(fs::exists(fs::path("src/player") / (std::string(moved) + ".cpp")));

@@ -14,12 +14,13 @@
 #include "files/atomic_file.hpp"
 #include "player/save_file.hpp"
 #include "player/save_list.hpp"
-#include "player/save_prompt.hpp"
 #include "player/save_summary.hpp"
 #include "scoped_env.hpp"
 #include "temp_dir.hpp"
+#include "tui/save_prompt.hpp"
 
 using namespace termpool;
+using namespace termpool::tui;
 
 namespace {
 

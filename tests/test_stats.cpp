@@ -11,7 +11,7 @@
 
 #include <unistd.h>
 
-#include "player/stats_command.hpp"
+#include "cli/stats_command.hpp"
 #include "player/stats_file.hpp"
 #include "player/stats_summary.hpp"
 #include "record_helpers.hpp"
@@ -20,6 +20,7 @@
 
 using namespace termpool;
 using namespace termpool::test;
+using namespace termpool::cli;
 using termpool::StatsStore;
 
 #include "lines_of.hpp"
@@ -543,7 +544,7 @@ TEST_CASE("the game-over summary fits 36 columns, one column per player", "[stat
 TEST_CASE("the stats table lines up names of any width", "[stats][tui]") {
     StatsStore store;
     store.players = {{"Ann", some_stats(1)}, {"北京 Bjørn", some_stats(2)}};
-    const auto lines = lines_of(termpool::stats_table(store));
+    const auto lines = lines_of(termpool::cli::stats_table(store));
     REQUIRE(lines.size() >= 3);
     CHECK(lines[0].starts_with("Player"));
     CHECK(lines[1].starts_with("Ann "));

@@ -16,11 +16,11 @@
 #include "player/options.hpp"
 #include "player/save_file.hpp"
 #include "player/save_list.hpp"
-#include "player/save_prompt.hpp"
 #include "player/save_read.hpp"
 #include "player/save_slots.hpp"
 #include "player/save_summary.hpp"
 #include "tui/app.hpp"
+#include "tui/save_prompt.hpp"
 
 #include "tui/terminal.hpp"
 #include <termpool/record.hpp>

@@ -6,7 +6,7 @@
 
 #include "player/stats_file.hpp"
 
-namespace termpool {
+namespace termpool::cli {
 
 /// The totals as an aligned table (names padded by their display width), a header line
 /// first and a short legend after; one line per player, in the store's order.
@@ -19,4 +19,4 @@ std::string stats_table(const StatsStore& store);
 ///         no totals, 2 bad usage or a damaged file.
 int stats_command(const std::vector<std::string>& args);
 
-} // namespace termpool
+} // namespace termpool::cli

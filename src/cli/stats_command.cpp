@@ -1,4 +1,4 @@
-#include "player/stats_command.hpp"
+#include "cli/stats_command.hpp"
 
 #include <cstdio>
 
@@ -6,7 +6,7 @@
 #include "player/stats_summary.hpp"
 #include <termpool/text_width.hpp>
 
-namespace termpool {
+namespace termpool::cli {
 namespace {
 
 constexpr const char* usage = "usage: termpool stats [--reset NAME] [--help]\n";
@@ -133,4 +133,4 @@ int stats_command(const std::vector<std::string>& args) {
     return 0;
 }
 
-} // namespace termpool
+} // namespace termpool::cli

@@ -1,4 +1,4 @@
-#include "player/save_prompt.hpp"
+#include "tui/save_prompt.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -6,7 +6,7 @@
 
 #include "player/save_summary.hpp"
 
-namespace termpool {
+namespace termpool::tui {
 namespace {
 
 // One answer: a line of `in` without its spaces at either end, at most 255 bytes of it (the
@@ -131,4 +131,4 @@ std::optional<std::size_t> pick_save(std::vector<SlotSave>& saves, std::FILE* in
     return std::nullopt;
 }
 
-} // namespace termpool
+} // namespace termpool::tui

@@ -10,7 +10,7 @@
 
 #include "player/save_list.hpp"
 
-namespace termpool {
+namespace termpool::tui {
 
 /// Lists `saves` (the unfinished ones, newest first, as `unfinished_saves` gives them) on
 /// `out` and asks on `in` which to continue: its number, Enter for the first (the newest),
@@ -22,4 +22,4 @@ namespace termpool {
 std::optional<std::size_t> pick_save(std::vector<SlotSave>& saves, std::FILE* in, std::FILE* out,
                                      std::time_t now);
 
-} // namespace termpool
+} // namespace termpool::tui

@@ -1,4 +1,4 @@
-#include "player/saves_command.hpp"
+#include "cli/saves_command.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -11,7 +11,7 @@
 #include "player/save_slots.hpp"
 #include "player/save_summary.hpp"
 
-namespace termpool {
+namespace termpool::cli {
 namespace {
 
 constexpr const char* usage = "usage: termpool saves [--remove N] [--help]\n";
@@ -102,4 +102,4 @@ int saves_command(const std::vector<std::string>& args) {
     return 0;
 }
 
-} // namespace termpool
+} // namespace termpool::cli

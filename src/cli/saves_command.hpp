@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace termpool {
+namespace termpool::cli {
 
 /// `termpool saves [--remove N] [--help]`: lists the unfinished saves (the slot's number, the
 /// players, the game, how far, how long ago), or removes save N.
@@ -14,4 +14,4 @@ namespace termpool {
 ///         not be removed, 2 bad usage or an N that is not an unfinished save (nothing removed).
 int saves_command(const std::vector<std::string>& args);
 
-} // namespace termpool
+} // namespace termpool::cli
