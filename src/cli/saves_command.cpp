@@ -28,10 +28,7 @@ constexpr const char* help =
     "  -h, --help   print this help and exit\n";
 
 int remove(const std::string& which) {
-    const bool digits =
-        !which.empty() && which.size() <= 3 &&
-        std::all_of(which.begin(), which.end(), [](char c) { return c >= '0' && c <= '9'; });
-    const int slot = digits ? std::stoi(which) : 0;
+    const int slot = parse_slot_number(which);
     std::string error;
     const Removal removal = slot > 0 ? remove_save(slot, error) : Removal::missing;
     switch (removal) {

@@ -36,6 +36,13 @@ int slot_of_name(const std::string& name) {
 
 } // namespace
 
+int parse_slot_number(const std::string& text) {
+    const bool digits =
+        !text.empty() && text.size() <= 3 &&
+        std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+    return digits ? std::stoi(text) : 0;
+}
+
 std::string slot_path(int slot) {
     return save_dir() + (slot <= 1 ? "/game.save" : "/game-" + std::to_string(slot) + ".save");
 }

@@ -9,6 +9,9 @@
 
 namespace termpool {
 
+/// The save number `text` names: 1 to 3 digits, as the lists number saves; 0 for anything else.
+int parse_slot_number(const std::string& text);
+
 /// The path of slot `slot` (>= 1) in the save directory.
 std::string slot_path(int slot);
 

@@ -162,9 +162,10 @@ Chosen continue_with(SlotSave& save) {
 // finished game is not continued by number (the lists never offer it); a FILE named is
 // opened whatever it holds.
 std::variant<Chosen, int> resume_named(const std::string& which) {
+    // Digits name a save by its number (too many digits name none); anything else is a file.
     const bool number =
         std::all_of(which.begin(), which.end(), [](char c) { return c >= '0' && c <= '9'; });
-    const int slot = number && which.size() <= 3 ? std::stoi(which) : 0;
+    const int slot = parse_slot_number(which);
     if (number && (slot < 1 || slot_of(slot_path(slot)) != slot)) {
         std::fprintf(stderr, "termpool: there is no save %s (%s --resume lists them)\n",
                      which.c_str(), self_command().c_str());

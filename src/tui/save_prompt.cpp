@@ -4,6 +4,7 @@
 #include <cstring>
 #include <string>
 
+#include "player/save_slots.hpp"
 #include "player/save_summary.hpp"
 
 namespace termpool::tui {
@@ -29,10 +30,9 @@ std::optional<std::string> read_answer(std::FILE* in, std::FILE* out) {
     return answer;
 }
 
-// True when `text` is a number a save may have: 1 to 3 digits.
+// True when `text` is a number a save may have (parse_slot_number).
 bool number(const std::string& text) {
-    return !text.empty() && text.size() <= 3 &&
-           std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+    return parse_slot_number(text) > 0;
 }
 
 // The number after d in "d 2", "d2" or "d" (empty: to be asked), when `answer` asks for a
@@ -49,9 +49,9 @@ std::optional<std::string> removal_asked(const std::string& answer) {
 
 // The save numbered `text` in `saves`, or saves.size() when there is none.
 std::size_t find_save(const std::vector<SlotSave>& saves, const std::string& text) {
-    if (!number(text))
+    const int slot = parse_slot_number(text);
+    if (slot == 0)
         return saves.size();
-    const int slot = std::stoi(text);
     return static_cast<std::size_t>(
         std::find_if(saves.begin(), saves.end(),
                      [&](const SlotSave& s) { return s.slot == slot; }) -
