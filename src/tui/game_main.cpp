@@ -95,6 +95,7 @@ GameOptions options_from(const GameRecord& record, GameOptions options) {
     options.names[1] = record.names[1];
     options.watch.reset();
     options.computer.reset();
+    options.assist = record.assist; // a game keeps its assist, for both seats
     return options;
 }
 
@@ -260,6 +261,10 @@ int resume_game(const GameOptions& options, const std::vector<std::string>& noti
     GameOptions resumed = options_from(chosen.game.record(), options);
     resumed.save_path = path;
     resumed.notices = notices;
+    // Said when the command line or the config asked for another assist than the game's.
+    if (options.assist != resumed.assist)
+        resumed.notices.push_back(std::string("This game keeps its assist, ") +
+                                  assist_name(resumed.assist) + "; --assist is for new games");
     const int status = in_terminal(resumed, [&](App& app) { app.resume(std::move(chosen.game)); });
     tell_where_saved(path, std::nullopt, true);
     return status;
