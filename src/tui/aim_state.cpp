@@ -115,11 +115,16 @@ void AimState::update_preview(const Table& table, const PhysicsParams& params,
     preview_ball = full_preview.object_ball;
     if (pocket_chosen)
         return;
-    // Propose the obvious pocket: the one the object ball heads for most directly.
+    // Propose the obvious pocket: the one the object ball heads for most directly. Pro shows
+    // nothing after the contact, so there the proposal reads only what a player sees, the line
+    // of centres at contact, not the simulated departure (throw would give it away).
     called_pocket = 0;
     const std::vector<Vec2>& object = full_preview.object_path;
     if (preview_ball > 0 && calls_pocket(preview_ball) && object.size() >= 2) {
-        const Vec2 dir = normalized(object[1] - object[0]);
+        const bool centres = assist == Assist::pro && full_preview.has_ghost &&
+                             length(object[0] - full_preview.ghost) > 0;
+        const Vec2 dir = centres ? normalized(object[0] - full_preview.ghost)
+                                 : normalized(object[1] - object[0]);
         double best = -2;
         for (const Pocket& pocket : table.pockets) {
             const double c = dot(normalized(pocket.position - object[0]), dir);
