@@ -57,7 +57,7 @@ AimState opened(const std::vector<Ball>& balls, double power = 0.3) {
 // The verdict of `strike` on `balls` played as a nine-ball shot by the rules.
 Verdict played(const std::vector<Ball>& balls, const Strike& strike) {
     Game game =
-        Game::from_position(GameType::nine_ball, table, params, balls, 0, Group::open, false);
+        Game::from_position(GameType::nine_ball, table, params, balls, 1, Group::open, false);
     return game.play(strike, {});
 }
 
