@@ -256,6 +256,11 @@ TEST_CASE("snooker's choices in a referee's words", "[tui][snooker][snooker-play
     CHECK(choice_words(Choice::replace_and_replay, GameType::snooker, false).find("replace") == 0);
     // Pool keeps its own.
     CHECK(choice_words(Choice::play_on, GameType::eight_ball, false) == "play on");
+    // After an in-off both choices start with the cue ball placed in the D.
+    CHECK(choice_words(Choice::play_on, GameType::snooker, false, BallInHand::d) ==
+          "play on, the cue ball in hand in the D");
+    CHECK(choice_words(Choice::offender_plays, GameType::snooker, false, BallInHand::d) ==
+          "put the offender back in, the cue ball in the D");
     CHECK(ball_in_hand_words(BallInHand::d) == "in the D");
     CHECK(snooker_ball_name(snooker_brown) == "brown");
     CHECK(snooker_ball_name(7) == "red");
@@ -347,6 +352,25 @@ TEST_CASE("C concedes the frame in tmux once y confirms it", "[tui][e2e][snooker
     t.keys("Enter");
     CHECK(t.wait_for_text("Frame 2: Bob breaks: place the cue ball in the D"));
     CHECK(t.wait_for_text("Frames 0-1 (best of 3)"));
+}
+
+TEST_CASE("a single frame's end offers the next frame, in snooker's words",
+          "[tui][e2e][snooker][snooker-play]") {
+    using namespace tmux_session;
+    const ScratchDir scratch("termpool-snooker-next-frame");
+    Tmux t;
+    t.start("env XDG_STATE_HOME=" + scratch.path + " XDG_CONFIG_HOME=" + scratch.path +
+                " TERM=xterm-256color LANG=C.UTF-8 " + termpool_binary() +
+                " --game snooker --race 1 --player1 Ann --player2 Bob --seed 3",
+            100, 32);
+    REQUIRE(t.wait_for_text("Ann breaks: place the cue ball in the D"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("Left/Right"));
+    t.keys("C");
+    REQUIRE(t.wait_for_text("Ann: concede the frame?  y / n"));
+    t.keys("y");
+    CHECK(t.wait_for_text("next frame (the loser breaks off)"));
+    CHECK(t.screen().find("rematch") == std::string::npos);
 }
 
 namespace {

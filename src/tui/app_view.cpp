@@ -98,7 +98,7 @@ void App::compose_mode(const ChoosingMode&, View& v) const {
     std::string text = (said().empty() ? "" : said() + "\n\n") + name(g.chooser()) + ", choose:";
     for (std::size_t i = 0; i < g.choices().size(); ++i)
         text += "\n" + std::to_string(i + 1) + "  " +
-                choice_words(g.choices()[i], g.type(), g.free_ball_offered());
+                choice_words(g.choices()[i], g.type(), g.free_ball_offered(), g.ball_in_hand());
     if (snooker_play())
         text += "\nC  concede the frame";
     v.overlay = text;

@@ -192,10 +192,12 @@ std::string LocalDriver::game_over_text(const std::string& told) const {
     const std::string& two = match_.name(2);
     const PlayerStats figures[2] = {match_.tally().of(1), match_.tally().of(2)};
     const std::string summary = "\n\n" + stats_summary(match_.record().names, figures);
-    if (!s.is_race())
-        return told + summary + "\n\nr  rematch (loser breaks)\nn  new game\nq  quit";
-    // Snooker says a match of frames as best of N.
+    // Snooker says frames: the next is a frame, a match of them best of N.
     const bool frames = match_.game().type() == GameType::snooker;
+    if (!s.is_race())
+        return told + summary +
+               (frames ? "\n\nr  next frame (the loser breaks off)\nn  new frame\nq  quit"
+                       : "\n\nr  rematch (loser breaks)\nn  new game\nq  quit");
     const std::string race =
         (frames ? "Best of " + std::to_string(best_of_for_race(s.race_to)) + " frames"
                 : "Race to " + std::to_string(s.race_to)) +

@@ -60,15 +60,20 @@ std::string choice_words(Choice choice) {
     return "?";
 }
 
-std::string choice_words(Choice choice, GameType game, bool free_ball) {
+std::string choice_words(Choice choice, GameType game, bool free_ball, BallInHand in_hand) {
     if (game != GameType::snooker)
         return choice_words(choice);
-    // As a snooker referee asks after a foul.
+    // As a snooker referee asks after a foul; after an in-off whoever plays places the cue ball
+    // in the D first.
+    const bool in_d = in_hand == BallInHand::d;
     switch (choice) {
     case Choice::play_on:
-        return free_ball ? "play on, with a free ball" : "play on from here";
+        return in_d        ? "play on, the cue ball in hand in the D"
+               : free_ball ? "play on, with a free ball"
+                           : "play on from here";
     case Choice::offender_plays:
-        return "put the offender back in";
+        return in_d ? "put the offender back in, the cue ball in the D"
+                    : "put the offender back in";
     case Choice::replace_and_replay:
         return "replace the balls, the offender plays again (a miss)";
     default:

@@ -11,8 +11,10 @@ std::string foul_words(Foul foul);
 /// A choice in words ("play on", ...).
 std::string choice_words(Choice choice);
 /// A choice in the words of `game` (snooker's "put the offender back in"); `free_ball` when
-/// playing on takes a free ball.
-std::string choice_words(Choice choice, GameType game, bool free_ball);
+/// playing on takes a free ball, `in_hand` where the cue ball is to be placed first (snooker,
+/// after an in-off: the D).
+std::string choice_words(Choice choice, GameType game, bool free_ball,
+                         BallInHand in_hand = BallInHand::none);
 /// A snooker ball's name: "red", "yellow", ..., "black" (empty for another id).
 std::string snooker_ball_name(int id);
 /// "in the D", "in the kitchen" or "anywhere": where a ball in hand goes.

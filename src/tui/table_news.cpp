@@ -13,7 +13,8 @@ std::optional<TableNews> take_action(Match& match, const RecordedAction& action,
     news.actor = match.to_act();
     // Said before the choice is taken: its words depend on what was offered.
     const std::string choice =
-        choice_words(action.choice, match.game().type(), match.game().free_ball_offered());
+        choice_words(action.choice, match.game().type(), match.game().free_ball_offered(),
+                     match.game().ball_in_hand());
     const int rack = match.rack();
     if (action.kind == RecordedAction::Kind::shot) {
         news.before = match.game();
