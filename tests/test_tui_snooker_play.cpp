@@ -438,10 +438,14 @@ TEST_CASE("after a red the keys 2-7 nominate a colour in tmux, and the shot call
     CHECK(t.wait_for_text("Nomination: the ball aimed at"));
     t.keys("6");
     CHECK(t.wait_for_text("nominated pink"));
+    // Naming the pink turned the cue to it: the shot meets the pink first.
+    CHECK(t.wait_for_text("the cue turns to it"));
     t.keys("Space");
     t.keys("x"); // the shot is saved once it has rolled: at once
     // The shot is saved with its nomination: the pink, ball 20, no pocket.
     CHECK(t.wait_for([&](const std::string&) {
         return file_text(file).find(" call 20 0") != std::string::npos;
     }));
+    CHECK(t.wait_for([](const std::string& s) { return s.find("shoots") == std::string::npos; }));
+    CHECK(t.screen().find("wrong ball first") == std::string::npos);
 }

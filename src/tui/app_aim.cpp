@@ -40,9 +40,25 @@ bool App::nominate_key(const std::string& text) {
     // nothing here.
     const std::optional<std::string> said =
         nomination_key(game(), aim(), text, name(game().shooter()));
-    if (said)
-        message_ = *said;
-    return said.has_value();
+    if (!said)
+        return false;
+    message_ = *said;
+    // A named colour is the ball to hit: the cue turns to it, by the easiest line there is (as
+    // a turn opens at the assist's aim), so that Space does not foul on the ball aimed before.
+    const int named = aim().nominated;
+    const auto on_table = [&](const Ball& b) {
+        return b.id == named && b.state != MotionState::pocketed;
+    };
+    if (aim().nomination_chosen && named > 0 &&
+        std::any_of(game().balls().begin(), game().balls().end(), on_table)) {
+        aim().target_index = 0;
+        aim().aim_at_target(rank_openings(table_, game().balls(), params_.ball_radius,
+                                          cue_position(), {named}, aim().assist));
+        aim().show_marker = false;
+        message_ += "; the cue turns to it";
+    }
+    update_preview();
+    return true;
 }
 
 void App::on_key(AimingMode&, int key, const std::string& text) {
