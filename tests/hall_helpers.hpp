@@ -9,12 +9,12 @@
 #include <optional>
 #include <string>
 #include <termpool/match.hpp>
-#include <thread>
 #include <variant>
 #include <vector>
 
 #include "hall/client.hpp"
 #include "hall/hall_state.hpp"
+#include "wait_until.hpp"
 
 namespace termpool::test {
 
@@ -130,19 +130,20 @@ inline void await_action(hall::HallClient& client, int table, std::size_t seq) {
 /// a second) and sends the move again, as a player told to slow down would.
 inline void act(hall::HallClient& actor, int table, const RecordedAction& move) {
     const std::size_t seq = actor.match(table)->record().actions.size() + 1;
-    const auto end = std::chrono::steady_clock::now() + kWait;
-    for (;;) {
-        REQUIRE(actor.send(hall::Act{move}));
-        const auto m = action_or_error(actor, table, seq);
-        INFO(got_instead(m, table, seq));
-        REQUIRE(m);
-        const auto* error = std::get_if<hall::Error>(&*m);
-        if (!error)
-            return;
-        REQUIRE(error->code == hall::ErrorCode::rate);
-        REQUIRE(std::chrono::steady_clock::now() < end);
-        std::this_thread::sleep_for(std::chrono::milliseconds(60));
-    }
+    // Sent again at each poll (a token's time) while the answer is "rate", until it is taken.
+    const bool taken = termpool::test::wait_until(
+        [&] {
+            REQUIRE(actor.send(hall::Act{move}));
+            const auto m = action_or_error(actor, table, seq);
+            INFO(got_instead(m, table, seq));
+            REQUIRE(m);
+            const auto* error = std::get_if<hall::Error>(&*m);
+            if (error)
+                REQUIRE(error->code == hall::ErrorCode::rate);
+            return error == nullptr;
+        },
+        kWaitSeconds, std::chrono::milliseconds(60));
+    REQUIRE(taken);
 }
 
 /// The seated player to act plays one move; every client in `all` sees it.

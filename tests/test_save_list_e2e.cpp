@@ -23,17 +23,8 @@ namespace {
 
 // `termpool ARGS` with its state, config and home in `dir`, no terminal: its exit status and
 // both streams.
-std::pair<int, std::string> run_termpool(const ScratchDir& dir, const std::string& args) {
-    const std::string command = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
-                                " HOME=" + dir.path + " '" + termpool_binary() + "' " + args +
-                                " </dev/null 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    char buffer[4096];
-    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe))
-        out.append(buffer, n);
-    const int raw = pclose(pipe);
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+std::pair<int, std::string> run_at_home(const ScratchDir& dir, const std::string& args) {
+    return tmux_session::run_termpool(dir, args, "HOME=" + dir.path);
 }
 
 // The game in tmux with its state, config and home in `dir`.
@@ -114,7 +105,7 @@ TEST_CASE("--resume never offers a finished game: it stays for termpool replay",
         t.keys("y");
         REQUIRE(t.wait_for_text("Game saved in ~/termpool/game-2.save"));
     }
-    const auto saves = run_termpool(dir, "saves");
+    const auto saves = run_at_home(dir, "saves");
     CHECK(saves.first == 0);
     CHECK(listed(saves.second).size() == 1);
     CHECK(saves.second.find("  2  Cy v Dee") != std::string::npos);
@@ -122,16 +113,16 @@ TEST_CASE("--resume never offers a finished game: it stays for termpool replay",
 
     // With only the finished game left there is nothing to continue, and it is said why.
     std::remove(slot_file(dir, 2).c_str());
-    const auto none = run_termpool(dir, "--resume");
+    const auto none = run_at_home(dir, "--resume");
     CHECK(none.first == 1);
     CHECK(none.second.find("no saved game to resume") != std::string::npos);
     CHECK(none.second.find("finished games are kept for ") != std::string::npos);
     CHECK(none.second.find(" replay") != std::string::npos);
-    const auto by_number = run_termpool(dir, "--resume 1");
+    const auto by_number = run_at_home(dir, "--resume 1");
     CHECK(by_number.first == 2);
     CHECK(by_number.second.find("save 1 is a finished game, not one to continue; watch it again "
                                 "with: ") != std::string::npos);
-    CHECK(run_termpool(dir, "saves").second.find("No saved game to continue") != std::string::npos);
+    CHECK(run_at_home(dir, "saves").second.find("No saved game to continue") != std::string::npos);
     // The finished game is still there, untouched, for replay.
     CHECK(file_text(slot_file(dir, 1)) == over);
 }
@@ -147,12 +138,12 @@ TEST_CASE("termpool saves and --resume list the unfinished saves newest first, s
         "  3  Eve v Fay, 8ball, 9ft, 0 shots, saved 3 hours ago",
         "  1  Ann v Bob, 8ball, 9ft, 0 shots, saved 2 days ago",
     };
-    const auto saves = run_termpool(dir, "saves");
+    const auto saves = run_at_home(dir, "saves");
     CHECK(saves.first == 0);
     CHECK(saves.second.starts_with("Saved games you can continue, newest first ("));
     CHECK(listed(saves.second) == newest_first);
     // --resume without a terminal prints the same list and leaves the choice to --resume N.
-    const auto resume = run_termpool(dir, "--resume");
+    const auto resume = run_at_home(dir, "--resume");
     CHECK(resume.first == 0);
     CHECK(listed(resume.second) == newest_first);
 }
@@ -193,7 +184,7 @@ TEST_CASE("d in the --resume list removes the chosen save once the player says y
     CHECK(after.find("  1  Ann v Bob") != std::string::npos);
     t.keys("1 Enter");
     CHECK(t.wait_for_text("Game resumed: Ann to play"));
-    CHECK(listed(run_termpool(dir, "saves").second).size() == 2);
+    CHECK(listed(run_at_home(dir, "saves").second).size() == 2);
 }
 
 TEST_CASE("termpool saves --remove N: never a save being played, nothing on a bad N",
@@ -211,35 +202,35 @@ TEST_CASE("termpool saves --remove N: never a save being played, nothing on a ba
     // Not a number of the list: a message, status 2, nothing removed (nor moved aside).
     for (const char* bad : {"0", "9", "x", "-1", "1000", "1", "4"}) {
         INFO("--remove " << bad);
-        const auto r = run_termpool(dir, std::string("saves --remove ") + bad);
+        const auto r = run_at_home(dir, std::string("saves --remove ") + bad);
         CHECK(r.first == 2);
         CHECK(r.second.starts_with("termpool saves: "));
         CHECK(folder() == before);
     }
-    CHECK(run_termpool(dir, "saves --remove 1").second.find("save 1 is a finished game") !=
+    CHECK(run_at_home(dir, "saves --remove 1").second.find("save 1 is a finished game") !=
           std::string::npos);
-    CHECK(run_termpool(dir, "saves --remove 9").second.find("there is no save 9") !=
+    CHECK(run_at_home(dir, "saves --remove 9").second.find("there is no save 9") !=
           std::string::npos);
-    CHECK(run_termpool(dir, "saves --remove").first == 2);
-    CHECK(run_termpool(dir, "saves --remove 2 --remove 3").first == 2);
+    CHECK(run_at_home(dir, "saves --remove").first == 2);
+    CHECK(run_at_home(dir, "saves --remove 2 --remove 3").first == 2);
     CHECK(folder() == before);
 
     // Save 2 being played in another terminal is listed as such and kept.
     Tmux t;
     t.start(game(dir, "--resume 2"));
     REQUIRE(t.wait_for_text("Game resumed: Cy to play"));
-    CHECK(run_termpool(dir, "saves").second.find("  2  Cy v Dee, 8ball, 9ft, 0 shots, saved ") !=
+    CHECK(run_at_home(dir, "saves").second.find("  2  Cy v Dee, 8ball, 9ft, 0 shots, saved ") !=
           std::string::npos);
-    CHECK(run_termpool(dir, "saves").second.find(", being played in another terminal") !=
+    CHECK(run_at_home(dir, "saves").second.find(", being played in another terminal") !=
           std::string::npos);
-    const auto busy = run_termpool(dir, "saves --remove 2");
+    const auto busy = run_at_home(dir, "saves --remove 2");
     CHECK(busy.first == 1);
     CHECK(busy.second ==
           "termpool saves: save 2 is being played in another terminal: it is not removed\n");
     CHECK(exists(slot_file(dir, 2)));
 
     // Save 3 goes.
-    const auto removed = run_termpool(dir, "saves --remove 3");
+    const auto removed = run_at_home(dir, "saves --remove 3");
     CHECK(removed.first == 0);
     CHECK(removed.second == "Removed save 3.\n");
     CHECK_FALSE(exists(slot_file(dir, 3)));
@@ -251,7 +242,7 @@ TEST_CASE("a new game after a removal takes the freed slot", "[tui][e2e][save]")
     const ScratchDir dir("termpool-freed");
     for (const int slot : {1, 2, 3})
         write_unfinished(dir, slot, "Ann", "Bob", 100 * slot);
-    REQUIRE(run_termpool(dir, "saves --remove 2").first == 0);
+    REQUIRE(run_at_home(dir, "saves --remove 2").first == 0);
     Tmux t;
     t.start(game(dir, "--player1 Gil --player2 Hal"));
     REQUIRE(t.wait_for_text("place the cue ball"));

@@ -12,22 +12,7 @@
 
 using namespace tmux_session;
 
-namespace {
-
-// `termpool ARGS` with saves in `dir`, both streams, and its exit status.
-std::pair<int, std::string> run_termpool(const ScratchDir& dir, const std::string& args) {
-    const std::string command = "env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
-                                " '" + termpool_binary() + "' " + args + " </dev/null 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    std::string out;
-    char buffer[4096];
-    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe))
-        out.append(buffer, n);
-    const int raw = pclose(pipe);
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
-}
-
-} // namespace
+namespace {} // namespace
 
 TEST_CASE("two games at once keep two saves; --resume lists them and picks one", "[tui][e2e]") {
     const ScratchDir dir("termpool-saves");

@@ -325,17 +325,28 @@ TEST_CASE("a frame against the computer in tmux: in the D, the break, the score 
     }
 }
 
-TEST_CASE("C concedes the frame in tmux once y confirms it", "[tui][e2e][snooker][snooker-play]") {
-    using namespace tmux_session;
-    const ScratchDir scratch("termpool-snooker-concede");
-    Tmux t;
+namespace {
+
+// A frame of snooker in tmux between Ann and Bob (seed 3, and `args`), Ann at the aim once the
+// cue ball is placed in the D.
+void start_frame(tmux_session::Tmux& t, const tmux_session::ScratchDir& scratch,
+                 const std::string& args) {
     t.start("env XDG_STATE_HOME=" + scratch.path + " XDG_CONFIG_HOME=" + scratch.path +
-                " TERM=xterm-256color LANG=C.UTF-8 " + termpool_binary() +
-                " --game snooker --best-of 3 --player1 Ann --player2 Bob --seed 3",
+                " TERM=xterm-256color LANG=C.UTF-8 " + tmux_session::termpool_binary() +
+                " --game snooker " + args + " --player1 Ann --player2 Bob --seed 3",
             100, 32);
     REQUIRE(t.wait_for_text("Ann breaks: place the cue ball in the D"));
     t.keys("Enter");
     REQUIRE(t.wait_for_text("Left/Right"));
+}
+
+} // namespace
+
+TEST_CASE("C concedes the frame in tmux once y confirms it", "[tui][e2e][snooker][snooker-play]") {
+    using namespace tmux_session;
+    const ScratchDir scratch("termpool-snooker-concede");
+    Tmux t;
+    start_frame(t, scratch, "--best-of 3");
     // Anything but y keeps the frame going.
     t.keys("C");
     REQUIRE(t.wait_for_text("Ann: concede the frame?  y / n"));
@@ -359,13 +370,7 @@ TEST_CASE("a single frame's end offers the next frame, in snooker's words",
     using namespace tmux_session;
     const ScratchDir scratch("termpool-snooker-next-frame");
     Tmux t;
-    t.start("env XDG_STATE_HOME=" + scratch.path + " XDG_CONFIG_HOME=" + scratch.path +
-                " TERM=xterm-256color LANG=C.UTF-8 " + termpool_binary() +
-                " --game snooker --race 1 --player1 Ann --player2 Bob --seed 3",
-            100, 32);
-    REQUIRE(t.wait_for_text("Ann breaks: place the cue ball in the D"));
-    t.keys("Enter");
-    REQUIRE(t.wait_for_text("Left/Right"));
+    start_frame(t, scratch, "--race 1");
     t.keys("C");
     REQUIRE(t.wait_for_text("Ann: concede the frame?  y / n"));
     t.keys("y");

@@ -15,24 +15,32 @@
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
+#include <utility>
 
 #include "wait_until.hpp"
 
 namespace tmux_session {
 
-/// What `command` (run by sh) prints on stdout.
-inline std::string run(const std::string& command) {
+/// The exit status of `command` (run by sh; -1 when it did not exit) and what it printed on
+/// stdout.
+inline std::pair<int, std::string> run_with_status(const std::string& command) {
     std::string out;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe)
-        return out;
+        return {-1, out};
     std::array<char, 4096> buffer{};
     while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
         out.append(buffer.data(), n);
-    pclose(pipe);
-    return out;
+    const int raw = pclose(pipe);
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out};
+}
+
+/// What `command` printed on standard output (its status aside).
+inline std::string run(const std::string& command) {
+    return run_with_status(command).second;
 }
 
 /// `text` as one word for sh: in single quotes, each ' written as '\''.
@@ -228,6 +236,14 @@ struct ScratchDir {
     /// The save of the first slot, under this directory as XDG_STATE_HOME.
     std::string save() const { return path + "/termpool/game.save"; }
 };
+
+/// `termpool ARGS` with no terminal (standard input /dev/null), its state and config in `dir` and
+/// `env` (VAR=VALUE words) before it: its exit status and both streams.
+inline std::pair<int, std::string> run_termpool(const ScratchDir& dir, const std::string& args,
+                                                const std::string& env = "") {
+    return run_with_status("env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path + " " +
+                           env + " '" + termpool_binary() + "' " + args + " </dev/null 2>&1");
+}
 
 /// The command line that runs `termpool ARGS` with its state and config in `dir`, in
 /// `term` with UTF-8, then writes its exit status to dir.status_file() and, with `keep_pane`,
