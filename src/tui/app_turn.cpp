@@ -172,15 +172,7 @@ bool App::pace(const Upcoming& next, Clock::time_point now) {
     // keeps what the player set.
     const RecordedAction& action = next.action;
     if (!pacing_.showing()) {
-        ComputerMove move;
-        move.kind = action.kind == RecordedAction::Kind::place    ? Pending::place
-                    : action.kind == RecordedAction::Kind::choose ? Pending::choose
-                                                                  : Pending::shoot;
-        move.spot = action.place;
-        move.choice = action.choice;
-        move.shot.strike = action.strike;
-        move.shot.call = action.call;
-        pacing_.start(move, aim().aim_deg, now);
+        pacing_.start(action, aim().aim_deg, now);
         if (PlacingMode* placing = as<PlacingMode>();
             placing && action.kind == RecordedAction::Kind::place)
             placing->spot = action.place;

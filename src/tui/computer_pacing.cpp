@@ -7,7 +7,7 @@
 
 namespace termpool::tui {
 
-void ComputerPacing::start(const ComputerMove& move, double aim_from_deg, Clock::time_point now) {
+void ComputerPacing::start(const RecordedAction& move, double aim_from_deg, Clock::time_point now) {
     move_ = move;
     aim_from_ = aim_from_deg;
     start_ = now;
@@ -20,9 +20,9 @@ double ComputerPacing::elapsed(Clock::time_point now) const {
 bool ComputerPacing::due(Clock::time_point now) const {
     const double t = elapsed(now);
     switch (move_->kind) {
-    case Pending::choose:
+    case RecordedAction::Kind::choose:
         return t >= choose_after;
-    case Pending::place:
+    case RecordedAction::Kind::place:
         return t >= place_after;
     default:
         return t >= shoot_after;
@@ -30,12 +30,12 @@ bool ComputerPacing::due(Clock::time_point now) const {
 }
 
 double ComputerPacing::aim_at(double t) const {
-    const double delta = std::remainder(move_->shot.strike.angle_deg - aim_from_, 360.0);
+    const double delta = std::remainder(move_->strike.angle_deg - aim_from_, 360.0);
     return turn(aim_from_, delta * std::min(1.0, t / turn_time));
 }
 
 double ComputerPacing::power_at(double t, bool is_break) const {
-    return power_from_speed(move_->shot.strike.speed, is_break) *
+    return power_from_speed(move_->strike.speed, is_break) *
            std::clamp((t - turn_time) / fill_time, 0.0, 1.0);
 }
 

@@ -4,7 +4,7 @@
 
 #include <chrono>
 #include <optional>
-#include <termpool/match.hpp>
+#include <termpool/record.hpp>
 
 namespace termpool::tui {
 
@@ -23,11 +23,9 @@ public:
     /// True while a move is being shown.
     bool showing() const { return move_.has_value(); }
     /// Starts showing `move`, with the cue at `aim_from_deg` now.
-    void start(const ComputerMove& move, double aim_from_deg, Clock::time_point now);
+    void start(const RecordedAction& move, double aim_from_deg, Clock::time_point now);
     /// Ends the show (the move is made, or the game moved on).
     void stop() { move_.reset(); }
-    /// The move shown (only while `showing`).
-    const ComputerMove& move() const { return *move_; }
     /// Seconds since the show started.
     double elapsed(Clock::time_point now) const;
     /// True once the move is due.
@@ -39,7 +37,7 @@ public:
     double power_at(double t, bool is_break) const;
 
 private:
-    std::optional<ComputerMove> move_;
+    std::optional<RecordedAction> move_;
     Clock::time_point start_;
     double aim_from_ = 0;
 };
