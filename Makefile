@@ -212,7 +212,7 @@ FUZZ_CORE_FLAGS := -std=c++20 $(FP_FLAGS) -O1 -g -fsanitize=fuzzer-no-link,addre
 FUZZ_FLAGS    := $(FUZZ_CORE_FLAGS) -Isrc
 FUZZ_APP_SRCS := src/cli/scenario.cpp src/cli/numbers.cpp \
                  src/player/config.cpp src/files/xdg_dir.cpp src/player/player_name.cpp \
-                 src/player/options.cpp src/player/stats_file.cpp \
+                 src/player/options.cpp src/player/stats_file.cpp src/player/stats_figures.cpp \
                  src/files/keep_aside.cpp src/files/atomic_file.cpp src/player/save_file.cpp \
                  src/hall/protocol.cpp
 FUZZ_CORE_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(CORE_SRCS))

@@ -1,5 +1,6 @@
-// The end of a game in the real binary: the players' figures on the game-over screen, added to
-// the statistics file, and shown by `termpool stats`.
+// The end of a game in the real binary: the players' figures on the game-over screen, in the
+// words of the game played, added to the statistics file under that game, and shown by
+// `termpool stats`.
 #include <catch2/catch.hpp>
 #include <string>
 
@@ -30,12 +31,15 @@ TEST_CASE("game over shows the figures and keeps them for termpool stats", "[tui
     CHECK(screen.find("Racks won") != std::string::npos);
     CHECK(screen.find("Break-and-runs") != std::string::npos);
 
-    // The totals file has the game: Ann won the one rack played, from her break.
+    CHECK(screen.find("Frame") == std::string::npos);
+
+    // The totals file has the game, as bar rules 8-ball: Ann won the one rack played, from her
+    // break.
     const std::string totals = file_text(dir.path + "/termpool/stats");
-    CHECK(totals.find("termpool-stats 1\n") == 0);
+    CHECK(totals.find("termpool-stats 2\n") == 0);
     CHECK(totals.find(" Ann\n") != std::string::npos);
-    CHECK(totals.find("player 1 1 ") != std::string::npos);
-    CHECK(totals.find("player 0 1 0 ") != std::string::npos); // Bob never shot
+    CHECK(totals.find("player 8ball-bar 1 1 ") != std::string::npos);
+    CHECK(totals.find("player 8ball-bar 0 1 0 ") != std::string::npos); // Bob never shot
 
     // Quitting a game that is over offers to watch it again, not to continue it.
     t.keys("q");
@@ -47,6 +51,37 @@ TEST_CASE("game over shows the figures and keeps them for termpool stats", "[tui
     // termpool stats lists both.
     const std::string listing = tmux_session::run("env XDG_STATE_HOME=" + dir.path + " " +
                                                   tmux_session::termpool_binary() + " stats");
+    CHECK(listing.find("8-ball (bar rules)\n") == 0);
     CHECK(listing.find("Ann") != std::string::npos);
     CHECK(listing.find("Bob") != std::string::npos);
+}
+
+TEST_CASE("a snooker frame's end shows frames and breaks, kept apart from pool's racks",
+          "[tui][e2e][stats][snooker]") {
+    ScratchDir dir("termpool-test");
+    Tmux t;
+    t.start("env XDG_STATE_HOME=" + dir.path + " XDG_CONFIG_HOME=" + dir.path +
+                " TERM=xterm-256color LANG=C.UTF-8 " + tmux_session::termpool_binary() +
+                " --game snooker --seed 3 --player1 Ann --player2 Bob; sleep 60",
+            100, 32);
+    REQUIRE(t.wait_for_text("Ann breaks: place the cue ball in the D"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("Left/Right"));
+    t.keys("C");
+    REQUIRE(t.wait_for_text("Ann: concede the frame?  y / n"));
+    t.keys("y");
+    REQUIRE(t.wait_for_text("next frame (the loser breaks off)"));
+    const std::string screen = t.screen();
+    for (const char* word : {"Frames won", "Frame score", "Highest break", "Centuries"})
+        CHECK(screen.find(word) != std::string::npos);
+    for (const char* word : {"Racks won", "Break-and-runs", "Longest run"})
+        CHECK(screen.find(word) == std::string::npos);
+
+    const std::string totals = file_text(dir.path + "/termpool/stats");
+    CHECK(totals.find("\nplayer snooker 0 1 0 ") != std::string::npos); // Ann conceded
+    CHECK(totals.find("\nplayer snooker 1 1 0 ") != std::string::npos);
+    const std::string listing = tmux_session::run("env XDG_STATE_HOME=" + dir.path + " " +
+                                                  tmux_session::termpool_binary() + " stats");
+    CHECK(listing.find("Snooker\nPlayer  Frames  Points") == 0);
+    CHECK(listing.find("Racks") == std::string::npos);
 }

@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// A player's figures for a game (and, added up, for all their games): racks won, balls
-/// potted, pot success, fouls, break-and-runs and the longest run. A StatsTally hears the
-/// shots of a game as they are judged and keeps both players' figures; it knows nothing of
-/// files or screens.
+/// A player's figures for a game (and, added up, for all their games of one game type). Pool
+/// (8-ball, 9-ball, 10-ball) keeps racks won, balls potted, pot success, fouls, break-and-runs
+/// and the longest run; snooker keeps frames won, points, pot success, fouls, the highest break
+/// and the centuries. A StatsTally hears the shots of a game as they are judged and keeps both
+/// players' figures; it knows nothing of files or screens.
 ///
 /// The figures, precisely:
 /// - a *visit* is a player's stay at the table: it starts with their first shot after the
@@ -23,6 +24,16 @@
 ///   8 or 9 on the break that wins the rack counts.
 /// - a rack is *played* by both players once it has a winner; re-racks (an illegal break, a
 ///   stalemate) are part of the same rack.
+///
+/// Snooker counts frames where pool counts racks, and differs in these:
+/// - *balls potted*: every ball pocketed on a shot without a foul, colours that are re-spotted
+///   included (they were potted and scored).
+/// - *points*: the player's frame scores added up: the points of their pots and the penalties
+///   of the opponent's fouls.
+/// - a *break* is the points a player scores in one visit (the referee's break: a visit ends
+///   with a shot that scores nothing or fouls, and at a re-spotted black); the *highest break*
+///   is the best of them, a *century* a break of 100 or more.
+/// - longest run and break-and-runs are not kept.
 
 #include <array>
 #include <optional>
@@ -32,10 +43,21 @@
 
 namespace termpool {
 
-/// One player's figures; all counts start at zero.
+/// Which figures a game type keeps: a pool game's racks and runs, or snooker's frames and
+/// breaks.
+enum class StatsKind {
+    pool,    ///< 8-ball (both rules), 9-ball, 10-ball
+    snooker, ///< snooker
+};
+
+/// The figures `type` keeps. The one place that maps a game type to its statistics.
+StatsKind stats_kind(GameType type);
+
+/// One player's figures; all counts start at zero. Which of them a game keeps depends on its
+/// StatsKind (the others stay zero).
 struct PlayerStats {
-    int racks_won = 0;      ///< racks won
-    int racks_played = 0;   ///< racks finished (won or lost)
+    int racks_won = 0;      ///< racks won (snooker: frames)
+    int racks_played = 0;   ///< racks finished, won or lost (snooker: frames)
     int shots = 0;          ///< shots played, breaks included
     int pot_attempts = 0;   ///< shots that tried to pot (see the file comment)
     int pots_made = 0;      ///< pot attempts that succeeded
@@ -43,9 +65,12 @@ struct PlayerStats {
     int fouls = 0;          ///< shots with a foul
     int break_and_runs = 0; ///< racks won from the player's own break without a miss
     int longest_run = 0;    ///< most balls potted in one visit
+    int points = 0;         ///< snooker: frame scores added up
+    int highest_break = 0;  ///< snooker: most points in one visit
+    int centuries = 0;      ///< snooker: breaks of 100 points or more
 
-    /// Adds the counts of `more` (the longest run is the longer of the two); a count stops at
-    /// the largest int rather than overflow.
+    /// Adds the counts of `more` (the longest run and the highest break are the larger of the
+    /// two); a count stops at the largest int rather than overflow.
     void add(const PlayerStats& more);
 
     /// Field by field.
@@ -58,6 +83,9 @@ std::optional<double> pot_success(const PlayerStats& stats);
 /// Both players' figures as the shots of a game are judged.
 class StatsTally {
 public:
+    /// The tally of a game of `game`, which decides what it counts (see stats_kind).
+    explicit StatsTally(GameType game) : game_(game), kind_(stats_kind(game)) {}
+
     /// Hears one judged shot: `shooter` (1 or 2) played it, `was_break` when it was a break,
     /// `call` as the game took it (push_out only when a push-out was allowed) and `verdict`
     /// as Game::apply returned it. A verdict with a winner ends the rack.
@@ -72,11 +100,26 @@ public:
     /// Both players' figures, player 1 first.
     const std::array<PlayerStats, 2>& both() const { return stats_; }
 
+    /// The game type tallied.
+    GameType game() const { return game_; }
+    /// What it counts.
+    StatsKind kind() const { return kind_; }
+
+    /// Snooker: the score of `player` (1 or 2) in the frame being played, or in the last one
+    /// once it is over; 0 in pool.
+    int frame_score(int player) const { return frame_score_[player == 2 ? 1 : 0]; }
+
 private:
+    void end_rack(int winner);
+
+    GameType game_;
+    StatsKind kind_;
     std::array<PlayerStats, 2> stats_;
+    std::array<int, 2> frame_score_{};
     int visitor_ = 0;             // the player at the table in the current visit, 0 between visits
-    int run_ = 0;                 // balls potted in the current visit
+    int run_ = 0;                 // balls potted (snooker: points scored) in the current visit
     bool run_from_break_ = false; // the current visit began with its player's break
+    bool rack_over_ = false;      // the last rack or frame has a winner: the next shot starts one
 };
 
 /// Replays `record` and tallies its shots: the figures of a saved or finished game. An action

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "player/save_file.hpp"
-#include "player/stats_summary.hpp"
+#include "player/stats_figures.hpp"
 #include <termpool/text_width.hpp>
 
 namespace termpool::cli {
@@ -13,16 +13,12 @@ constexpr const char* usage = "usage: termpool stats [--reset NAME] [--help]\n";
 
 constexpr const char* help = "usage: termpool stats [--reset NAME] [--help]\n"
                              "\n"
-                             "Prints every player's totals over all finished games, from\n"
+                             "Prints every player's totals over all finished games, a section\n"
+                             "per game type (pool racks and snooker frames apart), from\n"
                              "$XDG_STATE_HOME/termpool/stats (~/.local/state/termpool/stats).\n"
                              "\n"
                              "  --reset NAME   forget the totals of the player NAME\n"
                              "  -h, --help     print this help and exit\n";
-
-constexpr const char* legend =
-    "Racks: won/played. Balls: object balls potted. Pots: shots that potted\n"
-    "a ball and kept the table, of those that tried (breaks, safeties and\n"
-    "push-outs do not try). B&R: break-and-runs. Run: most balls in one visit.\n";
 
 std::string padded(const std::string& s, int columns, bool left) {
     const std::string pad(static_cast<std::size_t>(std::max(0, columns - display_width(s))), ' ');
@@ -62,29 +58,47 @@ int reset(const std::string& path, const std::string& name) {
 } // namespace
 
 std::string stats_table(const StatsStore& store) {
-    const std::vector<std::string> headers = {"Player",      "Racks", "Balls", "Pots",
-                                              "Pot success", "Fouls", "B&R",   "Run"};
-    std::vector<std::vector<std::string>> rows = {headers};
-    auto ratio = [](int a, int b) { return std::to_string(a) + "/" + std::to_string(b); };
-    for (const StatsEntry& e : store.players) {
-        const PlayerStats& s = e.stats;
-        rows.push_back({e.name, ratio(s.racks_won, s.racks_played), std::to_string(s.balls_potted),
-                        ratio(s.pots_made, s.pot_attempts), pot_success_text(s),
-                        std::to_string(s.fouls), std::to_string(s.break_and_runs),
-                        std::to_string(s.longest_run)});
-    }
-    std::vector<int> widths(headers.size(), 0);
-    for (const auto& row : rows)
-        for (std::size_t c = 0; c < row.size(); ++c)
-            widths[c] = std::max(widths[c], display_width(row[c]));
+    std::vector<StatsGame> games;
+    for (const GameType game : stats_game_order)
+        games.push_back(game);
+    games.push_back(std::nullopt); // a version 1 file's totals of all games, last
     std::string text;
-    for (const auto& row : rows) {
-        std::string line;
-        for (std::size_t c = 0; c < row.size(); ++c)
-            line += (c == 0 ? "" : "  ") + padded(row[c], widths[c], c == 0);
-        text += line + "\n";
+    bool kind_shown[2] = {false, false};
+    for (const StatsGame& game : games) {
+        const StatsKind kind = stats_kind_of(game);
+        const StatsFigures& figures = stats_figures(kind);
+        std::vector<std::vector<std::string>> rows = {{"Player"}};
+        for (const StatsColumn& column : figures.table)
+            rows[0].push_back(column.header);
+        for (const StatsEntry& e : store.players) {
+            if (e.game != game)
+                continue;
+            rows.push_back({e.name});
+            for (const StatsColumn& column : figures.table)
+                rows.back().push_back(column.figure(e.stats));
+        }
+        if (rows.size() == 1)
+            continue;
+        kind_shown[static_cast<int>(kind)] = true;
+        std::vector<int> widths(rows[0].size(), 0);
+        for (const auto& row : rows)
+            for (std::size_t c = 0; c < row.size(); ++c)
+                widths[c] = std::max(widths[c], display_width(row[c]));
+        text += stats_game_title(game) + "\n";
+        for (const auto& row : rows) {
+            std::string line;
+            for (std::size_t c = 0; c < row.size(); ++c)
+                line += (c == 0 ? "" : "  ") + padded(row[c], widths[c], c == 0);
+            text += line + "\n";
+        }
+        text += "\n";
     }
-    return text + "\n" + legend;
+    // One legend per kind shown, a blank line between them.
+    std::string legends;
+    for (const StatsKind kind : {StatsKind::pool, StatsKind::snooker})
+        if (kind_shown[static_cast<int>(kind)])
+            legends += (legends.empty() ? "" : "\n") + std::string(stats_figures(kind).legend);
+    return text + legends;
 }
 
 int stats_command(const std::vector<std::string>& args) {

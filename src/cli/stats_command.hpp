@@ -1,5 +1,5 @@
 #pragma once
-// `termpool stats`: every player's totals from the stats file, as a table.
+// `termpool stats`: every player's totals from the stats file, as a table per game type.
 
 #include <string>
 #include <vector>
@@ -8,8 +8,10 @@
 
 namespace termpool::cli {
 
-/// The totals as an aligned table (names padded by their display width), a header line
-/// first and a short legend after; one line per player, in the store's order.
+/// The totals as a section per game type played (8-ball, ..., snooker, then a version 1 file's
+/// mixed totals), each a title line and an aligned table of that game's figures (names padded
+/// by their display width; one line per player, in the store's order) and a blank line; then a
+/// short legend per kind of figures shown.
 std::string stats_table(const StatsStore& store);
 
 /// `termpool stats [--reset NAME] [--help]`: prints the table, or removes one player's

@@ -103,7 +103,7 @@ Match::Match(const GameRecord& header, std::uint64_t computer_seed)
       game_(make_game(header.setup, header.breaker, header.seed)), score_{header.race_to,
                                                                           header.break_rule,
                                                                           {0, 0}},
-      rack_breaker_(header.breaker), computer_seed_(computer_seed) {
+      rack_breaker_(header.breaker), tally_(header.setup.game), computer_seed_(computer_seed) {
     record_.actions.clear();
     record_.check.reset();
     record_.setup.table = table_played(header.setup); // snooker says so in its record

@@ -20,6 +20,14 @@ int balls_kept_down(const Verdict& v) {
     return n;
 }
 
+// Object balls potted by a legal shot, as `kind` counts them.
+int balls_potted(StatsKind kind, const Verdict& v) {
+    if (kind == StatsKind::pool)
+        return balls_kept_down(v);
+    // Snooker: colours potted while reds remain come back, but they were potted and scored.
+    return static_cast<int>(std::ranges::count_if(v.pocketed, [](int id) { return id != 0; }));
+}
+
 } // namespace
 
 void PlayerStats::add(const PlayerStats& more) {
@@ -38,6 +46,9 @@ void PlayerStats::add(const PlayerStats& more) {
     sum(fouls, more.fouls);
     sum(break_and_runs, more.break_and_runs);
     longest_run = std::max(longest_run, more.longest_run);
+    sum(points, more.points);
+    highest_break = std::max(highest_break, more.highest_break);
+    sum(centuries, more.centuries);
 }
 
 std::optional<double> pot_success(const PlayerStats& stats) {
@@ -46,21 +57,27 @@ std::optional<double> pot_success(const PlayerStats& stats) {
     return static_cast<double>(stats.pots_made) / stats.pot_attempts;
 }
 
+StatsKind stats_kind(GameType type) {
+    return type == GameType::snooker ? StatsKind::snooker : StatsKind::pool;
+}
+
 void StatsTally::on_shot(int shooter, bool was_break, const ShotCall& call, const Verdict& v) {
     if (shooter != 1 && shooter != 2)
         return;
-    PlayerStats& me = stats_[shooter - 1];
-    const int other = 3 - shooter;
+    if (rack_over_) {
+        rack_over_ = false;
+        frame_score_ = {0, 0};
+    }
     if (was_break || visitor_ != shooter) {
         visitor_ = shooter;
         run_ = 0;
         run_from_break_ = was_break;
     }
-
+    PlayerStats& me = stats_[shooter - 1];
+    const int other = 3 - shooter;
     const bool foul = v.foul != Foul::none;
-    const bool lost = v.winner == other;
-    const bool legal = !foul && !lost;
-    const int potted = legal ? balls_kept_down(v) : 0;
+    const bool legal = !foul && v.winner != other;
+    const int potted = legal ? balls_potted(kind_, v) : 0;
     const bool keeps_table = v.winner == shooter || (v.winner == 0 && v.next_shooter == shooter);
 
     ++me.shots;
@@ -72,27 +89,49 @@ void StatsTally::on_shot(int shooter, bool was_break, const ShotCall& call, cons
         if (legal && potted > 0 && keeps_table)
             ++me.pots_made;
     }
-    run_ += potted;
-    me.longest_run = std::max(me.longest_run, run_);
-
-    if (v.winner == 1 || v.winner == 2) {
-        ++stats_[0].racks_played;
-        ++stats_[1].racks_played;
-        ++stats_[v.winner - 1].racks_won;
+    bool visit_over = foul || v.winner != 0 || !keeps_table;
+    switch (kind_) {
+    case StatsKind::pool:
+        run_ += potted;
+        me.longest_run = std::max(me.longest_run, run_);
         if (v.winner == shooter && run_from_break_)
             ++me.break_and_runs;
+        break;
+    case StatsKind::snooker:
+        me.points += v.points;
+        stats_[other - 1].points += v.penalty;
+        frame_score_[shooter - 1] += v.points;
+        frame_score_[other - 1] += v.penalty;
+        if (legal && v.points > 0) {
+            const int before = run_;
+            run_ += v.points;
+            me.highest_break = std::max(me.highest_break, run_);
+            if (before < 100 && run_ >= 100)
+                ++me.centuries;
+        }
+        // A re-spotted black (the scores level at the end) is played from the D by whoever the
+        // lots name: a new visit, even for the player who potted the black.
+        visit_over =
+            visit_over || v.points == 0 || (v.winner == 0 && v.ball_in_hand != BallInHand::none);
+        break;
     }
-    if (foul || v.winner != 0 || !keeps_table)
+    end_rack(v.winner);
+    if (visit_over)
         visitor_ = 0;
 }
 
-void StatsTally::on_conceded(int winner) {
+void StatsTally::end_rack(int winner) {
     if (winner != 1 && winner != 2)
         return;
     ++stats_[0].racks_played;
     ++stats_[1].racks_played;
     ++stats_[winner - 1].racks_won;
     visitor_ = 0;
+    rack_over_ = true;
+}
+
+void StatsTally::on_conceded(int winner) {
+    end_rack(winner);
 }
 
 std::variant<StatsTally, RecordError> tally_record(const GameRecord& record) {

@@ -18,23 +18,6 @@ namespace {
 
 constexpr std::string_view blanks = " \t\r\v\f";
 
-// The figures of a player line, in file order, with their names for messages.
-struct Figure {
-    const char* name;
-    int PlayerStats::*field;
-};
-constexpr Figure figures[] = {
-    {"racks won", &PlayerStats::racks_won},
-    {"racks played", &PlayerStats::racks_played},
-    {"shots", &PlayerStats::shots},
-    {"pot attempts", &PlayerStats::pot_attempts},
-    {"pots made", &PlayerStats::pots_made},
-    {"balls potted", &PlayerStats::balls_potted},
-    {"fouls", &PlayerStats::fouls},
-    {"break-and-runs", &PlayerStats::break_and_runs},
-    {"longest run", &PlayerStats::longest_run},
-};
-
 // The next blank-separated field of `rest`, which is left after it.
 std::string_view next_field(std::string_view& rest) {
     const std::size_t first = std::min(rest.find_first_not_of(blanks), rest.size());
@@ -69,36 +52,15 @@ std::optional<int> parse_count(std::string_view field, std::string& error) {
     return value;
 }
 
-// Figures that no game could produce: the file was edited or damaged.
-std::optional<std::string> contradiction(const PlayerStats& s) {
-    auto over = [](const char* a, int va, const char* b, int vb) {
-        return std::string("more ") + a + " (" + std::to_string(va) + ") than " + b + " (" +
-               std::to_string(vb) + ")";
-    };
-    if (s.racks_won > s.racks_played)
-        return over("racks won", s.racks_won, "racks played", s.racks_played);
-    if (s.pot_attempts > s.shots)
-        return over("pot attempts", s.pot_attempts, "shots", s.shots);
-    if (s.pots_made > s.pot_attempts)
-        return over("pots made", s.pots_made, "pot attempts", s.pot_attempts);
-    if (s.fouls > s.shots)
-        return over("fouls", s.fouls, "shots", s.shots);
-    if (s.break_and_runs > s.racks_won)
-        return over("break-and-runs", s.break_and_runs, "racks won", s.racks_won);
-    if (s.longest_run > s.balls_potted)
-        return std::string("a longest run (") + std::to_string(s.longest_run) +
-               ") longer than all balls potted (" + std::to_string(s.balls_potted) + ")";
-    return std::nullopt;
-}
-
 std::string header() {
     return "termpool-stats " + std::to_string(stats_version);
 }
 
 } // namespace
 
-const StatsEntry* StatsStore::find(std::string_view name) const {
-    const auto it = std::ranges::find(players, name, &StatsEntry::name);
+const StatsEntry* StatsStore::find(std::string_view name, StatsGame game) const {
+    const auto it = std::ranges::find_if(
+        players, [&](const StatsEntry& e) { return e.name == name && e.game == game; });
     return it == players.end() ? nullptr : &*it;
 }
 
@@ -116,12 +78,23 @@ std::string stats_name(std::string_view name) {
 }
 
 std::string format_stats(const StatsStore& store) {
-    std::string text = header() + "\n# won played shots attempts pots potted fouls "
-                                  "break-and-runs longest-run name\n";
+    std::string text = header() + "\n# player GAME COUNTS NAME; the counts of each game:\n";
+    for (const StatsKind kind : {StatsKind::pool, StatsKind::snooker}) {
+        text += "#";
+        for (const GameType game : stats_game_order)
+            if (stats_kind(game) == kind)
+                text += " " + stats_game_key(game);
+        if (kind == stats_kind_of(StatsGame{}))
+            text += " " + stats_game_key(StatsGame{});
+        text += ":";
+        for (const StatsCount& c : stats_figures(kind).counts)
+            text += std::string(" ") + c.key;
+        text += "\n";
+    }
     for (const StatsEntry& e : store.players) {
-        text += "player";
-        for (const Figure& f : figures)
-            text += " " + std::to_string(e.stats.*f.field);
+        text += "player " + stats_game_key(e.game);
+        for (const StatsCount& c : stats_figures(stats_kind_of(e.game)).counts)
+            text += " " + std::to_string(e.stats.*c.field);
         text += " " + stats_name(e.name) + "\n";
     }
     return text;
@@ -130,7 +103,7 @@ std::string format_stats(const StatsStore& store) {
 std::variant<StatsStore, StatsError> parse_stats(std::string_view text) {
     StatsStore store;
     std::vector<int> first_line; // the line of each entry, for a name listed twice
-    bool have_header = false;
+    int version = 0;             // 0 until the header
     int last_line = 0;
     for (const TextLine& line : text_lines(text)) {
         last_line = line.number;
@@ -141,33 +114,43 @@ std::variant<StatsStore, StatsError> parse_stats(std::string_view text) {
             return StatsError{line.number, std::move(message)};
         };
         std::string_view rest = content;
-        if (!have_header) {
+        if (version == 0) {
             const std::string_view magic = next_field(rest), v = next_field(rest);
             if (magic != "termpool-stats" || v.empty() || !trim(rest).empty())
                 return fail("not a termpool stats file (expected '" + header() + "')");
             std::string error;
-            const auto version = parse_count(v, error);
-            if (!version || *version < 1)
+            const auto read = parse_count(v, error);
+            if (!read || *read < 1)
                 return fail("bad version '" + std::string(v) + "'");
-            if (*version > stats_version)
+            if (*read > stats_version)
                 return fail("written by a newer termpool (version " + std::string(v) +
                             "; this one reads " + std::to_string(stats_version) + ")");
-            have_header = true;
+            version = *read;
             continue;
         }
         const std::string_view keyword = next_field(rest);
         if (keyword != "player")
             return fail("unknown line '" + std::string(keyword) + "' (expected 'player')");
         StatsEntry entry;
-        for (const Figure& f : figures) {
+        // Version 1 had no game: its totals were of all games together.
+        if (version >= 2) {
+            const std::string_view key = next_field(rest);
+            if (key.empty())
+                return fail("missing the game");
+            if (!parse_stats_game_key(key, entry.game))
+                return fail("unknown game '" + std::string(key) +
+                            "' (expected 8ball, 8ball-bar, 9ball, 10ball, snooker or mixed)");
+        }
+        const StatsFigures& figures = stats_figures(stats_kind_of(entry.game));
+        for (const StatsCount& c : figures.counts) {
             const std::string_view field = next_field(rest);
             if (field.empty())
-                return fail(std::string("missing the ") + f.name);
+                return fail(std::string("missing the ") + c.name);
             std::string error;
             const auto count = parse_count(field, error);
             if (!count)
-                return fail(std::string(f.name) + ": " + error);
-            entry.stats.*f.field = *count;
+                return fail(std::string(c.name) + ": " + error);
+            entry.stats.*c.field = *count;
         }
         const std::string_view name = trim(rest);
         if (name.empty())
@@ -176,29 +159,32 @@ std::variant<StatsStore, StatsError> parse_stats(std::string_view text) {
             return fail("the name is not valid UTF-8");
         if (stats_name(name) != name)
             return fail("control characters in the name");
-        if (const auto problem = contradiction(entry.stats))
+        if (const auto problem = figures.contradiction(entry.stats))
             return fail(*problem);
-        if (const StatsEntry* twice = store.find(name))
+        if (const StatsEntry* twice = store.find(name, entry.game))
             return fail(
-                "'" + std::string(name) + "' is listed twice (first at line " +
+                "'" + std::string(name) + "' is listed twice" +
+                (version >= 2 ? " for " + stats_game_key(entry.game) : "") + " (first at line " +
                 std::to_string(first_line[static_cast<std::size_t>(twice - store.players.data())]) +
                 ")");
         entry.name = std::string(name);
         store.players.push_back(std::move(entry));
         first_line.push_back(line.number);
     }
-    if (!have_header)
+    if (version == 0)
         return StatsError{std::max(last_line, 1),
                           "no '" + header() + "' line: not a stats file, or cut short"};
     return store;
 }
 
-void add_game(StatsStore& store, const std::string names[2], const PlayerStats stats[2]) {
+void add_game(StatsStore& store, const std::string names[2], GameType game,
+              const PlayerStats stats[2]) {
     for (int p = 0; p < 2; ++p) {
         const std::string name = stats_name(names[p]);
-        auto it = std::ranges::find(store.players, name, &StatsEntry::name);
+        auto it = std::ranges::find_if(
+            store.players, [&](const StatsEntry& e) { return e.name == name && e.game == game; });
         if (it == store.players.end()) {
-            store.players.push_back({name, {}});
+            store.players.push_back({name, game, {}});
             it = store.players.end() - 1;
         }
         it->stats.add(stats[p]);
@@ -206,11 +192,7 @@ void add_game(StatsStore& store, const std::string names[2], const PlayerStats s
 }
 
 bool remove_player(StatsStore& store, std::string_view name) {
-    const auto it = std::ranges::find(store.players, name, &StatsEntry::name);
-    if (it == store.players.end())
-        return false;
-    store.players.erase(it);
-    return true;
+    return std::erase_if(store.players, [&](const StatsEntry& e) { return e.name == name; }) > 0;
 }
 
 std::string stats_path() {
@@ -250,7 +232,7 @@ StatsLock::~StatsLock() {
         ::close(fd_); // releases the lock
 }
 
-std::string save_game_stats(const std::string& path, const std::string names[2],
+std::string save_game_stats(const std::string& path, const std::string names[2], GameType game,
                             const PlayerStats stats[2]) {
     const StatsLock lock(path);
     StatsFile file = read_stats_file(path);
@@ -270,7 +252,7 @@ std::string save_game_stats(const std::string& path, const std::string names[2],
         break;
     }
     }
-    add_game(file.store, names, stats);
+    add_game(file.store, names, game, stats);
     std::string error;
     if (!write_atomically(path, format_stats(file.store), error))
         return (notice.empty() ? "" : notice + "; ") + "could not save the statistics: " + error;

@@ -1,7 +1,5 @@
 #include "player/stats_summary.hpp"
 
-#include <cmath>
-
 #include <termpool/text_width.hpp>
 
 namespace termpool {
@@ -28,32 +26,22 @@ std::string pad_right(const std::string& s, int columns) {
 
 } // namespace
 
-std::string pot_success_text(const PlayerStats& s) {
-    const auto success = pot_success(s);
-    if (!success)
-        return "-";
-    return std::to_string(static_cast<int>(std::lround(*success * 100))) + "%";
-}
-
-std::string stats_summary(const std::string names[2], const PlayerStats s[2]) {
+std::string stats_summary(StatsKind kind, const std::string names[2], const BoxFigures f[2]) {
     // A space before each figure column keeps the columns apart, so a name gets one less.
     std::string text = std::string(label_columns, ' ');
     for (int p = 0; p < 2; ++p)
         text += pad_left(fit_name(names[p], figure_columns - 1), figure_columns);
-    auto row = [&](const char* label, const std::string& a, const std::string& b) {
-        text += "\n" + pad_right(label, label_columns) + pad_left(a, figure_columns) +
-                pad_left(b, figure_columns);
-    };
-    auto counts = [&](const char* label, int PlayerStats::*field) {
-        row(label, std::to_string(s[0].*field), std::to_string(s[1].*field));
-    };
-    counts("Racks won", &PlayerStats::racks_won);
-    counts("Balls potted", &PlayerStats::balls_potted);
-    row("Pot success", pot_success_text(s[0]), pot_success_text(s[1]));
-    counts("Fouls", &PlayerStats::fouls);
-    counts("Longest run", &PlayerStats::longest_run);
-    counts("Break-and-runs", &PlayerStats::break_and_runs);
+    for (const StatsBoxRow& row : stats_figures(kind).box)
+        text += "\n" + pad_right(row.label, label_columns) +
+                pad_left(row.figure(f[0]), figure_columns) +
+                pad_left(row.figure(f[1]), figure_columns);
     return text;
+}
+
+std::string stats_summary(const std::string names[2], const StatsTally& tally) {
+    const BoxFigures f[2] = {{tally.of(1), tally.frame_score(1)},
+                             {tally.of(2), tally.frame_score(2)}};
+    return stats_summary(tally.kind(), names, f);
 }
 
 } // namespace termpool

@@ -183,15 +183,14 @@ void LocalDriver::save() {
 std::string LocalDriver::keep_figures() {
     // Once per finished game or match; computers are kept under their names ("CPU (hard)").
     const PlayerStats figures[2] = {match_.tally().of(1), match_.tally().of(2)};
-    return save_game_stats(stats_path(), match_.record().names, figures);
+    return save_game_stats(stats_path(), match_.record().names, match_.tally().game(), figures);
 }
 
 std::string LocalDriver::game_over_text(const std::string& told) const {
     const MatchState& s = match_.score();
     const std::string& one = match_.name(1);
     const std::string& two = match_.name(2);
-    const PlayerStats figures[2] = {match_.tally().of(1), match_.tally().of(2)};
-    const std::string summary = "\n\n" + stats_summary(match_.record().names, figures);
+    const std::string summary = "\n\n" + stats_summary(match_.record().names, match_.tally());
     // Snooker says frames: the next is a frame, a match of them best of N.
     const bool frames = match_.game().type() == GameType::snooker;
     if (!s.is_race())
