@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <termpool/rack.hpp>
+#include <termpool/rules_names.hpp>
 #include <termpool/snooker_layout.hpp>
 #include <termpool/table_physics.hpp>
 #include <termpool/text_lines.hpp>
@@ -442,10 +443,9 @@ Problem parse_shooter(const Line& line, Draft& draft) {
     return {};
 }
 
-/// The text of `groups` for a group of player 1. The "1=" keeps the line unambiguous: it names
-/// player 1's group whoever shoots.
+/// The text of `groups` for a group of player 1.
 std::string groups_text(Group group) {
-    return group == Group::open ? "open" : std::string("1=") + group_name(group);
+    return name_of(player1_group_names, group);
 }
 
 Problem parse_groups(const Line& line, Draft& draft) {
@@ -453,11 +453,9 @@ Problem parse_groups(const Line& line, Draft& draft) {
         return p;
     if (Problem p = once(draft, "groups", line))
         return p;
-    for (const Group g : {Group::open, Group::solids, Group::stripes}) {
-        if (line.arg(0) == groups_text(g)) {
-            draft.game.player1_group = g;
-            return {};
-        }
+    if (const std::optional<Group> group = parse_name(player1_group_names, line.arg(0))) {
+        draft.game.player1_group = *group;
+        return {};
     }
     return "unknown groups " + quoted(line.arg(0)) + " (expected open, 1=solids or 1=stripes)";
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <termpool/random.hpp>
 #include <termpool/record.hpp>
+#include <termpool/rules_names.hpp>
 #include <termpool/state_digest.hpp>
 #include <termpool/text_lines.hpp>
 #include <termpool/text_numbers.hpp>
@@ -29,16 +30,6 @@ std::optional<std::uint64_t> to_u64(std::string_view s) {
     if (ec != std::errc{} || end != s.data() + s.size())
         return std::nullopt;
     return v;
-}
-
-std::optional<Choice> to_choice(std::string_view s) {
-    for (const Choice c :
-         {Choice::play_on, Choice::re_rack, Choice::re_break, Choice::spot_eight,
-          Choice::take_solids, Choice::take_stripes, Choice::shoot, Choice::pass_back,
-          Choice::offender_plays, Choice::replace_and_replay, Choice::concede})
-        if (s == choice_name(c))
-            return c;
-    return std::nullopt;
 }
 
 // The name is the rest of the line after the keyword: names may hold spaces.
@@ -132,7 +123,7 @@ read_action(const std::vector<std::string_view>& f) {
         return a;
     }
     if (key == "choose" && want(2)) {
-        const auto c = to_choice(f[1]);
+        const auto c = parse_name(choice_names, f[1]);
         if (!c)
             return "unknown choice '" + std::string(f[1]) + "'";
         a.kind = RecordedAction::Kind::choose;
