@@ -117,29 +117,29 @@ Problem parse_table(const Line& line, Draft& draft) {
 }
 
 /// `collision` and `cushion` both choose between a physical and an ideal model.
-template <class Model>
-Problem parse_model(const Line& line, Draft& draft, Model& out, const char* usage) {
+template <class Model, std::size_t N>
+Problem parse_model(const Line& line, Draft& draft, Model& out, const NameRow<Model> (&names)[N],
+                    const char* usage) {
     if (Problem p = arity(line, 1, 1, usage))
         return p;
     const std::string key(line.fields[0]);
     if (Problem p = once(draft, key, line))
         return p;
-    if (line.arg(0) == "physical") {
-        out = Model::physical;
-    } else if (line.arg(0) == "ideal") {
-        out = Model::ideal;
-    } else {
+    const std::optional<Model> model = parse_name(names, line.arg(0));
+    if (!model)
         return "unknown " + key + " model " + quoted(line.arg(0)) + " (expected physical or ideal)";
-    }
+    out = *model;
     return {};
 }
 
 Problem parse_collision(const Line& line, Draft& draft) {
-    return parse_model(line, draft, draft.setup.physics.collision, "collision physical|ideal");
+    return parse_model(line, draft, draft.setup.physics.collision, collision_model_names,
+                       "collision physical|ideal");
 }
 
 Problem parse_cushion(const Line& line, Draft& draft) {
-    return parse_model(line, draft, draft.setup.physics.cushion, "cushion physical|ideal");
+    return parse_model(line, draft, draft.setup.physics.cushion, cushion_model_names,
+                       "cushion physical|ideal");
 }
 
 Problem parse_friction(const Line& line, Draft& draft) {
@@ -264,14 +264,16 @@ Problem parse_throw(const Line& line, Draft& draft) {
         return "'throw' cannot go with 'param u_b' (line " + std::to_string(*param_line) +
                "): both set the ball-ball friction";
     BallFriction& friction = draft.setup.physics.ball_friction;
-    if (line.arg(0) == "constant") {
+    const std::optional<BallFrictionModel> model =
+        parse_name(ball_friction_model_names, line.arg(0));
+    if (!model)
+        return "unknown throw model " + quoted(line.arg(0)) + " (expected fit or constant)";
+    if (*model == BallFrictionModel::constant) {
         if (Problem p = arity(line, 2, 2, usage))
             return p;
         friction.model = BallFrictionModel::constant;
         return friction_constant(line.arg(1), "u_b", friction.constant);
     }
-    if (line.arg(0) != "fit")
-        return "unknown throw model " + quoted(line.arg(0)) + " (expected fit or constant)";
     if (line.arguments() == 2 || line.arguments() == 3)
         return arity(line, 4, 4, usage);
     friction.model = BallFrictionModel::fit;
