@@ -70,6 +70,14 @@ inline constexpr double standard_shaft_end_mass = 0.0078;
 /// Effective end mass of a low-deflection shaft, kg: about 1.5 degrees at half a tip.
 inline constexpr double low_deflection_end_mass = 0.0044;
 
+/// The cues that have a name, by their end mass (kg), as `--cue`, a record's and a scenario's
+/// `cue` line give them; any other end mass is written as its number.
+inline constexpr NameRow<double> cue_names[] = {
+    {standard_shaft_end_mass, "standard"},
+    {low_deflection_end_mass, "low-deflection"},
+    {0.0, "none"}, // no squirt at all
+};
+
 /// How a ball slows down on the cloth. Decay, constant and combined are the classic models (the
 /// seed report's): they move balls on straight lines, without spin.
 enum class FrictionKind {

@@ -398,12 +398,8 @@ Problem parse_cue(const Line& line, Draft& draft) {
         return p;
     double& end_mass = draft.setup.physics.cue_end_mass;
     const std::string_view word = line.arg(0);
-    if (word == "standard") {
-        end_mass = standard_shaft_end_mass;
-    } else if (word == "low-deflection") {
-        end_mass = low_deflection_end_mass;
-    } else if (word == "none") {
-        end_mass = 0;
+    if (const std::optional<double> named = parse_name(cue_names, word)) {
+        end_mass = *named;
     } else {
         if (!parse_double(word))
             return "unknown cue " + quoted(word) +

@@ -76,20 +76,13 @@ std::optional<std::uint64_t> to_hash(std::string_view s) {
 }
 
 std::string cue_text(double end_mass) {
-    if (end_mass == standard_shaft_end_mass)
-        return "standard";
-    if (end_mass == low_deflection_end_mass)
-        return "low-deflection";
-    return end_mass == 0 ? "none" : number(end_mass);
+    const char* name = name_of(cue_names, end_mass, nullptr);
+    return name ? name : number(end_mass);
 }
 
 std::optional<double> to_cue_end_mass(std::string_view s) {
-    if (s == "standard")
-        return standard_shaft_end_mass;
-    if (s == "low-deflection")
-        return low_deflection_end_mass;
-    if (s == "none")
-        return 0.0;
+    if (const auto named = parse_name(cue_names, s))
+        return named;
     const auto m = to_double(s);
     if (!m || *m < 0)
         return std::nullopt;
