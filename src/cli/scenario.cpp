@@ -328,18 +328,11 @@ Problem parse_rack(const Line& line, Draft& draft) {
         return p;
     if (Problem p = once(draft, "rack", line))
         return p;
-    if (line.arg(0) == "8ball") {
-        draft.rack = RackType::eight_ball;
-    } else if (line.arg(0) == "9ball") {
-        draft.rack = RackType::nine_ball;
-    } else if (line.arg(0) == "10ball") {
-        draft.rack = RackType::ten_ball;
-    } else if (line.arg(0) == "snooker") {
-        draft.rack = RackType::snooker;
-    } else {
+    const std::optional<RackType> rack = parse_name(rack_type_names, line.arg(0));
+    if (!rack)
         return "unknown rack " + quoted(line.arg(0)) +
                " (expected 8ball, 9ball, 10ball or snooker)";
-    }
+    draft.rack = *rack;
     if (line.arguments() == 2) {
         draft.rack_seed = parse_uint64(line.arg(1));
         if (!draft.rack_seed)
