@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string_view>
+#include <termpool/enum_names.hpp>
 
 namespace termpool {
 
@@ -14,6 +15,14 @@ enum class Assist {
     standard, ///< the aim starts full on a legal ball; the object ball's line is short
     pro,      ///< the aim starts full on a legal ball; the cue ball's line to its first contact
 };
+
+/// The assists' names, as the command line and a record give them.
+inline constexpr NameRow<Assist> assist_names[] = {
+    {Assist::guided, "guided"},
+    {Assist::standard, "standard"},
+    {Assist::pro, "pro"},
+};
+static_assert(names_in_order(assist_names));
 
 /// "guided", "standard" or "pro".
 const char* assist_name(Assist assist);

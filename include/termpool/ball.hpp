@@ -2,6 +2,7 @@
 /// \file
 /// The state of one ball.
 
+#include <termpool/enum_names.hpp>
 #include <termpool/vec.hpp>
 
 namespace termpool {
@@ -27,6 +28,14 @@ struct Ball {
     /// Exact equality, for determinism checks.
     bool operator==(const Ball&) const = default;
 };
+
+/// The motion states' names, in the simulator's output.
+inline constexpr NameRow<MotionState> motion_state_names[] = {
+    {MotionState::stationary, "stationary"}, {MotionState::spinning, "spinning"},
+    {MotionState::sliding, "sliding"},       {MotionState::rolling, "rolling"},
+    {MotionState::pocketed, "pocketed"},
+};
+static_assert(names_in_order(motion_state_names));
 
 /// Name of a motion state as used in the simulator's output ("sliding", ...).
 const char* motion_state_name(MotionState state);

@@ -2,6 +2,8 @@
 /// \file
 /// What happens during a shot.
 
+#include <termpool/enum_names.hpp>
+
 namespace termpool {
 
 /// Kinds of events, in the words of the simulator's output.
@@ -27,6 +29,20 @@ struct Event {
     /// Exact equality, for determinism checks.
     bool operator==(const Event&) const = default;
 };
+
+/// The event kinds' names, in the simulator's output.
+inline constexpr NameRow<EventKind> event_kind_names[] = {
+    {EventKind::ball_ball, "ball-ball"},
+    {EventKind::cushion, "cushion"},
+    {EventKind::jaw, "jaw"},
+    {EventKind::pocket, "pocket"},
+    {EventKind::sliding, "sliding"},
+    {EventKind::rolling, "rolling"},
+    {EventKind::spinning, "spinning"},
+    {EventKind::stopped, "stopped"},
+    {EventKind::off_table, "off-table"},
+};
+static_assert(names_in_order(event_kind_names));
 
 /// Name of an event kind as used in the simulator's output ("ball-ball", ...).
 const char* event_kind_name(EventKind kind);

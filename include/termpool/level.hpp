@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <termpool/enum_names.hpp>
 
 namespace termpool {
 
@@ -15,6 +16,15 @@ enum class Level {
     hard,   ///< noise x1 (the computer-pool tournament reference)
     pro,    ///< noise x0.5, the most candidates
 };
+
+/// The levels' names, as the command line and a record's seats give them.
+inline constexpr NameRow<Level> level_names[] = {
+    {Level::easy, "easy"},
+    {Level::medium, "medium"},
+    {Level::hard, "hard"},
+    {Level::pro, "pro"},
+};
+static_assert(names_in_order(level_names));
 
 /// "easy", "medium", "hard" or "pro".
 const char* level_name(Level level);

@@ -1,6 +1,9 @@
 #pragma once
 /// \file
-/// Physical constants and model choices of the simulator.
+/// Physical constants and model choices of the simulator, and the names a scenario, a record
+/// and the command line give them.
+
+#include <termpool/enum_names.hpp>
 
 namespace termpool {
 
@@ -10,11 +13,26 @@ enum class CollisionModel {
     ideal,    ///< the seed report's elastic, frictionless impulse along the line of centres
 };
 
+/// The ball-ball models' names, as a scenario's `collision` line gives them.
+inline constexpr NameRow<CollisionModel> collision_model_names[] = {
+    {CollisionModel::physical, "physical"},
+    {CollisionModel::ideal, "ideal"},
+};
+static_assert(names_in_order(collision_model_names));
+
 /// Which law gives the ball-ball friction u_b of a contact.
 enum class BallFrictionModel {
     fit,      ///< u_b = a + b e^(-c v_rel): measured throw, large when slow, small when fast
     constant, ///< u_b the same at every sliding speed
 };
+
+/// The ball-ball friction laws' names, as a scenario's `throw` line and `termpool experiment
+/// throw --model` give them.
+inline constexpr NameRow<BallFrictionModel> ball_friction_model_names[] = {
+    {BallFrictionModel::fit, "fit"},
+    {BallFrictionModel::constant, "constant"},
+};
+static_assert(names_in_order(ball_friction_model_names));
 
 /// Ball-ball friction against the relative sliding speed v_rel (m/s) of the two surfaces where
 /// they touch. The defaults are Alciatore's fit to measured throw (as pooltool uses it): u_b is
@@ -39,11 +57,26 @@ enum class CushionModel {
     ideal,    ///< the seed report's mirror reflection: normal velocity flips, the rest is kept
 };
 
+/// The cushion models' names, as a scenario's `cushion` line gives them.
+inline constexpr NameRow<CushionModel> cushion_model_names[] = {
+    {CushionModel::physical, "physical"},
+    {CushionModel::ideal, "ideal"},
+};
+static_assert(names_in_order(cushion_model_names));
+
 /// Effective end mass of a standard cue shaft, kg: about 2.5 degrees of squirt at half a tip of
 /// side.
 inline constexpr double standard_shaft_end_mass = 0.0078;
 /// Effective end mass of a low-deflection shaft, kg: about 1.5 degrees at half a tip.
 inline constexpr double low_deflection_end_mass = 0.0044;
+
+/// The cues that have a name, by their end mass (kg), as `--cue`, a record's and a scenario's
+/// `cue` line give them; any other end mass is written as its number.
+inline constexpr NameRow<double> cue_names[] = {
+    {standard_shaft_end_mass, "standard"},
+    {low_deflection_end_mass, "low-deflection"},
+    {0.0, "none"}, // no squirt at all
+};
 
 /// How a ball slows down on the cloth. Decay, constant and combined are the classic models (the
 /// seed report's): they move balls on straight lines, without spin.
@@ -53,6 +86,15 @@ enum class FrictionKind {
     constant, ///< classic model: constant deceleration A; no spin
     combined, ///< classic model: whichever of decay and constant slows more; no spin
 };
+
+/// The cloth models' names, the first word of their text form (`format_friction`).
+inline constexpr NameRow<FrictionKind> friction_kind_names[] = {
+    {FrictionKind::physical, "physical"},
+    {FrictionKind::decay, "decay"},
+    {FrictionKind::constant, "constant"},
+    {FrictionKind::combined, "combined"},
+};
+static_assert(names_in_order(friction_kind_names));
 
 /// The cloth model and, for the classic models, their constants.
 struct FrictionModel {

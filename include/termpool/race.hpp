@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string_view>
+#include <termpool/enum_names.hpp>
 
 namespace termpool {
 
@@ -13,6 +14,13 @@ enum class BreakRule {
     alternate, ///< the players take turns (WPA's default for match play)
     winner,    ///< the winner of a rack breaks the next one
 };
+
+/// The break rules' names, as the command line and a record give them.
+inline constexpr NameRow<BreakRule> break_rule_names[] = {
+    {BreakRule::alternate, "alternate"},
+    {BreakRule::winner, "winner"},
+};
+static_assert(names_in_order(break_rule_names));
 
 /// "alternate" or "winner".
 const char* break_rule_name(BreakRule rule);

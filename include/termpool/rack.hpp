@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <termpool/ball.hpp>
+#include <termpool/enum_names.hpp>
 #include <termpool/params.hpp>
 #include <termpool/table.hpp>
 #include <vector>
@@ -22,6 +23,15 @@ enum class RackType {
     /// their spots, the cue ball in the D (between the brown and the yellow, on the baulk line)
     snooker,
 };
+
+/// The racks' names, as a scenario's `rack` line gives them.
+inline constexpr NameRow<RackType> rack_type_names[] = {
+    {RackType::eight_ball, "8ball"},
+    {RackType::nine_ball, "9ball"},
+    {RackType::ten_ball, "10ball"},
+    {RackType::snooker, "snooker"},
+};
+static_assert(names_in_order(rack_type_names));
 
 /// Gap between neighbouring balls in a rack (m): a tight rack, nearly frozen. (A looser rack
 /// spreads far less on the break: with 0.2 mm gaps half as many balls reach a cushion.)

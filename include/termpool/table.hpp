@@ -9,6 +9,7 @@
 #include <array>
 #include <optional>
 #include <string_view>
+#include <termpool/enum_names.hpp>
 #include <termpool/vec.hpp>
 
 namespace termpool {
@@ -25,6 +26,15 @@ enum class TableSize {
 /// Every table size, pool's first, in the order menus offer them.
 inline constexpr TableSize all_table_sizes[] = {TableSize::seven_foot, TableSize::eight_foot,
                                                 TableSize::nine_foot, TableSize::snooker};
+
+/// The table sizes' names, as the command line, a record and a scenario give them.
+inline constexpr NameRow<TableSize> table_size_names[] = {
+    {TableSize::seven_foot, "7ft"},
+    {TableSize::eight_foot, "8ft"},
+    {TableSize::nine_foot, "9ft"},
+    {TableSize::snooker, "snooker"},
+};
+static_assert(names_in_order(table_size_names));
 
 /// A straight piece of cushion rubber. Balls approach it from the side `normal` points to.
 struct CushionSegment {

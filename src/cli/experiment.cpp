@@ -282,8 +282,8 @@ int experiment_command(const std::vector<std::string>& args) {
             }
         } else if (args[i] == "--model" && args[0] == "throw" && i + 1 < args.size()) {
             const std::string& v = args[++i];
-            if (v == "fit" || v == "constant") {
-                throw_model = v == "fit" ? BallFrictionModel::fit : BallFrictionModel::constant;
+            if (const auto model = parse_name(ball_friction_model_names, v)) {
+                throw_model = *model;
             } else {
                 std::fprintf(stderr, "termpool experiment: unknown throw model '%s'\n%s", v.c_str(),
                              usage);

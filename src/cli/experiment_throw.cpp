@@ -33,10 +33,6 @@ bool utf8_terminal() {
     return codeset && std::strcmp(codeset, "UTF-8") == 0;
 }
 
-const char* model_name(BallFrictionModel model) {
-    return model == BallFrictionModel::fit ? "fit" : "constant";
-}
-
 } // namespace
 
 double measured_throw_deg(const PhysicsParams& params, double speed, double cut_deg, bool rolling) {
@@ -73,7 +69,7 @@ int throw_study(BallFrictionModel model, bool csv) {
     else
         std::printf("Throw: the object ball's departure off the line of centres, degrees, "
                     "ball-ball friction %s\n",
-                    model_name(model));
+                    name_of(ball_friction_model_names, model));
     const bool utf8 = !csv && utf8_terminal();
     for (const bool rolling : {false, true}) {
         const char* cue = rolling ? "rolling" : "stun";

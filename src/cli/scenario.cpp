@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <termpool/rack.hpp>
+#include <termpool/rules_names.hpp>
 #include <termpool/snooker_layout.hpp>
 #include <termpool/table_physics.hpp>
 #include <termpool/text_lines.hpp>
@@ -116,29 +117,29 @@ Problem parse_table(const Line& line, Draft& draft) {
 }
 
 /// `collision` and `cushion` both choose between a physical and an ideal model.
-template <class Model>
-Problem parse_model(const Line& line, Draft& draft, Model& out, const char* usage) {
+template <class Model, std::size_t N>
+Problem parse_model(const Line& line, Draft& draft, Model& out, const NameRow<Model> (&names)[N],
+                    const char* usage) {
     if (Problem p = arity(line, 1, 1, usage))
         return p;
     const std::string key(line.fields[0]);
     if (Problem p = once(draft, key, line))
         return p;
-    if (line.arg(0) == "physical") {
-        out = Model::physical;
-    } else if (line.arg(0) == "ideal") {
-        out = Model::ideal;
-    } else {
+    const std::optional<Model> model = parse_name(names, line.arg(0));
+    if (!model)
         return "unknown " + key + " model " + quoted(line.arg(0)) + " (expected physical or ideal)";
-    }
+    out = *model;
     return {};
 }
 
 Problem parse_collision(const Line& line, Draft& draft) {
-    return parse_model(line, draft, draft.setup.physics.collision, "collision physical|ideal");
+    return parse_model(line, draft, draft.setup.physics.collision, collision_model_names,
+                       "collision physical|ideal");
 }
 
 Problem parse_cushion(const Line& line, Draft& draft) {
-    return parse_model(line, draft, draft.setup.physics.cushion, "cushion physical|ideal");
+    return parse_model(line, draft, draft.setup.physics.cushion, cushion_model_names,
+                       "cushion physical|ideal");
 }
 
 Problem parse_friction(const Line& line, Draft& draft) {
@@ -263,14 +264,16 @@ Problem parse_throw(const Line& line, Draft& draft) {
         return "'throw' cannot go with 'param u_b' (line " + std::to_string(*param_line) +
                "): both set the ball-ball friction";
     BallFriction& friction = draft.setup.physics.ball_friction;
-    if (line.arg(0) == "constant") {
+    const std::optional<BallFrictionModel> model =
+        parse_name(ball_friction_model_names, line.arg(0));
+    if (!model)
+        return "unknown throw model " + quoted(line.arg(0)) + " (expected fit or constant)";
+    if (*model == BallFrictionModel::constant) {
         if (Problem p = arity(line, 2, 2, usage))
             return p;
         friction.model = BallFrictionModel::constant;
         return friction_constant(line.arg(1), "u_b", friction.constant);
     }
-    if (line.arg(0) != "fit")
-        return "unknown throw model " + quoted(line.arg(0)) + " (expected fit or constant)";
     if (line.arguments() == 2 || line.arguments() == 3)
         return arity(line, 4, 4, usage);
     friction.model = BallFrictionModel::fit;
@@ -325,18 +328,11 @@ Problem parse_rack(const Line& line, Draft& draft) {
         return p;
     if (Problem p = once(draft, "rack", line))
         return p;
-    if (line.arg(0) == "8ball") {
-        draft.rack = RackType::eight_ball;
-    } else if (line.arg(0) == "9ball") {
-        draft.rack = RackType::nine_ball;
-    } else if (line.arg(0) == "10ball") {
-        draft.rack = RackType::ten_ball;
-    } else if (line.arg(0) == "snooker") {
-        draft.rack = RackType::snooker;
-    } else {
+    const std::optional<RackType> rack = parse_name(rack_type_names, line.arg(0));
+    if (!rack)
         return "unknown rack " + quoted(line.arg(0)) +
                " (expected 8ball, 9ball, 10ball or snooker)";
-    }
+    draft.rack = *rack;
     if (line.arguments() == 2) {
         draft.rack_seed = parse_uint64(line.arg(1));
         if (!draft.rack_seed)
@@ -395,12 +391,8 @@ Problem parse_cue(const Line& line, Draft& draft) {
         return p;
     double& end_mass = draft.setup.physics.cue_end_mass;
     const std::string_view word = line.arg(0);
-    if (word == "standard") {
-        end_mass = standard_shaft_end_mass;
-    } else if (word == "low-deflection") {
-        end_mass = low_deflection_end_mass;
-    } else if (word == "none") {
-        end_mass = 0;
+    if (const std::optional<double> named = parse_name(cue_names, word)) {
+        end_mass = *named;
     } else {
         if (!parse_double(word))
             return "unknown cue " + quoted(word) +
@@ -442,10 +434,9 @@ Problem parse_shooter(const Line& line, Draft& draft) {
     return {};
 }
 
-/// The text of `groups` for a group of player 1. The "1=" keeps the line unambiguous: it names
-/// player 1's group whoever shoots.
+/// The text of `groups` for a group of player 1.
 std::string groups_text(Group group) {
-    return group == Group::open ? "open" : std::string("1=") + group_name(group);
+    return name_of(player1_group_names, group);
 }
 
 Problem parse_groups(const Line& line, Draft& draft) {
@@ -453,11 +444,9 @@ Problem parse_groups(const Line& line, Draft& draft) {
         return p;
     if (Problem p = once(draft, "groups", line))
         return p;
-    for (const Group g : {Group::open, Group::solids, Group::stripes}) {
-        if (line.arg(0) == groups_text(g)) {
-            draft.game.player1_group = g;
-            return {};
-        }
+    if (const std::optional<Group> group = parse_name(player1_group_names, line.arg(0))) {
+        draft.game.player1_group = *group;
+        return {};
     }
     return "unknown groups " + quoted(line.arg(0)) + " (expected open, 1=solids or 1=stripes)";
 }

@@ -2,6 +2,8 @@
 
 #include "cli/numbers.hpp"
 
+#include <termpool/rules_names.hpp>
+
 namespace termpool::cli {
 
 std::string format_event(const Event& event) {
@@ -42,9 +44,7 @@ std::string format_verdict(const Verdict& verdict) {
         out += " " + std::to_string(id);
     // The same words as the `groups` directive, so a verdict can seed the next scenario.
     out += "\ngroups ";
-    out += verdict.player1_group == Group::open
-               ? std::string("open")
-               : std::string("1=") + group_name(verdict.player1_group);
+    out += name_of(player1_group_names, verdict.player1_group);
     out += "\nnext " + std::to_string(verdict.next_shooter);
     out += "\nball-in-hand " + std::string(ball_in_hand_name(verdict.ball_in_hand)) + "\n";
     if (verdict.chooser != 0) {

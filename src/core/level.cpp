@@ -4,24 +4,11 @@
 namespace termpool {
 
 const char* level_name(Level level) {
-    switch (level) {
-    case Level::easy:
-        return "easy";
-    case Level::medium:
-        return "medium";
-    case Level::hard:
-        return "hard";
-    case Level::pro:
-        return "pro";
-    }
-    return "?";
+    return name_of(level_names, level);
 }
 
 std::optional<Level> parse_level(const std::string& name) {
-    for (const Level l : {Level::easy, Level::medium, Level::hard, Level::pro})
-        if (name == level_name(l))
-            return l;
-    return std::nullopt;
+    return parse_name(level_names, name);
 }
 
 } // namespace termpool

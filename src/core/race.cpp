@@ -4,20 +4,11 @@
 namespace termpool {
 
 const char* break_rule_name(BreakRule rule) {
-    switch (rule) {
-    case BreakRule::alternate:
-        return "alternate";
-    case BreakRule::winner:
-        return "winner";
-    }
-    return "?";
+    return name_of(break_rule_names, rule);
 }
 
 std::optional<BreakRule> parse_break_rule(std::string_view name) {
-    for (const BreakRule r : {BreakRule::alternate, BreakRule::winner})
-        if (name == break_rule_name(r))
-            return r;
-    return std::nullopt;
+    return parse_name(break_rule_names, name);
 }
 
 int MatchState::match_winner() const {

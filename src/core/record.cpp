@@ -4,6 +4,7 @@
 #include <cmath>
 #include <termpool/random.hpp>
 #include <termpool/record.hpp>
+#include <termpool/rules_names.hpp>
 #include <termpool/state_digest.hpp>
 #include <termpool/text_lines.hpp>
 #include <termpool/text_numbers.hpp>
@@ -29,16 +30,6 @@ std::optional<std::uint64_t> to_u64(std::string_view s) {
     if (ec != std::errc{} || end != s.data() + s.size())
         return std::nullopt;
     return v;
-}
-
-std::optional<Choice> to_choice(std::string_view s) {
-    for (const Choice c :
-         {Choice::play_on, Choice::re_rack, Choice::re_break, Choice::spot_eight,
-          Choice::take_solids, Choice::take_stripes, Choice::shoot, Choice::pass_back,
-          Choice::offender_plays, Choice::replace_and_replay, Choice::concede})
-        if (s == choice_name(c))
-            return c;
-    return std::nullopt;
 }
 
 // The name is the rest of the line after the keyword: names may hold spaces.
@@ -85,20 +76,13 @@ std::optional<std::uint64_t> to_hash(std::string_view s) {
 }
 
 std::string cue_text(double end_mass) {
-    if (end_mass == standard_shaft_end_mass)
-        return "standard";
-    if (end_mass == low_deflection_end_mass)
-        return "low-deflection";
-    return end_mass == 0 ? "none" : number(end_mass);
+    const char* name = name_of(cue_names, end_mass, nullptr);
+    return name ? name : number(end_mass);
 }
 
 std::optional<double> to_cue_end_mass(std::string_view s) {
-    if (s == "standard")
-        return standard_shaft_end_mass;
-    if (s == "low-deflection")
-        return low_deflection_end_mass;
-    if (s == "none")
-        return 0.0;
+    if (const auto named = parse_name(cue_names, s))
+        return named;
     const auto m = to_double(s);
     if (!m || *m < 0)
         return std::nullopt;
@@ -132,7 +116,7 @@ read_action(const std::vector<std::string_view>& f) {
         return a;
     }
     if (key == "choose" && want(2)) {
-        const auto c = to_choice(f[1]);
+        const auto c = parse_name(choice_names, f[1]);
         if (!c)
             return "unknown choice '" + std::string(f[1]) + "'";
         a.kind = RecordedAction::Kind::choose;

@@ -6,24 +6,10 @@
 namespace termpool {
 namespace {
 
-struct ModelName {
-    std::string_view name;
-    FrictionKind kind;
-    std::size_t constants;
-};
-
-constexpr ModelName model_names[] = {
-    {"physical", FrictionKind::physical, 0},
-    {"decay", FrictionKind::decay, 1},
-    {"constant", FrictionKind::constant, 1},
-    {"combined", FrictionKind::combined, 2},
-};
-
-const ModelName* find_model(std::string_view name) {
-    for (const ModelName& m : model_names)
-        if (m.name == name)
-            return &m;
-    return nullptr;
+// Where constant `index` of `model`'s kind is kept: K is the decay rate, A the deceleration.
+template <class Model> auto& constant_slot(Model& model, std::size_t index) {
+    return friction_constant_symbol(model.kind, index)[0] == 'K' ? model.decay_rate
+                                                                 : model.deceleration;
 }
 
 std::variant<double, FrictionProblem::Kind> read_constant(std::string_view text) {
@@ -64,14 +50,19 @@ Game make_game(const GameSetup& setup, int breaker, std::uint64_t seed) {
 }
 
 std::optional<FrictionKind> parse_friction_kind(std::string_view name) {
-    const ModelName* m = find_model(name);
-    return m ? std::optional<FrictionKind>(m->kind) : std::nullopt;
+    return parse_name(friction_kind_names, name);
 }
 
 std::size_t friction_constant_count(FrictionKind kind) {
-    for (const ModelName& m : model_names)
-        if (m.kind == kind)
-            return m.constants;
+    switch (kind) {
+    case FrictionKind::physical:
+        break;
+    case FrictionKind::decay:
+    case FrictionKind::constant:
+        return 1;
+    case FrictionKind::combined:
+        return 2;
+    }
     return 0;
 }
 
@@ -81,40 +72,31 @@ const char* friction_constant_symbol(FrictionKind kind, std::size_t index) {
 
 std::variant<FrictionModel, FrictionProblem>
 parse_friction(std::span<const std::string_view> words) {
-    const ModelName* m = words.empty() ? nullptr : find_model(words[0]);
-    if (!m)
+    const std::optional<FrictionKind> kind =
+        words.empty() ? std::nullopt : parse_friction_kind(words[0]);
+    if (!kind)
         return FrictionProblem{FrictionProblem::Kind::unknown_model, 0};
-    if (words.size() < m->constants + 1)
+    const std::size_t constants = friction_constant_count(*kind);
+    if (words.size() < constants + 1)
         return FrictionProblem{FrictionProblem::Kind::missing_constant, words.size()};
-    if (words.size() > m->constants + 1)
-        return FrictionProblem{FrictionProblem::Kind::extra_word, m->constants + 1};
+    if (words.size() > constants + 1)
+        return FrictionProblem{FrictionProblem::Kind::extra_word, constants + 1};
     FrictionModel model;
-    model.kind = m->kind;
-    for (std::size_t i = 0; i < m->constants; ++i) {
+    model.kind = *kind;
+    for (std::size_t i = 0; i < constants; ++i) {
         const auto value = read_constant(words[i + 1]);
-        if (const auto* kind = std::get_if<FrictionProblem::Kind>(&value))
-            return FrictionProblem{*kind, i + 1};
-        const double v = std::get<double>(value);
-        if (friction_constant_symbol(m->kind, i)[0] == 'K')
-            model.decay_rate = v;
-        else
-            model.deceleration = v;
+        if (const auto* problem = std::get_if<FrictionProblem::Kind>(&value))
+            return FrictionProblem{*problem, i + 1};
+        constant_slot(model, i) = std::get<double>(value);
     }
     return model;
 }
 
 std::string format_friction(const FrictionModel& model) {
-    switch (model.kind) {
-    case FrictionKind::physical:
-        break;
-    case FrictionKind::decay:
-        return "decay " + shortest(model.decay_rate);
-    case FrictionKind::constant:
-        return "constant " + shortest(model.deceleration);
-    case FrictionKind::combined:
-        return "combined " + shortest(model.decay_rate) + " " + shortest(model.deceleration);
-    }
-    return "physical";
+    std::string text = name_of(friction_kind_names, model.kind);
+    for (std::size_t i = 0; i < friction_constant_count(model.kind); ++i)
+        text += " " + shortest(constant_slot(model, i));
+    return text;
 }
 
 } // namespace termpool

@@ -11,16 +11,6 @@ namespace termpool::hall {
 
 namespace {
 
-constexpr const char* kErrorCodeNames[] = {
-    "syntax",   "too-long",   "version",    "rate",    "hello-first", "full",
-    "no-table", "seat-taken", "not-seated", "refused", "replaced",    "internal",
-};
-constexpr ErrorCode kErrorCodes[] = {
-    ErrorCode::syntax,      ErrorCode::too_long, ErrorCode::version,  ErrorCode::rate,
-    ErrorCode::hello_first, ErrorCode::full,     ErrorCode::no_table, ErrorCode::seat_taken,
-    ErrorCode::not_seated,  ErrorCode::refused,  ErrorCode::replaced, ErrorCode::internal,
-};
-
 bool needs_escape(unsigned char byte) {
     return byte <= 0x20 || byte == 0x7f || byte == '%';
 }
@@ -164,17 +154,12 @@ public:
         const std::string_view kind = word();
         if (!ok_)
             return seat;
-        bool known = false;
-        for (const SeatKind k :
-             {SeatKind::empty, SeatKind::player, SeatKind::away, SeatKind::computer})
-            if (kind == seat_kind_name(k)) {
-                seat.kind = k;
-                known = true;
-            }
+        const std::optional<SeatKind> known = parse_name(seat_kind_names, kind);
         if (!known) {
             fail("a seat is empty, player, away or computer");
             return seat;
         }
+        seat.kind = *known;
         if (seat.kind == SeatKind::empty) {
             if (word() != "-")
                 fail("an empty seat's name is -");
@@ -267,43 +252,19 @@ std::string strike_words(const Strike& s) {
 } // namespace
 
 const char* error_code_name(ErrorCode code) {
-    for (std::size_t i = 0; i < std::size(kErrorCodes); ++i)
-        if (kErrorCodes[i] == code)
-            return kErrorCodeNames[i];
-    return "internal";
+    return name_of(error_code_names, code, "internal"); // a code the client knows
 }
 
 std::optional<ErrorCode> parse_error_code(std::string_view name) {
-    for (std::size_t i = 0; i < std::size(kErrorCodes); ++i)
-        if (name == kErrorCodeNames[i])
-            return kErrorCodes[i];
-    return std::nullopt;
+    return parse_name(error_code_names, name);
 }
 
 const char* seat_kind_name(SeatKind kind) {
-    switch (kind) {
-    case SeatKind::empty:
-        return "empty";
-    case SeatKind::player:
-        return "player";
-    case SeatKind::away:
-        return "away";
-    case SeatKind::computer:
-        return "computer";
-    }
-    return "empty";
+    return name_of(seat_kind_names, kind, "empty");
 }
 
 const char* table_state_name(TableState state) {
-    switch (state) {
-    case TableState::waiting:
-        return "waiting";
-    case TableState::playing:
-        return "playing";
-    case TableState::over:
-        return "over";
-    }
-    return "waiting";
+    return name_of(table_state_names, state, "waiting");
 }
 
 std::string encode_field(std::string_view text) {
@@ -621,13 +582,10 @@ std::variant<ServerMessage, ProtocolError> parse_server(std::string_view line) {
         m.race_to = r.integer(1, max_race_to, "a race");
         m.assist = r.assist();
         const std::string_view state = r.word();
-        bool known = false;
-        for (const TableState s : {TableState::waiting, TableState::playing, TableState::over})
-            if (state == table_state_name(s)) {
-                m.state = s;
-                known = true;
-            }
-        if (r.ok() && !known)
+        const std::optional<TableState> known = parse_name(table_state_names, state);
+        if (known)
+            m.state = *known;
+        else if (r.ok())
             r.fail("a state is waiting, playing or over");
         m.seats[0] = r.seat_view();
         m.seats[1] = r.seat_view();

@@ -68,6 +68,7 @@
 #include <string>
 #include <string_view>
 #include <termpool/assist.hpp>
+#include <termpool/enum_names.hpp>
 #include <termpool/level.hpp>
 #include <termpool/record.hpp>
 #include <termpool/rules.hpp>
@@ -106,7 +107,24 @@ enum class ErrorCode {
     internal,    ///< "internal": the server could not do it (e.g. saving failed)
 };
 
-/// The CODE word of `code`.
+/// The CODE words.
+inline constexpr NameRow<ErrorCode> error_code_names[] = {
+    {ErrorCode::syntax, "syntax"},
+    {ErrorCode::too_long, "too-long"},
+    {ErrorCode::version, "version"},
+    {ErrorCode::hello_first, "hello-first"},
+    {ErrorCode::full, "full"},
+    {ErrorCode::no_table, "no-table"},
+    {ErrorCode::seat_taken, "seat-taken"},
+    {ErrorCode::not_seated, "not-seated"},
+    {ErrorCode::refused, "refused"},
+    {ErrorCode::rate, "rate"},
+    {ErrorCode::replaced, "replaced"},
+    {ErrorCode::internal, "internal"},
+};
+static_assert(names_in_order(error_code_names));
+
+/// The CODE word of `code` ("internal" for a value out of range).
 const char* error_code_name(ErrorCode code);
 /// The code named `name`; nothing for an unknown word.
 std::optional<ErrorCode> parse_error_code(std::string_view name);
@@ -186,6 +204,15 @@ enum class SeatKind {
     away,     ///< "away": a person whose connection dropped; the seat waits for them
     computer, ///< "computer": the server plays it
 };
+
+/// The seat kinds' words.
+inline constexpr NameRow<SeatKind> seat_kind_names[] = {
+    {SeatKind::empty, "empty"},
+    {SeatKind::player, "player"},
+    {SeatKind::away, "away"},
+    {SeatKind::computer, "computer"},
+};
+static_assert(names_in_order(seat_kind_names));
 /// "empty", "player", "away" or "computer".
 const char* seat_kind_name(SeatKind kind);
 
@@ -203,6 +230,14 @@ enum class TableState {
     playing, ///< "playing": both seats taken, the match goes on
     over,    ///< "over": the match is won
 };
+
+/// The table states' words.
+inline constexpr NameRow<TableState> table_state_names[] = {
+    {TableState::waiting, "waiting"},
+    {TableState::playing, "playing"},
+    {TableState::over, "over"},
+};
+static_assert(names_in_order(table_state_names));
 /// "waiting", "playing" or "over".
 const char* table_state_name(TableState state);
 

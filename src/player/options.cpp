@@ -93,16 +93,12 @@ std::optional<GameOptions> parse_game_options(const std::vector<std::string>& ar
             const std::string* v = value();
             if (!v)
                 return std::nullopt;
-            if (*v == "standard") {
-                o.setup.physics.cue_end_mass = standard_shaft_end_mass;
-            } else if (*v == "low-deflection") {
-                o.setup.physics.cue_end_mass = low_deflection_end_mass;
-            } else if (*v == "none") {
-                o.setup.physics.cue_end_mass = 0;
-            } else {
+            const std::optional<double> end_mass = parse_name(cue_names, *v);
+            if (!end_mass) {
                 error = "--cue takes standard, low-deflection or none";
                 return std::nullopt;
             }
+            o.setup.physics.cue_end_mass = *end_mass;
         } else if (a == "--vs-computer" || a == "--watch") {
             // The level is optional: take the next word only when it names one.
             std::optional<Level>& seat = a == "--watch" ? o.watch : o.computer;

@@ -2,56 +2,29 @@
 
 #include "tui/grid_dump.hpp"
 
+#include <termpool/enum_names.hpp>
 #include <vector>
 
 namespace termpool::tui {
 
+namespace {
+
+// The legend's words for the colour roles.
+constexpr NameRow<Colour> colour_names[] = {
+    {Colour::normal, "normal"},   {Colour::felt, "felt"},     {Colour::rail, "rail"},
+    {Colour::cushion, "cushion"}, {Colour::pocket, "pocket"}, {Colour::white, "white"},
+    {Colour::black, "black"},     {Colour::ink, "ink"},       {Colour::yellow, "yellow"},
+    {Colour::blue, "blue"},       {Colour::red, "red"},       {Colour::purple, "purple"},
+    {Colour::orange, "orange"},   {Colour::green, "green"},   {Colour::maroon, "maroon"},
+    {Colour::brown, "brown"},     {Colour::pink, "pink"},     {Colour::aim, "aim"},
+    {Colour::ghost, "ghost"},     {Colour::dim, "dim"},       {Colour::highlight, "highlight"},
+};
+static_assert(names_in_order(colour_names));
+
+} // namespace
+
 const char* colour_name(Colour c) {
-    switch (c) {
-    case Colour::normal:
-        return "normal";
-    case Colour::felt:
-        return "felt";
-    case Colour::rail:
-        return "rail";
-    case Colour::cushion:
-        return "cushion";
-    case Colour::pocket:
-        return "pocket";
-    case Colour::white:
-        return "white";
-    case Colour::black:
-        return "black";
-    case Colour::ink:
-        return "ink";
-    case Colour::yellow:
-        return "yellow";
-    case Colour::blue:
-        return "blue";
-    case Colour::red:
-        return "red";
-    case Colour::purple:
-        return "purple";
-    case Colour::orange:
-        return "orange";
-    case Colour::green:
-        return "green";
-    case Colour::maroon:
-        return "maroon";
-    case Colour::brown:
-        return "brown";
-    case Colour::pink:
-        return "pink";
-    case Colour::aim:
-        return "aim";
-    case Colour::ghost:
-        return "ghost";
-    case Colour::dim:
-        return "dim";
-    case Colour::highlight:
-        return "highlight";
-    }
-    return "?";
+    return name_of(colour_names, c);
 }
 
 std::string dump_grid(const Grid& grid) {
