@@ -8,6 +8,8 @@
 #include <termpool/simulator.hpp>
 #include <termpool/snooker_layout.hpp>
 
+#include "shot_lines.hpp"
+
 namespace termpool {
 namespace {
 
@@ -51,13 +53,6 @@ double degrees(Vec2 v) {
     return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
 }
 
-const Ball* find(const std::vector<Ball>& balls, int id) {
-    for (const Ball& b : balls)
-        if (b.id == id && b.state != MotionState::pocketed)
-            return &b;
-    return nullptr;
-}
-
 // The referee's opinion of a simulated shot, from the shooter's side.
 double score(const Verdict& v, int shooter) {
     if (v.winner != 0)
@@ -89,32 +84,17 @@ int samples_per_candidate(Level level) {
     return 1;
 }
 
-// True when a ball other than `ignore` lies within a diameter of the segment from a to b.
-bool blocked(const std::vector<Ball>& balls, Vec2 a, Vec2 b, std::pair<int, int> ignore, double R) {
-    const Vec2 ab = b - a;
-    const double len2 = length_squared(ab);
-    for (const Ball& ball : balls) {
-        if (ball.state == MotionState::pocketed || ball.id == ignore.first ||
-            ball.id == ignore.second)
-            continue;
-        const double u = len2 > 0 ? std::clamp(dot(ball.position - a, ab) / len2, 0.0, 1.0) : 0;
-        if (length_squared(a + ab * u - ball.position) < 4 * R * R)
-            return true;
-    }
-    return false;
-}
-
 // How good the shooter's next shot looks from here: the best legal ball and pocket with nothing
 // in the way, rated 0..1 by how full the cut is and how far the balls travel, times what the
 // ball is worth (`weight`).
 template <class Weight> double weighted_next_quality(const Game& game, Weight weight) {
-    const Ball* cue = find(game.balls(), 0);
+    const Ball* cue = ball_in_play(game.balls(), 0);
     if (!cue)
         return 0;
     const double R = game.params().ball_radius;
     double best = 0;
     for (const int target : game.legal_targets()) {
-        const Ball* object = find(game.balls(), target);
+        const Ball* object = ball_in_play(game.balls(), target);
         if (!object)
             continue;
         for (const Pocket& pocket : game.table().pockets) {
@@ -127,8 +107,9 @@ template <class Weight> double weighted_next_quality(const Game& game, Weight we
             // A weight of 1 leaves the product's bits as they were without it.
             const double quality = weight(target) * cut * cut *
                                    portable::exp(-(length(line) + length(to_pocket)) / 2.5);
-            if (quality > best && !blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
-                !blocked(game.balls(), object->position, pocket.position, {0, target}, R))
+            if (quality > best &&
+                !path_blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
+                !path_blocked(game.balls(), object->position, pocket.position, {0, target}, R))
                 best = quality;
         }
     }
@@ -173,13 +154,13 @@ double snooker_score(const Verdict& v, int shooter, const Game& after, bool posi
     s -= 80.0 * snooker_next_quality(after);
     if (after.shooter_snookered())
         s += 25;
-    const Ball* cue = find(after.balls(), 0);
+    const Ball* cue = ball_in_play(after.balls(), 0);
     if (!cue)
         return s;
     const double R = after.params().ball_radius;
     double nearest = 1e9;
     for (const int id : after.balls_on())
-        if (const Ball* b = find(after.balls(), id))
+        if (const Ball* b = ball_in_play(after.balls(), id))
             nearest = std::min(nearest, length(b->position - cue->position));
     if (nearest < 1e9)
         s += 10.0 * std::min(1.0, nearest / (0.5 * after.table().length));
@@ -218,7 +199,7 @@ double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue
         if (e->ball != 0 || e->other != object.id)
             break;
         const std::vector<Ball> after = world.balls();
-        const Ball* hit = find(after, object.id);
+        const Ball* hit = ball_in_play(after, object.id);
         if (!hit || length(hit->velocity) == 0)
             break;
         const Vec2 want = normalized(aim_point - object.position);
@@ -243,7 +224,7 @@ ComputerPlayer::ComputerPlayer(Level level, std::uint64_t seed) : level_(level),
 ComputerShot ComputerPlayer::search(const Game& game) {
     ComputerShot best;
     best.score = -1e9;
-    const Ball* cue = find(game.balls(), 0);
+    const Ball* cue = ball_in_play(game.balls(), 0);
     if (!cue)
         return best;
     if (game.is_break()) {
@@ -276,8 +257,8 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         const Vec2 line = ghost - cue->position;
         // Skip cuts thinner than about 80 degrees, and shots another ball is in the way of.
         if (dot(normalized(line), normalized(to_aim)) < 0.17 ||
-            blocked(game.balls(), cue->position, ghost, {0, object.id}, R) ||
-            blocked(game.balls(), object.position, aim_point, {0, object.id}, R))
+            path_blocked(game.balls(), cue->position, ghost, {0, object.id}, R) ||
+            path_blocked(game.balls(), object.position, aim_point, {0, object.id}, R))
             return;
         for (const double speed : at)
             for (const double follow : spins) {
@@ -305,9 +286,10 @@ ComputerShot ComputerPlayer::search(const Game& game) {
                     continue;
                 const Vec2 first_ghost = first.position - travel * (2 * R);
                 if (dot(normalized(first_ghost - cue->position), travel) < 0.5 ||
-                    blocked(game.balls(), cue->position, first_ghost, {0, first.id}, R) ||
-                    blocked(game.balls(), first.position, second_ghost, {first.id, second.id}, R) ||
-                    blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
+                    path_blocked(game.balls(), cue->position, first_ghost, {0, first.id}, R) ||
+                    path_blocked(game.balls(), first.position, second_ghost, {first.id, second.id},
+                                 R) ||
+                    path_blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
                     continue;
                 for (const double speed : {2.5, 4.0})
                     candidates.push_back({{speed, degrees(first_ghost - cue->position), 0, 0},
@@ -326,7 +308,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         else
             call.call.safety = true;
         const Vec2 to_ball = object.position - cue->position;
-        if (!blocked(game.balls(), cue->position, object.position, {0, object.id}, R)) {
+        if (!path_blocked(game.balls(), cue->position, object.position, {0, object.id}, R)) {
             for (const double offset : {-1.8, -1.4, -0.9, -0.4, 0.0, 0.4, 0.9, 1.4, 1.8}) {
                 const Vec2 aim =
                     object.position + normalized(perpendicular(to_ball)) * (offset * R);
@@ -345,7 +327,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
                 candidates.push_back({{speed, degrees(mirror - cue->position), 0, 0}, call});
     };
     for (const int target : game.legal_targets()) {
-        const Ball* object = find(game.balls(), target);
+        const Ball* object = ball_in_play(game.balls(), target);
         if (!object)
             continue;
         for (int pocket = 1; pocket <= 6; ++pocket) {
@@ -375,7 +357,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         for (const double offset : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
             const Vec2 to_ball = object->position - cue->position;
             const Vec2 aim = object->position + normalized(perpendicular(to_ball)) * (offset * R);
-            if (blocked(game.balls(), cue->position, object->position, {0, target}, R))
+            if (path_blocked(game.balls(), cue->position, object->position, {0, target}, R))
                 break;
             for (const double speed : {0.8, 1.6}) {
                 ShotCall call;
@@ -435,7 +417,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     }
     if (best.score == -1e9 && !game.legal_targets().empty()) {
         // Nothing pottable: hit the first legal ball softly.
-        const Ball* object = find(game.balls(), game.legal_targets().front());
+        const Ball* object = ball_in_play(game.balls(), game.legal_targets().front());
         if (object)
             best.planned = {2.0, degrees(object->position - cue->position), 0, 0};
         best.score = 0;
