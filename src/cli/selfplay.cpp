@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <optional>
 #include <string>
 #include <termpool/match.hpp>
@@ -39,7 +40,7 @@ struct Options {
 
 struct SeatFigures {
     std::uint64_t decisions = 0;
-    double seconds = 0;
+    double seconds = 0;          // CPU time of its decisions
     double longest_decision = 0; // the slowest decision (a shot, a placing and its shot, a choice)
     std::uint64_t simulations = 0;
     std::uint64_t pot_attempts = 0;
@@ -164,6 +165,14 @@ std::string check_invariants(const Game& game) {
     return {};
 }
 
+// CPU time of the calling thread, s: a decision's time on one core, whatever else the
+// machine runs.
+double thread_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 // The move of the player to act: the seated computer's, or the scripted safe player's (a
 // person's seat to the match). Nothing when neither may act.
 std::optional<ComputerMove> move_of(Match& match, std::optional<SafePlayer> (&scripted)[2]) {
@@ -215,7 +224,6 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
     Match& match = std::get<Match>(started);
     bool opponent_shot = false;
     int last_actor = 0;
-    using Clock = std::chrono::steady_clock;
     while (match.pending().kind != Pending::over) {
         if (summary.shots >= max_shots_per_game) {
             summary.violation =
@@ -224,13 +232,11 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
         }
         const int actor = match.to_act();
         SeatFigures& stats = summary.players[actor - 1];
-        const auto start = Clock::now();
+        const double start = thread_seconds();
         const std::uint64_t simulated = match.computer_simulations(actor);
         std::optional<ComputerMove> move = move_of(match, scripted);
         if (move && move->kind == Pending::choose) {
-            stats.longest_decision =
-                std::max(stats.longest_decision,
-                         std::chrono::duration<double>(Clock::now() - start).count());
+            stats.longest_decision = std::max(stats.longest_decision, thread_seconds() - start);
             if (match.choose(actor, move->choice) != MatchError::none) {
                 summary.violation = "a choice the match refused";
                 return summary;
@@ -249,7 +255,7 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
             return summary;
         }
         const ComputerShot& shot = move->shot;
-        const double took = std::chrono::duration<double>(Clock::now() - start).count();
+        const double took = thread_seconds() - start;
         stats.seconds += took;
         stats.longest_decision = std::max(stats.longest_decision, took);
         stats.simulations += match.computer_simulations(actor) - simulated;
@@ -391,7 +397,7 @@ int selfplay_command(const std::vector<std::string>& args) {
         const auto [lo, hi] = wilson(wins[p], n);
         const SeatFigures& s = per[p];
         std::printf("p%d %-6s wins %4d (%.1f%%, 95%% CI %.1f-%.1f%%)  pots %.1f%% of %llu  "
-                    "decision %.3f s (max %.3f s)  %.0f shots/s\n",
+                    "decision %.3f s (max %.3f s) CPU  %.0f shots/s\n",
                     p + 1, seat_name(o, p), wins[p], 100 * wins[p] / n, lo, hi,
                     s.pot_attempts ? 100.0 * s.pots / s.pot_attempts : 0.0,
                     static_cast<unsigned long long>(s.pot_attempts),
