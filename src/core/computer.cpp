@@ -8,7 +8,9 @@
 #include <termpool/simulator.hpp>
 #include <termpool/snooker_layout.hpp>
 
+#include "computer_parts.hpp"
 #include "shot_lines.hpp"
+#include "snooker_leave.hpp"
 
 namespace termpool {
 namespace {
@@ -70,20 +72,6 @@ double score(const Verdict& v, int shooter) {
     return s;
 }
 
-int samples_per_candidate(Level level) {
-    switch (level) {
-    case Level::easy:
-        return 1;
-    case Level::medium:
-        return 3;
-    case Level::hard:
-        return 6;
-    case Level::pro:
-        return 10;
-    }
-    return 1;
-}
-
 // How good the shooter's next shot looks from here: the best legal ball and pocket with nothing
 // in the way, rated 0..1 by how full the cut is and how far the balls travel, times what the
 // ball is worth (`weight`).
@@ -126,6 +114,8 @@ double next_shot_quality(const Game& game) {
 double snooker_weight(int id) {
     return is_snooker_red(id) ? 1.0 : 0.5 + 0.5 * snooker_value(id) / 7.0;
 }
+
+} // namespace
 
 // Snooker: the best next pot for whoever is on now, each ball weighted by what it is worth (a
 // colour after a red: the black before the yellow).
@@ -213,6 +203,48 @@ double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue
     return strike.angle_deg;
 }
 
+double direction_sigma_deg(Level level) {
+    return noise_scale(level) * sigma_aim_deg;
+}
+
+int samples_per_candidate(Level level) {
+    switch (level) {
+    case Level::easy:
+        return 1;
+    case Level::medium:
+        return 3;
+    case Level::hard:
+        return 6;
+    case Level::pro:
+        return 10;
+    }
+    return 1;
+}
+
+namespace {
+
+// Snooker's search is the slower: of the spots in the D it searches only the three with the
+// best pot in sight and the middle one (for a safety).
+std::vector<Vec2> snooker_spots_to_search(const Game& game, std::vector<Vec2> spots,
+                                          double sigma_deg) {
+    constexpr std::size_t searched = 3;
+    if (spots.size() <= searched + 1)
+        return spots;
+    std::vector<std::pair<double, std::size_t>> ranked;
+    for (std::size_t i = 0; i < spots.size(); ++i) {
+        Game trial = game;
+        if (trial.place_cue_ball(spots[i]))
+            ranked.push_back({snooker_best_chance(trial, sigma_deg), i});
+    }
+    std::ranges::stable_sort(ranked,
+                             [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<Vec2> kept;
+    for (std::size_t k = 0; k < ranked.size() && k < searched; ++k)
+        kept.push_back(spots[ranked[k].second]);
+    kept.push_back(spots[spots.size() / 2]);
+    return kept;
+}
+
 } // namespace
 
 double pot_ease(const Game& game) {
@@ -232,6 +264,9 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         best.score = 0;
         return best;
     }
+    // Snooker above easy judges its pots by their chance (computer_snooker.cpp).
+    if (game.type() == GameType::snooker && level_ != Level::easy)
+        return snooker_search(game);
     const double R = game.params().ball_radius;
     const bool snooker = game.type() == GameType::snooker;
     // Snooker's table is longer and its position play finer: a softer pace and a stronger
@@ -529,7 +564,9 @@ Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
     if (game.is_break())
         return place_break(game);
     // Try a spread of legal spots; keep the one whose best shot scores highest.
-    const std::vector<Vec2> spots = game.legal_placements(level_ == Level::easy ? 4 : 6);
+    std::vector<Vec2> spots = game.legal_placements(level_ == Level::easy ? 4 : 6);
+    if (game.type() == GameType::snooker && level_ != Level::easy)
+        spots = snooker_spots_to_search(game, std::move(spots), direction_sigma_deg(level_));
     Vec2 best_spot = spots.empty() ? Vec2{} : spots.front();
     double best = -1e18;
     for (const Vec2 spot : spots) {
