@@ -115,56 +115,24 @@ double snooker_weight(int id) {
     return is_snooker_red(id) ? 1.0 : 0.5 + 0.5 * snooker_value(id) / 7.0;
 }
 
-} // namespace
-
 // Snooker: the best next pot for whoever is on now, each ball weighted by what it is worth (a
 // colour after a red: the black before the yellow).
 double snooker_next_quality(const Game& game) {
     return weighted_next_quality(game, snooker_weight);
 }
 
-// Snooker: the shot's worth from the shooter's side. Points scored and given away count at
-// their value; a kept table is worth more with an easy ball to follow; a table handed over
-// is worth less the easier the opponent's pot, and more when the opponent is snookered or
-// the cue ball is left far from the balls on, on a cushion, in baulk (a safety).
-double snooker_score(const Verdict& v, int shooter, const Game& after, bool position) {
+// Snooker, easy: a shot's worth from the shooter's side in points scored and given away, and
+// the table kept. (The levels above have their own search, computer_snooker.cpp.)
+double snooker_points_score(const Verdict& v, int shooter) {
     if (v.winner != 0)
         return v.winner == shooter ? 1000 : -1000;
-    double s = 12.0 * v.points - 12.0 * v.penalty;
+    const double s = 12.0 * v.points - 12.0 * v.penalty;
     if (v.foul != Foul::none)
         return s - 60 - (v.miss ? 20 : 0);
-    if (v.next_shooter == shooter) {
-        s += 100;
-        if (position)
-            s += 60.0 * snooker_next_quality(after);
-        return s;
-    }
-    if (!position)
-        return s;
-    s -= 80.0 * snooker_next_quality(after);
-    if (after.shooter_snookered())
-        s += 25;
-    const Ball* cue = ball_in_play(after.balls(), 0);
-    if (!cue)
-        return s;
-    const double R = after.params().ball_radius;
-    double nearest = 1e9;
-    for (const int id : after.balls_on())
-        if (const Ball* b = ball_in_play(after.balls(), id))
-            nearest = std::min(nearest, length(b->position - cue->position));
-    if (nearest < 1e9)
-        s += 10.0 * std::min(1.0, nearest / (0.5 * after.table().length));
-    const Table& t = after.table();
-    const double to_cushion = std::min({cue->position.x, t.length - cue->position.x,
-                                        cue->position.y, t.width - cue->position.y}) -
-                              R;
-    if (to_cushion < 2 * R)
-        s += 6;
-    // Back in baulk, with the balls on up the table, is the classic safe leave.
-    if (cue->position.x < snooker_baulk_x(t) && nearest > 0.25 * t.length)
-        s += 8;
-    return s;
+    return v.next_shooter == shooter ? s + 100 : s;
 }
+
+} // namespace
 
 // The ghost-ball aim sends the object ball along the line of centres, but it leaves a little
 // off it (throw, from the balls' friction) and the cue ball a little off the cue (squirt, from
@@ -268,15 +236,11 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     if (game.type() == GameType::snooker && level_ != Level::easy)
         return snooker_search(game);
     const double R = game.params().ball_radius;
-    const bool snooker = game.type() == GameType::snooker;
-    // Snooker's table is longer and its position play finer: a softer pace and a stronger
-    // screw and follow besides the pool set.
-    const std::vector<double> speeds = level_ == Level::easy ? std::vector<double>{2.5}
-                                       : snooker ? std::vector<double>{1.0, 1.5, 2.5, 4.0}
-                                                 : std::vector<double>{1.5, 2.5, 4.0};
-    const std::vector<double> spins = level_ == Level::easy ? std::vector<double>{0.0}
-                                      : snooker ? std::vector<double>{-0.45, -0.2, 0.0, 0.2, 0.45}
-                                                : std::vector<double>{-0.3, 0.0, 0.3};
+    const bool snooker = game.type() == GameType::snooker; // here only at easy
+    const std::vector<double> speeds =
+        level_ == Level::easy ? std::vector<double>{2.5} : std::vector<double>{1.5, 2.5, 4.0};
+    const std::vector<double> spins =
+        level_ == Level::easy ? std::vector<double>{0.0} : std::vector<double>{-0.3, 0.0, 0.3};
 
     struct Candidate {
         Strike strike;
@@ -332,35 +296,6 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             }
         }
     };
-    // Snooker safeties: the ball on hit full to thin at a touch, a medium pace and firmly
-    // (the cue ball sent back up the table to baulk), and, where the straight line is
-    // blocked, off one cushion (the escape from a snooker). The call is a safety; with a
-    // nomination owed it names the ball played at, pocket 0 (no pot in mind).
-    auto add_snooker_safeties = [&](const Ball& object) {
-        ShotCall call;
-        if (game.nomination_owed())
-            call.call.ball = object.id;
-        else
-            call.call.safety = true;
-        const Vec2 to_ball = object.position - cue->position;
-        if (!path_blocked(game.balls(), cue->position, object.position, {0, object.id}, R)) {
-            for (const double offset : {-1.8, -1.4, -0.9, -0.4, 0.0, 0.4, 0.9, 1.4, 1.8}) {
-                const Vec2 aim =
-                    object.position + normalized(perpendicular(to_ball)) * (offset * R);
-                for (const double speed : {0.8, 1.6, 2.6, 3.6})
-                    candidates.push_back({{speed, degrees(aim - cue->position), 0, 0}, call});
-            }
-            return;
-        }
-        const Vec2 at = object.position;
-        const Vec2 mirrors[4] = {{at.x, 2 * R - at.y},
-                                 {at.x, 2 * (table.width - R) - at.y},
-                                 {2 * R - at.x, at.y},
-                                 {2 * (table.length - R) - at.x, at.y}};
-        for (const Vec2 mirror : mirrors)
-            for (const double speed : {1.6, 2.6, 3.6})
-                candidates.push_back({{speed, degrees(mirror - cue->position), 0, 0}, call});
-    };
     for (const int target : game.legal_targets()) {
         const Ball* object = ball_in_play(game.balls(), target);
         if (!object)
@@ -384,10 +319,6 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             add_combinations(*object);
         if (level_ == Level::easy)
             continue;
-        if (snooker) {
-            add_snooker_safeties(*object);
-            continue;
-        }
         // Safeties: soft hits on the ball, full and thinner, called as safety.
         for (const double offset : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
             const Vec2 to_ball = object->position - cue->position;
@@ -411,7 +342,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         const Verdict v = trial.play(noisy(c.strike, game.params(), noise), c.call);
         ++simulations_;
         if (snooker) {
-            c.total += snooker_score(v, shooter, trial, level_ != Level::easy);
+            c.total += snooker_points_score(v, shooter);
             ++c.samples;
             return;
         }

@@ -1,6 +1,6 @@
 #pragma once
 // The parts of the computer's search that its pool and its snooker searches share: the spread
-// of its stroke, the aim that allows for throw and squirt, and snooker's score of a shot.
+// of its stroke, its samples, and the aim that allows for throw and squirt.
 
 #include <termpool/level.hpp>
 #include <termpool/rules.hpp>
@@ -19,13 +19,5 @@ int samples_per_candidate(Level level);
 // aim when its first contact is not with `object`.
 double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue,
                          const Ball& object, Vec2 aim_point);
-
-// Snooker: the best next pot for whoever is on now, each ball weighted by what it is worth.
-double snooker_next_quality(const Game& game);
-
-// Snooker: a simulated shot's worth from the shooter's side: points at their value, a kept
-// table worth more with an easy ball to follow, a table handed over worth less the easier the
-// opponent's pot (with `position`; without, the points and the turn only).
-double snooker_score(const Verdict& v, int shooter, const Game& after, bool position);
 
 } // namespace termpool
