@@ -491,9 +491,19 @@ TEST_CASE("selfplay plays short games to their end and sums them up", "[cli][sel
         const bool snooker = std::string(game) == "snooker";
         CHECK((r.out.find("highest break") != std::string::npos) == snooker);
         CHECK((r.out.find("pots per visit") != std::string::npos) == snooker);
+        CHECK((r.out.find(" centuries ") != std::string::npos) == snooker);
+        CHECK((r.out.find("pots as the statistics count them") != std::string::npos) == snooker);
+        CHECK(r.out.find(" CPU ") != std::string::npos);
     }
     CHECK(run(dir, "selfplay --games 2 --p1 easy").status == 2);
     CHECK(run(dir, "selfplay --games 2 --p1 easy --p2 grandmaster").status == 2);
+    // The scripted safe player takes a seat at snooker only, and plays a frame to its end.
+    const Run safe = run(dir, "selfplay --games 1 --p1 medium --p2 safe --game snooker --seed 2");
+    INFO("stderr: " << safe.err);
+    CHECK(safe.status == 0);
+    CHECK(safe.out.find("p2 safe") != std::string::npos);
+    CHECK(safe.out.find("game 1 winner ") != std::string::npos);
+    CHECK(run(dir, "selfplay --games 1 --p1 safe --p2 easy").status == 2);
     // The same seed plays the same games.
     CHECK(run(dir, "selfplay --games 2 --p1 medium --p2 hard --seed 9").out.substr(0, 120) ==
           run(dir, "selfplay --games 2 --p1 medium --p2 hard --seed 9").out.substr(0, 120));

@@ -47,6 +47,7 @@ public:
 
 private:
     ComputerShot search(const Game& game);
+    ComputerShot snooker_search(const Game& game);
     Strike with_noise(const Strike& planned, const PhysicsParams& params);
     Strike noisy(const Strike& planned, const PhysicsParams& params, Random& rng) const;
     Strike break_strike(const Game& game, const Ball& cue) const;

@@ -5,9 +5,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <optional>
 #include <string>
 #include <termpool/match.hpp>
+#include <termpool/safe_player.hpp>
 #include <thread>
 #include <vector>
 
@@ -20,13 +22,16 @@ namespace {
 constexpr const char* usage =
     "usage: termpool selfplay --games N --p1 LEVEL --p2 LEVEL\n"
     "                         [--game 8ball|8ball-bar|9ball|10ball|snooker] [--seed S] [--jobs J]\n"
-    "  LEVEL is easy, medium, hard or pro; games alternate the breaker.\n";
+    "  LEVEL is easy, medium, hard or pro; games alternate the breaker.\n"
+    "  Snooker also takes LEVEL safe: a scripted opponent that pots only an easy ball and\n"
+    "  otherwise plays safe.\n";
 
 constexpr int max_shots_per_game = 500;
 
 struct Options {
     std::uint64_t games = 0;
     Level levels[2] = {Level::medium, Level::medium};
+    bool safe[2] = {false, false}; // the seat is the scripted safe player, not a computer level
     bool level_given[2] = {false, false};
     GameType game = GameType::eight_ball;
     std::uint64_t seed = 1;
@@ -35,7 +40,8 @@ struct Options {
 
 struct SeatFigures {
     std::uint64_t decisions = 0;
-    double seconds = 0;
+    double seconds = 0;          // CPU time of its decisions
+    double longest_decision = 0; // the slowest decision (a shot, a placing and its shot, a choice)
     std::uint64_t simulations = 0;
     std::uint64_t pot_attempts = 0;
     std::uint64_t pots = 0;
@@ -43,6 +49,11 @@ struct SeatFigures {
     // a run of shots by one player) with the balls potted in them.
     int frame_score = 0;
     int highest_break = 0;
+    int centuries = 0; // frames with a break of 100 or more (one frame holds at most one)
+    // Pot attempts and pots as the players' statistics count them (StatsTally): every shot
+    // but a break or a called safety is an attempt.
+    std::uint64_t tally_attempts = 0;
+    std::uint64_t tally_pots = 0;
     std::uint64_t visits = 0;
     std::uint64_t balls_potted = 0;
     std::uint64_t fouls = 0;
@@ -75,13 +86,14 @@ std::optional<Options> parse(const std::vector<std::string>& args, std::string& 
             }
             (name == "--games" ? o.games : name == "--seed" ? o.seed : o.jobs) = *n;
         } else if (name == "--p1" || name == "--p2") {
+            const int p = name == "--p1" ? 0 : 1;
             const auto level = parse_level(value);
-            if (!level) {
-                error = "unknown level '" + value + "' (easy, medium, hard or pro)";
+            if (!level && value != "safe") {
+                error = "unknown level '" + value + "' (easy, medium, hard, pro or safe)";
                 return std::nullopt;
             }
-            const int p = name == "--p1" ? 0 : 1;
-            o.levels[p] = *level;
+            o.levels[p] = level.value_or(Level::hard);
+            o.safe[p] = !level;
             o.level_given[p] = true;
         } else if (name == "--game") {
             const auto g = parse_game_type(value);
@@ -97,6 +109,10 @@ std::optional<Options> parse(const std::vector<std::string>& args, std::string& 
     }
     if (o.games == 0 || !o.level_given[0] || !o.level_given[1]) {
         error = "--games (at least 1), --p1 and --p2 are required";
+        return std::nullopt;
+    }
+    if ((o.safe[0] || o.safe[1]) && o.game != GameType::snooker) {
+        error = "the safe player plays snooker only (--game snooker)";
         return std::nullopt;
     }
     o.jobs = std::clamp<std::uint64_t>(o.jobs, 1, 64);
@@ -149,14 +165,55 @@ std::string check_invariants(const Game& game) {
     return {};
 }
 
+// CPU time of the calling thread, s: a decision's time on one core, whatever else the
+// machine runs.
+double thread_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// The move of the player to act: the seated computer's, or the scripted safe player's (a
+// person's seat to the match). Nothing when neither may act.
+std::optional<ComputerMove> move_of(Match& match, std::optional<SafePlayer> (&scripted)[2]) {
+    const PendingAction pending = match.pending();
+    if (pending.player != 1 && pending.player != 2)
+        return std::nullopt;
+    std::optional<SafePlayer>& safe = scripted[pending.player - 1];
+    if (!safe)
+        return match.computer_move();
+    const Game& game = match.game();
+    ComputerMove move;
+    move.kind = pending.kind;
+    if (safe->concedes(game)) {
+        move.kind = Pending::choose;
+        move.choice = Choice::concede;
+    } else if (pending.kind == Pending::place) {
+        move.spot = safe->place_cue_ball(game);
+    } else if (pending.kind == Pending::choose) {
+        move.choice = safe->choose(game);
+    } else if (pending.kind == Pending::shoot) {
+        move.shot = safe->shot(game);
+    } else {
+        return std::nullopt;
+    }
+    return move;
+}
+
 GameSummary play_one(const Options& o, std::uint64_t index) {
     GameSummary summary;
     GameRecord header;
     header.setup.game = o.game;
     header.seed = o.seed * 1000003ULL + index;
     header.breaker = 1 + static_cast<int>(index % 2);
-    header.computers[0] = o.levels[0];
-    header.computers[1] = o.levels[1];
+    std::optional<SafePlayer> scripted[2];
+    for (int p = 0; p < 2; ++p) {
+        if (!o.safe[p])
+            header.computers[p] = o.levels[p];
+        else // a stream apart from every computer's
+            scripted[p].emplace((header.seed * 2 + static_cast<std::uint64_t>(p) + 1) ^
+                                0x5afe5afe5afe5afeULL);
+    }
     // Seat p's computer plays from seed 2 * seed + p.
     auto started = Match::start(header, header.seed * 2);
     if (const MatchError* refused = std::get_if<MatchError>(&started)) {
@@ -167,7 +224,6 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
     Match& match = std::get<Match>(started);
     bool opponent_shot = false;
     int last_actor = 0;
-    using Clock = std::chrono::steady_clock;
     while (match.pending().kind != Pending::over) {
         if (summary.shots >= max_shots_per_game) {
             summary.violation =
@@ -176,11 +232,15 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
         }
         const int actor = match.to_act();
         SeatFigures& stats = summary.players[actor - 1];
-        const auto start = Clock::now();
+        const double start = thread_seconds();
         const std::uint64_t simulated = match.computer_simulations(actor);
-        std::optional<ComputerMove> move = match.computer_move();
+        std::optional<ComputerMove> move = move_of(match, scripted);
         if (move && move->kind == Pending::choose) {
-            match.choose(actor, move->choice);
+            stats.longest_decision = std::max(stats.longest_decision, thread_seconds() - start);
+            if (match.choose(actor, move->choice) != MatchError::none) {
+                summary.violation = "a choice the match refused";
+                return summary;
+            }
             continue;
         }
         if (move && move->kind == Pending::place) {
@@ -188,14 +248,16 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
                 summary.violation = "illegal ball-in-hand placement";
                 return summary;
             }
-            move = match.computer_move();
+            move = move_of(match, scripted);
         }
         if (!move || move->kind != Pending::shoot) {
             summary.violation = "the computer had no shot to play";
             return summary;
         }
         const ComputerShot& shot = move->shot;
-        stats.seconds += std::chrono::duration<double>(Clock::now() - start).count();
+        const double took = thread_seconds() - start;
+        stats.seconds += took;
+        stats.longest_decision = std::max(stats.longest_decision, took);
         stats.simulations += match.computer_simulations(actor) - simulated;
         ++stats.decisions;
         const auto played = match.shoot(actor, shot.strike, shot.call);
@@ -235,11 +297,21 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
     for (int seat = 1; seat <= 2; ++seat) {
         summary.players[seat - 1].frame_score = match.game().score_of(seat);
         summary.players[seat - 1].highest_break = match.game().snooker().highest_break[seat - 1];
+        summary.players[seat - 1].centuries = summary.players[seat - 1].highest_break >= 100;
+        summary.players[seat - 1].tally_attempts =
+            static_cast<std::uint64_t>(match.tally().of(seat).pot_attempts);
+        summary.players[seat - 1].tally_pots =
+            static_cast<std::uint64_t>(match.tally().of(seat).pots_made);
     }
     summary.winner = match.game().winner();
     summary.reason = match.game().win_reason();
     summary.break_and_run = summary.winner == header.breaker && !opponent_shot;
     return summary;
+}
+
+// The seat's player as the summary names it: its level, or "safe".
+const char* seat_name(const Options& o, int p) {
+    return o.safe[p] ? "safe" : level_name(o.levels[p]);
 }
 
 // 95% Wilson interval of a proportion, in percent.
@@ -303,6 +375,11 @@ int selfplay_command(const std::vector<std::string>& args) {
         for (int p = 0; p < 2; ++p) {
             per[p].decisions += r.players[p].decisions;
             per[p].seconds += r.players[p].seconds;
+            per[p].longest_decision =
+                std::max(per[p].longest_decision, r.players[p].longest_decision);
+            per[p].centuries += r.players[p].centuries;
+            per[p].tally_attempts += r.players[p].tally_attempts;
+            per[p].tally_pots += r.players[p].tally_pots;
             per[p].simulations += r.players[p].simulations;
             per[p].pot_attempts += r.players[p].pot_attempts;
             per[p].pots += r.players[p].pots;
@@ -320,21 +397,27 @@ int selfplay_command(const std::vector<std::string>& args) {
         const auto [lo, hi] = wilson(wins[p], n);
         const SeatFigures& s = per[p];
         std::printf("p%d %-6s wins %4d (%.1f%%, 95%% CI %.1f-%.1f%%)  pots %.1f%% of %llu  "
-                    "decision %.3f s  %.0f shots/s\n",
-                    p + 1, level_name(o.levels[p]), wins[p], 100 * wins[p] / n, lo, hi,
+                    "decision %.3f s (max %.3f s) CPU  %.0f shots/s\n",
+                    p + 1, seat_name(o, p), wins[p], 100 * wins[p] / n, lo, hi,
                     s.pot_attempts ? 100.0 * s.pots / s.pot_attempts : 0.0,
                     static_cast<unsigned long long>(s.pot_attempts),
-                    s.decisions ? s.seconds / s.decisions : 0.0,
+                    s.decisions ? s.seconds / s.decisions : 0.0, s.longest_decision,
                     s.seconds > 0 ? s.simulations / s.seconds : 0.0);
     }
     if (o.game == GameType::snooker)
         for (int p = 0; p < 2; ++p) {
             const SeatFigures& s = per[p];
-            std::printf("p%d %-6s frame score %.1f  highest break %d  pots per visit %.2f  "
-                        "fouls per frame %.2f\n",
-                        p + 1, level_name(o.levels[p]), s.frame_score / n, s.highest_break,
+            std::printf("p%d %-6s frame score %.1f  highest break %d  centuries %d  "
+                        "pots per visit %.2f  fouls per frame %.2f\n",
+                        p + 1, seat_name(o, p), s.frame_score / n, s.highest_break, s.centuries,
                         s.visits ? static_cast<double>(s.balls_potted) / s.visits : 0.0,
                         s.fouls / n);
+            // The statistics count every shot but a break or a called safety: a safety on a
+            // nominated colour, say, is a pot missed there.
+            std::printf("p%d %-6s pots as the statistics count them %.1f%% of %llu\n", p + 1,
+                        seat_name(o, p),
+                        s.tally_attempts ? 100.0 * s.tally_pots / s.tally_attempts : 0.0,
+                        static_cast<unsigned long long>(s.tally_attempts));
         }
     std::printf("fouls per game %.2f, shots per game %.1f, break-and-runs %llu (%.1f%%), "
                 "%.1f s\n",

@@ -8,6 +8,10 @@
 #include <termpool/simulator.hpp>
 #include <termpool/snooker_layout.hpp>
 
+#include "computer_parts.hpp"
+#include "shot_lines.hpp"
+#include "snooker_leave.hpp"
+
 namespace termpool {
 namespace {
 
@@ -51,13 +55,6 @@ double degrees(Vec2 v) {
     return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
 }
 
-const Ball* find(const std::vector<Ball>& balls, int id) {
-    for (const Ball& b : balls)
-        if (b.id == id && b.state != MotionState::pocketed)
-            return &b;
-    return nullptr;
-}
-
 // The referee's opinion of a simulated shot, from the shooter's side.
 double score(const Verdict& v, int shooter) {
     if (v.winner != 0)
@@ -75,46 +72,17 @@ double score(const Verdict& v, int shooter) {
     return s;
 }
 
-int samples_per_candidate(Level level) {
-    switch (level) {
-    case Level::easy:
-        return 1;
-    case Level::medium:
-        return 3;
-    case Level::hard:
-        return 6;
-    case Level::pro:
-        return 10;
-    }
-    return 1;
-}
-
-// True when a ball other than `ignore` lies within a diameter of the segment from a to b.
-bool blocked(const std::vector<Ball>& balls, Vec2 a, Vec2 b, std::pair<int, int> ignore, double R) {
-    const Vec2 ab = b - a;
-    const double len2 = length_squared(ab);
-    for (const Ball& ball : balls) {
-        if (ball.state == MotionState::pocketed || ball.id == ignore.first ||
-            ball.id == ignore.second)
-            continue;
-        const double u = len2 > 0 ? std::clamp(dot(ball.position - a, ab) / len2, 0.0, 1.0) : 0;
-        if (length_squared(a + ab * u - ball.position) < 4 * R * R)
-            return true;
-    }
-    return false;
-}
-
 // How good the shooter's next shot looks from here: the best legal ball and pocket with nothing
 // in the way, rated 0..1 by how full the cut is and how far the balls travel, times what the
 // ball is worth (`weight`).
 template <class Weight> double weighted_next_quality(const Game& game, Weight weight) {
-    const Ball* cue = find(game.balls(), 0);
+    const Ball* cue = ball_in_play(game.balls(), 0);
     if (!cue)
         return 0;
     const double R = game.params().ball_radius;
     double best = 0;
     for (const int target : game.legal_targets()) {
-        const Ball* object = find(game.balls(), target);
+        const Ball* object = ball_in_play(game.balls(), target);
         if (!object)
             continue;
         for (const Pocket& pocket : game.table().pockets) {
@@ -127,8 +95,9 @@ template <class Weight> double weighted_next_quality(const Game& game, Weight we
             // A weight of 1 leaves the product's bits as they were without it.
             const double quality = weight(target) * cut * cut *
                                    portable::exp(-(length(line) + length(to_pocket)) / 2.5);
-            if (quality > best && !blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
-                !blocked(game.balls(), object->position, pocket.position, {0, target}, R))
+            if (quality > best &&
+                !path_blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
+                !path_blocked(game.balls(), object->position, pocket.position, {0, target}, R))
                 best = quality;
         }
     }
@@ -152,48 +121,18 @@ double snooker_next_quality(const Game& game) {
     return weighted_next_quality(game, snooker_weight);
 }
 
-// Snooker: the shot's worth from the shooter's side. Points scored and given away count at
-// their value; a kept table is worth more with an easy ball to follow; a table handed over
-// is worth less the easier the opponent's pot, and more when the opponent is snookered or
-// the cue ball is left far from the balls on, on a cushion, in baulk (a safety).
-double snooker_score(const Verdict& v, int shooter, const Game& after, bool position) {
+// Snooker, easy: a shot's worth from the shooter's side in points scored and given away, and
+// the table kept. (The levels above have their own search, computer_snooker.cpp.)
+double snooker_points_score(const Verdict& v, int shooter) {
     if (v.winner != 0)
         return v.winner == shooter ? 1000 : -1000;
-    double s = 12.0 * v.points - 12.0 * v.penalty;
+    const double s = 12.0 * v.points - 12.0 * v.penalty;
     if (v.foul != Foul::none)
         return s - 60 - (v.miss ? 20 : 0);
-    if (v.next_shooter == shooter) {
-        s += 100;
-        if (position)
-            s += 60.0 * snooker_next_quality(after);
-        return s;
-    }
-    if (!position)
-        return s;
-    s -= 80.0 * snooker_next_quality(after);
-    if (after.shooter_snookered())
-        s += 25;
-    const Ball* cue = find(after.balls(), 0);
-    if (!cue)
-        return s;
-    const double R = after.params().ball_radius;
-    double nearest = 1e9;
-    for (const int id : after.balls_on())
-        if (const Ball* b = find(after.balls(), id))
-            nearest = std::min(nearest, length(b->position - cue->position));
-    if (nearest < 1e9)
-        s += 10.0 * std::min(1.0, nearest / (0.5 * after.table().length));
-    const Table& t = after.table();
-    const double to_cushion = std::min({cue->position.x, t.length - cue->position.x,
-                                        cue->position.y, t.width - cue->position.y}) -
-                              R;
-    if (to_cushion < 2 * R)
-        s += 6;
-    // Back in baulk, with the balls on up the table, is the classic safe leave.
-    if (cue->position.x < snooker_baulk_x(t) && nearest > 0.25 * t.length)
-        s += 8;
-    return s;
+    return v.next_shooter == shooter ? s + 100 : s;
 }
+
+} // namespace
 
 // The ghost-ball aim sends the object ball along the line of centres, but it leaves a little
 // off it (throw, from the balls' friction) and the cue ball a little off the cue (squirt, from
@@ -218,7 +157,7 @@ double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue
         if (e->ball != 0 || e->other != object.id)
             break;
         const std::vector<Ball> after = world.balls();
-        const Ball* hit = find(after, object.id);
+        const Ball* hit = ball_in_play(after, object.id);
         if (!hit || length(hit->velocity) == 0)
             break;
         const Vec2 want = normalized(aim_point - object.position);
@@ -232,6 +171,48 @@ double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue
     return strike.angle_deg;
 }
 
+double direction_sigma_deg(Level level) {
+    return noise_scale(level) * sigma_aim_deg;
+}
+
+int samples_per_candidate(Level level) {
+    switch (level) {
+    case Level::easy:
+        return 1;
+    case Level::medium:
+        return 3;
+    case Level::hard:
+        return 6;
+    case Level::pro:
+        return 10;
+    }
+    return 1;
+}
+
+namespace {
+
+// Snooker's search is the slower: of the spots in the D it searches only the three with the
+// best pot in sight and the middle one (for a safety).
+std::vector<Vec2> snooker_spots_to_search(const Game& game, std::vector<Vec2> spots,
+                                          double sigma_deg) {
+    constexpr std::size_t searched = 3;
+    if (spots.size() <= searched + 1)
+        return spots;
+    std::vector<std::pair<double, std::size_t>> ranked;
+    for (std::size_t i = 0; i < spots.size(); ++i) {
+        Game trial = game;
+        if (trial.place_cue_ball(spots[i]))
+            ranked.push_back({snooker_best_chance(trial, sigma_deg), i});
+    }
+    std::ranges::stable_sort(ranked,
+                             [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<Vec2> kept;
+    for (std::size_t k = 0; k < ranked.size() && k < searched; ++k)
+        kept.push_back(spots[ranked[k].second]);
+    kept.push_back(spots[spots.size() / 2]);
+    return kept;
+}
+
 } // namespace
 
 double pot_ease(const Game& game) {
@@ -243,7 +224,7 @@ ComputerPlayer::ComputerPlayer(Level level, std::uint64_t seed) : level_(level),
 ComputerShot ComputerPlayer::search(const Game& game) {
     ComputerShot best;
     best.score = -1e9;
-    const Ball* cue = find(game.balls(), 0);
+    const Ball* cue = ball_in_play(game.balls(), 0);
     if (!cue)
         return best;
     if (game.is_break()) {
@@ -251,16 +232,15 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         best.score = 0;
         return best;
     }
+    // Snooker above easy judges its pots by their chance (computer_snooker.cpp).
+    if (game.type() == GameType::snooker && level_ != Level::easy)
+        return snooker_search(game);
     const double R = game.params().ball_radius;
-    const bool snooker = game.type() == GameType::snooker;
-    // Snooker's table is longer and its position play finer: a softer pace and a stronger
-    // screw and follow besides the pool set.
-    const std::vector<double> speeds = level_ == Level::easy ? std::vector<double>{2.5}
-                                       : snooker ? std::vector<double>{1.0, 1.5, 2.5, 4.0}
-                                                 : std::vector<double>{1.5, 2.5, 4.0};
-    const std::vector<double> spins = level_ == Level::easy ? std::vector<double>{0.0}
-                                      : snooker ? std::vector<double>{-0.45, -0.2, 0.0, 0.2, 0.45}
-                                                : std::vector<double>{-0.3, 0.0, 0.3};
+    const bool snooker = game.type() == GameType::snooker; // here only at easy
+    const std::vector<double> speeds =
+        level_ == Level::easy ? std::vector<double>{2.5} : std::vector<double>{1.5, 2.5, 4.0};
+    const std::vector<double> spins =
+        level_ == Level::easy ? std::vector<double>{0.0} : std::vector<double>{-0.3, 0.0, 0.3};
 
     struct Candidate {
         Strike strike;
@@ -276,8 +256,8 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         const Vec2 line = ghost - cue->position;
         // Skip cuts thinner than about 80 degrees, and shots another ball is in the way of.
         if (dot(normalized(line), normalized(to_aim)) < 0.17 ||
-            blocked(game.balls(), cue->position, ghost, {0, object.id}, R) ||
-            blocked(game.balls(), object.position, aim_point, {0, object.id}, R))
+            path_blocked(game.balls(), cue->position, ghost, {0, object.id}, R) ||
+            path_blocked(game.balls(), object.position, aim_point, {0, object.id}, R))
             return;
         for (const double speed : at)
             for (const double follow : spins) {
@@ -305,9 +285,10 @@ ComputerShot ComputerPlayer::search(const Game& game) {
                     continue;
                 const Vec2 first_ghost = first.position - travel * (2 * R);
                 if (dot(normalized(first_ghost - cue->position), travel) < 0.5 ||
-                    blocked(game.balls(), cue->position, first_ghost, {0, first.id}, R) ||
-                    blocked(game.balls(), first.position, second_ghost, {first.id, second.id}, R) ||
-                    blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
+                    path_blocked(game.balls(), cue->position, first_ghost, {0, first.id}, R) ||
+                    path_blocked(game.balls(), first.position, second_ghost, {first.id, second.id},
+                                 R) ||
+                    path_blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
                     continue;
                 for (const double speed : {2.5, 4.0})
                     candidates.push_back({{speed, degrees(first_ghost - cue->position), 0, 0},
@@ -315,37 +296,8 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             }
         }
     };
-    // Snooker safeties: the ball on hit full to thin at a touch, a medium pace and firmly
-    // (the cue ball sent back up the table to baulk), and, where the straight line is
-    // blocked, off one cushion (the escape from a snooker). The call is a safety; with a
-    // nomination owed it names the ball played at, pocket 0 (no pot in mind).
-    auto add_snooker_safeties = [&](const Ball& object) {
-        ShotCall call;
-        if (game.nomination_owed())
-            call.call.ball = object.id;
-        else
-            call.call.safety = true;
-        const Vec2 to_ball = object.position - cue->position;
-        if (!blocked(game.balls(), cue->position, object.position, {0, object.id}, R)) {
-            for (const double offset : {-1.8, -1.4, -0.9, -0.4, 0.0, 0.4, 0.9, 1.4, 1.8}) {
-                const Vec2 aim =
-                    object.position + normalized(perpendicular(to_ball)) * (offset * R);
-                for (const double speed : {0.8, 1.6, 2.6, 3.6})
-                    candidates.push_back({{speed, degrees(aim - cue->position), 0, 0}, call});
-            }
-            return;
-        }
-        const Vec2 at = object.position;
-        const Vec2 mirrors[4] = {{at.x, 2 * R - at.y},
-                                 {at.x, 2 * (table.width - R) - at.y},
-                                 {2 * R - at.x, at.y},
-                                 {2 * (table.length - R) - at.x, at.y}};
-        for (const Vec2 mirror : mirrors)
-            for (const double speed : {1.6, 2.6, 3.6})
-                candidates.push_back({{speed, degrees(mirror - cue->position), 0, 0}, call});
-    };
     for (const int target : game.legal_targets()) {
-        const Ball* object = find(game.balls(), target);
+        const Ball* object = ball_in_play(game.balls(), target);
         if (!object)
             continue;
         for (int pocket = 1; pocket <= 6; ++pocket) {
@@ -367,15 +319,11 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             add_combinations(*object);
         if (level_ == Level::easy)
             continue;
-        if (snooker) {
-            add_snooker_safeties(*object);
-            continue;
-        }
         // Safeties: soft hits on the ball, full and thinner, called as safety.
         for (const double offset : {-1.0, -0.5, 0.0, 0.5, 1.0}) {
             const Vec2 to_ball = object->position - cue->position;
             const Vec2 aim = object->position + normalized(perpendicular(to_ball)) * (offset * R);
-            if (blocked(game.balls(), cue->position, object->position, {0, target}, R))
+            if (path_blocked(game.balls(), cue->position, object->position, {0, target}, R))
                 break;
             for (const double speed : {0.8, 1.6}) {
                 ShotCall call;
@@ -394,7 +342,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         const Verdict v = trial.play(noisy(c.strike, game.params(), noise), c.call);
         ++simulations_;
         if (snooker) {
-            c.total += snooker_score(v, shooter, trial, level_ != Level::easy);
+            c.total += snooker_points_score(v, shooter);
             ++c.samples;
             return;
         }
@@ -435,7 +383,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     }
     if (best.score == -1e9 && !game.legal_targets().empty()) {
         // Nothing pottable: hit the first legal ball softly.
-        const Ball* object = find(game.balls(), game.legal_targets().front());
+        const Ball* object = ball_in_play(game.balls(), game.legal_targets().front());
         if (object)
             best.planned = {2.0, degrees(object->position - cue->position), 0, 0};
         best.score = 0;
@@ -547,7 +495,9 @@ Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
     if (game.is_break())
         return place_break(game);
     // Try a spread of legal spots; keep the one whose best shot scores highest.
-    const std::vector<Vec2> spots = game.legal_placements(level_ == Level::easy ? 4 : 6);
+    std::vector<Vec2> spots = game.legal_placements(level_ == Level::easy ? 4 : 6);
+    if (game.type() == GameType::snooker && level_ != Level::easy)
+        spots = snooker_spots_to_search(game, std::move(spots), direction_sigma_deg(level_));
     Vec2 best_spot = spots.empty() ? Vec2{} : spots.front();
     double best = -1e18;
     for (const Vec2 spot : spots) {

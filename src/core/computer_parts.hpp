@@ -1,0 +1,23 @@
+#pragma once
+// The parts of the computer's search that its pool and its snooker searches share: the spread
+// of its stroke, its samples, and the aim that allows for throw and squirt.
+
+#include <termpool/level.hpp>
+#include <termpool/rules.hpp>
+
+namespace termpool {
+
+// The whole spread (one standard deviation) of the cue ball's direction under the execution
+// noise of `level`, degrees: aim and squirt together.
+double direction_sigma_deg(Level level);
+
+// Noisy samples of each promising candidate at `level` (1, 3, 6, 10).
+int samples_per_candidate(Level level);
+
+// The ghost-ball aim of `strike` at `object`, turned by the object ball's error (throw, and the
+// squirt of any side) so that it leaves towards `aim_point`, to first order; the strike's own
+// aim when its first contact is not with `object`.
+double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue,
+                         const Ball& object, Vec2 aim_point);
+
+} // namespace termpool

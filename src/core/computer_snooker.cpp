@@ -1,0 +1,313 @@
+// The computer's snooker search. A pot is judged by its chance under the player's own stroke:
+// the window of aims that pot the ball (found by bisection without noise) against the spread
+// of its cue ball's direction, so that a long or thin pot it makes one time in four is played
+// as that, not as the lucky sample of a few. Its worth is the chance times the table kept
+// (points and position) plus the misses times the table they hand over. Safeties and
+// combinations are sampled under the noise, as in pool. Tables are valued by
+// snooker_leave.cpp.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <termpool/computer.hpp>
+#include <termpool/portable_math.hpp>
+#include <termpool/snooker_layout.hpp>
+
+#include "computer_parts.hpp"
+#include "shot_lines.hpp"
+#include "snooker_leave.hpp"
+
+namespace termpool {
+namespace {
+
+double degrees(Vec2 v) {
+    return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
+}
+
+// Standard normal distribution function.
+double normal_cdf(double x) {
+    return 0.5 * std::erfc(-x / std::numbers::sqrt2);
+}
+
+// What a missed pot costs besides the table it leaves, in the search's units (12 to a point).
+// The two misses simulated are near ones, at the window's edges; a wider miss, or an opponent
+// who plays better than this player's own stroke, leaves more. Without it the computer goes
+// for pots it makes one time in four whenever the near misses leave nothing.
+constexpr double miss_cost = 60;
+
+// The sampled shots (safeties, combinations) played under the noise, at most.
+constexpr std::size_t sampled_at_most = 48;
+
+// The sampled shots played afresh to judge them.
+constexpr std::size_t finalists = 4;
+
+// The widest half-window looked for, degrees: a pot open wider than this is as good as sure.
+constexpr double widest_window_deg = 1.28;
+
+// The aims that pot `target` for the shooter, legally and with the table kept, as offsets
+// from `stroke`'s aim: how far they reach on the side of `sign` (+1 or -1), in degrees; 0
+// when the aim itself does not pot it. Doubling steps out to the first miss, then three
+// halvings of the last step.
+double window_edge(const Game& game, Strike stroke, const ShotCall& call, int target, int sign,
+                   std::uint64_t& simulations) {
+    const int shooter = game.shooter();
+    const double centre = stroke.angle_deg;
+    auto pots = [&](double offset) {
+        Game trial = game;
+        stroke.angle_deg = centre + sign * offset;
+        const Verdict v = trial.play(stroke, call);
+        ++simulations;
+        return v.foul == Foul::none && v.next_shooter == shooter &&
+               std::ranges::count(v.pocketed, target) > 0;
+    };
+    double good = 0, bad = -1;
+    for (double step = 0.02; step <= widest_window_deg; step *= 2) {
+        if (!pots(step)) {
+            bad = step;
+            break;
+        }
+        good = step;
+    }
+    if (bad < 0)
+        return good;
+    for (int i = 0; i < 3; ++i) {
+        const double mid = (good + bad) / 2;
+        (pots(mid) ? good : bad) = mid;
+    }
+    return (good + bad) / 2;
+}
+
+} // namespace
+
+ComputerShot ComputerPlayer::snooker_search(const Game& game) {
+    ComputerShot best;
+    best.score = -1e9;
+    const Ball* cue = ball_in_play(game.balls(), 0);
+    if (!cue)
+        return best;
+    const double R = game.params().ball_radius;
+    const int shooter = game.shooter();
+    const Table& table = game.table();
+    const double sigma = direction_sigma_deg(level_);
+    // Hard and pro add banks and combinations. Every level here aims for throw and squirt: the
+    // window of a pot is measured around an aim that pots it without noise.
+    const bool plays_banks = level_ >= Level::hard;
+    const std::vector<double> speeds{1.0, 1.5, 2.5, 4.0};
+    const std::vector<double> spins{-0.45, -0.2, 0.0, 0.2, 0.45};
+    const std::size_t windows_per_pot = level_ == Level::pro ? 4 : 3;
+
+    auto consider = [&](const Strike& strike, const ShotCall& call, double value) {
+        if (value > best.score) {
+            best.score = value;
+            best.planned = strike;
+            best.call = call;
+        }
+    };
+    auto outcome = [&](const Strike& strike, const ShotCall& call) {
+        Game trial = game;
+        const Verdict v = trial.play(strike, call);
+        ++simulations_;
+        return snooker_shot_value(v, shooter, trial, sigma);
+    };
+
+    // Pots, by their chance: each ball and pocket (and, for hard and pro, each one-rail bank)
+    // at each pace and spin, aimed by the ghost ball (hard and pro: corrected for throw and
+    // squirt). The strokes that pot it without noise are ranked by the table they leave; the
+    // best few have their window of aims measured, are aimed at its middle, and are worth
+    // their chance times that table plus the misses times the tables two near misses leave.
+    auto add_pot = [&](const Ball& object, Vec2 aim_point, int pocket,
+                       const std::vector<double>& paces) {
+        const Vec2 to_aim = aim_point - object.position;
+        const Vec2 ghost = object.position - normalized(to_aim) * (2 * R);
+        const Vec2 line = ghost - cue->position;
+        if (dot(normalized(line), normalized(to_aim)) < 0.17 ||
+            path_blocked(game.balls(), cue->position, ghost, {0, object.id}, R) ||
+            path_blocked(game.balls(), object.position, aim_point, {0, object.id}, R))
+            return;
+        const ShotCall call{{object.id, pocket, false}};
+        // Every pace and spin without noise first: those that pot it with the table kept, by
+        // the table they leave; the best few then have their window measured.
+        struct Stroke {
+            Strike strike;
+            double made = 0;
+        };
+        std::vector<Stroke> strokes;
+        for (const double speed : paces)
+            for (const double follow : spins) {
+                Strike strike{speed, degrees(line), 0, follow};
+                strike.angle_deg = corrected_aim_deg(game, strike, *cue, object, aim_point);
+                Game trial = game;
+                const Verdict v = trial.play(strike, call);
+                ++simulations_;
+                if (v.foul == Foul::none && v.next_shooter == shooter &&
+                    std::ranges::count(v.pocketed, object.id) > 0)
+                    strokes.push_back({strike, snooker_shot_value(v, shooter, trial, sigma)});
+            }
+        std::ranges::stable_sort(strokes,
+                                 [](const Stroke& x, const Stroke& y) { return x.made > y.made; });
+        if (strokes.size() > windows_per_pot)
+            strokes.resize(windows_per_pot);
+        for (Stroke& stroke : strokes) {
+            const double above = window_edge(game, stroke.strike, call, object.id, 1, simulations_);
+            const double below =
+                window_edge(game, stroke.strike, call, object.id, -1, simulations_);
+            const double middle = (above - below) / 2, half = (above + below) / 2;
+            const double chance = 2 * normal_cdf(half / sigma) - 1;
+            Strike strike = stroke.strike;
+            double made = stroke.made;
+            if (middle != 0) {
+                strike.angle_deg += middle;
+                Game trial = game;
+                const Verdict v = trial.play(strike, call);
+                ++simulations_;
+                if (v.foul != Foul::none || v.next_shooter != shooter ||
+                    std::ranges::count(v.pocketed, object.id) == 0) {
+                    strike = stroke.strike; // the middle of a broken window: keep the aim
+                } else {
+                    made = snooker_shot_value(v, shooter, trial, sigma);
+                }
+            }
+            // A miss goes past the window's edge by about the spread.
+            const double past = half + 0.8 * sigma;
+            Strike wide = strike, thin = strike;
+            wide.angle_deg += past;
+            thin.angle_deg -= past;
+            const double missed = (outcome(wide, call) + outcome(thin, call)) / 2 - miss_cost;
+            consider(strike, call, chance * made + (1 - chance) * missed);
+        }
+    };
+
+    // The rest is sampled under the noise: safeties (the ball on hit full to thin at four
+    // paces, or off one cushion where the line to it is blocked) and combinations.
+    struct Sampled {
+        Strike strike;
+        ShotCall call;
+        double plain = 0;  // its worth played once without noise, then its mean under it
+        bool pots = false; // a safety that pots a ball on without noise
+    };
+    std::vector<Sampled> sampled;
+    auto add_safeties = [&](const Ball& object) {
+        // Called as a safety, also on a colour: the referee takes the colour hit first as the
+        // one nominated, and the statistics count no pot missed.
+        ShotCall call;
+        call.call.safety = true;
+        const Vec2 to_ball = object.position - cue->position;
+        if (!path_blocked(game.balls(), cue->position, object.position, {0, object.id}, R)) {
+            for (const double offset : {-1.8, -1.4, -0.9, -0.4, 0.0, 0.4, 0.9, 1.4, 1.8}) {
+                const Vec2 aim =
+                    object.position + normalized(perpendicular(to_ball)) * (offset * R);
+                for (const double speed : {0.8, 1.6, 2.6, 3.6})
+                    sampled.push_back({{speed, degrees(aim - cue->position), 0, 0}, call});
+            }
+            return;
+        }
+        const Vec2 at = object.position;
+        const Vec2 mirrors[4] = {{at.x, 2 * R - at.y},
+                                 {at.x, 2 * (table.width - R) - at.y},
+                                 {2 * R - at.x, at.y},
+                                 {2 * (table.length - R) - at.x, at.y}};
+        for (const Vec2 mirror : mirrors)
+            for (const double speed : {1.6, 2.6, 3.6})
+                sampled.push_back({{speed, degrees(mirror - cue->position), 0, 0}, call});
+    };
+    // A combination is a red into a red: any other pots a ball not on, or hits one first.
+    auto add_combinations = [&](const Ball& first) {
+        if (game.snooker().ball_on != BallOn::red || game.snooker().free_ball ||
+            !is_snooker_red(first.id))
+            return;
+        for (const Ball& second : game.balls()) {
+            if (!is_snooker_red(second.id) || second.id == first.id ||
+                second.state == MotionState::pocketed)
+                continue;
+            for (int pocket = 1; pocket <= 6; ++pocket) {
+                const Vec2 pocket_at = table.pockets[pocket - 1].position;
+                const Vec2 to_pocket = normalized(pocket_at - second.position);
+                const Vec2 second_ghost = second.position - to_pocket * (2 * R);
+                const Vec2 travel = normalized(second_ghost - first.position);
+                if (dot(travel, to_pocket) < 0.7)
+                    continue;
+                const Vec2 first_ghost = first.position - travel * (2 * R);
+                if (dot(normalized(first_ghost - cue->position), travel) < 0.5 ||
+                    path_blocked(game.balls(), cue->position, first_ghost, {0, first.id}, R) ||
+                    path_blocked(game.balls(), first.position, second_ghost, {first.id, second.id},
+                                 R) ||
+                    path_blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
+                    continue;
+                for (const double speed : {2.5, 4.0})
+                    sampled.push_back({{speed, degrees(first_ghost - cue->position), 0, 0},
+                                       {{second.id, pocket, false}}});
+            }
+        }
+    };
+
+    for (const int target : game.legal_targets()) {
+        const Ball* object = ball_in_play(game.balls(), target);
+        if (!object)
+            continue;
+        for (int pocket = 1; pocket <= 6; ++pocket) {
+            const Vec2 pocket_at = table.pockets[pocket - 1].position;
+            add_pot(*object, pocket_at, pocket, speeds);
+            if (!plays_banks)
+                continue;
+            const Vec2 mirrors[4] = {{pocket_at.x, 2 * R - pocket_at.y},
+                                     {pocket_at.x, 2 * (table.width - R) - pocket_at.y},
+                                     {2 * R - pocket_at.x, pocket_at.y},
+                                     {2 * (table.length - R) - pocket_at.x, pocket_at.y}};
+            for (const Vec2 mirror : mirrors)
+                if (length(mirror - pocket_at) > 0.2)
+                    add_pot(*object, mirror, pocket, {2.5, 4.0});
+        }
+        if (plays_banks)
+            add_combinations(*object);
+        add_safeties(*object);
+    }
+
+    // The sampled ones are ranked by one play without noise; a safety that pots a ball on
+    // there is a pot, which the pot search judges by its chance: dropped. The best third (at
+    // most sampled_at_most) are then played under the noise, worth the mean of those plays.
+    for (Sampled& c : sampled) {
+        Game trial = game;
+        const Verdict v = trial.play(c.strike, c.call);
+        ++simulations_;
+        c.plain = snooker_shot_value(v, shooter, trial, sigma);
+        c.pots = c.call.call.safety && v.foul == Foul::none && v.next_shooter == shooter;
+    }
+    std::erase_if(sampled, [](const Sampled& c) { return c.pots; });
+    std::ranges::stable_sort(sampled,
+                             [](const Sampled& x, const Sampled& y) { return x.plain > y.plain; });
+    const std::size_t keep = std::min(sampled_at_most, (sampled.size() + 2) / 3);
+    if (sampled.size() > keep)
+        sampled.resize(keep);
+    Random noise = rng_;
+    rng_.next();
+    auto mean_of = [&](const Sampled& c, int plays) {
+        double total = 0;
+        for (int k = 0; k < plays; ++k) {
+            Game trial = game;
+            const Verdict v = trial.play(noisy(c.strike, game.params(), noise), c.call);
+            ++simulations_;
+            total += snooker_shot_value(v, shooter, trial, sigma);
+        }
+        return total / plays;
+    };
+    for (Sampled& c : sampled)
+        c.plain = mean_of(c, samples_per_candidate(level_));
+    // The best of many noisy means is flattered by its luck: the few best are played afresh,
+    // twice as often, and that mean is their worth.
+    std::ranges::stable_sort(sampled,
+                             [](const Sampled& x, const Sampled& y) { return x.plain > y.plain; });
+    if (sampled.size() > finalists)
+        sampled.resize(finalists);
+    for (const Sampled& c : sampled)
+        consider(c.strike, c.call, mean_of(c, 2 * samples_per_candidate(level_)));
+
+    if (best.score == -1e9 && !game.legal_targets().empty()) {
+        // Nothing in sight: hit the first legal ball softly.
+        if (const Ball* object = ball_in_play(game.balls(), game.legal_targets().front()))
+            best.planned = {2.0, degrees(object->position - cue->position), 0, 0};
+        best.score = 0;
+    }
+    return best;
+}
+
+} // namespace termpool

@@ -1,0 +1,19 @@
+#pragma once
+// Lines of play on a table of balls, as the computer players see them: which ball is where,
+// and whether a ball's path is clear.
+
+#include <termpool/ball.hpp>
+#include <utility>
+#include <vector>
+
+namespace termpool {
+
+// The ball `id` among `balls` while it is on the table; nullptr once it is pocketed or absent.
+const Ball* ball_in_play(const std::vector<Ball>& balls, int id);
+
+// True when a ball other than the two of `ignore` lies within a diameter (2 R) of the segment
+// from a to b: a ball rolled along it would touch that ball.
+bool path_blocked(const std::vector<Ball>& balls, Vec2 a, Vec2 b, std::pair<int, int> ignore,
+                  double R);
+
+} // namespace termpool

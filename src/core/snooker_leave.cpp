@@ -1,0 +1,117 @@
+// The worth of a snooker table to the computer: pot chances from geometry, and a shot's worth.
+#include "snooker_leave.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <termpool/snooker_layout.hpp>
+
+#include "shot_lines.hpp"
+
+namespace termpool {
+namespace {
+
+// Points and position in one unit: 12 to a point.
+constexpr double per_point = 12;
+// The worth of being at the table with a sure pot of a red (a chance of 1, weight 1): the
+// break that usually follows, about 17 points.
+constexpr double chance_worth = 200;
+// Keeping the table with nothing to pot is still the initiative.
+constexpr double kept_worth = 20;
+
+// Standard normal distribution function.
+double normal_cdf(double x) {
+    return 0.5 * std::erfc(-x / std::numbers::sqrt2);
+}
+
+// What a ball on is worth taking next: a red opens the way to the black; a colour counts its
+// value.
+double ball_weight(int id) {
+    return is_snooker_red(id) ? 1.0 : 0.5 + 0.5 * snooker_value(id) / 7.0;
+}
+
+} // namespace
+
+double snooker_pot_chance(const Table& table, double R, Vec2 cue, Vec2 object, int pocket,
+                          double sigma_deg) {
+    const Pocket& p = table.pockets[pocket - 1];
+    const Vec2 to_pocket = p.position - object;
+    const double d2 = length(to_pocket);
+    const Vec2 ghost = object - normalized(to_pocket) * (2 * R);
+    const double d1 = length(ghost - cue);
+    const double cut = dot(normalized(ghost - cue), normalized(to_pocket));
+    if (cut <= 0.05 || d2 <= 0)
+        return 0;
+    // How squarely the ball meets the pocket: 1 along its axis.
+    const double square = dot(normalized(to_pocket), -p.capture_normal);
+    const bool middle = pocket == 2 || pocket == 5;
+    const double tolerance = middle ? 0.031 * std::clamp((square - 0.4) / 0.6, 0.0, 1.0) : 0.025;
+    if (tolerance <= 0)
+        return 0;
+    // The object ball's error is the cue ball's times d1 / (2 R cos cut); the pocket takes a
+    // miss of `tolerance` at d2.
+    const double window = tolerance * 2 * R * cut / (std::max(d1, R) * d2);
+    const double sigma = sigma_deg * std::numbers::pi / 180;
+    return 2 * normal_cdf(window / sigma) - 1;
+}
+
+double snooker_best_chance(const Game& game, double sigma_deg) {
+    const Ball* cue = ball_in_play(game.balls(), 0);
+    if (!cue)
+        return 0;
+    const double R = game.params().ball_radius;
+    double best = 0;
+    for (const int target : game.legal_targets()) {
+        const Ball* object = ball_in_play(game.balls(), target);
+        if (!object)
+            continue;
+        const double weight = ball_weight(target);
+        if (weight <= best)
+            continue;
+        for (int pocket = 1; pocket <= 6; ++pocket) {
+            const Vec2 at = game.table().pockets[pocket - 1].position;
+            const Vec2 ghost = object->position - normalized(at - object->position) * (2 * R);
+            const double chance = weight * snooker_pot_chance(game.table(), R, cue->position,
+                                                              object->position, pocket, sigma_deg);
+            if (chance > best &&
+                !path_blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
+                !path_blocked(game.balls(), object->position, at, {0, target}, R))
+                best = chance;
+        }
+    }
+    return best;
+}
+
+double snooker_shot_value(const Verdict& v, int shooter, const Game& after, double sigma_deg) {
+    if (v.winner != 0)
+        return v.winner == shooter ? 10000 : -10000;
+    double s = per_point * (v.points - v.penalty);
+    if (v.foul != Foul::none)
+        return s - 60 - (v.miss ? 20 : 0);
+    if (v.next_shooter == shooter)
+        return s + kept_worth + chance_worth * snooker_best_chance(after, sigma_deg);
+    s -= chance_worth * snooker_best_chance(after, sigma_deg);
+    if (after.shooter_snookered())
+        s += 40;
+    const Ball* cue = ball_in_play(after.balls(), 0);
+    if (!cue)
+        return s;
+    const Table& t = after.table();
+    const double R = after.params().ball_radius;
+    double nearest = 1e9;
+    for (const int id : after.balls_on())
+        if (const Ball* b = ball_in_play(after.balls(), id))
+            nearest = std::min(nearest, length(b->position - cue->position));
+    if (nearest < 1e9)
+        s += 15.0 * std::min(1.0, nearest / (0.5 * t.length));
+    const double to_cushion = std::min({cue->position.x, t.length - cue->position.x,
+                                        cue->position.y, t.width - cue->position.y}) -
+                              R;
+    if (to_cushion < 2 * R)
+        s += 8;
+    if (cue->position.x < snooker_baulk_x(t) && nearest > 0.25 * t.length)
+        s += 10;
+    return s;
+}
+
+} // namespace termpool
