@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <termpool/break_off.hpp>
 #include <termpool/setup.hpp>
 
 #include "tui/app.hpp"
@@ -82,8 +83,17 @@ void App::warn_of_third_foul() {
 void App::start_aiming() {
     mode_ = AimingMode{};
     aim().assist = driver_->match().record().assist; // the table's, for both seats
-    aim().set_break(game().is_break());
+    // A pool break opens at full power on the easiest ball; snooker's break-off soft and thin
+    // off the end red of the pack, to come back to baulk (break_off_strike).
+    const bool break_off = game().is_break() && game().type() == GameType::snooker;
+    const std::optional<Strike> opening =
+        break_off ? std::optional(break_off_strike(table_, params_, game().balls())) : std::nullopt;
+    aim().set_break(game().is_break(), opening ? power_from_speed(opening->speed, true) : 1.0);
     aim_at_easiest();
+    if (opening) {
+        aim().aim_deg = opening->angle_deg;
+        update_preview();
+    }
     warn_of_third_foul();
     const std::string& who = name(game().shooter());
     // Someone else's turn (the computer's, or another terminal's): no how-to.
