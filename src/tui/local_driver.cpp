@@ -5,7 +5,7 @@
 
 #include "files/atomic_file.hpp"
 #include "player/stats_file.hpp"
-#include "player/stats_summary.hpp"
+#include "tui/game_figures.hpp"
 #include "tui/table_news.hpp"
 
 namespace termpool::tui {
@@ -82,7 +82,7 @@ std::optional<TableNews> LocalDriver::apply(const RecordedAction& action, std::s
             news.emplace();
             news->action = action;
             news->actor = action.breaker;
-            news->words = rack_words(match_, action.breaker);
+            news->words = rack_words(match_, action.breaker, may_act());
         }
     } else {
         news = take_action(match_, action, error);
@@ -190,8 +190,7 @@ std::string LocalDriver::game_over_text(const std::string& told) const {
     const MatchState& s = match_.score();
     const std::string& one = match_.name(1);
     const std::string& two = match_.name(2);
-    const PlayerStats figures[2] = {match_.tally().of(1), match_.tally().of(2)};
-    const std::string summary = "\n\n" + stats_summary(match_.record().names, figures);
+    const std::string summary = "\n\n" + game_figures_text(match_);
     // Snooker says frames: the next is a frame, a match of them best of N.
     const bool frames = match_.game().type() == GameType::snooker;
     if (!s.is_race())
@@ -205,9 +204,12 @@ std::string LocalDriver::game_over_text(const std::string& told) const {
         std::to_string(s.racks_won[1]);
     if (const int winner = s.match_winner())
         return told + "\n\n" + match_.name(winner) + " wins the match\n" + race + summary +
-               "\n\nr  rematch (loser breaks)\nn  new match\nq  quit";
+               (frames ? "\n\nr  rematch (the loser breaks off)"
+                       : "\n\nr  rematch (loser breaks)") +
+               "\nn  new match\nq  quit";
     return told + "\n\n" + race + summary + "\n\nEnter  next " + (frames ? "frame (" : "rack (") +
-           match_.name(match_.next_breaker()) + " breaks)\nq      quit (the match is saved)";
+           match_.name(match_.next_breaker()) + (frames ? " breaks off)" : " breaks)") +
+           "\nq      quit (the match is saved)";
 }
 
 } // namespace termpool::tui
