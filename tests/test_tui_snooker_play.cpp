@@ -5,6 +5,9 @@
 // in the D, the break, and the score panel.
 #include <catch2/catch.hpp>
 #include <fstream>
+#include <limits>
+#include <optional>
+#include <regex>
 #include <string>
 #include <termpool/match.hpp>
 #include <termpool/rack.hpp>
@@ -293,7 +296,8 @@ TEST_CASE("a frame against the computer in tmux: in the D, the break, the score 
                     " TERM=xterm-256color LANG=C.UTF-8 " + termpool_binary() +
                     " --game snooker --best-of 3 --player1 Ann --vs-computer easy --seed 3",
                 w, h);
-        const bool placing = t.wait_for_text("Ann breaks: place the cue ball in the D");
+        // At 80 columns the panel wraps the line before "the D".
+        const bool placing = t.wait_for_text("Ann breaks off: place the cue ball");
         CAPTURE(t.screen());
         REQUIRE(placing);
         CHECK(t.wait_for_text("Frames 0-0 (best of 3)"));
@@ -305,8 +309,12 @@ TEST_CASE("a frame against the computer in tmux: in the D, the break, the score 
         t.keys("Enter");
         REQUIRE(t.wait_for_text("Left/Right"));
         CHECK(t.screen().find("cannot go there") == std::string::npos);
-        // A soft break: Down lowers the full power bar.
-        t.repeat("Down", 35);
+        // The break-off opens soft (a pool break's full 12 m/s would scatter the pack), and
+        // Space plays it as proposed.
+        CHECK(t.wait_for([](const std::string& s) {
+            return std::regex_search(s, std::regex("\\] [2-4]\\.[0-9] m/s"));
+        }));
+        CHECK(t.screen().find("12.0 m/s") == std::string::npos);
         t.keys("Space");
         t.keys("x"); // the rest of the shot at once: its end is what is checked
         // The shot rolls, then the panel has the score sheet of the frame.
@@ -335,7 +343,7 @@ void start_frame(tmux_session::Tmux& t, const tmux_session::ScratchDir& scratch,
                 " TERM=xterm-256color LANG=C.UTF-8 " + tmux_session::termpool_binary() +
                 " --game snooker " + args + " --player1 Ann --player2 Bob --seed 3",
             100, 32);
-    REQUIRE(t.wait_for_text("Ann breaks: place the cue ball in the D"));
+    REQUIRE(t.wait_for_text("Ann breaks off: place the cue ball in the D"));
     t.keys("Enter");
     REQUIRE(t.wait_for_text("Left/Right"));
 }
@@ -361,7 +369,7 @@ TEST_CASE("C concedes the frame in tmux once y confirms it", "[tui][e2e][snooker
     CHECK(t.wait_for_text("Best of 3 frames: Ann 0, Bob 1"));
     // The next frame, Bob to break from the D; the panel has the frame score.
     t.keys("Enter");
-    CHECK(t.wait_for_text("Frame 2: Bob breaks: place the cue ball in the D"));
+    CHECK(t.wait_for_text("Frame 2: Bob breaks off: place the cue ball in the D"));
     CHECK(t.wait_for_text("Frames 0-1 (best of 3)"));
 }
 
@@ -375,7 +383,13 @@ TEST_CASE("a single frame's end offers the next frame, in snooker's words",
     REQUIRE(t.wait_for_text("Ann: concede the frame?  y / n"));
     t.keys("y");
     CHECK(t.wait_for_text("next frame (the loser breaks off)"));
-    CHECK(t.screen().find("rematch") == std::string::npos);
+    const std::string box = t.screen();
+    CHECK(box.find("rematch") == std::string::npos);
+    // The figures are a frame's: frames, points and breaks, not pool's racks and runs.
+    for (const char* row : {"Frames won", "Frame score", "Highest break", "Centuries"})
+        CHECK(box.find(row) != std::string::npos);
+    for (const char* row : {"Racks won", "Break-and-runs", "Longest run"})
+        CHECK(box.find(row) == std::string::npos);
 }
 
 namespace {
@@ -453,4 +467,15 @@ TEST_CASE("after a red the keys 2-7 nominate a colour in tmux, and the shot call
     }));
     CHECK(t.wait_for([](const std::string& s) { return s.find("shoots") == std::string::npos; }));
     CHECK(t.screen().find("wrong ball first") == std::string::npos);
+    // The saved game played again: the nominated pink is the first ball the cue ball met.
+    const auto record = parse_record(file_text(file));
+    REQUIRE(std::holds_alternative<GameRecord>(record));
+    std::optional<PlayedShot> last;
+    const auto replayed =
+        Match::replay(std::get<GameRecord>(record), std::numeric_limits<std::size_t>::max(),
+                      [&](const PlayedShot& shot) { last = shot; });
+    REQUIRE(std::holds_alternative<Match>(replayed));
+    REQUIRE(last);
+    CHECK(last->call.call.ball == snooker_pink);
+    CHECK(last->verdict.first_contact == snooker_pink);
 }

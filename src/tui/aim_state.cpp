@@ -29,10 +29,10 @@ void AimState::new_turn() {
     given_call.reset();
 }
 
-void AimState::set_break(bool is_break) {
+void AimState::set_break(bool is_break, double break_power) {
     if (is_break && power_before_break < 0) {
         power_before_break = power;
-        power = 1.0;
+        power = break_power;
     } else if (!is_break && power_before_break >= 0) {
         power = power_before_break;
         power_before_break = -1;

@@ -55,9 +55,10 @@ struct AimState {
 
     /// A new turn: no call, no spin, a level cue, no pointer mark, the easiest target first.
     void new_turn();
-    /// A break wants a hard hit: the bar starts full for it, and the player's own setting
-    /// comes back for the shots after.
-    void set_break(bool is_break);
+    /// A break has its own power: the bar starts at `break_power` for it (full for a pool
+    /// break, a snooker break-off's soft one), and the player's own setting comes back for the
+    /// shots after.
+    void set_break(bool is_break, double break_power = 1.0);
     /// The power now (the swinging bar's position in timed mode).
     double current_power(Clock::time_point now) const;
     /// Applies a spin key (w/s/d/a and W/S/D/A finely, c centres); false for another text.

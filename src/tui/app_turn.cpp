@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <termpool/break_off.hpp>
 #include <termpool/setup.hpp>
 
 #include "tui/app.hpp"
@@ -13,27 +14,14 @@
 #include "tui/nomination.hpp"
 #include "tui/shot_call.hpp"
 #include "tui/table_news.hpp"
+#include "tui/turn_words.hpp"
 
 namespace termpool::tui {
-namespace {
-
-// How the proposed aim reaches a ball it cannot see straight.
-std::string line_words(TargetLine line) {
-    switch (line) {
-    case TargetLine::kick:
-        return "no straight line to a legal ball: a kick off one rail";
-    case TargetLine::uncertain_kick:
-        return "no straight line to a legal ball: a kick off one rail that may not reach it";
-    default:
-        return "no clear line to a legal ball";
-    }
-}
-
-} // namespace
 
 void App::begin() {
-    message_ = driver_->referee() ? breaks_words(driver_->match(), game().shooter())
-                                  : driver_->table_words();
+    message_ = driver_->referee()
+                   ? breaks_words(driver_->match(), game().shooter(), driver_->may_act())
+                   : driver_->table_words();
     // News from before the game (a config warning, where it is saved) leads the first line.
     for (auto n = options_.notices.rbegin(); n != options_.notices.rend(); ++n)
         message_ = *n + "; " + message_;
@@ -82,29 +70,29 @@ void App::warn_of_third_foul() {
 void App::start_aiming() {
     mode_ = AimingMode{};
     aim().assist = driver_->match().record().assist; // the table's, for both seats
-    aim().set_break(game().is_break());
+    // A pool break opens at full power on the easiest ball; snooker's break-off soft and thin
+    // off the end red of the pack, to come back to baulk (break_off_strike).
+    const bool break_off = game().is_break() && game().type() == GameType::snooker;
+    const std::optional<Strike> opening =
+        break_off ? std::optional(break_off_strike(table_, params_, game().balls())) : std::nullopt;
+    aim().set_break(game().is_break(), opening ? power_from_speed(opening->speed, true) : 1.0);
     aim_at_easiest();
-    warn_of_third_foul();
-    const std::string& who = name(game().shooter());
-    // Someone else's turn (the computer's, or another terminal's): no how-to.
-    const bool elsewhere = !driver_->may_act();
-    if (game().push_out_allowed() && !elsewhere) {
-        const std::string hint = "u declares a push-out";
-        message_ = !message_.empty()   ? message_ + "; " + hint
-                   : verdicts_.empty() ? who + ": aim and shoot, or " + hint
-                                       : hint;
-    } else if (message_.empty() && verdicts_.empty() && !elsewhere) {
-        // Short enough for the smallest panel; the help has the rest.
-        message_ =
-            who + ": aim (" + (term_.caps().mouse ? "mouse, " : "") + "Left/Right), Space shoots";
+    if (opening) {
+        aim().aim_deg = opening->angle_deg;
+        update_preview();
     }
-    if (snooker_play() && game().nomination_owed() && !elsewhere)
-        message_ += (message_.empty() ? who + ": " : "; ") +
-                    std::string(game().snooker().free_ball ? "a free ball: 2-7 nominates it"
-                                                           : "2-7 nominates a colour");
-    // The proposed aim cannot reach the ball straight: say so before Space is pressed.
-    if (aim().target_line != TargetLine::straight && !elsewhere)
-        message_ += (message_.empty() ? "" : "; ") + line_words(aim().target_line);
+    warn_of_third_foul();
+    TurnFacts facts;
+    facts.who = name(game().shooter());
+    // Someone else's turn (the computer's, or another terminal's): no how-to.
+    facts.here = driver_->may_act();
+    facts.told = !verdicts_.empty();
+    facts.mouse = term_.caps().mouse;
+    facts.push_out = game().push_out_allowed();
+    facts.nomination = snooker_play() && game().nomination_owed();
+    facts.free_ball = game().snooker().free_ball;
+    facts.line = aim().target_line;
+    message_ = turn_words(message_, facts);
 }
 
 void App::act(const RecordedAction& action) {
@@ -268,7 +256,7 @@ void App::on_key(OverMode&, int key, const std::string& text) {
     // game is a new table, from the lobby).
     if ((text == "r" || text == "n") && driver_->rematch(text == "r" ? 3 - game().winner() : 1)) {
         player_acts();
-        message_ = breaks_words(driver_->match(), game().shooter());
+        message_ = breaks_words(driver_->match(), game().shooter(), driver_->may_act());
         start_turn();
     }
 }

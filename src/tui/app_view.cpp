@@ -83,8 +83,12 @@ void App::compose_mode(const PlacingMode& placing, View& v) const {
         b.position = placing.spot;
         b.state = MotionState::stationary;
     }
+    // Told to the player here, said of another seat; in snooker the D is named.
+    const std::string where = ball_in_hand_words(g.ball_in_hand());
+    const std::string ball = "the cue ball" + (where.empty() ? "" : " " + where);
     if (said().empty())
-        v.message = name(g.shooter()) + ": place the cue ball";
+        v.message = driver_->may_act() ? name(g.shooter()) + ": place " + ball
+                                       : name(g.shooter()) + " places " + ball;
 }
 
 void App::compose_mode(const OverMode&, View& v) const {
@@ -95,12 +99,15 @@ void App::compose_mode(const ChoosingMode&, View& v) const {
     // What brought the choice (an illegal break, a push-out) goes in the box: it may sit over
     // the panel's message line.
     const Game& g = game();
-    std::string text = (said().empty() ? "" : said() + "\n\n") + name(g.chooser()) + ", choose:";
+    // The keys are for the player here; another seat's options are only listed.
+    const bool here = driver_->may_act();
+    std::string text = (said().empty() ? "" : said() + "\n\n") + name(g.chooser()) +
+                       (here ? ", choose:" : " chooses from:");
     for (std::size_t i = 0; i < g.choices().size(); ++i)
-        text += "\n" + std::to_string(i + 1) + "  " +
+        text += "\n" + (here ? std::to_string(i + 1) : std::string("-")) + "  " +
                 choice_words(g.choices()[i], g.type(), g.free_ball_offered(), g.ball_in_hand());
     if (snooker_play())
-        text += "\nC  concede the frame";
+        text += here ? "\nC  concede the frame" : "\n-  concede the frame";
     v.overlay = text;
 }
 

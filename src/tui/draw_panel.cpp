@@ -43,9 +43,33 @@ int width_of(const Line& line) {
     return w;
 }
 
-int draw_line(Painter& p, int x, int y, const Line& line, int width) {
+// The words of `text` that fit `width` columns whole (none when the first does not).
+std::string whole_words(const std::string& text, int width) {
+    if (display_width(text) <= width)
+        return text;
+    std::size_t end = 0;
+    for (std::size_t space = text.find(' '); space != std::string::npos;
+         space = text.find(' ', space + 1)) {
+        if (display_width(std::string_view(text).substr(0, space)) > width)
+            break;
+        end = space;
+    }
+    return text.substr(0, end);
+}
+
+// `line` in `width` columns without a word cut: the last pieces, the least telling, go until
+// the rest fits, and a first piece still too wide keeps the words of it that fit.
+Line fitted(Line line, int width) {
+    while (line.size() > 1 && width_of(line) > width)
+        line.pop_back();
+    if (!line.empty() && width_of(line) > width)
+        line.front().text = whole_words(line.front().text, width);
+    return line;
+}
+
+int draw_line(Painter& p, int x, int y, const Line& whole, int width) {
     int used = 0;
-    for (const Piece& piece : line)
+    for (const Piece& piece : fitted(whole, width))
         if (used < width)
             used += p.text(x + used, y, piece.text, piece.style, width - used);
     return used;
@@ -58,6 +82,25 @@ std::vector<Line> wrapped(const std::string& text, int width, Style style) {
         for (std::string& line : wrap_to_width(text, width))
             lines.push_back({{std::move(line), style}});
     return lines;
+}
+
+// `pieces` joined two spaces apart, as many to a row as fit `width`: a piece is never split
+// (one wider than a row keeps the words that fit).
+std::vector<Line> piece_rows(const std::vector<std::string>& pieces, int width, Style style) {
+    std::vector<Line> rows;
+    std::string row;
+    for (const std::string& piece : pieces) {
+        if (!row.empty() && display_width(row) + 2 + display_width(piece) <= width) {
+            row += "  " + piece;
+            continue;
+        }
+        if (!row.empty())
+            rows.push_back({{row, style}});
+        row = whole_words(piece, width);
+    }
+    if (!row.empty())
+        rows.push_back({{row, style}});
+    return rows;
 }
 
 bool in_group(int id, Group g) {
@@ -167,6 +210,9 @@ Style call_style(const View& v) {
     return v.foul_ball > 0 ? Style{Colour::red, Colour::normal, true} : mark;
 }
 
+// The widest a name is shown (what a player may type; the hall's may be longer).
+constexpr int max_name_cols = 20;
+
 // Marker, name and, in a race, the racks won, the names padded to one column so that the
 // scores line up: "▶ Ann  2".
 Line name_line(const Frame& f, int player, int width) {
@@ -185,9 +231,12 @@ Line name_line(const Frame& f, int player, int width) {
     const int score_w = race ? 1 + figure_w : 0;
     int name_w = 0;
     for (const std::string& n : v.names)
-        name_w = std::max(name_w, display_width(truncate_to_width(n, 20)));
+        name_w = std::max(name_w, std::min(display_width(n), max_name_cols));
     name_w = std::max(1, std::min(name_w, width - 2 - score_w));
-    std::string name = truncate_to_width(v.names[player - 1], name_w);
+    // A name too long is cut visibly, with an ellipsis: a word cut short would read as another.
+    std::string name = v.names[player - 1];
+    if (display_width(name) > name_w)
+        name = truncate_to_width(name, name_w - 1) + "\u2026";
     Line line{{shooting ? (f.paint.utf8() ? "\u25B6 " : "> ") : "  ", mark}};
     name += std::string(static_cast<std::size_t>(std::max(0, name_w - display_width(name))), ' ');
     line.push_back({name, shooting ? mark : Style{}});
@@ -374,7 +423,7 @@ void draw_side_panel(const Frame& f) {
     }
     put_lines(wrapped(loose_balls(v), width, dim));
     if (snooker_panel(v))
-        put_lines(wrapped(snooker_status(v), width, mark));
+        put_lines(piece_rows(snooker_status_pieces(v), width, mark));
     ++y;
     // The message matters most after the players.
     if (!v.message.empty()) {
@@ -448,6 +497,9 @@ void draw_below_panel(const Frame& f) {
         line.push_back({"  " + player_detail(f, player).text, {}});
         widest = std::max(widest, width_of(line));
     }
+    // Snooker's status line shares the column: room for it whole where there is some.
+    if (snooker_panel(v))
+        widest = std::max(widest, display_width(snooker_status(v)));
     const int pw = std::min(std::max(36, std::min(widest, right - x - 25)), right - x);
     const int mid_x = x + pw + 1, mid_w = right - mid_x - 1;
     const bool beside = mid_w >= 16;
@@ -475,7 +527,7 @@ void draw_below_panel(const Frame& f) {
         left.push_back({line, 0});
     }
     if (snooker_panel(v))
-        left.push_back({{{snooker_status(v), mark}}, 0});
+        left.push_back({{{snooker_status(v, pw), mark}}, 0});
     const std::string loose = loose_balls(v);
     if (!loose.empty())
         left.push_back({{{loose, dim}}, 3});

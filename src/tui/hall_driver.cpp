@@ -1,8 +1,10 @@
 #include "tui/hall_driver.hpp"
 
 #include <algorithm>
+#include <termpool/race.hpp>
 #include <termpool/text_width.hpp>
 
+#include "tui/messages.hpp"
 #include "tui/table_news.hpp"
 
 namespace termpool::tui {
@@ -135,7 +137,7 @@ std::optional<TableNews> HallDriver::take() {
     MatchError error = MatchError::none;
     std::optional<TableNews> news;
     if (next.seq == match_.record().actions.size() + 1)
-        news = take_action(match_, next.action, error);
+        news = take_action(match_, next.action, error, link_.seat);
     if (!news || match_.state_hash() != next.hash) {
         // This copy and the server's parted: the record sets it right.
         queue_.clear();
@@ -194,9 +196,12 @@ void HallDriver::aim_set(const Strike& strike) {
 std::string HallDriver::table_words() const {
     // Where the table stands, and with ball in hand what the player must do first.
     if (match_.record().actions.empty())
-        return breaks_words(match_, match_.to_act());
-    if (match_.pending().kind == Pending::place)
-        return standing_words(match_) + ": place the cue ball";
+        return breaks_words(match_, match_.to_act(), may_act());
+    if (match_.pending().kind == Pending::place) {
+        const std::string where = ball_in_hand_words(match_.game().ball_in_hand());
+        return standing_words(match_) +
+               (may_act() ? ": place the cue ball " + where : ", with ball in hand " + where);
+    }
     return standing_words(match_);
 }
 
@@ -210,9 +215,6 @@ void HallDriver::compose(View& v, const ScreenFacts& screen) const {
     }
     v.chat = chat_;
     v.hall = true;
-    // Another player's choice shows its box here too, with whom it waits for.
-    if (screen.choosing && !may_act() && !screen.asking)
-        v.overlay += "\n\n(" + match_.name(match_.game().chooser()) + " chooses)";
     const bool still = !screen.rolling && !screen.over;
     if (chat_entry_) {
         // The end of a long line, where the typing is.
@@ -237,17 +239,24 @@ void HallDriver::compose(View& v, const ScreenFacts& screen) const {
 std::string HallDriver::game_over_text(const std::string& told) const {
     const MatchState& s = match_.score();
     std::string text = told;
+    // Snooker says frames: a match of them best of N, the next one broken off.
+    const bool frames = match_.game().type() == GameType::snooker;
     if (s.is_race()) {
-        text += "\n\nRace to " + std::to_string(s.race_to) + ": " + match_.name(1) + " " +
-                std::to_string(s.racks_won[0]) + ", " + match_.name(2) + " " +
-                std::to_string(s.racks_won[1]);
+        text += "\n\n" +
+                (frames ? "Best of " + std::to_string(best_of_for_race(s.race_to)) + " frames"
+                        : "Race to " + std::to_string(s.race_to)) +
+                ": " + match_.name(1) + " " + std::to_string(s.racks_won[0]) + ", " +
+                match_.name(2) + " " + std::to_string(s.racks_won[1]);
         if (const int winner = s.match_winner())
             text += "\n" + match_.name(winner) + " wins the match";
     }
+    const std::string next = frames ? "frame" : "rack";
     if (match_.pending().kind == Pending::next_rack)
-        text += link_.seat != 0 ? "\n\nEnter  next rack (" + match_.name(match_.next_breaker()) +
-                                      " breaks)\nq      back to the lobby (your seat waits)"
-                                : "\n\nWaiting for the next rack\nq  back to the lobby";
+        text += link_.seat != 0
+                    ? "\n\nEnter  next " + next + " (" + match_.name(match_.next_breaker()) +
+                          (frames ? " breaks off)" : " breaks)") +
+                          "\nq      back to the lobby (your seat waits)"
+                    : "\n\nWaiting for the next " + next + "\nq  back to the lobby";
     else
         text += "\n\nq  back to the lobby";
     return text;

@@ -82,7 +82,7 @@ std::optional<TableNews> LocalDriver::apply(const RecordedAction& action, std::s
             news.emplace();
             news->action = action;
             news->actor = action.breaker;
-            news->words = rack_words(match_, action.breaker);
+            news->words = rack_words(match_, action.breaker, may_act());
         }
     } else {
         news = take_action(match_, action, error);
@@ -204,9 +204,12 @@ std::string LocalDriver::game_over_text(const std::string& told) const {
         std::to_string(s.racks_won[1]);
     if (const int winner = s.match_winner())
         return told + "\n\n" + match_.name(winner) + " wins the match\n" + race + summary +
-               "\n\nr  rematch (loser breaks)\nn  new match\nq  quit";
+               (frames ? "\n\nr  rematch (the loser breaks off)"
+                       : "\n\nr  rematch (loser breaks)") +
+               "\nn  new match\nq  quit";
     return told + "\n\n" + race + summary + "\n\nEnter  next " + (frames ? "frame (" : "rack (") +
-           match_.name(match_.next_breaker()) + " breaks)\nq      quit (the match is saved)";
+           match_.name(match_.next_breaker()) + (frames ? " breaks off)" : " breaks)") +
+           "\nq      quit (the match is saved)";
 }
 
 } // namespace termpool::tui

@@ -30,8 +30,10 @@ std::string call_words(const ShotCall& call, GameType game) {
 
 std::string shot_line(int number, const PlayedShot& shot, const GameRecord& record) {
     const GameType game = record.setup.game;
-    std::string line = std::to_string(number) + ". " + record.names[shot.shooter == 2 ? 1 : 0] +
-                       (shot.was_break ? ", break" : "") + call_words(shot.call, game) + ": ";
+    std::string line =
+        std::to_string(number) + ". " + record.names[shot.shooter == 2 ? 1 : 0] +
+        (shot.was_break ? (game == GameType::snooker ? ", break-off" : ", break") : "") +
+        call_words(shot.call, game) + ": ";
     if (shot.verdict.pocketed.empty()) {
         line += "nothing pocketed";
     } else {

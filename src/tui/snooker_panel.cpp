@@ -1,6 +1,7 @@
 #include "tui/snooker_panel.hpp"
 
 #include <algorithm>
+#include <termpool/text_width.hpp>
 
 #include "tui/messages.hpp"
 
@@ -40,11 +41,30 @@ std::string ball_on_text(const View& v) {
     return "";
 }
 
-std::string snooker_status(const View& v, const std::string& gap) {
-    std::string s = v.current_break > 0 ? "break " + std::to_string(v.current_break) + gap : "";
-    s += ball_on_text(v);
-    s += gap + std::to_string(std::max(0, v.points_remaining)) + " left";
-    return s;
+std::vector<std::string> snooker_status_pieces(const View& v) {
+    std::vector<std::string> pieces;
+    if (v.current_break > 0)
+        pieces.push_back("break " + std::to_string(v.current_break));
+    pieces.push_back(ball_on_text(v));
+    pieces.push_back(std::to_string(std::max(0, v.points_remaining)) + " left");
+    return pieces;
+}
+
+std::string snooker_status(const View& v, int width, const std::string& gap) {
+    // What the player is on matters most, the points left least: the pieces go in that order
+    // (the break before the points left) until the rest fits; never a piece cut.
+    std::vector<std::string> pieces = snooker_status_pieces(v);
+    const std::string on = ball_on_text(v);
+    const auto joined = [&] {
+        std::string s;
+        for (const std::string& piece : pieces)
+            s += (s.empty() ? "" : gap) + piece;
+        return s;
+    };
+    while (display_width(joined()) > width && pieces.size() > 1)
+        pieces.erase(pieces.back() != on ? pieces.end() - 1 : pieces.begin());
+    const std::string s = joined();
+    return display_width(s) <= width ? s : "";
 }
 
 } // namespace termpool::tui

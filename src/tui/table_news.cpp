@@ -6,8 +6,8 @@
 
 namespace termpool::tui {
 
-std::optional<TableNews> take_action(Match& match, const RecordedAction& action,
-                                     MatchError& error) {
+std::optional<TableNews> take_action(Match& match, const RecordedAction& action, MatchError& error,
+                                     int seat) {
     TableNews news;
     news.action = action;
     news.actor = match.to_act();
@@ -35,11 +35,13 @@ std::optional<TableNews> take_action(Match& match, const RecordedAction& action,
         news.words =
             action.choice == Choice::concede
                 ? who + " concedes the frame \u2014 " + match.name(3 - news.actor) + " wins it"
-                : who + ": " + choice + "; " + match.name(match.game().shooter()) +
-                      (match.game().is_break() ? " breaks" : " to shoot");
+                : who + " chooses: " + choice + "; " + next_words(match);
         break;
     case RecordedAction::Kind::rack:
-        news.words = match.rack() != rack ? rack_words(match, action.breaker) : "";
+        // Told to the breaker at this terminal, said to anyone else.
+        news.words = match.rack() != rack
+                         ? rack_words(match, action.breaker, seat != 0 && seat == action.breaker)
+                         : "";
         break;
     case RecordedAction::Kind::place:
         break;
@@ -47,15 +49,28 @@ std::optional<TableNews> take_action(Match& match, const RecordedAction& action,
     return news;
 }
 
-std::string breaks_words(const Match& match, int breaker) {
-    return match.name(breaker) + " breaks: place the cue ball " +
-           ball_in_hand_words(match.game().type() == GameType::snooker ? BallInHand::d
-                                                                       : BallInHand::kitchen);
+std::string breaks_words(const Match& match, int breaker, bool here) {
+    // Snooker breaks off, from the D.
+    const bool snooker = match.game().type() == GameType::snooker;
+    const std::string breaks = match.name(breaker) + (snooker ? " breaks off" : " breaks");
+    const std::string area = snooker ? "the D" : "the kitchen";
+    // The player here is told what to do; of another seat it is said what it does.
+    return here ? breaks + ": place the cue ball in " + area : breaks + " from " + area;
 }
 
-std::string rack_words(const Match& match, int breaker) {
+std::string rack_words(const Match& match, int breaker, bool here) {
     return (match.game().type() == GameType::snooker ? "Frame " : "Rack ") +
-           std::to_string(match.rack()) + ": " + breaks_words(match, breaker);
+           std::to_string(match.rack()) + ": " + breaks_words(match, breaker, here);
+}
+
+std::string next_words(const Match& match) {
+    const Game& g = match.game();
+    const std::string& who = match.name(g.shooter());
+    if (g.is_break())
+        return who + (g.type() == GameType::snooker ? " breaks off" : " breaks");
+    if (g.ball_in_hand() != BallInHand::none)
+        return who + " has ball in hand " + ball_in_hand_words(g.ball_in_hand());
+    return who + " to shoot";
 }
 
 std::string standing_words(const Match& match) {
