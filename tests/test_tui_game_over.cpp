@@ -64,7 +64,7 @@ TEST_CASE("a snooker frame's end shows frames and breaks, kept apart from pool's
                 " TERM=xterm-256color LANG=C.UTF-8 " + tmux_session::termpool_binary() +
                 " --game snooker --seed 3 --player1 Ann --player2 Bob; sleep 60",
             100, 32);
-    REQUIRE(t.wait_for_text("Ann breaks: place the cue ball in the D"));
+    REQUIRE(t.wait_for_text("Ann breaks off: place the cue ball in the D"));
     t.keys("Enter");
     REQUIRE(t.wait_for_text("Left/Right"));
     t.keys("C");
