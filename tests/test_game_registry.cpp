@@ -128,10 +128,34 @@ TEST_CASE("the rows say what differs between the games", "[registry]") {
     CHECK(game_row(GameType::ten_ball).deciding_ball == 10);
     CHECK(game_row(GameType::eight_ball_bar).deciding_ball == 8);
     CHECK(game_row(GameType::nine_ball).keeps(GameStat::break_and_runs));
+    // The rotation games: the push-out after the break, no groups, fouls in a row counted.
+    for (const GameType type : all_game_types()) {
+        const GameRow& row = game_row(type);
+        const bool rotation = type == GameType::nine_ball || type == GameType::ten_ball;
+        CHECK(row.push_out == rotation);
+        CHECK(row.groups == (type == GameType::eight_ball || type == GameType::eight_ball_bar));
+        CHECK((row.panel.player == PlayerLine::fouls_in_a_row) == rotation);
+    }
     CHECK(std::string(game_row(GameType::eight_ball).words.unit) == "rack");
     // The registry cycles through the games in order.
     CHECK(game_registry().next(GameType::eight_ball).type == GameType::eight_ball_bar);
     CHECK(game_registry().next(GameType::snooker).type == GameType::eight_ball);
+}
+
+TEST_CASE("a row's call rule is what its referee asks of a shot after the break",
+          "[registry][rules]") {
+    for (const GameType type : all_game_types()) {
+        const GameRow& row = game_row(type);
+        INFO(row.name);
+        const Game game = Game::from_position(type, nine_foot(), PhysicsParams{},
+                                              spread({0, 1, 2, 8, 9, 10}), 1, Group::open, false);
+        for (const int ball : {1, 8, 9, 10}) {
+            const bool called = row.calls == CallRule::every_pot ||
+                                (row.calls == CallRule::deciding_ball && ball == row.deciding_ball);
+            CHECK(game.pocket_must_be_called(ball) == called);
+        }
+        CHECK(game.nomination_owed() == false); // a snooker frame on a red names nothing
+    }
 }
 
 TEST_CASE("a call fits the game's balls and pockets", "[registry]") {

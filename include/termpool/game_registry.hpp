@@ -34,6 +34,14 @@ enum class BreakAim {
     end_red,   ///< thin off the back red of the pack on the cue ball's side (snooker's break-off)
 };
 
+/// What a shot after the break calls.
+enum class CallRule {
+    nothing,       ///< nothing is called (9-ball)
+    every_pot,     ///< a pot counts only with its ball and pocket called (8-ball, 10-ball)
+    deciding_ball, ///< only the deciding ball's pocket is called (bar rules' 8)
+    ball_on,       ///< the ball on is named, its pocket left out or not (snooker's nomination)
+};
+
 /// The break a player starts from: its speed and its aim.
 struct DefaultBreak {
     double speed = 12.0;                ///< the cue ball's speed, m/s
@@ -105,9 +113,9 @@ struct GameRow {
     int deciding_ball = 0;                       ///< the ball that wins (8, 9, 10), 0: none
     BallInHand break_from = BallInHand::kitchen; ///< where the breaker places the cue ball
     DefaultBreak default_break;                  ///< the break a player starts from
-    /// A call names the ball on, its pocket left out or not (snooker's nomination); else a
-    /// call names a ball and its pocket.
-    bool calls_name_ball_on = false;
+    CallRule calls = CallRule::every_pot;        ///< what a shot calls (the referee judges it)
+    bool groups = false;                         ///< the players take groups (solids and stripes)
+    bool push_out = false;            ///< a push-out may be declared on the shot after the break
     GameWords words;                  ///< its words
     Scoring scoring = Scoring::racks; ///< racks or points
     PanelLines panel;                 ///< the panel's lines
@@ -142,6 +150,9 @@ private:
     std::vector<GameRow> rows_;
 };
 
+/// The game a setup, a view or a request has until one is chosen: the first standard row's.
+inline constexpr GameType default_game = GameType::eight_ball;
+
 /// The standard games (`GameRegistry::standard`), made once.
 const GameRegistry& game_registry();
 
@@ -149,7 +160,7 @@ const GameRegistry& game_registry();
 const GameRow& game_row(GameType type);
 
 /// True when `call` names a ball of `row`'s set into a pocket 1-6, the pocket left out (0)
-/// where calls name the ball on: what a record and a match accept as a call.
+/// where the ball on is called: what a record and a match accept as a call.
 bool call_fits(const GameRow& row, const Call& call);
 
 /// The angle of `row`'s default break, degrees counter-clockwise from +x, from the cue ball of

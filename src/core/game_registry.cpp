@@ -30,6 +30,7 @@ std::vector<GameRow> standard_rows() {
          .rack = RackType::eight_ball,
          .deciding_ball = 8,
          .default_break = pool_break,
+         .groups = true,
          .words = rack_words,
          .panel = {PlayerLine::group, PocketedLine::outside_groups},
          .stats = pool_stats,
@@ -40,6 +41,8 @@ std::vector<GameRow> standard_rows() {
          .rack = RackType::eight_ball,
          .deciding_ball = 8,
          .default_break = pool_break,
+         .calls = CallRule::deciding_ball,
+         .groups = true,
          .words = rack_words,
          .panel = {PlayerLine::group, PocketedLine::outside_groups},
          .stats = pool_stats,
@@ -50,6 +53,8 @@ std::vector<GameRow> standard_rows() {
          .rack = RackType::nine_ball,
          .deciding_ball = 9,
          .default_break = pool_break,
+         .calls = CallRule::nothing,
+         .push_out = true,
          .words = rack_words,
          .panel = {PlayerLine::fouls_in_a_row, PocketedLine::all},
          .stats = pool_stats,
@@ -61,6 +66,7 @@ std::vector<GameRow> standard_rows() {
          .rack = RackType::ten_ball,
          .deciding_ball = 10,
          .default_break = pool_break,
+         .push_out = true,
          .words = rack_words,
          .panel = {PlayerLine::fouls_in_a_row, PocketedLine::all},
          .stats = pool_stats,
@@ -73,7 +79,7 @@ std::vector<GameRow> standard_rows() {
          .balls = BallSet::snooker,
          .break_from = BallInHand::d,
          .default_break = snooker_break,
-         .calls_name_ball_on = true,
+         .calls = CallRule::ball_on,
          .words = frame_words,
          .scoring = Scoring::points,
          .panel = {PlayerLine::highest_break, PocketedLine::none},
@@ -148,7 +154,7 @@ std::optional<GameType> parse_game_type(const std::string& name) {
 
 bool call_fits(const GameRow& row, const Call& call) {
     return call.ball >= 1 && call.ball <= last_ball(row.balls) &&
-           call.pocket >= (row.calls_name_ball_on ? 0 : 1) && call.pocket <= 6;
+           call.pocket >= (row.calls == CallRule::ball_on ? 0 : 1) && call.pocket <= 6;
 }
 
 double break_aim_deg(const GameRow& row, const std::vector<Ball>& balls, double ball_radius) {
