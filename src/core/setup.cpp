@@ -44,10 +44,6 @@ std::string shortest(double v) {
 
 } // namespace
 
-bool is_rotation_game(GameType game) {
-    return game == GameType::nine_ball || game == GameType::ten_ball;
-}
-
 TableSize table_played(const GameSetup& setup) {
     return game_row(setup.game).table.value_or(setup.table);
 }

@@ -72,9 +72,9 @@ void App::start_turn() {
 
 void App::warn_of_third_foul() {
     // WPA 9-ball and 10-ball: a player on two fouls must be told before the shot that a third
-    // loses.
+    // loses (only the games with that rule count fouls in a row).
     const Game& g = game();
-    if (is_rotation_game(g.type()) && g.consecutive_fouls(g.shooter()) >= 2)
+    if (g.consecutive_fouls(g.shooter()) >= 2)
         message_ += (message_.empty() ? "" : "; ") + name(g.shooter()) +
                     " is on two fouls: a third in a row loses the game";
 }

@@ -1,5 +1,6 @@
 #include "tui/local_driver.hpp"
 
+#include <termpool/game_registry.hpp>
 #include <termpool/race.hpp>
 #include <termpool/record.hpp>
 
@@ -193,11 +194,11 @@ std::string LocalDriver::game_over_text(const std::string& told) const {
     const PlayerStats figures[2] = {match_.tally().of(1), match_.tally().of(2)};
     const std::string summary = "\n\n" + stats_summary(match_.record().names, figures);
     // Snooker says frames: the next is a frame, a match of them best of N.
-    const bool frames = match_.game().type() == GameType::snooker;
+    const GameRow& row = game_row(match_.game().type());
+    const bool frames = row.scoring == Scoring::points;
     if (!s.is_race())
-        return told + summary +
-               (frames ? "\n\nr  next frame (the loser breaks off)\nn  new frame\nq  quit"
-                       : "\n\nr  rematch (loser breaks)\nn  new game\nq  quit");
+        return told + summary + "\n\nr  " + row.words.rematch + "\nn  " + row.words.new_game +
+               "\nq  quit";
     const std::string race =
         (frames ? "Best of " + std::to_string(best_of_for_race(s.race_to)) + " frames"
                 : "Race to " + std::to_string(s.race_to)) +
@@ -206,7 +207,7 @@ std::string LocalDriver::game_over_text(const std::string& told) const {
     if (const int winner = s.match_winner())
         return told + "\n\n" + match_.name(winner) + " wins the match\n" + race + summary +
                "\n\nr  rematch (loser breaks)\nn  new match\nq  quit";
-    return told + "\n\n" + race + summary + "\n\nEnter  next " + (frames ? "frame (" : "rack (") +
+    return told + "\n\n" + race + summary + "\n\nEnter  next " + row.words.unit + " (" +
            match_.name(match_.next_breaker()) + " breaks)\nq      quit (the match is saved)";
 }
 

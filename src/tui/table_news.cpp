@@ -1,5 +1,7 @@
 #include "tui/table_news.hpp"
 
+#include <cctype>
+#include <termpool/game_registry.hpp>
 #include <termpool/setup.hpp>
 
 #include "tui/messages.hpp"
@@ -49,13 +51,13 @@ std::optional<TableNews> take_action(Match& match, const RecordedAction& action,
 
 std::string breaks_words(const Match& match, int breaker) {
     return match.name(breaker) + " breaks: place the cue ball " +
-           ball_in_hand_words(match.game().type() == GameType::snooker ? BallInHand::d
-                                                                       : BallInHand::kitchen);
+           ball_in_hand_words(game_row(match.game().type()).break_from);
 }
 
 std::string rack_words(const Match& match, int breaker) {
-    return (match.game().type() == GameType::snooker ? "Frame " : "Rack ") +
-           std::to_string(match.rack()) + ": " + breaks_words(match, breaker);
+    std::string unit = game_row(match.game().type()).words.unit;
+    unit[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(unit[0])));
+    return unit + " " + std::to_string(match.rack()) + ": " + breaks_words(match, breaker);
 }
 
 std::string standing_words(const Match& match) {
