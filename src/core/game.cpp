@@ -53,14 +53,23 @@ Game::Game(const GameRow& row, const Table& table, const PhysicsParams& params, 
     referee_->new_rack(state_);
 }
 
+namespace {
+
+// A copy of `referee` (none for a game moved from).
+std::unique_ptr<Referee> copy_of(const std::unique_ptr<Referee>& referee) {
+    return referee ? referee->clone() : nullptr;
+}
+
+} // namespace
+
 Game::Game(const Game& other)
-    : type_(other.type_), state_(other.state_), referee_(other.referee_->clone()) {}
+    : type_(other.type_), state_(other.state_), referee_(copy_of(other.referee_)) {}
 
 Game& Game::operator=(const Game& other) {
     if (this != &other) {
         type_ = other.type_;
         state_ = other.state_;
-        referee_ = other.referee_->clone();
+        referee_ = copy_of(other.referee_);
     }
     return *this;
 }

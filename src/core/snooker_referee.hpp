@@ -6,6 +6,7 @@
 
 namespace termpool {
 
+// Snooker's rules and its frame's score sheet; what a replace-and-replay puts back.
 class SnookerReferee final : public RefereeOf<SnookerReferee> {
 public:
     void new_rack(const GameState& s) override;
