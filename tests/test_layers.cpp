@@ -213,3 +213,28 @@ TEST_CASE("the App has one action path: hall, practice and replay live in their 
          {"local_driver.cpp", "hall_driver.cpp", "replay_driver.cpp", "practice_driver.cpp"})
         CHECK(fs::exists(fs::path("src/tui") / driver));
 }
+
+TEST_CASE("outside the core no code names a game type but through the registry", "[layers]") {
+    // What differs between games is the registry's row (game_registry.hpp) or the referee's
+    // (referee.hpp): adding a game is its referee's file and a row, and no front end, command,
+    // hall or player file has to learn of it. The public headers define the types.
+    static const std::regex named(R"(\bGameType::[a-z]|\bis_rotation_game\b)");
+    int files = 0;
+    for (const char* dir : {"src/tui", "src/cli", "src/hall", "src/player", "src/files"}) {
+        for (const fs::path& file : sources(dir)) {
+            ++files;
+            std::ifstream in(file);
+            int number = 0;
+            for (std::string line; std::getline(in, line);) {
+                ++number;
+                INFO(file.generic_string() << ":" << number << ": " << line);
+                CHECK_FALSE(std::regex_search(line, named));
+            }
+        }
+    }
+    CHECK(files > 100);
+    std::ifstream main_file("src/main.cpp");
+    REQUIRE(main_file);
+    for (std::string line; std::getline(main_file, line);)
+        CHECK_FALSE(std::regex_search(line, named));
+}

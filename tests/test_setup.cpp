@@ -133,11 +133,3 @@ TEST_CASE("a save's friction and name lines keep the save's own wording", "[setu
     CHECK(problem("player1 Ann Lee  ").empty()); // spaces at the end are dropped
     CHECK(problem("player2 A\x1b[2JB").starts_with("3: a player's name must be text"));
 }
-
-TEST_CASE("9-ball and 10-ball are the rotation games", "[setup]") {
-    CHECK(is_rotation_game(GameType::nine_ball));
-    CHECK(is_rotation_game(GameType::ten_ball));
-    CHECK_FALSE(is_rotation_game(GameType::eight_ball));
-    CHECK_FALSE(is_rotation_game(GameType::eight_ball_bar));
-    CHECK_FALSE(is_rotation_game(GameType::snooker));
-}

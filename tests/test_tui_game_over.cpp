@@ -51,7 +51,7 @@ TEST_CASE("game over shows the figures and keeps them for termpool stats", "[tui
     // termpool stats lists both.
     const std::string listing = tmux_session::run("env XDG_STATE_HOME=" + dir.path + " " +
                                                   tmux_session::termpool_binary() + " stats");
-    CHECK(listing.find("8-ball (bar rules)\n") == 0);
+    CHECK(listing.find("8-ball, bar rules\n") == 0);
     CHECK(listing.find("Ann") != std::string::npos);
     CHECK(listing.find("Bob") != std::string::npos);
 }

@@ -33,6 +33,9 @@ inline constexpr NameRow<RackType> rack_type_names[] = {
 };
 static_assert(names_in_order(rack_type_names));
 
+/// The highest ball id a rack of `type` holds: 15 (8-ball), 9, 10, or 21 (snooker's black).
+int rack_last_ball(RackType type);
+
 /// Gap between neighbouring balls in a rack (m): a tight rack, nearly frozen. (A looser rack
 /// spreads far less on the break: with 0.2 mm gaps half as many balls reach a cushion.)
 inline constexpr double rack_gap = 0.00001;

@@ -2,10 +2,13 @@
 /// \file
 /// The referee: 8-ball (WPA rules and bar rules), 9-ball and 10-ball (WPA rules) and snooker
 /// (WPBSA rules, as far as the simulator can judge them) on top of the simulator. A Game holds
-/// the players' state and the balls on the table; `apply` reads the events of a shot and decides
-/// what they mean. Choices the rules owe a player are explicit inputs (`choose`), never guessed.
+/// the balls on the table and whose turn it is, and its game type's referee (referee.hpp, made
+/// by the type's row in game_registry.hpp); `apply` reads the events of a shot and the referee
+/// decides what they mean. Choices the rules owe a player are explicit inputs (`choose`), never
+/// guessed.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <termpool/ball.hpp>
@@ -148,13 +151,13 @@ struct Verdict {
     bool free_ball = false;                     ///< snooker: the next player may take a free ball
 };
 
-/// The rack `type` is played from.
+/// The rack `type` is played from (its row's, see game_registry.hpp).
 RackType game_rack(GameType type);
 
-/// Names as used by `termpool simulate` ("wrong-ball-first", "play-on", ...).
+/// The name of `type` as written in records and options ("8ball", "9ball", ...: its row's).
 const char* game_type_name(GameType type);
-/// Parses a game name ("8ball", "8ball-bar", "9ball", "10ball"; 10-ball also as "ten-ball" or
-/// "10-ball"); nothing for an unknown one.
+/// Parses a game name ("8ball", "8ball-bar", "9ball", "10ball", "snooker"; 10-ball also as
+/// "ten-ball" or "10-ball"); nothing for an unknown one.
 std::optional<GameType> parse_game_type(const std::string& name);
 /// "solids", "stripes" or "open".
 const char* group_name(Group group);
@@ -178,17 +181,73 @@ std::vector<int> group_balls(Group group);
 /// definition; cushions and pocket jaws are not considered). False when `on` is empty.
 bool snookered(const std::vector<Ball>& balls, Vec2 cue, const std::vector<int>& on, double R);
 
-/// One game between players 1 and 2: the referee's state and the balls on the table.
+/// What every game shares, whatever its rules: the table, the balls and whose turn it is. The
+/// Game owns it; its referee (referee.hpp) reads it and moves it on.
+struct GameState {
+    Table table;                                   ///< the table played on
+    PhysicsParams params;                          ///< the physics the shots are simulated with
+    std::vector<Ball> balls;                       ///< pocketed ones are kept, state pocketed
+    RackType rack = RackType::eight_ball;          ///< what a new rack is racked as
+    BallInHand break_from = BallInHand::kitchen;   ///< where the breaker places the cue ball
+    std::uint64_t seed = 1;                        ///< the game's seed; each rack has its own
+    int racks = 0;                                 ///< racks racked so far
+    int shooter = 1;                               ///< the player to shoot (or choose): 1 or 2
+    int breaker = 1;                               ///< the player who broke this rack
+    bool is_break = true;                          ///< the next shot is a break
+    BallInHand ball_in_hand = BallInHand::kitchen; ///< where the shooter may place the cue ball
+    int chooser = 0;                               ///< the player who owes a choice, 0 for none
+    std::vector<Choice> choices;                   ///< the options of that choice
+    int winner = 0;                                ///< 1 or 2 once the game is over
+    WinReason reason = WinReason::none;            ///< why it ended
+
+    /// The other player.
+    static int opponent(int player) { return 3 - player; }
+    /// True when ball `id` is on the table.
+    bool on_table(int id) const;
+    /// `player` wins the game, for `why`.
+    void win(int player, WinReason why) {
+        winner = player;
+        reason = why;
+    }
+    /// Racks the balls anew (from the game's seed and the racks so far) with `new_breaker` to
+    /// break with ball in hand. The referee's own state is its to forget (Referee::rerack).
+    void rerack(int new_breaker);
+    /// Puts ball `id` back on the foot spot, or the nearest free point behind it on the long
+    /// string, or else in front of it (a pool ball spotted after it dropped).
+    void spot_on_foot_string(int id);
+};
+
+/// What a referee has written down besides the balls: the panel shows it, a game set up in the
+/// middle (`Game::from_position`) starts from it, and the match's hash reads it. Each game keeps
+/// the parts it uses; the others stay as they are here.
+struct ScoreSheet {
+    Group player1_group = Group::open; ///< 8-ball: player 1's group (player 2 has the other)
+    bool push_out_allowed = false;     ///< 9-ball, 10-ball: a push-out may be declared now
+    int fouls_in_a_row[2] = {0, 0};    ///< 9-ball, 10-ball: each player's fouls in a row
+    SnookerState frame;                ///< snooker: the frame's points, breaks and ball on
+};
+
+struct GameRow;
+class Referee;
+
+/// One game between players 1 and 2: the balls on the table, whose turn it is, and the referee
+/// of its game type (game_registry.hpp) who judges the shots. A Game is a value: a copy has its
+/// own copy of the referee and its state.
 class Game {
 public:
     /// A new game of `type`: the balls racked (seeded), `breaker` to break with ball in hand
-    /// in the kitchen.
+    /// where the game breaks from.
     Game(GameType type, const Table& table, const PhysicsParams& params, int breaker = 1,
+         std::uint64_t seed = 1);
+    /// A new game of the type of `row`, which need not be one of the standard games (a test's
+    /// own game, say).
+    Game(const GameRow& row, const Table& table, const PhysicsParams& params, int breaker = 1,
          std::uint64_t seed = 1);
 
     /// A game in progress, for analysis: the balls as given, `shooter` to play, `player1_group`
     /// as the groups, `is_break` when the next shot is a break, `push_out_allowed` when it is
-    /// the shot right after a 9-ball or 10-ball break. Ball in hand none.
+    /// the shot right after a 9-ball or 10-ball break. Ball in hand none. A snooker frame is on
+    /// a red while any is on the table, else on the colours in order.
     static Game from_position(GameType type, const Table& table, const PhysicsParams& params,
                               std::vector<Ball> balls, int shooter, Group player1_group,
                               bool is_break, bool push_out_allowed = false);
@@ -200,55 +259,72 @@ public:
                                       const SnookerState& state,
                                       BallInHand ball_in_hand = BallInHand::none);
 
+    Game(const Game& other);
+    Game& operator=(const Game& other);
+    Game(Game&& other) noexcept;
+    Game& operator=(Game&& other) noexcept;
+    ~Game();
+
     /// The game played.
     GameType type() const { return type_; }
+    /// The balls, the turn and the choices: what every game shares.
+    const GameState& state() const { return state_; }
+    /// The referee of the game, for what only it knows.
+    const Referee& referee() const { return *referee_; }
     /// The table played on.
-    const Table& table() const { return table_; }
+    const Table& table() const { return state_.table; }
     /// The physics the shots are simulated with.
-    const PhysicsParams& params() const { return params_; }
+    const PhysicsParams& params() const { return state_.params; }
     /// The balls on the table (pocketed ones are kept with state pocketed).
-    const std::vector<Ball>& balls() const { return balls_; }
+    const std::vector<Ball>& balls() const { return state_.balls; }
     /// The player to shoot (or to choose, see `chooser`): 1 or 2.
-    int shooter() const { return shooter_; }
+    int shooter() const { return state_.shooter; }
     /// The player who broke this rack.
-    int breaker() const { return breaker_; }
+    int breaker() const { return state_.breaker; }
     /// True when the next shot is a break.
-    bool is_break() const { return is_break_; }
-    /// Player 1's group; player 2 has the other one.
-    Group player1_group() const { return player1_group_; }
+    bool is_break() const { return state_.is_break; }
+    /// Where the shooter may place the cue ball before shooting.
+    BallInHand ball_in_hand() const { return state_.ball_in_hand; }
+    /// The player who owes a choice, 0 for none; `choices` lists the options.
+    int chooser() const { return state_.chooser; }
+    /// The options of the choice owed.
+    const std::vector<Choice>& choices() const { return state_.choices; }
+    /// 1 or 2 once the game is over, else 0.
+    int winner() const { return state_.winner; }
+    /// Why the game ended.
+    WinReason win_reason() const { return state_.reason; }
+
+    /// The referee's score sheet: groups, fouls in a row, a frame's points (see ScoreSheet).
+    ScoreSheet score_sheet() const;
+    /// Player 1's group; player 2 has the other one (open in a game without groups).
+    Group player1_group() const { return score_sheet().player1_group; }
     /// The group of `player` (1 or 2).
     Group group_of(int player) const;
-    /// Where the shooter may place the cue ball before shooting.
-    BallInHand ball_in_hand() const { return ball_in_hand_; }
-    /// The player who owes a choice, 0 for none; `choices` lists the options.
-    int chooser() const { return chooser_; }
-    /// The options of the choice owed.
-    const std::vector<Choice>& choices() const { return choices_; }
-    /// 1 or 2 once the game is over, else 0.
-    int winner() const { return winner_; }
-    /// Why the game ended.
-    WinReason win_reason() const { return reason_; }
     /// True when a push-out may be declared on the next shot (9-ball, 10-ball).
-    bool push_out_allowed() const { return push_out_allowed_; }
+    bool push_out_allowed() const { return score_sheet().push_out_allowed; }
     /// `call` as the referee takes it for the next shot: a push-out only where one is allowed.
     ShotCall call_as_taken(ShotCall call) const {
-        call.push_out = call.push_out && push_out_allowed_;
+        call.push_out = call.push_out && push_out_allowed();
         return call;
     }
     /// Consecutive fouls of `player` (the 9-ball and 10-ball three-foul rule).
-    int consecutive_fouls(int player) const { return fouls_in_a_row_[player - 1]; }
+    int consecutive_fouls(int player) const {
+        return score_sheet().fouls_in_a_row[player == 2 ? 1 : 0];
+    }
     /// Balls the shooter may legally hit first now (9-ball, 10-ball: the lowest; 8-ball: the
     /// group, the 8 once the group is cleared; any but the 8 on an open table; snooker: the reds,
     /// any colour after a red, the lowest colour once the reds are gone, any ball with a free
     /// ball).
     std::vector<int> legal_targets() const;
+    /// True when a shot at `ball` must name its pocket (never on a break).
+    bool pocket_must_be_called(int ball) const;
 
     /// Snooker: the score sheet (zeros in other games).
-    const SnookerState& snooker() const { return snooker_; }
+    const SnookerState& snooker() const;
     /// Snooker: the points of `player` (1 or 2).
-    int score_of(int player) const { return snooker_.scores[player == 2 ? 1 : 0]; }
-    /// Snooker: the balls on for the shooter, before any nomination (the reds, every colour
-    /// after a red, or the lowest colour).
+    int score_of(int player) const { return snooker().scores[player == 2 ? 1 : 0]; }
+    /// The balls on for the shooter, before any nomination (snooker: the reds, every colour
+    /// after a red, or the lowest colour; in other games the legal targets).
     std::vector<int> balls_on() const;
     /// Snooker: the ball on that the cue ball rests touching, -1 for none (the shooter must
     /// play away from it; moving it is not a foul).
@@ -258,18 +334,16 @@ public:
     /// Snooker: true when the shooter names the ball on with the shot's `Call.ball`: a colour
     /// after a red, or any ball with a free ball (without one the referee takes the ball hit
     /// first).
-    bool nomination_owed() const {
-        return type_ == GameType::snooker &&
-               (snooker_.ball_on == BallOn::colour || snooker_.free_ball);
-    }
+    bool nomination_owed() const;
     /// Snooker: true when the choice owed follows a foul that left the chooser snookered:
     /// playing on then gives a free ball.
-    bool free_ball_offered() const { return free_ball_offered_; }
+    bool free_ball_offered() const;
     /// Snooker: the points still on the table for the player on now (reds at 8 each with a
     /// black, then the colours).
     int points_remaining() const;
-    /// Snooker: `player` concedes the frame; the opponent wins it. False (nothing changed) in
-    /// another game, once the frame is over, or for a player other than 1 or 2.
+    /// `player` concedes the frame (snooker); the opponent wins it. False (nothing changed) in
+    /// a game that allows no concession, once the game is over, or for a player other than 1
+    /// or 2.
     bool concede(int player);
 
     /// True when the cue ball may be placed at `p` now: inside the ball-in-hand area, on the
@@ -299,71 +373,18 @@ public:
     Verdict play(const Strike& strike, const ShotCall& call, ShotResult* result = nullptr);
 
     /// Turns without progress (no object ball pocketed) after which a stalemate is declared,
-    /// after which each player has three more turns before the rack is re-broken.
+    /// after which each player has three more turns before the rack is re-broken (pool).
     static constexpr int stalemate_warning_turns = 20;
 
 private:
     Game() = default;
-    struct Facts;
-    Verdict judge_eight(const ShotCall& call, const Facts& facts);
-    Verdict judge_nine(const ShotCall& call, const Facts& facts);
-    Verdict judge_snooker(const ShotCall& call, const Facts& facts);
-    std::vector<int> snooker_targets(const ShotCall& call) const;
-    bool snookered_by(int id) const;
-    void respot_colours(std::vector<int> ids);
-    void end_visit();
-    void end_frame(Verdict& v);
-    Verdict judge_ten(const ShotCall& call, const Facts& facts);
-    // What 9-ball and 10-ball share (nine_ball.cpp): the start of judging a shot (the break and
-    // push-out flags move on, fouls are judged and a foul's penalty paid), the fouls of a shot,
-    // a foul's penalty, the choice after a push-out, and the money ball spotted when it went
-    // down.
-    struct RotationStart {
-        bool was_break = false; // the shot was the break
-        bool push_out = false;  // the shot was a push-out the rules allowed
-        bool fouled = false;    // a foul: judged and penalised, the verdict is complete
-    };
-    RotationStart rotation_start(Verdict& v, const ShotCall& shot, const Facts& facts,
-                                 int money_ball);
-    void rotation_fouls(Verdict& v, const Facts& facts, bool was_break, bool push_out) const;
-    void rotation_foul_penalty(Verdict& v, const Facts& facts, int money_ball);
-    void rotation_push_out(Verdict& v, const Facts& facts, int money_ball);
-    void spot_if_down(Verdict& v, const Facts& facts, int id);
-    void rerack(int new_breaker);
-    void spot_ball(int id);
-    void finish_turn(Verdict& verdict, bool progress);
-    int opponent(int player) const { return 3 - player; }
-    bool ball_on_table(int id) const;
+    static Game from_sheet(const GameRow& row, const Table& table, const PhysicsParams& params,
+                           std::vector<Ball> balls, int shooter, bool is_break,
+                           BallInHand ball_in_hand, const ScoreSheet& sheet);
 
     GameType type_ = GameType::eight_ball;
-    Table table_;
-    PhysicsParams params_;
-    std::vector<Ball> balls_;
-    std::uint64_t seed_ = 1;
-    int racks_ = 0;
-    int shooter_ = 1;
-    int breaker_ = 1;
-    bool is_break_ = true;
-    Group player1_group_ = Group::open;
-    BallInHand ball_in_hand_ = BallInHand::kitchen;
-    int chooser_ = 0;
-    std::vector<Choice> choices_;
-    int pusher_ = 0;
-    bool push_out_allowed_ = false;
-    int fouls_in_a_row_[2] = {0, 0};
-    int winner_ = 0;
-    WinReason reason_ = WinReason::none;
-    int turns_without_progress_ = 0;
-    int stalemate_turns_left_ = -1;
-    // Snooker: the score sheet, and what a replace-and-replay puts back.
-    SnookerState snooker_;
-    bool free_ball_offered_ = false; // the chooser is snookered: playing on takes a free ball
-    struct BeforeShot {
-        std::vector<Ball> balls;
-        BallInHand ball_in_hand = BallInHand::none;
-        SnookerState state;
-    };
-    BeforeShot before_shot_;
+    GameState state_;
+    std::unique_ptr<Referee> referee_;
 };
 
 } // namespace termpool

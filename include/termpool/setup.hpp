@@ -27,12 +27,8 @@ struct GameSetup {
     PhysicsParams physics;
 };
 
-/// True for the rotation games, 9-ball and 10-ball: the lowest ball first, the push-out after
-/// the break, three fouls in a row lose, and no groups.
-bool is_rotation_game(GameType game);
-
-/// The table a game of `setup` is played on: its table, but snooker is always played on the
-/// snooker table.
+/// The table a game of `setup` is played on: its table, but a game whose row names a table
+/// (snooker's) is always played on that one.
 TableSize table_played(const GameSetup& setup);
 
 /// The physics a game of `setup` is played with: its physics with the balls of its table

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <termpool/game_registry.hpp>
 #include <termpool/portable_math.hpp>
 #include <termpool/rack.hpp>
 #include <termpool/random.hpp>
@@ -41,11 +42,10 @@ constexpr double shot_min_speed = 1.0;      // m/s
 constexpr double shot_max_speed = 4.0;      // m/s
 constexpr double shot_max_tip_offset = 0.3; // fraction of R, either way
 // A snooker break: from the D, thin off the back red nearest the cue ball (the line of aim
-// 1.6 R off its centre: a cut of 53 degrees), at a firm 7 m/s. Its aim is jittered less than
-// the 8-ball break's: half a degree over two metres would move the line by 19 mm, from a thin
-// hit to a miss or to the side of the pack.
+// break_clip = 1.6 R off its centre: a cut of 53 degrees), at a firm 7 m/s. Its aim is jittered
+// less than the 8-ball break's: half a degree over two metres would move the line by 19 mm, from a
+// thin hit to a miss or to the side of the pack.
 constexpr double snooker_break_speed = 7.0;        // m/s
-constexpr double snooker_break_offset = 1.6;       // the cue ball's line passes this many R off
 constexpr double snooker_break_angle_jitter = 0.1; // degrees either way
 
 struct Options {
@@ -215,29 +215,6 @@ double degrees_of(Vec2 v) {
     return portable::atan2(v.y, v.x) * 180.0 / std::numbers::pi;
 }
 
-/// The aim of a snooker break on `rack`: the red at the back corner of the triangle on the cue
-/// ball's side, taken thin on its outer side.
-double snooker_break_aim_deg(const std::vector<Ball>& rack, double radius) {
-    const Ball& cue = rack.front();
-    const Ball* corner = nullptr;
-    for (const Ball& b : rack) {
-        if (!is_snooker_red(b.id))
-            continue;
-        // Furthest up the table, then nearest the cue ball's side.
-        const auto key = [&](const Ball& r) {
-            return r.position.x - 2 * std::abs(r.position.y - cue.position.y);
-        };
-        if (!corner || key(b) > key(*corner))
-            corner = &b;
-    }
-    // Across the line of aim, on the side away from the pack's centre line (the cue ball's).
-    const Vec2 along = normalized(corner->position - cue.position);
-    Vec2 outward{along.y, -along.x};
-    if (dot(outward, Vec2{0, cue.position.y - corner->position.y}) < 0)
-        outward = -outward;
-    return degrees_of(corner->position + outward * (snooker_break_offset * radius) - cue.position);
-}
-
 /// Seeded 8-ball breaks on the 9 ft table, then random shots on what they leave.
 Part eight_ball_part(const Options& options, Random& rng) {
     const Table table = make_table(TableSize::nine_foot);
@@ -268,11 +245,13 @@ Part eight_ball_part(const Options& options, Random& rng) {
 Part snooker_part(const Options& options, Random& rng) {
     const PhysicsParams params = physics_for_table(TableSize::snooker);
     const Table table = make_table(TableSize::snooker, params.ball_radius);
+    // Snooker's default break-off line: thin off the end red (break_aim_deg).
+    const GameRow& snooker = game_row(*parse_game_type("snooker"));
     Part part;
     std::vector<std::vector<Ball>> layouts;
     for (std::uint64_t seed = 1; seed <= options.breaks; ++seed) {
         const std::vector<Ball> rack = make_rack(table, params, RackType::snooker, seed);
-        const double angle = snooker_break_aim_deg(rack, params.ball_radius) +
+        const double angle = break_aim_deg(snooker, rack, params.ball_radius) +
                              rng.uniform(-snooker_break_angle_jitter, snooker_break_angle_jitter);
         const ShotResult result =
             timed_shot(table, params, rack, Strike{snooker_break_speed, angle, 0, 0}, part.breaks);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <termpool/game_registry.hpp>
 #include <termpool/rack.hpp>
 #include <termpool/rules_names.hpp>
 #include <termpool/snooker_layout.hpp>
@@ -412,7 +413,7 @@ Problem parse_game(const Line& line, Draft& draft) {
         return p;
     const std::optional<GameType> type = parse_game_type(std::string(line.arg(0)));
     // Snooker's referee needs a score sheet a scenario cannot state: it is played in a match.
-    if (!type || *type == GameType::snooker)
+    if (!type || game_row(*type).scoring == Scoring::points)
         return "unknown game " + quoted(line.arg(0)) +
                " (expected 8ball, 8ball-bar, 9ball or 10ball)";
     draft.setup.game = *type;
@@ -619,18 +620,23 @@ bool has_game_context(const Draft& draft) {
 
 /// The largest ball id the referee of `game` knows.
 int last_ball_of(GameType game) {
-    switch (game) {
-    case GameType::eight_ball:
-    case GameType::eight_ball_bar:
-        break;
-    case GameType::nine_ball:
-        return 9;
-    case GameType::ten_ball:
-        return 10;
-    case GameType::snooker:
-        return snooker_black;
-    }
-    return pool_last_id;
+    return rack_last_ball(game_row(game).rack);
+}
+
+/// The titles of the games with a push-out ("9-ball and 10-ball"), or their names as a
+/// directive gives them ("'game 9ball' or 'game 10ball'").
+std::string push_out_games(bool directives) {
+    std::vector<std::string> games;
+    for (const GameRow& row : game_registry().rows())
+        if (row.push_out)
+            games.push_back(directives ? "'game " + std::string(row.name) + "'" : row.title);
+    std::string text;
+    for (std::size_t i = 0; i < games.size(); ++i)
+        text += (i == 0                  ? ""
+                 : i + 1 == games.size() ? (directives ? " or " : " and ")
+                                         : ", ") +
+                games[i];
+    return text;
 }
 
 /// Checks the game directives against each other, the balls and the strike.
@@ -646,23 +652,19 @@ std::optional<ScenarioError> check_game(const Draft& draft, const std::vector<Pl
     if (groups_line && break_line)
         return conflict({"groups " + groups_text(game.player1_group), *groups_line},
                         {"break", *break_line}, "the table is open at the break");
-    if (draft.setup.game == GameType::nine_ball) {
-        // game_line is set: 9-ball is never the default.
-        if (groups_line && game.player1_group != Group::open)
-            return conflict({"groups " + groups_text(game.player1_group), *groups_line}, game_said,
-                            "9-ball has no groups");
-        if (call_line)
-            return conflict({"call", *call_line}, game_said, "9-ball shots are not called");
-    }
-    if (draft.setup.game == GameType::ten_ball && groups_line && game.player1_group != Group::open)
+    const GameRow& row = game_row(draft.setup.game);
+    if (!row.groups && groups_line && game.player1_group != Group::open)
         return conflict({"groups " + groups_text(game.player1_group), *groups_line}, game_said,
-                        "10-ball has no groups");
+                        std::string(row.title) + " has no groups");
+    // game_line is set: a game without calls is never the default.
+    if (row.calls == CallRule::nothing && call_line)
+        return conflict({"call", *call_line}, game_said,
+                        std::string(row.title) + " shots are not called");
     if (const std::optional<int> push_line = line_of(draft, "push-out")) {
-        if (!is_rotation_game(draft.setup.game))
+        if (!row.push_out)
             return game_line ? conflict({"push-out", *push_line}, game_said,
-                                        "the push-out is a 9-ball and 10-ball rule")
-                             : ScenarioError{*push_line, "push-out needs 'game 9ball' or "
-                                                         "'game 10ball'"};
+                                        "the push-out is a " + push_out_games(false) + " rule")
+                             : ScenarioError{*push_line, "push-out needs " + push_out_games(true)};
         if (break_line)
             return conflict({"push-out", *push_line}, {"break", *break_line},
                             "the push-out is the shot after the break");

@@ -8,6 +8,7 @@
 #include <ctime>
 #include <optional>
 #include <string>
+#include <termpool/game_registry.hpp>
 #include <termpool/match.hpp>
 #include <termpool/safe_player.hpp>
 #include <thread>
@@ -33,7 +34,7 @@ struct Options {
     Level levels[2] = {Level::medium, Level::medium};
     bool safe[2] = {false, false}; // the seat is the scripted safe player, not a computer level
     bool level_given[2] = {false, false};
-    GameType game = GameType::eight_ball;
+    GameType game = default_game;
     std::uint64_t seed = 1;
     std::uint64_t jobs = 1;
 };
@@ -111,7 +112,7 @@ std::optional<Options> parse(const std::vector<std::string>& args, std::string& 
         error = "--games (at least 1), --p1 and --p2 are required";
         return std::nullopt;
     }
-    if ((o.safe[0] || o.safe[1]) && o.game != GameType::snooker) {
+    if ((o.safe[0] || o.safe[1]) && game_row(o.game).balls != BallSet::snooker) {
         error = "the safe player plays snooker only (--game snooker)";
         return std::nullopt;
     }
@@ -121,10 +122,8 @@ std::optional<Options> parse(const std::vector<std::string>& args, std::string& 
 
 // The invariants every shot must keep; a message when one is broken.
 std::string check_invariants(const Game& game) {
-    const int last_ball = game.type() == GameType::nine_ball  ? 9
-                          : game.type() == GameType::ten_ball ? 10
-                          : game.type() == GameType::snooker  ? 21
-                                                              : 15;
+    const GameRow& row = game_row(game.type());
+    const int last_ball = rack_last_ball(row.rack);
     const std::size_t count = static_cast<std::size_t>(last_ball) + 1;
     if (game.balls().size() != count)
         return "balls on the table and in pockets do not add up";
@@ -145,7 +144,7 @@ std::string check_invariants(const Game& game) {
     if (game.shooter() != 1 && game.shooter() != 2)
         return "no single shooter";
     // Snooker: while reds remain every colour is on the table (they are re-spotted).
-    if (game.type() == GameType::snooker &&
+    if (row.balls == BallSet::snooker &&
         std::ranges::any_of(game.balls(),
                             [](const Ball& b) {
                                 return b.id >= 1 && b.id <= 15 && b.state != MotionState::pocketed;
@@ -154,14 +153,14 @@ std::string check_invariants(const Game& game) {
             return b.id >= 16 && b.state == MotionState::pocketed;
         }))
         return "a colour is missing while reds remain";
-    // 10-ball: the 10 comes back whenever it drops without winning.
-    if (game.type() == GameType::ten_ball && game.winner() == 0 &&
-        std::ranges::any_of(game.balls(), [](const Ball& b) {
-            return b.id == 10 && b.state == MotionState::pocketed;
+    // 9-ball, 10-ball: the deciding ball comes back whenever it drops without winning.
+    const int money = row.deciding_ball;
+    if (row.push_out && game.winner() == 0 && std::ranges::any_of(game.balls(), [&](const Ball& b) {
+            return b.id == money && b.state == MotionState::pocketed;
         }))
-        return "the 10 is down and the game goes on";
-    if (game.type() == GameType::ten_ball && game.win_reason() == WinReason::nine_pocketed)
-        return "a 10-ball game won by the 9";
+        return "the " + std::to_string(money) + " is down and the game goes on";
+    if (money != 9 && game.win_reason() == WinReason::nine_pocketed)
+        return std::string("a ") + row.title + " game won by the 9";
     return {};
 }
 
@@ -282,7 +281,8 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
         }
         // A snooker nomination without a pocket is a safety on a colour, not a pot tried.
         const bool pot_tried =
-            shot.call.call.ball != 0 && (o.game != GameType::snooker || shot.call.call.pocket != 0);
+            shot.call.call.ball != 0 &&
+            (game_row(o.game).calls != CallRule::ball_on || shot.call.call.pocket != 0);
         if (!p.was_break && pot_tried) {
             ++stats.pot_attempts;
             if (std::ranges::count(p.verdict.pocketed, shot.call.call.ball) &&
@@ -404,7 +404,7 @@ int selfplay_command(const std::vector<std::string>& args) {
                     s.decisions ? s.seconds / s.decisions : 0.0, s.longest_decision,
                     s.seconds > 0 ? s.simulations / s.seconds : 0.0);
     }
-    if (o.game == GameType::snooker)
+    if (game_row(o.game).scoring == Scoring::points)
         for (int p = 0; p < 2; ++p) {
             const SeatFigures& s = per[p];
             std::printf("p%d %-6s frame score %.1f  highest break %d  centuries %d  "

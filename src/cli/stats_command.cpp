@@ -59,7 +59,7 @@ int reset(const std::string& path, const std::string& name) {
 
 std::string stats_table(const StatsStore& store) {
     std::vector<StatsGame> games;
-    for (const GameType game : stats_game_order)
+    for (const GameType game : stats_game_order())
         games.push_back(game);
     games.push_back(std::nullopt); // a version 1 file's totals of all games, last
     std::string text;

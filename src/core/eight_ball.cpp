@@ -1,7 +1,8 @@
 // 8-ball: WPA rules and the bar-rules variant.
 #include <algorithm>
 
-#include "shot_facts.hpp"
+#include "referees.hpp"
+#include "stalemate.hpp"
 
 namespace termpool {
 namespace {
@@ -10,88 +11,189 @@ Group group_of_ball(int id) {
     return id >= 1 && id <= 7 ? Group::solids : id >= 9 && id <= 15 ? Group::stripes : Group::open;
 }
 
-} // namespace
+Group other_group(Group g) {
+    return g == Group::solids ? Group::stripes : Group::solids;
+}
 
-Verdict Game::judge_eight(const ShotCall& shot, const Facts& facts) {
-    Verdict v;
-    const bool bar = type_ == GameType::eight_ball_bar;
-    const int me = shooter_, other = opponent(shooter_);
-    const BallInHand foul_bih = bar ? BallInHand::kitchen : BallInHand::anywhere;
-    auto lose = [&](WinReason why) {
-        winner_ = other;
-        reason_ = why;
-    };
-    auto pass_turn = [&](BallInHand bih) {
-        shooter_ = other;
-        ball_in_hand_ = bih;
-    };
+class EightBallReferee final : public RefereeOf<EightBallReferee> {
+public:
+    explicit EightBallReferee(bool bar) : bar_(bar) {}
 
-    if (is_break_) {
-        is_break_ = false;
-        v.fouls = {facts.dropped(0) ? Foul::scratch : Foul::none,
-                   facts.left_table(0) ? Foul::cue_off_table : Foul::none};
-        for (const int id : facts.off_table)
-            if (id != 0)
-                v.fouls.push_back(Foul::off_table);
-        const bool foul = std::ranges::any_of(v.fouls, [](Foul f) { return f != Foul::none; });
-        const bool scratch = facts.dropped(0) || facts.left_table(0);
-        v.legal_break = facts.object_ball_dropped() || facts.balls_to_rail >= 4;
-
-        if (facts.dropped(8) || facts.left_table(8)) {
-            if (bar) {
-                // Bar rules: the 8 on the break wins, unless the cue ball went with it.
-                if (scratch) {
-                    lose(WinReason::eight_on_foul);
-                } else {
-                    winner_ = me;
-                    reason_ = WinReason::eight_on_break;
-                }
-                return v;
-            }
-            if (scratch) {
-                spot_ball(8);
-                v.respotted.push_back(8);
-                pass_turn(BallInHand::kitchen);
-            } else {
-                chooser_ = me;
-                choices_ = {Choice::spot_eight, Choice::re_break};
-            }
-            return v;
+    void new_rack(const GameState&) override {
+        player1_group_ = Group::open;
+        stalemate_ = {};
+    }
+    void set_up(const GameState&, const ScoreSheet& sheet) override {
+        player1_group_ = sheet.player1_group;
+        stalemate_ = {};
+    }
+    std::vector<int> legal_targets(const GameState& s) const override;
+    bool pocket_must_be_called(const GameState&, int ball) const override {
+        return !bar_ || ball == 8; // bar rules call only the 8
+    }
+    void before_shot(const GameState& s) override {
+        const Group group = group_of(s.shooter);
+        group_cleared_ =
+            group != Group::open &&
+            std::ranges::none_of(group_balls(group), [&](int id) { return s.on_table(id); });
+    }
+    Verdict judge(GameState& s, const ShotCall& call, const ShotFacts& facts) override {
+        Verdict v = judge_shot(s, call, facts);
+        if (stalemate_.after_turn(s, facts.object_ball_dropped())) {
+            rerack(s, s.breaker);
+            v.stalemate_rerack = true;
         }
-        if (foul) {
-            pass_turn(BallInHand::kitchen);
-            return v;
-        }
-        if (!v.legal_break) {
-            shooter_ = other;
-            chooser_ = other;
-            choices_ = {Choice::play_on, Choice::re_rack, Choice::re_break};
-            return v;
-        }
-        if (!facts.object_ball_dropped()) {
-            pass_turn(BallInHand::none);
-            return v;
-        }
-        if (bar) {
-            // The groups that fell on the break decide; both fell: the breaker chooses.
-            bool solid = false, stripe = false;
-            for (const int id : facts.pocketed) {
-                solid = solid || group_of_ball(id) == Group::solids;
-                stripe = stripe || group_of_ball(id) == Group::stripes;
-            }
-            if (solid && stripe) {
-                chooser_ = me;
-                choices_ = {Choice::take_solids, Choice::take_stripes};
-            } else {
-                const Group g = solid ? Group::solids : Group::stripes;
-                player1_group_ =
-                    me == 1 ? g : (g == Group::solids ? Group::stripes : Group::solids);
-                v.groups_assigned = true;
-            }
-        }
-        return v; // the breaker shoots again
+        return v;
+    }
+    void choose(GameState& s, int who, Choice choice) override;
+    ScoreSheet score_sheet(const GameState&) const override {
+        ScoreSheet sheet;
+        sheet.player1_group = player1_group_;
+        return sheet;
     }
 
+private:
+    Group group_of(int player) const {
+        if (player1_group_ == Group::open || player == 1)
+            return player1_group_;
+        return other_group(player1_group_);
+    }
+    // `player` takes group `g`, the opponent the other.
+    void assign(int player, Group g) { player1_group_ = player == 1 ? g : other_group(g); }
+    Verdict judge_shot(GameState& s, const ShotCall& call, const ShotFacts& facts);
+    Verdict judge_break(GameState& s, const ShotFacts& facts);
+
+    bool bar_ = false;
+    Group player1_group_ = Group::open;
+    bool group_cleared_ = false; // the shooter's group was all down before the shot
+    Stalemate stalemate_;
+};
+
+std::vector<int> EightBallReferee::legal_targets(const GameState& s) const {
+    std::vector<int> on_table;
+    for (const Ball& b : s.balls)
+        if (b.id != 0 && b.state != MotionState::pocketed)
+            on_table.push_back(b.id);
+    std::ranges::sort(on_table);
+    if (on_table.empty())
+        return on_table;
+    const Group group = group_of(s.shooter);
+    std::vector<int> targets;
+    for (const int id : on_table) {
+        const bool own =
+            group == Group::open ? id != 8 : std::ranges::count(group_balls(group), id) > 0;
+        if (own)
+            targets.push_back(id);
+    }
+    if (targets.empty() && group != Group::open)
+        targets.push_back(8);
+    if (targets.empty())
+        targets = on_table; // only the 8 left on an open table
+    return targets;
+}
+
+void EightBallReferee::choose(GameState& s, int who, Choice choice) {
+    switch (choice) {
+    case Choice::play_on:
+        s.shooter = who;
+        s.is_break = false;
+        break;
+    case Choice::re_rack:
+        rerack(s, who);
+        break;
+    case Choice::re_break:
+        rerack(s, s.breaker);
+        break;
+    case Choice::spot_eight:
+        s.spot_on_foot_string(8);
+        s.shooter = who;
+        s.is_break = false;
+        break;
+    case Choice::take_solids:
+    case Choice::take_stripes:
+        assign(who, choice == Choice::take_solids ? Group::solids : Group::stripes);
+        s.shooter = who;
+        break;
+    default:
+        break; // never offered
+    }
+}
+
+Verdict EightBallReferee::judge_break(GameState& s, const ShotFacts& facts) {
+    Verdict v;
+    const int me = s.shooter, other = GameState::opponent(s.shooter);
+    auto pass_turn = [&](BallInHand bih) {
+        s.shooter = other;
+        s.ball_in_hand = bih;
+    };
+    s.is_break = false;
+    v.fouls = {facts.dropped(0) ? Foul::scratch : Foul::none,
+               facts.left_table(0) ? Foul::cue_off_table : Foul::none};
+    for (const int id : facts.off_table)
+        if (id != 0)
+            v.fouls.push_back(Foul::off_table);
+    const bool foul = std::ranges::any_of(v.fouls, [](Foul f) { return f != Foul::none; });
+    const bool scratch = facts.dropped(0) || facts.left_table(0);
+    v.legal_break = facts.object_ball_dropped() || facts.balls_to_rail >= 4;
+
+    if (facts.dropped(8) || facts.left_table(8)) {
+        if (bar_) {
+            // Bar rules: the 8 on the break wins, unless the cue ball went with it.
+            s.win(scratch ? other : me,
+                  scratch ? WinReason::eight_on_foul : WinReason::eight_on_break);
+            return v;
+        }
+        if (scratch) {
+            s.spot_on_foot_string(8);
+            v.respotted.push_back(8);
+            pass_turn(BallInHand::kitchen);
+        } else {
+            s.chooser = me;
+            s.choices = {Choice::spot_eight, Choice::re_break};
+        }
+        return v;
+    }
+    if (foul) {
+        pass_turn(BallInHand::kitchen);
+        return v;
+    }
+    if (!v.legal_break) {
+        s.shooter = other;
+        s.chooser = other;
+        s.choices = {Choice::play_on, Choice::re_rack, Choice::re_break};
+        return v;
+    }
+    if (!facts.object_ball_dropped()) {
+        pass_turn(BallInHand::none);
+        return v;
+    }
+    if (bar_) {
+        // The groups that fell on the break decide; both fell: the breaker chooses.
+        bool solid = false, stripe = false;
+        for (const int id : facts.pocketed) {
+            solid = solid || group_of_ball(id) == Group::solids;
+            stripe = stripe || group_of_ball(id) == Group::stripes;
+        }
+        if (solid && stripe) {
+            s.chooser = me;
+            s.choices = {Choice::take_solids, Choice::take_stripes};
+        } else {
+            assign(me, solid ? Group::solids : Group::stripes);
+            v.groups_assigned = true;
+        }
+    }
+    return v; // the breaker shoots again
+}
+
+Verdict EightBallReferee::judge_shot(GameState& s, const ShotCall& shot, const ShotFacts& facts) {
+    if (s.is_break)
+        return judge_break(s, facts);
+    Verdict v;
+    const int me = s.shooter, other = GameState::opponent(s.shooter);
+    auto pass_turn = [&](BallInHand bih) {
+        s.shooter = other;
+        s.ball_in_hand = bih;
+    };
     v.fouls = facts.common_fouls();
     const bool foul = !v.fouls.empty();
     const bool scratch = facts.dropped(0) || facts.left_table(0);
@@ -107,22 +209,20 @@ Verdict Game::judge_eight(const ShotCall& shot, const Facts& facts) {
     if (facts.dropped(8) || facts.left_table(8)) {
         // When several apply, the plainest reason is given: early before foul.
         if (facts.left_table(8))
-            lose(WinReason::eight_off_table);
-        else if (!facts.group_cleared)
-            lose(WinReason::eight_early);
-        else if (foul || (bar && scratch))
-            lose(WinReason::eight_on_foul);
+            s.win(other, WinReason::eight_off_table);
+        else if (!group_cleared_)
+            s.win(other, WinReason::eight_early);
+        else if (foul || (bar_ && scratch))
+            s.win(other, WinReason::eight_on_foul);
         else if (call.safety || call.ball != 8 || call.pocket != facts.pocket_of(8))
-            lose(WinReason::eight_wrong_pocket);
-        else {
-            winner_ = me;
-            reason_ = WinReason::eight_pocketed;
-        }
+            s.win(other, WinReason::eight_wrong_pocket);
+        else
+            s.win(me, WinReason::eight_pocketed);
         return v;
     }
 
     if (foul) {
-        pass_turn(foul_bih);
+        pass_turn(bar_ ? BallInHand::kitchen : BallInHand::anywhere);
         return v;
     }
     if (call.safety) {
@@ -132,15 +232,13 @@ Verdict Game::judge_eight(const ShotCall& shot, const Facts& facts) {
 
     const Group mine = group_of(me);
     bool keeps_turn = false;
-    if (bar) {
+    if (bar_) {
         // Only the 8 is called: any ball of the shooter's group keeps the turn; on an open
         // table the first object ball to drop decides the groups.
         if (mine == Group::open) {
             const auto first = std::ranges::find_if(facts.pocketed, [](int id) { return id != 0; });
             if (first != facts.pocketed.end()) {
-                const Group g = group_of_ball(*first);
-                player1_group_ =
-                    me == 1 ? g : (g == Group::solids ? Group::stripes : Group::solids);
+                assign(me, group_of_ball(*first));
                 v.groups_assigned = true;
             }
         }
@@ -151,8 +249,7 @@ Verdict Game::judge_eight(const ShotCall& shot, const Facts& facts) {
         const bool called_ball_in =
             call.ball > 0 && call.pocket == facts.pocket_of(call.ball) && call.pocket != 0;
         if (called_ball_in && mine == Group::open) {
-            const Group g = group_of_ball(call.ball);
-            player1_group_ = me == 1 ? g : (g == Group::solids ? Group::stripes : Group::solids);
+            assign(me, group_of_ball(call.ball));
             v.groups_assigned = true;
             keeps_turn = true;
         } else if (called_ball_in) {
@@ -162,6 +259,16 @@ Verdict Game::judge_eight(const ShotCall& shot, const Facts& facts) {
     if (!keeps_turn)
         pass_turn(BallInHand::none);
     return v;
+}
+
+} // namespace
+
+std::unique_ptr<Referee> make_eight_ball_referee() {
+    return std::make_unique<EightBallReferee>(false);
+}
+
+std::unique_ptr<Referee> make_bar_eight_ball_referee() {
+    return std::make_unique<EightBallReferee>(true);
 }
 
 } // namespace termpool

@@ -3,7 +3,9 @@
 #include <bit>
 #include <cmath>
 #include <string>
+#include <termpool/game_registry.hpp>
 #include <termpool/match.hpp>
+#include <termpool/referee.hpp>
 #include <termpool/state_digest.hpp>
 
 namespace termpool {
@@ -215,18 +217,9 @@ std::uint64_t Match::state_hash() const {
     d.add(g.consecutive_fouls(2));
     for (const Choice c : g.choices())
         d.add(static_cast<int>(c));
-    if (g.type() == GameType::snooker) {
-        // Only snooker adds these, so that the hashes of pool games stay as they were.
-        const SnookerState& s = g.snooker();
-        for (const int v : {s.scores[0], s.scores[1], s.current_break, s.highest_break[0],
-                            s.highest_break[1], static_cast<int>(s.ball_on)})
-            d.add(v);
-        d.add(s.free_ball);
-        d.add(s.respotted_black);
-        d.add(g.free_ball_offered());
-        d.add(s.misses[0]);
-        d.add(s.misses[1]);
-    }
+    // What else the referee keeps (snooker's frame); pool's referees add nothing more, so that
+    // the hashes of pool games stay as they were.
+    g.referee().add_to_digest(d);
     for (const Ball& b : g.balls()) {
         d.add(b.id);
         d.add(static_cast<int>(b.state));
@@ -276,20 +269,7 @@ int Match::next_breaker() const {
 }
 
 bool Match::calls_pocket(int ball) const {
-    if (game_.is_break())
-        return false;
-    switch (game_.type()) {
-    case GameType::eight_ball:
-        return true;
-    case GameType::eight_ball_bar:
-        return ball == 8;
-    case GameType::nine_ball:
-    case GameType::snooker:
-        return false;
-    case GameType::ten_ball:
-        return true;
-    }
-    return false;
+    return game_.pocket_must_be_called(ball);
 }
 
 MatchError Match::check_player(int player) const {
@@ -349,15 +329,13 @@ std::variant<PlayedShot, MatchError> Match::shoot(int player, const Strike& aske
         return MatchError::not_now;
     if (strike_problem(strike, game_.params()))
         return MatchError::bad_strike;
-    // What the record can say: no call, a safety, or a ball 1-15 into a pocket 1-6; in snooker
-    // a ball 1-21 (the nomination), its pocket 1-6 or none (0).
+    // What the record can say: no call, a safety, or a ball into a pocket 1-6; where a call
+    // names the ball on (snooker's nomination) its pocket may be none (0).
     ShotCall taken = call;
     if (taken.call.safety)
         taken.call.ball = taken.call.pocket = 0;
-    const bool snooker = game_.type() == GameType::snooker;
-    const bool called = taken.call.ball >= 1 && taken.call.ball <= (snooker ? 21 : 15) &&
-                        taken.call.pocket >= (snooker ? 0 : 1) && taken.call.pocket <= 6;
-    if (!called && (taken.call.ball != 0 || taken.call.pocket != 0))
+    if (!call_fits(game_row(game_.type()), taken.call) &&
+        (taken.call.ball != 0 || taken.call.pocket != 0))
         return MatchError::bad_call;
     PlayedShot shot{game_.shooter(), rack_, game_.is_break(), game_.call_as_taken(taken), {}, {}};
     shot.result = simulate_shot(game_.table(), game_.params(), game_.balls(), strike, trajectory);

@@ -160,6 +160,20 @@ void sort_by_id(std::vector<Ball>& balls) {
 
 } // namespace
 
+int rack_last_ball(RackType type) {
+    switch (type) {
+    case RackType::eight_ball:
+        break;
+    case RackType::nine_ball:
+        return 9;
+    case RackType::ten_ball:
+        return 10;
+    case RackType::snooker:
+        return snooker_black;
+    }
+    return 15;
+}
+
 std::vector<Ball> make_rack(const Table& table, const PhysicsParams& params, RackType type,
                             std::optional<std::uint64_t> seed) {
     const std::vector<Vec2> spots = rack_spots(table, 2 * params.ball_radius + rack_gap, type);

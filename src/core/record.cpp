@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <termpool/game_registry.hpp>
 #include <termpool/random.hpp>
 #include <termpool/record.hpp>
 #include <termpool/rules_names.hpp>
@@ -390,11 +391,10 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
         return RecordError{line_number, "truncated: no 'end' line"};
     if (physics && !r.check)
         return RecordError{line_number, "a 'physics' line needs a 'check' line before 'end'"};
-    if (r.setup.game != GameType::snooker)
-        for (const RecordedAction& a : r.actions)
-            if (a.kind == RecordedAction::Kind::shot && a.call.call.ball != 0 &&
-                (a.call.call.ball > 15 || a.call.call.pocket < 1))
-                return RecordError{a.line, "bad call"};
+    for (const RecordedAction& a : r.actions)
+        if (a.kind == RecordedAction::Kind::shot && a.call.call.ball != 0 &&
+            !call_fits(game_row(r.setup.game), a.call.call))
+            return RecordError{a.line, "bad call"};
     return r;
 }
 

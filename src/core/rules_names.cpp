@@ -3,33 +3,6 @@
 
 namespace termpool {
 
-const char* game_type_name(GameType type) {
-    switch (type) {
-    case GameType::eight_ball:
-        return "8ball";
-    case GameType::eight_ball_bar:
-        return "8ball-bar";
-    case GameType::nine_ball:
-        return "9ball";
-    case GameType::snooker:
-        return "snooker";
-    case GameType::ten_ball:
-        return "10ball";
-    }
-    return "?";
-}
-
-std::optional<GameType> parse_game_type(const std::string& name) {
-    for (const GameType t : {GameType::eight_ball, GameType::eight_ball_bar, GameType::nine_ball,
-                             GameType::ten_ball, GameType::snooker})
-        if (name == game_type_name(t))
-            return t;
-    // 10-ball's other spellings; the name written is "10ball", like "9ball".
-    if (name == "ten-ball" || name == "10-ball")
-        return GameType::ten_ball;
-    return std::nullopt;
-}
-
 const char* group_name(Group group) {
     return name_of(group_names, group);
 }

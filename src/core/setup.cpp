@@ -1,5 +1,6 @@
 // The game's setup and the one text form of the cloth model.
 #include <cmath>
+#include <termpool/game_registry.hpp>
 #include <termpool/setup.hpp>
 #include <termpool/text_numbers.hpp>
 
@@ -29,12 +30,8 @@ std::string shortest(double v) {
 
 } // namespace
 
-bool is_rotation_game(GameType game) {
-    return game == GameType::nine_ball || game == GameType::ten_ball;
-}
-
 TableSize table_played(const GameSetup& setup) {
-    return setup.game == GameType::snooker ? TableSize::snooker : setup.table;
+    return game_row(setup.game).table.value_or(setup.table);
 }
 
 PhysicsParams game_physics(const GameSetup& setup) {

@@ -1,29 +1,29 @@
-#include "shot_facts.hpp"
+#include <termpool/shot_facts.hpp>
 
 #include <algorithm>
 
 namespace termpool {
 
-bool Game::Facts::dropped(int id) const {
+bool ShotFacts::dropped(int id) const {
     return std::find(pocketed.begin(), pocketed.end(), id) != pocketed.end();
 }
 
-int Game::Facts::pocket_of(int id) const {
+int ShotFacts::pocket_of(int id) const {
     for (std::size_t i = 0; i < pocketed.size(); ++i)
         if (pocketed[i] == id)
             return pockets[i];
     return 0;
 }
 
-bool Game::Facts::object_ball_dropped() const {
+bool ShotFacts::object_ball_dropped() const {
     return std::any_of(pocketed.begin(), pocketed.end(), [](int id) { return id != 0; });
 }
 
-bool Game::Facts::left_table(int id) const {
+bool ShotFacts::left_table(int id) const {
     return std::find(off_table.begin(), off_table.end(), id) != off_table.end();
 }
 
-void Game::Facts::prefer_legal_first_contact() {
+void ShotFacts::prefer_legal_first_contact() {
     for (const int id : first_contacts) {
         if (std::find(targets.begin(), targets.end(), id) != targets.end()) {
             first_contact = id;
@@ -32,7 +32,7 @@ void Game::Facts::prefer_legal_first_contact() {
     }
 }
 
-std::vector<Foul> Game::Facts::common_fouls() const {
+std::vector<Foul> ShotFacts::common_fouls() const {
     std::vector<Foul> fouls;
     if (dropped(0))
         fouls.push_back(Foul::scratch);
@@ -51,8 +51,8 @@ std::vector<Foul> Game::Facts::common_fouls() const {
     return fouls;
 }
 
-Game::Facts Game::Facts::from(const std::vector<Event>& events) {
-    Facts f;
+ShotFacts ShotFacts::from(const std::vector<Event>& events) {
+    ShotFacts f;
     std::vector<int> railed;
     double first_time = 0;
     for (const Event& e : events) {

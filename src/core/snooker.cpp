@@ -7,7 +7,8 @@
 #include <termpool/snooker_layout.hpp>
 #include <termpool/spots.hpp>
 
-#include "shot_facts.hpp"
+#include "referees.hpp"
+#include "snooker_referee.hpp"
 
 namespace termpool {
 namespace {
@@ -82,154 +83,230 @@ bool snookered(const std::vector<Ball>& balls, Vec2 cue, const std::vector<int>&
     return any;
 }
 
-std::vector<int> Game::balls_on() const {
+std::unique_ptr<Referee> make_snooker_referee() {
+    return std::make_unique<SnookerReferee>();
+}
+
+void SnookerReferee::new_rack(const GameState&) {
+    frame_ = {};
+    free_ball_offered_ = false;
+}
+
+void SnookerReferee::set_up(const GameState&, const ScoreSheet& sheet) {
+    frame_ = sheet.frame;
+    free_ball_offered_ = false;
+}
+
+ScoreSheet SnookerReferee::score_sheet(const GameState&) const {
+    ScoreSheet sheet;
+    sheet.frame = frame_;
+    return sheet;
+}
+
+void SnookerReferee::add_to_digest(StateDigest& d) const {
+    const SnookerState& f = frame_;
+    for (const int v : {f.scores[0], f.scores[1], f.current_break, f.highest_break[0],
+                        f.highest_break[1], static_cast<int>(f.ball_on)})
+        d.add(v);
+    d.add(f.free_ball);
+    d.add(f.respotted_black);
+    d.add(free_ball_offered_);
+    d.add(f.misses[0]);
+    d.add(f.misses[1]);
+}
+
+std::vector<int> SnookerReferee::balls_on(const GameState& s) const {
     std::vector<int> on;
-    switch (snooker_.ball_on) {
+    switch (frame_.ball_on) {
     case BallOn::red:
         for (int id = snooker_first_red; id <= snooker_last_red; ++id)
-            if (ball_on_table(id))
+            if (s.on_table(id))
                 on.push_back(id);
         break;
     case BallOn::colour:
         for (int id = snooker_yellow; id <= snooker_black; ++id)
-            if (ball_on_table(id))
+            if (s.on_table(id))
                 on.push_back(id);
         break;
     case BallOn::in_order:
-        if (const int id = lowest_colour(balls_); id != 0)
+        if (const int id = lowest_colour(s.balls); id != 0)
             on.push_back(id);
         break;
     }
     return on;
 }
 
-std::vector<int> Game::snooker_targets(const ShotCall& call) const {
-    const int called = call.call.safety ? 0 : call.call.ball;
-    if (snooker_.free_ball) {
-        // A nominated free ball must be hit first (or at once with a ball on, which then counts
-        // as hitting it); without a nomination any ball may be the free ball.
-        if (called > 0 && ball_on_table(called))
-            return {called};
-        return legal_targets();
-    }
-    if (snooker_.ball_on == BallOn::colour && is_snooker_colour(called) && ball_on_table(called))
-        return {called};
-    return balls_on();
+std::vector<int> SnookerReferee::legal_targets(const GameState& s) const {
+    if (!frame_.free_ball)
+        return balls_on(s);
+    std::vector<int> on_table;
+    for (const Ball& b : s.balls)
+        if (b.id != 0 && b.state != MotionState::pocketed)
+            on_table.push_back(b.id);
+    std::ranges::sort(on_table);
+    return on_table;
 }
 
-bool Game::snookered_by(int id) const {
+std::vector<int> SnookerReferee::shot_targets(const GameState& s, const ShotCall& call) const {
+    const int called = call.call.safety ? 0 : call.call.ball;
+    if (frame_.free_ball) {
+        // A nominated free ball must be hit first (or at once with a ball on, which then counts
+        // as hitting it); without a nomination any ball may be the free ball.
+        if (called > 0 && s.on_table(called))
+            return {called};
+        return legal_targets(s);
+    }
+    if (frame_.ball_on == BallOn::colour && is_snooker_colour(called) && s.on_table(called))
+        return {called};
+    return balls_on(s);
+}
+
+bool SnookerReferee::pocket_must_be_called(const GameState&, int) const {
+    return false; // the ball on is nominated, never its pocket
+}
+
+bool SnookerReferee::nomination_owed(const GameState&) const {
+    return frame_.ball_on == BallOn::colour || frame_.free_ball;
+}
+
+void SnookerReferee::before_shot(const GameState& s) {
+    before_shot_ = {s.balls, s.ball_in_hand, frame_, touching_ball(s), shooter_snookered(s)};
+}
+
+bool SnookerReferee::snookered_by(const GameState& s, int id) const {
     // The player now on (the turn has passed) is snookered, and would not be without `id`.
-    const Ball* cue = on_table(balls_, 0);
+    const Ball* cue = on_table(s.balls, 0);
     if (!cue)
         return false;
     std::vector<int> on;
-    if (reds_on(balls_) > 0) {
+    if (reds_on(s.balls) > 0) {
         for (int red = snooker_first_red; red <= snooker_last_red; ++red)
-            if (ball_on_table(red))
+            if (s.on_table(red))
                 on.push_back(red);
-    } else if (const int lowest = lowest_colour(balls_); lowest != 0) {
+    } else if (const int lowest = lowest_colour(s.balls); lowest != 0) {
         on.push_back(lowest);
     }
-    const double R = params_.ball_radius;
-    if (!snookered(balls_, cue->position, on, R))
+    const double R = s.params.ball_radius;
+    if (!snookered(s.balls, cue->position, on, R))
         return false;
-    std::vector<Ball> without = balls_;
+    std::vector<Ball> without = s.balls;
     for (Ball& b : without)
         if (b.id == id)
             b.state = MotionState::pocketed;
     return !snookered(without, cue->position, on, R);
 }
 
-int Game::touching_ball() const {
-    const Ball* cue = on_table(balls_, 0);
-    if (type_ != GameType::snooker || !cue)
+int SnookerReferee::touching_ball(const GameState& s) const {
+    const Ball* cue = on_table(s.balls, 0);
+    if (!cue)
         return -1;
-    const double R = params_.ball_radius;
-    for (const int id : balls_on()) {
-        const Ball* b = on_table(balls_, id);
+    const double R = s.params.ball_radius;
+    for (const int id : balls_on(s)) {
+        const Ball* b = on_table(s.balls, id);
         if (b && length(b->position - cue->position) <= 2 * R + touching_gap)
             return id;
     }
     return -1;
 }
 
-bool Game::shooter_snookered() const {
-    const Ball* cue = on_table(balls_, 0);
-    return type_ == GameType::snooker && cue &&
-           snookered(balls_, cue->position, balls_on(), params_.ball_radius);
+bool SnookerReferee::shooter_snookered(const GameState& s) const {
+    const Ball* cue = on_table(s.balls, 0);
+    return cue && snookered(s.balls, cue->position, balls_on(s), s.params.ball_radius);
 }
 
-int Game::points_remaining() const {
-    if (type_ != GameType::snooker)
-        return 0;
+int SnookerReferee::points_remaining(const GameState& s) const {
     int colours = 0;
     for (int id = snooker_yellow; id <= snooker_black; ++id)
-        if (ball_on_table(id))
+        if (s.on_table(id))
             colours += snooker_value(id);
-    const int reds = reds_on(balls_);
+    const int reds = reds_on(s.balls);
     // On a colour after a red the black is still worth taking once more.
-    const int extra = snooker_.ball_on == BallOn::colour ? 7 : 0;
-    return reds > 0 || snooker_.ball_on != BallOn::in_order ? 8 * reds + 27 + extra : colours;
+    const int extra = frame_.ball_on == BallOn::colour ? 7 : 0;
+    return reds > 0 || frame_.ball_on != BallOn::in_order ? 8 * reds + 27 + extra : colours;
 }
 
-bool Game::concede(int player) {
-    if (type_ != GameType::snooker || winner_ != 0 || (player != 1 && player != 2))
-        return false;
-    end_visit();
-    chooser_ = 0;
-    choices_.clear();
+bool SnookerReferee::concede(GameState& s, int player) {
+    end_visit(s);
+    s.chooser = 0;
+    s.choices.clear();
     free_ball_offered_ = false;
-    winner_ = opponent(player);
-    reason_ = WinReason::conceded;
+    s.win(GameState::opponent(player), WinReason::conceded);
     return true;
 }
 
-void Game::end_visit() {
-    int& highest = snooker_.highest_break[shooter_ - 1];
-    highest = std::max(highest, snooker_.current_break);
-    snooker_.current_break = 0;
+void SnookerReferee::choose(GameState& s, int who, Choice choice) {
+    const int offender = GameState::opponent(who);
+    const bool free_ball = free_ball_offered_;
+    free_ball_offered_ = false;
+    switch (choice) {
+    case Choice::play_on:
+        s.shooter = who;
+        s.is_break = false;
+        frame_.free_ball = free_ball;
+        frame_.misses[offender - 1] = 0; // the three-miss count needs the balls replaced
+        break;
+    case Choice::offender_plays:
+        s.shooter = offender;
+        frame_.misses[offender - 1] = 0;
+        break;
+    case Choice::replace_and_replay:
+        // The foul's points stay given; the balls and the ball on go back as they were.
+        s.balls = before_shot_.balls;
+        s.ball_in_hand = before_shot_.ball_in_hand;
+        frame_.ball_on = before_shot_.frame.ball_on;
+        frame_.free_ball = before_shot_.frame.free_ball;
+        s.shooter = offender;
+        break;
+    default:
+        break; // never offered
+    }
 }
 
-void Game::respot_colours(std::vector<int> ids) {
+void SnookerReferee::end_visit(const GameState& s) {
+    int& highest = frame_.highest_break[s.shooter - 1];
+    highest = std::max(highest, frame_.current_break);
+    frame_.current_break = 0;
+}
+
+void SnookerReferee::respot_colours(GameState& s, std::vector<int> ids) const {
     // The highest colour first, so that it gets its own spot when two want the same one.
     std::ranges::sort(ids, std::greater<>());
     for (const int id : ids) {
-        const Vec2 spot = snooker_respot(table_, balls_, id, params_.ball_radius);
-        for (Ball& b : balls_)
+        const Vec2 spot = snooker_respot(s.table, s.balls, id, s.params.ball_radius);
+        for (Ball& b : s.balls)
             if (b.id == id)
                 set_at_rest(b, spot);
     }
 }
 
-void Game::end_frame(Verdict& v) {
-    end_visit();
-    const int a = snooker_.scores[0], b = snooker_.scores[1];
+void SnookerReferee::end_frame(GameState& s, Verdict& v) {
+    end_visit(s);
+    const int a = frame_.scores[0], b = frame_.scores[1];
     if (a != b) {
-        winner_ = a > b ? 1 : 2;
-        reason_ = WinReason::frame_won;
+        s.win(a > b ? 1 : 2, WinReason::frame_won);
         return;
     }
     v.respotted = {snooker_black};
     // Level: the black is re-spotted, lots are drawn for who plays first, from the D.
-    snooker_.respotted_black = true;
-    snooker_.ball_on = BallOn::in_order;
-    snooker_.free_ball = false;
-    respot_colours({snooker_black});
-    Random lots(seed_ ^ 0x6c6f7473ULL); // "lots"
-    shooter_ = 1 + static_cast<int>(lots.below(2));
-    ball_in_hand_ = BallInHand::d;
-    chooser_ = 0;
-    choices_.clear();
+    frame_.respotted_black = true;
+    frame_.ball_on = BallOn::in_order;
+    frame_.free_ball = false;
+    respot_colours(s, {snooker_black});
+    Random lots(s.seed ^ 0x6c6f7473ULL); // "lots"
+    s.shooter = 1 + static_cast<int>(lots.below(2));
+    s.ball_in_hand = BallInHand::d;
+    s.chooser = 0;
+    s.choices.clear();
 }
 
-Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
+Verdict SnookerReferee::judge(GameState& s, const ShotCall& shot, const ShotFacts& facts) {
     Verdict v;
-    const int me = shooter_, other = opponent(shooter_);
-    SnookerState& s = snooker_;
-    const BallOn on = s.ball_on;
-    const bool free = s.free_ball;
-    s.free_ball = false;
-    is_break_ = false;
+    const int me = s.shooter, other = GameState::opponent(s.shooter);
+    SnookerState& f = frame_;
+    const BallOn on = f.ball_on;
+    const bool free = f.free_ball;
+    f.free_ball = false;
+    s.is_break = false;
     const std::vector<Ball>& before = before_shot_.balls;
     auto was_on_table = [&](int id) { return id > 0 && on_table(before, id) != nullptr; };
     const int lowest = lowest_colour(before);
@@ -286,7 +363,7 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
             v.fouls.push_back(Foul::off_table);
         concerned(id);
     }
-    const bool touching_on = facts.touching >= 0;
+    const bool touching_on = before_shot_.touching >= 0;
     if (facts.first_contact < 0) {
         if (!touching_on) // playing away from a touching ball on is deemed to hit it
             v.fouls.push_back(Foul::no_contact);
@@ -324,7 +401,7 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
                                                : down(lowest) || down(free_ball);
     const bool pink_and_black = reds_on(before) == 0 && lowest == snooker_pink;
     if (v.fouls.empty() && free_ball != 0 && !scores && !pink_and_black &&
-        snookered_by(free_ball)) {
+        snookered_by(s, free_ball)) {
         v.fouls.push_back(Foul::free_ball_snooker);
         concerned(free_ball);
     }
@@ -335,36 +412,35 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
         if (on == BallOn::colour && nominated == 0)
             penalty = 7;
         v.penalty = penalty;
-        s.scores[other - 1] += penalty;
-        end_visit();
-        shooter_ = other;
+        f.scores[other - 1] += penalty;
+        end_visit(s);
+        s.shooter = other;
         if (facts.dropped(0) || facts.left_table(0))
-            ball_in_hand_ = BallInHand::d;
+            s.ball_in_hand = BallInHand::d;
         if (last_black) {
-            end_frame(v);
+            end_frame(s, v);
             return v;
         }
         // Colours potted on a foul come back; reds stay down.
-        respot_colours(colours_down);
+        respot_colours(s, colours_down);
         v.respotted = colours_down;
         std::ranges::sort(v.respotted, std::greater<>());
-        s.ball_on = reds_on(balls_) > 0 ? BallOn::red : BallOn::in_order;
+        f.ball_on = reds_on(s.balls) > 0 ? BallOn::red : BallOn::in_order;
         const bool failed_to_hit = std::ranges::count(v.fouls, Foul::no_contact) +
                                        std::ranges::count(v.fouls, Foul::wrong_ball_first) >
                                    0;
-        v.miss = failed_to_hit && !facts.snookered_before && !touching_on;
+        v.miss = failed_to_hit && !before_shot_.snookered && !touching_on;
         // Three misses in a row, the balls replaced each time, lose the frame.
-        s.misses[me - 1] = v.miss ? s.misses[me - 1] + 1 : 0;
-        if (s.misses[me - 1] >= 3) {
-            winner_ = other;
-            reason_ = WinReason::three_misses;
+        f.misses[me - 1] = v.miss ? f.misses[me - 1] + 1 : 0;
+        if (f.misses[me - 1] >= 3) {
+            s.win(other, WinReason::three_misses);
             return v;
         }
-        chooser_ = other;
-        choices_ = {Choice::play_on, Choice::offender_plays};
+        s.chooser = other;
+        s.choices = {Choice::play_on, Choice::offender_plays};
         if (v.miss)
-            choices_.push_back(Choice::replace_and_replay);
-        free_ball_offered_ = ball_in_hand_ == BallInHand::none && shooter_snookered();
+            s.choices.push_back(Choice::replace_and_replay);
+        free_ball_offered_ = s.ball_in_hand == BallInHand::none && shooter_snookered(s);
         v.free_ball = free_ball_offered_;
         return v;
     }
@@ -396,28 +472,28 @@ Verdict Game::judge_snooker(const ShotCall& shot, const Facts& facts) {
     for (const int id : colours_down)
         if (on != BallOn::in_order || (respot_free && id == free_ball))
             respot.push_back(id);
-    respot_colours(respot);
+    respot_colours(s, respot);
     v.respotted = respot;
-    s.misses[me - 1] = 0;
-    s.scores[me - 1] += points;
-    s.current_break += points;
+    f.misses[me - 1] = 0;
+    f.scores[me - 1] += points;
+    f.current_break += points;
     v.points = points;
     if (points == 0) {
-        end_visit();
-        shooter_ = other;
-        s.ball_on = reds_on(balls_) > 0 ? BallOn::red : BallOn::in_order;
+        end_visit(s);
+        s.shooter = other;
+        f.ball_on = reds_on(s.balls) > 0 ? BallOn::red : BallOn::in_order;
         return v;
     }
     switch (on) {
     case BallOn::red:
-        s.ball_on = BallOn::colour;
+        f.ball_on = BallOn::colour;
         break;
     case BallOn::colour:
-        s.ball_on = reds_on(balls_) > 0 ? BallOn::red : BallOn::in_order;
+        f.ball_on = reds_on(s.balls) > 0 ? BallOn::red : BallOn::in_order;
         break;
     case BallOn::in_order:
         if (last_black && std::ranges::count(potted, snooker_black) > 0)
-            end_frame(v);
+            end_frame(s, v);
         break;
     }
     return v;

@@ -1,4 +1,5 @@
 // Player statistics: the tally of a game's shots (definitions in termpool/stats.hpp).
+#include <termpool/game_registry.hpp>
 #include <termpool/match.hpp>
 #include <termpool/stats.hpp>
 
@@ -58,7 +59,7 @@ std::optional<double> pot_success(const PlayerStats& stats) {
 }
 
 StatsKind stats_kind(GameType type) {
-    return type == GameType::snooker ? StatsKind::snooker : StatsKind::pool;
+    return game_row(type).keeps(GameStat::frame_scores) ? StatsKind::snooker : StatsKind::pool;
 }
 
 void StatsTally::on_shot(int shooter, bool was_break, const ShotCall& call, const Verdict& v) {

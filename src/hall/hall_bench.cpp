@@ -21,6 +21,7 @@
 #include <string>
 #include <sys/wait.h>
 #include <termpool/computer.hpp>
+#include <termpool/game_registry.hpp>
 #include <termpool/text_numbers.hpp>
 #include <thread>
 #include <unistd.h>
@@ -237,7 +238,7 @@ TableRun drive_table(const std::string& socket, int index, std::uint64_t seed, i
         }
     }
     // A race long enough to outlast the bench: the table never runs out of racks.
-    players[0].send(Create{GameType::nine_ball, TableSize::nine_foot, max_race_to});
+    players[0].send(Create{*parse_game_type("9ball"), TableSize::nine_foot, max_race_to});
     const auto created = players[0].wait_for(
         [](const ServerMessage& m) { return std::holds_alternative<Created>(m); }, wait_limit);
     if (!created) {

@@ -69,6 +69,7 @@
 #include <string_view>
 #include <termpool/assist.hpp>
 #include <termpool/enum_names.hpp>
+#include <termpool/game_registry.hpp>
 #include <termpool/level.hpp>
 #include <termpool/record.hpp>
 #include <termpool/rules.hpp>
@@ -145,7 +146,7 @@ struct Hello {
 };
 /// `create GAME SIZE RACE ASSIST`.
 struct Create {
-    GameType game = GameType::eight_ball;  ///< the rules
+    GameType game = default_game;          ///< the rules
     TableSize size = TableSize::nine_foot; ///< the table
     int race_to = 1;                       ///< 1 (a single game) to max_race_to
     Assist assist = Assist::standard;      ///< the aiming aid of both seats
@@ -256,7 +257,7 @@ struct LobbyBegin {};
 /// `table N GAME SIZE RACE ASSIST STATE KIND1 NAME1 KIND2 NAME2 SPECTATORS`.
 struct TableView {
     int number = 1;                         ///< 1 to max_table_number
-    GameType game = GameType::eight_ball;   ///< the rules
+    GameType game = default_game;           ///< the rules
     TableSize size = TableSize::nine_foot;  ///< the table
     int race_to = 1;                        ///< 1 to max_race_to
     Assist assist = Assist::standard;       ///< the aiming aid of both seats

@@ -1,6 +1,7 @@
 #include "player/save_summary.hpp"
 
 #include <algorithm>
+#include <termpool/game_registry.hpp>
 
 #include "files/self_command.hpp"
 
@@ -39,9 +40,10 @@ std::string age_words(std::time_t written, std::time_t now) {
 
 std::string game_summary(const Match& game) {
     const GameRecord& r = game.record();
-    const bool snooker = r.setup.game == GameType::snooker;
+    const GameRow& row = game_row(r.setup.game);
+    const bool points = row.scoring == Scoring::points; // a frame's score, a best of N frames
     std::string text = r.names[0] + " v " + r.names[1] + ", " + game_type_name(r.setup.game);
-    if (!(snooker && r.setup.table == TableSize::snooker))
+    if (!(row.table && r.setup.table == *row.table))
         text += std::string(", ") + table_size_name(r.setup.table);
     const MatchState& score = game.score();
     const int winner = score.is_race() ? score.match_winner() : game.game().winner();
@@ -51,11 +53,11 @@ std::string game_summary(const Match& game) {
         return a.kind == RecordedAction::Kind::shot;
     });
     text += ", " + count_of(shots, "shot");
-    if (snooker)
+    if (points)
         text += ", score " + pair_of(game.game().score_of(1), game.game().score_of(2));
     if (score.is_race())
-        text += (snooker ? ", best of " + std::to_string(best_of_for_race(score.race_to))
-                         : ", race to " + std::to_string(score.race_to)) +
+        text += (points ? ", best of " + std::to_string(best_of_for_race(score.race_to))
+                        : ", race to " + std::to_string(score.race_to)) +
                 " at " + pair_of(score.racks_won[0], score.racks_won[1]);
     return text;
 }

@@ -1,5 +1,7 @@
 #include "player/stats_figures.hpp"
 
+#include <cctype>
+
 #include <cmath>
 
 namespace termpool {
@@ -166,30 +168,29 @@ bool parse_stats_game_key(std::string_view key, StatsGame& game) {
         game.reset();
         return true;
     }
-    for (const GameType type : stats_game_order)
-        if (key == game_type_name(type)) {
-            game = type;
-            return true;
-        }
-    return false;
+    // The name the registry writes, not another spelling: the file is written by the program.
+    const GameRow* row = game_registry().find(key);
+    if (row == nullptr || key != row->name)
+        return false;
+    game = row->type;
+    return true;
+}
+
+std::vector<GameType> stats_game_order() {
+    std::vector<GameType> order;
+    for (const GameRow& row : game_registry().rows())
+        order.push_back(row.type);
+    return order;
 }
 
 std::string stats_game_title(StatsGame game) {
     if (!game)
         return "All games before statistics were kept per game (racks and frames together)";
-    switch (*game) {
-    case GameType::eight_ball:
-        return "8-ball";
-    case GameType::eight_ball_bar:
-        return "8-ball (bar rules)";
-    case GameType::nine_ball:
-        return "9-ball";
-    case GameType::ten_ball:
-        return "10-ball";
-    case GameType::snooker:
-        return "Snooker";
-    }
-    return "?";
+    // The registry's title, as a heading: "Snooker".
+    std::string title = game_row(*game).title;
+    if (!title.empty())
+        title[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(title[0])));
+    return title;
 }
 
 const StatsFigures& stats_figures(StatsKind kind) {

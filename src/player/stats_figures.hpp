@@ -7,15 +7,15 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <termpool/game_registry.hpp>
 #include <termpool/rules.hpp>
 #include <termpool/stats.hpp>
+#include <vector>
 
 namespace termpool {
 
-/// The game types in the order `termpool stats` and the file list them.
-inline constexpr GameType stats_game_order[] = {GameType::eight_ball, GameType::eight_ball_bar,
-                                                GameType::nine_ball, GameType::ten_ball,
-                                                GameType::snooker};
+/// The game types in the order `termpool stats` and the file list them: the registry's.
+std::vector<GameType> stats_game_order();
 
 /// What a set of totals covers: one game type, or nothing for the totals of a version 1 file,
 /// which added all game types together ("mixed").

@@ -81,7 +81,7 @@ std::string format_stats(const StatsStore& store) {
     std::string text = header() + "\n# player GAME COUNTS NAME; the counts of each game:\n";
     for (const StatsKind kind : {StatsKind::pool, StatsKind::snooker}) {
         text += "#";
-        for (const GameType game : stats_game_order)
+        for (const GameType game : stats_game_order())
             if (stats_kind(game) == kind)
                 text += " " + stats_game_key(game);
         if (kind == stats_kind_of(StatsGame{}))

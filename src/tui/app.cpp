@@ -2,6 +2,7 @@
 // that draws and reads.
 #include "tui/app.hpp"
 
+#include <termpool/game_registry.hpp>
 #include <termpool/setup.hpp>
 
 #include "tui/cell_step.hpp"
@@ -90,7 +91,7 @@ const MatchState& App::score() const {
 }
 
 bool App::snooker_play() const {
-    return driver_->referee() && game().type() == GameType::snooker;
+    return driver_->referee() && game_row(game().type()).scoring == Scoring::points;
 }
 
 ScreenFacts App::screen() const {

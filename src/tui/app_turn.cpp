@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <termpool/break_off.hpp>
+#include <termpool/game_registry.hpp>
 #include <termpool/setup.hpp>
 
 #include "tui/app.hpp"
@@ -60,9 +61,9 @@ void App::start_turn() {
 
 void App::warn_of_third_foul() {
     // WPA 9-ball and 10-ball: a player on two fouls must be told before the shot that a third
-    // loses.
+    // loses (only the games with that rule count fouls in a row).
     const Game& g = game();
-    if (is_rotation_game(g.type()) && g.consecutive_fouls(g.shooter()) >= 2)
+    if (g.consecutive_fouls(g.shooter()) >= 2)
         message_ += (message_.empty() ? "" : "; ") + name(g.shooter()) +
                     " is on two fouls: a third in a row loses the game";
 }
@@ -72,7 +73,8 @@ void App::start_aiming() {
     aim().assist = driver_->match().record().assist; // the table's, for both seats
     // A pool break opens at full power on the easiest ball; snooker's break-off soft and thin
     // off the end red of the pack, to come back to baulk (break_off_strike).
-    const bool break_off = game().is_break() && game().type() == GameType::snooker;
+    const bool break_off =
+        game().is_break() && game_row(game().type()).default_break.aim == BreakAim::end_red;
     const std::optional<Strike> opening =
         break_off ? std::optional(break_off_strike(table_, params_, game().balls())) : std::nullopt;
     aim().set_break(game().is_break(), opening ? power_from_speed(opening->speed, true) : 1.0);

@@ -2,6 +2,7 @@
 // boxes (choices, game over, the prompts, the log) and the message line with its verdicts.
 
 #include <algorithm>
+#include <termpool/game_registry.hpp>
 #include <termpool/race.hpp>
 #include <termpool/setup.hpp>
 
@@ -31,11 +32,10 @@ void App::compose(View& v) const {
     v.race_to = score().is_race() && driver_->referee() ? score().race_to : 0;
     v.racks_won[0] = score().racks_won[0];
     v.racks_won[1] = score().racks_won[1];
-    if (is_rotation_game(g.type())) {
-        v.fouls[0] = g.consecutive_fouls(1);
-        v.fouls[1] = g.consecutive_fouls(2);
-    }
-    if (g.type() == GameType::snooker) {
+    // Only the games with the three-foul rule count fouls in a row.
+    v.fouls[0] = g.consecutive_fouls(1);
+    v.fouls[1] = g.consecutive_fouls(2);
+    if (game_row(g.type()).scoring == Scoring::points) {
         const SnookerState& s = g.snooker();
         v.scores[0] = s.scores[0];
         v.scores[1] = s.scores[1];

@@ -91,19 +91,7 @@ Style ball_style(int id, bool colour, BallSet set) {
 }
 
 const char* game_title(GameType type) {
-    switch (type) {
-    case GameType::eight_ball:
-        return "8-ball";
-    case GameType::eight_ball_bar:
-        return "8-ball, bar rules";
-    case GameType::nine_ball:
-        return "9-ball";
-    case GameType::ten_ball:
-        return "10-ball";
-    case GameType::snooker:
-        return "snooker";
-    }
-    return "";
+    return game_row(type).title;
 }
 
 } // namespace termpool::tui

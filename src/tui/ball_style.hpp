@@ -2,15 +2,15 @@
 // How a ball and the game's name look, shared by the table and the panel's legend.
 
 #include <string>
+#include <termpool/game_registry.hpp>
 #include <termpool/rules.hpp>
 
 #include "tui/view.hpp"
 
 namespace termpool::tui {
 
-/// Which set of balls a view holds: pool's (cue ball and 1..15) or snooker's (cue ball, 15 reds
-/// as ids 1..15 and the colours 16..21, see termpool/snooker_layout.hpp).
-enum class BallSet { pool, snooker };
+/// Which set of balls a view holds (the registry's, as tui::BallSet too).
+using termpool::BallSet;
 
 /// The set of `v`'s balls: snooker when any of them, on the table or pocketed, is a snooker
 /// colour (id 16..21), as only a snooker set has those; pool otherwise. Ids 1..15 alone cannot

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <termpool/game_registry.hpp>
 #include <termpool/snooker_layout.hpp>
 #include <vector>
 
@@ -44,29 +45,14 @@ bool on_frame(const Frame& f, int x, int y, int w) {
     return f.on_frame(x, y) && f.on_frame(x + w - 1, y);
 }
 
-// The game's deciding ball, drawn right after the cue ball: 0 when there is none.
-int deciding_ball(GameType game) {
-    switch (game) {
-    case GameType::eight_ball:
-    case GameType::eight_ball_bar:
-        return 8;
-    case GameType::nine_ball:
-        return 9;
-    case GameType::ten_ball:
-        return 10;
-    case GameType::snooker:
-        return 0;
-    }
-    return 0;
-}
-
 // Lower draws first (see the file comment).
 int draw_rank(const Ball& b, const View& v, BallSet set) {
     if (b.id == 0)
         return 0;
     if (set == BallSet::snooker)
         return (is_snooker_colour(b.id) ? 100 : 200) + b.id;
-    return b.id == deciding_ball(v.game) ? 1 : 100 + b.id;
+    // The game's deciding ball (its row's, 0 for none) is drawn right after the cue ball.
+    return b.id == game_row(v.game).deciding_ball ? 1 : 100 + b.id;
 }
 
 Style style_of(const Frame& f, const Ball& b, BallSet set) {

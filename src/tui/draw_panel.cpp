@@ -10,6 +10,7 @@
 #include <cmath>
 #include <iterator>
 #include <string>
+#include <termpool/game_registry.hpp>
 #include <termpool/setup.hpp>
 #include <termpool/snooker_layout.hpp>
 #include <vector>
@@ -133,9 +134,10 @@ Piece player_detail(const Frame& f, int player) {
     const View& v = f.view;
     if (v.practice)
         return {"", {}}; // no referee: no groups, no fouls
-    if (v.game == GameType::snooker)
+    const PlayerLine line = game_row(v.game).panel.player;
+    if (line == PlayerLine::highest_break)
         return {high_break_text(v, player), dim};
-    if (is_rotation_game(v.game)) {
+    if (line == PlayerLine::fouls_in_a_row) {
         const int fouls = std::max(0, v.fouls[player - 1]);
         if (fouls == 0)
             return {"", dim};
@@ -155,10 +157,11 @@ Piece player_detail(const Frame& f, int player) {
 // "pocketed 3 11": in 9-ball and 10-ball all that has dropped, in 8-ball what belongs to nobody's
 // group (all of it on an open table, the 8). Empty when there is none.
 std::string loose_balls(const View& v) {
-    if (v.game == GameType::snooker)
-        return ""; // the colours come back, the reds are counted in the legend
+    const PocketedLine line = game_row(v.game).panel.pocketed;
+    if (line == PocketedLine::none)
+        return ""; // snooker's colours come back, its reds are counted in the legend
     const std::string ids = pocketed(v, [&](int id) {
-        return is_rotation_game(v.game) ||
+        return line == PocketedLine::all ||
                !(in_group(id, v.groups[0]) || in_group(id, v.groups[1]));
     });
     return ids.empty() ? "" : "pocketed" + ids;

@@ -1,6 +1,7 @@
 #include "tui/hall_driver.hpp"
 
 #include <algorithm>
+#include <termpool/game_registry.hpp>
 #include <termpool/race.hpp>
 #include <termpool/text_width.hpp>
 
@@ -240,7 +241,7 @@ std::string HallDriver::game_over_text(const std::string& told) const {
     const MatchState& s = match_.score();
     std::string text = told;
     // Snooker says frames: a match of them best of N, the next one broken off.
-    const bool frames = match_.game().type() == GameType::snooker;
+    const bool frames = game_row(match_.game().type()).scoring == Scoring::points;
     if (s.is_race()) {
         text += "\n\n" +
                 (frames ? "Best of " + std::to_string(best_of_for_race(s.race_to)) + " frames"

@@ -1,6 +1,7 @@
 // The lobby's keys and questions: the name prompt, the new table's form, the seat offer, the
 // marked table and what Enter, 1, 2, w and a click do with it; and the LobbyView drawn.
 #include <algorithm>
+#include <termpool/game_registry.hpp>
 #include <termpool/race.hpp>
 
 #include "player/player_name.hpp"
@@ -39,18 +40,15 @@ void HallSession::handle_create_key(const Input& in) {
         form_ = Form::none;
         send(create_);
     } else if (t == "g") {
-        create_.game = create_.game == GameType::eight_ball       ? GameType::eight_ball_bar
-                       : create_.game == GameType::eight_ball_bar ? GameType::nine_ball
-                       : create_.game == GameType::nine_ball      ? GameType::ten_ball
-                       : create_.game == GameType::ten_ball       ? GameType::snooker
-                                                                  : GameType::eight_ball;
+        const GameRow& next = game_registry().next(create_.game);
+        create_.game = next.type;
         // Snooker is played on the snooker table, and pool on a pool table.
-        if (create_.game == GameType::snooker)
-            create_.size = TableSize::snooker;
+        if (next.table)
+            create_.size = *next.table;
         else if (create_.size == TableSize::snooker)
             create_.size = TableSize::nine_foot;
-    } else if (t == "t" && create_.game == GameType::snooker) {
-        create_.size = TableSize::snooker; // the only table for snooker
+    } else if (t == "t" && game_row(create_.game).table) {
+        create_.size = *game_row(create_.game).table; // the only table for the game
     } else if (t == "t") {
         create_.size = create_.size == TableSize::nine_foot    ? TableSize::seven_foot
                        : create_.size == TableSize::seven_foot ? TableSize::eight_foot
@@ -154,7 +152,7 @@ std::string HallSession::create_form_text() const {
            "\n"
            "t  table     " +
            table_size_name(create_.size) + "\n" +
-           (create_.game == GameType::snooker
+           (game_row(create_.game).scoring == Scoring::points
                 ? "+- best of   " + std::to_string(best_of_for_race(create_.race_to)) +
                       (create_.race_to == 1 ? " (a single frame)" : " frames")
                 : "+- race to   " + std::to_string(create_.race_to) +

@@ -5,6 +5,7 @@
 #include "tui/lobby_view.hpp"
 
 #include <algorithm>
+#include <termpool/game_registry.hpp>
 #include <termpool/race.hpp>
 
 #include "tui/ball_style.hpp"
@@ -50,7 +51,7 @@ std::string table_row(const hall::TableView& t, int seat_w, bool extras) {
     if (extras)
         // A snooker match is best of N frames: "bo5" for a race to 3.
         row += padded(table_size_name(t.size), size_w) +
-               padded(t.game == GameType::snooker && t.race_to > 1
+               padded(game_row(t.game).scoring == Scoring::points && t.race_to > 1
                           ? "bo" + std::to_string(best_of_for_race(t.race_to))
                           : std::to_string(t.race_to),
                       race_w) +

@@ -1,5 +1,6 @@
 #include "tui/local_driver.hpp"
 
+#include <termpool/game_registry.hpp>
 #include <termpool/race.hpp>
 #include <termpool/record.hpp>
 
@@ -192,11 +193,11 @@ std::string LocalDriver::game_over_text(const std::string& told) const {
     const std::string& two = match_.name(2);
     const std::string summary = "\n\n" + stats_summary(match_.record().names, match_.tally());
     // Snooker says frames: the next is a frame, a match of them best of N.
-    const bool frames = match_.game().type() == GameType::snooker;
+    const GameRow& row = game_row(match_.game().type());
+    const bool frames = row.scoring == Scoring::points;
     if (!s.is_race())
-        return told + summary +
-               (frames ? "\n\nr  next frame (the loser breaks off)\nn  new frame\nq  quit"
-                       : "\n\nr  rematch (loser breaks)\nn  new game\nq  quit");
+        return told + summary + "\n\nr  " + row.words.rematch + "\nn  " + row.words.new_game +
+               "\nq  quit";
     const std::string race =
         (frames ? "Best of " + std::to_string(best_of_for_race(s.race_to)) + " frames"
                 : "Race to " + std::to_string(s.race_to)) +
@@ -204,12 +205,10 @@ std::string LocalDriver::game_over_text(const std::string& told) const {
         std::to_string(s.racks_won[1]);
     if (const int winner = s.match_winner())
         return told + "\n\n" + match_.name(winner) + " wins the match\n" + race + summary +
-               (frames ? "\n\nr  rematch (the loser breaks off)"
-                       : "\n\nr  rematch (loser breaks)") +
-               "\nn  new match\nq  quit";
-    return told + "\n\n" + race + summary + "\n\nEnter  next " + (frames ? "frame (" : "rack (") +
-           match_.name(match_.next_breaker()) + (frames ? " breaks off)" : " breaks)") +
-           "\nq      quit (the match is saved)";
+               "\n\nr  " + row.words.match_rematch + "\nn  new match\nq  quit";
+    return told + "\n\n" + race + summary + "\n\nEnter  next " + row.words.unit + " (" +
+           match_.name(match_.next_breaker()) + " " + row.words.breaks +
+           ")\nq      quit (the match is saved)";
 }
 
 } // namespace termpool::tui

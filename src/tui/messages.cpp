@@ -1,5 +1,6 @@
 #include "tui/messages.hpp"
 
+#include <termpool/game_registry.hpp>
 #include <termpool/snooker_layout.hpp>
 #include <termpool/spots.hpp>
 
@@ -61,7 +62,7 @@ std::string choice_words(Choice choice) {
 }
 
 std::string choice_words(Choice choice, GameType game, bool free_ball, BallInHand in_hand) {
-    if (game != GameType::snooker)
+    if (game_row(game).scoring != Scoring::points)
         return choice_words(choice);
     // As a snooker referee asks after a foul; after an in-off whoever plays places the cue ball
     // in the D first.
@@ -152,7 +153,7 @@ std::string placement_problem(const Game& game, Vec2 spot) {
     if (game.ball_in_hand() == BallInHand::d && !in_snooker_d(game.table(), spot))
         return "in the D only";
     if (const int touched = ball_touching(game.balls(), spot, R, 0); touched >= 0)
-        return "it would touch the " + (game.type() == GameType::snooker
+        return "it would touch the " + (game_row(game.type()).balls == BallSet::snooker
                                             ? snooker_ball_name(touched)
                                             : std::to_string(touched));
     return "not allowed there";

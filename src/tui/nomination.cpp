@@ -9,7 +9,7 @@
 namespace termpool::tui {
 
 void propose_nomination(const Game& game, AimState& aim) {
-    if (game.type() != GameType::snooker || !game.nomination_owed()) {
+    if (!game.nomination_owed()) {
         aim.nominated = 0;
         aim.nomination_chosen = false;
         return;

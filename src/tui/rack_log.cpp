@@ -2,6 +2,7 @@
 
 #include "tui/rack_log.hpp"
 
+#include <termpool/game_registry.hpp>
 #include <termpool/match.hpp>
 
 #include "tui/messages.hpp"
@@ -11,7 +12,7 @@ namespace termpool::tui {
 namespace {
 
 std::string ball_words(int id, GameType game) {
-    return game == GameType::snooker ? snooker_ball_name(id) : std::to_string(id);
+    return game_row(game).balls == BallSet::snooker ? snooker_ball_name(id) : std::to_string(id);
 }
 
 // What the shooter declared: a safety, a push-out, or the ball and pocket called.
@@ -23,17 +24,16 @@ std::string call_words(const ShotCall& call, GameType game) {
     if (call.call.ball > 0 && call.call.pocket > 0)
         return ", calls the " + ball_words(call.call.ball, game) + " in the " +
                pocket_name(call.call.pocket);
-    if (call.call.ball > 0 && game == GameType::snooker)
+    if (call.call.ball > 0 && game_row(game).calls == CallRule::ball_on)
         return ", nominates " + ball_words(call.call.ball, game);
     return "";
 }
 
 std::string shot_line(int number, const PlayedShot& shot, const GameRecord& record) {
     const GameType game = record.setup.game;
-    std::string line =
-        std::to_string(number) + ". " + record.names[shot.shooter == 2 ? 1 : 0] +
-        (shot.was_break ? (game == GameType::snooker ? ", break-off" : ", break") : "") +
-        call_words(shot.call, game) + ": ";
+    std::string line = std::to_string(number) + ". " + record.names[shot.shooter == 2 ? 1 : 0] +
+                       (shot.was_break ? std::string(", ") + game_row(game).words.break_shot : "") +
+                       call_words(shot.call, game) + ": ";
     if (shot.verdict.pocketed.empty()) {
         line += "nothing pocketed";
     } else {

@@ -8,7 +8,7 @@
 namespace termpool::tui {
 
 bool snooker_panel(const View& v) {
-    return v.game == GameType::snooker && !v.practice;
+    return game_row(v.game).scoring == Scoring::points && !v.practice;
 }
 
 std::string frames_text(const View& v) {

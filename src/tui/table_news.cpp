@@ -1,5 +1,7 @@
 #include "tui/table_news.hpp"
 
+#include <cctype>
+#include <termpool/game_registry.hpp>
 #include <termpool/setup.hpp>
 
 #include "tui/messages.hpp"
@@ -50,24 +52,26 @@ std::optional<TableNews> take_action(Match& match, const RecordedAction& action,
 }
 
 std::string breaks_words(const Match& match, int breaker, bool here) {
-    // Snooker breaks off, from the D.
-    const bool snooker = match.game().type() == GameType::snooker;
-    const std::string breaks = match.name(breaker) + (snooker ? " breaks off" : " breaks");
-    const std::string area = snooker ? "the D" : "the kitchen";
-    // The player here is told what to do; of another seat it is said what it does.
-    return here ? breaks + ": place the cue ball in " + area : breaks + " from " + area;
+    const GameRow& row = game_row(match.game().type());
+    const std::string breaks = match.name(breaker) + " " + row.words.breaks;
+    // "in the D": the player here is told what to do; of another seat it is said what it
+    // does ("breaks off from the D").
+    const std::string area = ball_in_hand_words(row.break_from);
+    return here ? breaks + ": place the cue ball " + area
+                : breaks + " from" + area.substr(area.find(' '));
 }
 
 std::string rack_words(const Match& match, int breaker, bool here) {
-    return (match.game().type() == GameType::snooker ? "Frame " : "Rack ") +
-           std::to_string(match.rack()) + ": " + breaks_words(match, breaker, here);
+    std::string unit = game_row(match.game().type()).words.unit;
+    unit[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(unit[0])));
+    return unit + " " + std::to_string(match.rack()) + ": " + breaks_words(match, breaker, here);
 }
 
 std::string next_words(const Match& match) {
     const Game& g = match.game();
     const std::string& who = match.name(g.shooter());
     if (g.is_break())
-        return who + (g.type() == GameType::snooker ? " breaks off" : " breaks");
+        return who + " " + game_row(g.type()).words.breaks;
     if (g.ball_in_hand() != BallInHand::none)
         return who + " has ball in hand " + ball_in_hand_words(g.ball_in_hand());
     return who + " to shoot";

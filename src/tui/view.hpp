@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 #include <termpool/ball.hpp>
+#include <termpool/game_registry.hpp>
 #include <termpool/rules.hpp>
 #include <termpool/table.hpp>
 #include <vector>
@@ -149,7 +150,7 @@ struct View {
     const Table* table = nullptr;                    ///< the table geometry
     std::vector<Ball> balls;                         ///< balls to draw (pocketed ones are skipped)
     double ball_radius = 0.028575;                   ///< R
-    GameType game = GameType::eight_ball;            ///< for the panel
+    GameType game = default_game;                    ///< for the panel
     std::string names[2] = {"Player 1", "Player 2"}; ///< the players
     int shooter = 1;                                 ///< whose turn it is (marker in the panel)
     Group groups[2] = {Group::open, Group::open};    ///< each player's group
