@@ -51,7 +51,7 @@ private:
     Strike with_noise(const Strike& planned, const PhysicsParams& params);
     Strike noisy(const Strike& planned, const PhysicsParams& params, Random& rng) const;
     Strike break_strike(const Game& game, const Ball& cue) const;
-    Strike snooker_break_strike(const Game& game, const Ball& cue) const;
+    Strike snooker_break_strike(const Game& game) const;
     Vec2 place_break(const Game& game);
 
     Level level_;

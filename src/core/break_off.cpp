@@ -34,13 +34,33 @@ const Ball* cue_ball(const std::vector<Ball>& balls) {
     return nullptr;
 }
 
-// The red at the end of the back row (the reds furthest up the table) on the cue ball's side.
-const Ball* end_red(const std::vector<Ball>& balls, Vec2 cue, double middle_y, double R) {
+} // namespace
+
+namespace {
+
+// The middle of the pack across the table: the mean of the reds' y.
+double pack_middle_y(const std::vector<Ball>& balls) {
+    double sum = 0;
+    int n = 0;
+    for (const Ball& b : balls)
+        if (is_snooker_red(b.id) && b.state != MotionState::pocketed)
+            sum += b.position.y, ++n;
+    return n > 0 ? sum / n : 0;
+}
+
+} // namespace
+
+const Ball* break_off_red(const std::vector<Ball>& balls, double R) {
+    const Ball* cue = cue_ball(balls);
+    if (!cue)
+        return nullptr;
     double back = -1e300;
     for (const Ball& b : balls)
         if (is_snooker_red(b.id) && b.state != MotionState::pocketed)
             back = std::max(back, b.position.x);
-    const double side = cue.y > middle_y ? 1.0 : -1.0; // the yellow's side on a tie
+    // The back row (within a radius of the red furthest up the table), its end on the cue
+    // ball's side of the pack; the yellow's side (low y) when the cue ball is in the middle.
+    const double side = cue->position.y > pack_middle_y(balls) ? 1.0 : -1.0;
     const Ball* end = nullptr;
     for (const Ball& b : balls)
         if (is_snooker_red(b.id) && b.state != MotionState::pocketed && b.position.x > back - R &&
@@ -49,24 +69,23 @@ const Ball* end_red(const std::vector<Ball>& balls, Vec2 cue, double middle_y, d
     return end;
 }
 
-// The aim that passes `offset` radii outside the red's centre, on the side away from the pack.
-double clip_aim_deg(Vec2 cue, const Ball& red, double middle_y, double offset, double R) {
-    const Vec2 along = normalized(red.position - cue);
+double break_off_aim_deg(const std::vector<Ball>& balls, double R, double offset_radii) {
+    const Ball* cue = cue_ball(balls);
+    const Ball* red = break_off_red(balls, R);
+    if (!cue || !red)
+        return 0;
+    // Outside the red: on the side away from the middle of the pack.
+    const Vec2 along = normalized(red->position - cue->position);
     Vec2 outward{along.y, -along.x};
-    if (dot(outward, Vec2{0, red.position.y - middle_y}) < 0)
+    if (dot(outward, Vec2{0, red->position.y - pack_middle_y(balls)}) < 0)
         outward = -outward;
-    return degrees(red.position + outward * (offset * R) - cue);
+    return degrees(red->position + outward * (offset_radii * R) - cue->position);
 }
-
-} // namespace
 
 Strike break_off_strike(const Table& table, const PhysicsParams& params,
                         const std::vector<Ball>& balls) {
     const double R = params.ball_radius;
-    const double middle_y = table.width / 2;
-    const Ball* cue = cue_ball(balls);
-    const Ball* red = cue ? end_red(balls, cue->position, middle_y, R) : nullptr;
-    if (!cue || !red)
+    if (!break_off_red(balls, R))
         return {break_off_speed, 0, 0, 0};
     const Game start = Game::from_snooker_position(table, params, balls, 1, SnookerState{});
     const double baulk_x = snooker_baulk_x(table);
@@ -78,8 +97,7 @@ Strike break_off_strike(const Table& table, const PhysicsParams& params,
     std::optional<Best> best;
     for (const double offset : clip_offsets)
         for (const double speed : clip_speeds) {
-            const Strike strike{speed, clip_aim_deg(cue->position, *red, middle_y, offset, R), 0,
-                                0};
+            const Strike strike{speed, break_off_aim_deg(balls, R, offset), 0, 0};
             Game trial = start;
             ShotResult result;
             const Verdict verdict = trial.play(strike, {}, &result);
@@ -98,7 +116,7 @@ Strike break_off_strike(const Table& table, const PhysicsParams& params,
         }
     if (best)
         return best->strike;
-    return {break_off_speed, clip_aim_deg(cue->position, *red, middle_y, plain_offset, R), 0, 0};
+    return {break_off_speed, break_off_aim_deg(balls, R, plain_offset), 0, 0};
 }
 
 } // namespace termpool

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <termpool/break_off.hpp>
 #include <termpool/computer.hpp>
+#include <termpool/game_registry.hpp>
 #include <termpool/portable_math.hpp>
 #include <termpool/simulator.hpp>
 #include <termpool/snooker_layout.hpp>
@@ -419,7 +421,7 @@ ComputerShot ComputerPlayer::shot(const Game& game) {
 
 Strike ComputerPlayer::break_strike(const Game& game, const Ball& cue) const {
     if (game.type() == GameType::snooker)
-        return snooker_break_strike(game, cue);
+        return snooker_break_strike(game);
     // Full power at the apex ball (the one nearest the head of the table), full in the face.
     const Ball* apex = nullptr;
     for (const Ball& b : game.balls()) {
@@ -431,26 +433,13 @@ Strike ComputerPlayer::break_strike(const Game& game, const Ball& cue) const {
     return {break_speed, apex ? degrees(apex->position - cue.position) : 0, 0, 0};
 }
 
-Strike ComputerPlayer::snooker_break_strike(const Game& game, const Ball& cue) const {
+Strike ComputerPlayer::snooker_break_strike(const Game& game) const {
     // The break-off of snooker: thin off the back red of the triangle on the cue ball's side
     // (the line of aim 1.6 R outside its centre), firm, so the cue ball comes back to baulk
     // and the pack barely opens.
-    const double R = game.params().ball_radius;
-    const Ball* corner = nullptr;
-    const auto key = [&](const Ball& r) {
-        return r.position.x - 2 * std::abs(r.position.y - cue.position.y);
-    };
-    for (const Ball& b : game.balls())
-        if (is_snooker_red(b.id) && b.state != MotionState::pocketed &&
-            (!corner || key(b) > key(*corner)))
-            corner = &b;
-    if (!corner)
+    if (!break_off_red(game.balls(), game.params().ball_radius))
         return {2.0, 0, 0, 0};
-    const Vec2 along = normalized(corner->position - cue.position);
-    Vec2 outward{along.y, -along.x};
-    if (dot(outward, Vec2{0, cue.position.y - corner->position.y}) < 0)
-        outward = -outward;
-    return {7.0, degrees(corner->position + outward * (1.6 * R) - cue.position), 0, 0};
+    return {7.0, break_off_aim_deg(game.balls(), game.params().ball_radius, break_clip), 0, 0};
 }
 
 Vec2 ComputerPlayer::place_break(const Game& game) {

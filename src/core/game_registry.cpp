@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 #include <termpool/game_registry.hpp>
+
+#include <termpool/break_off.hpp>
 #include <termpool/portable_math.hpp>
 #include <termpool/referee.hpp>
 #include <termpool/snooker_layout.hpp>
@@ -176,22 +178,8 @@ double break_aim_deg(const GameRow& row, const std::vector<Ball>& balls, double 
                 target = &b;
         return target ? degrees_of(target->position - from) : 0;
     }
-    // The red furthest up the table, then nearest the cue ball's side: the back corner of the
-    // pack; the line of aim passes `break_clip` radii outside it, on the cue ball's side.
-    const auto key = [&](const Ball& r) {
-        return r.position.x - 2 * std::abs(r.position.y - from.y);
-    };
-    for (const Ball& b : balls)
-        if (is_snooker_red(b.id) && b.state != MotionState::pocketed &&
-            (!target || key(b) > key(*target)))
-            target = &b;
-    if (!target)
-        return 0;
-    const Vec2 along = normalized(target->position - from);
-    Vec2 outward{along.y, -along.x};
-    if (dot(outward, Vec2{0, from.y - target->position.y}) < 0)
-        outward = -outward;
-    return degrees_of(target->position + outward * (break_clip * ball_radius) - from);
+    // Snooker's break-off: thin off the end red of the pack on the cue ball's side.
+    return break_off_aim_deg(balls, ball_radius, break_clip);
 }
 
 } // namespace termpool

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <termpool/break_off.hpp>
+#include <termpool/game_registry.hpp>
 #include <termpool/portable_math.hpp>
 #include <termpool/safe_player.hpp>
 #include <termpool/snooker_layout.hpp>
@@ -184,25 +186,9 @@ std::vector<std::pair<Strike, ShotCall>> safeties(const Game& game) {
 // The break-off: firm and thin off the end red of the pack on the cue ball's side, so the cue
 // ball comes off the side and top cushions back to baulk.
 Strike break_off(const Game& game) {
-    const Ball* cue = ball_in_play(game.balls(), 0);
-    if (!cue)
+    if (!break_off_red(game.balls(), game.params().ball_radius))
         return {2.0, 0, 0, 0};
-    const double R = game.params().ball_radius;
-    const Ball* corner = nullptr;
-    const auto key = [&](const Ball& r) {
-        return r.position.x - 2 * std::abs(r.position.y - cue->position.y);
-    };
-    for (const Ball& b : game.balls())
-        if (is_snooker_red(b.id) && b.state != MotionState::pocketed &&
-            (!corner || key(b) > key(*corner)))
-            corner = &b;
-    if (!corner)
-        return {2.0, 0, 0, 0};
-    const Vec2 along = normalized(corner->position - cue->position);
-    Vec2 outward{along.y, -along.x};
-    if (dot(outward, Vec2{0, cue->position.y - corner->position.y}) < 0)
-        outward = -outward;
-    return {7.0, degrees(corner->position + outward * (1.6 * R) - cue->position), 0, 0};
+    return {7.0, break_off_aim_deg(game.balls(), game.params().ball_radius, break_clip), 0, 0};
 }
 
 } // namespace
