@@ -248,8 +248,12 @@ std::string connect_or_start(HallClient& client, const std::string& socket_path,
                              const std::string& self_exe, std::string& started_log) {
     started_log.clear();
     std::string error = client.connect(socket_path);
-    if (error.empty() || !nobody_answers(socket_path))
+    if (error.empty())
         return error;
+    // Somebody answers now though the connection was refused: a hall another client started
+    // came up between the two (or the path is no socket: then the same error again).
+    if (!nobody_answers(socket_path))
+        return client.connect(socket_path);
     // The folder the server would refuse is refused here, before anything is started.
     if (std::string problem = prepare_socket_dir(socket_path); !problem.empty())
         return problem;
