@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "cli/stats_command.hpp"
+#include "files/atomic_file.hpp"
 #include "player/stats_file.hpp"
 #include "player/stats_summary.hpp"
 #include "record_helpers.hpp"
@@ -407,6 +408,21 @@ TEST_CASE("snooker: the break ends at a re-spotted black, even for its potter", 
     CHECK(u.frame_score(1) == 14);
 }
 
+TEST_CASE("snooker: the last black potted counts though the frame is lost on points", "[stats]") {
+    StatsTally t(GameType::snooker);
+    t.on_shot(2, false, plain, scores(2, 40, {snooker_black})); // Bob: 40 ahead
+    t.on_shot(2, false, plain, scores(2, 0, {}));
+    reds_and_blacks(t, 1, 2); // Ann: 16
+    Verdict last = scores(1, 7, {snooker_black});
+    last.winner = 2; // Ann pots the last black, 23 to 40: Bob wins the frame
+    t.on_shot(1, false, plain, last);
+    CHECK(t.of(1).highest_break == 23);
+    CHECK(t.of(1).balls_potted == 5);
+    CHECK(t.of(1).pots_made == 5);
+    CHECK(t.frame_score(1) == 23);
+    CHECK(t.of(2).racks_won == 1);
+}
+
 TEST_CASE("snooker: the tally follows the referee's score sheet through a frame", "[stats][game]") {
     // Two computers play a frame; after every action the tally's frame score is the
     // referee's, and at the end its highest breaks are the referee's.
@@ -718,6 +734,17 @@ TEST_CASE("a damaged totals file is reported with its line and kept as .bad", "[
               .find("kept as " + path + ".bad.1") != std::string::npos);
     CHECK(slurp(path + ".bad") == damaged);
     CHECK(slurp(path + ".bad.1") == "garbage\n");
+}
+
+TEST_CASE("a file read is bounded: one too large is refused, not read", "[stats][file]") {
+    const StatsDir dir;
+    const std::string path = dir.path() + "/big";
+    spill(path, std::string(5000, 'x'));
+    std::string error;
+    CHECK(termpool::read_whole_file(path, error, 5000) == std::string(5000, 'x'));
+    CHECK(error.empty());
+    CHECK_FALSE(termpool::read_whole_file(path, error, 4999));
+    CHECK(error == path + ": larger than 4999 bytes");
 }
 
 TEST_CASE("a failed write leaves the old totals whole and no temporary file", "[stats][file]") {

@@ -64,6 +64,7 @@ struct GameWords {
     const char* match_rematch = "rematch (loser breaks)";
     const char* breaks = "breaks";    ///< what the breaker does: "breaks", "breaks off"
     const char* break_shot = "break"; ///< the shot: "break", "break-off"
+    const char* heading = "Rack";     ///< the unit starting a line: "Rack 2", "Frame 2"
 };
 
 /// What the panel shows under each player's name.
@@ -160,7 +161,8 @@ inline constexpr GameType default_game = GameType::eight_ball;
 /// The standard games (`GameRegistry::standard`), made once.
 const GameRegistry& game_registry();
 
-/// The row of `type` among the standard games; the first row (8-ball) for a type that has none.
+/// The row of `type` among the standard games; the first row (8-ball) for a type that has none
+/// (a game only a test's own registry knows, shown with 8-ball's words rather than failing).
 const GameRow& game_row(GameType type);
 
 /// True when `call` names a ball of `row`'s set into a pocket 1-6, the pocket left out (0)

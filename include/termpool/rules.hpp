@@ -259,8 +259,11 @@ public:
                                       const SnookerState& state,
                                       BallInHand ball_in_hand = BallInHand::none);
 
+    /// A copy has a copy of the referee (`Referee::clone`): the two play on apart.
     Game(const Game& other);
+    /// As the copy.
     Game& operator=(const Game& other);
+    /// A moved-from game has no referee: it may only be assigned to or destroyed.
     Game(Game&& other) noexcept;
     Game& operator=(Game&& other) noexcept;
     ~Game();

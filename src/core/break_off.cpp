@@ -34,10 +34,6 @@ const Ball* cue_ball(const std::vector<Ball>& balls) {
     return nullptr;
 }
 
-} // namespace
-
-namespace {
-
 // The middle of the pack across the table: the mean of the reds' y.
 double pack_middle_y(const std::vector<Ball>& balls) {
     double sum = 0;

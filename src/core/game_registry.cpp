@@ -21,10 +21,11 @@ constexpr GameWords frame_words{"frame",
                                 "new frame",
                                 "rematch (the loser breaks off)",
                                 "breaks off",
-                                "break-off"};
+                                "break-off",
+                                "Frame"};
 constexpr DefaultBreak pool_break{12.0, BreakAim::head_ball};
 // Snooker breaks off softly, thin off the end red, so that the cue ball comes back to baulk.
-constexpr DefaultBreak snooker_break{3.0, BreakAim::end_red};
+constexpr DefaultBreak snooker_break{break_off_speed, BreakAim::end_red};
 constexpr unsigned pool_stats = GameStat::break_and_runs | GameStat::longest_run;
 constexpr unsigned snooker_stats =
     GameStat::centuries | GameStat::highest_break | GameStat::frame_scores;

@@ -77,9 +77,13 @@ void StatsTally::on_shot(int shooter, bool was_break, const ShotCall& call, cons
     PlayerStats& me = stats_[shooter - 1];
     const int other = 3 - shooter;
     const bool foul = v.foul != Foul::none;
-    const bool legal = !foul && v.winner != other;
+    // A snooker frame may end on a legal pot that still loses it on points: the pot and its
+    // points are the shooter's all the same.
+    const bool frame_ends_on_pot = kind_ == StatsKind::snooker && v.winner != 0 && !foul;
+    const bool legal = !foul && (v.winner != other || frame_ends_on_pot);
     const int potted = legal ? balls_potted(kind_, v) : 0;
-    const bool keeps_table = v.winner == shooter || (v.winner == 0 && v.next_shooter == shooter);
+    const bool keeps_table = v.winner == shooter || (frame_ends_on_pot && v.points > 0) ||
+                             (v.winner == 0 && v.next_shooter == shooter);
 
     ++me.shots;
     if (foul)

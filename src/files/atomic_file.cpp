@@ -76,7 +76,8 @@ bool write_atomically(const std::string& path, const std::string& text, std::str
     return true;
 }
 
-std::optional<std::string> read_whole_file(const std::string& path, std::string& error) {
+std::optional<std::string> read_whole_file(const std::string& path, std::string& error,
+                                           std::size_t max_bytes) {
     error.clear();
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) {
@@ -97,6 +98,11 @@ std::optional<std::string> read_whole_file(const std::string& path, std::string&
         }
         if (n == 0)
             break;
+        if (text.size() + static_cast<std::size_t>(n) > max_bytes) {
+            error = path + ": larger than " + std::to_string(max_bytes) + " bytes";
+            ::close(fd);
+            return std::nullopt;
+        }
         text.append(buffer, static_cast<std::size_t>(n));
     }
     ::close(fd);

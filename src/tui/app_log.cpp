@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <termpool/game_registry.hpp>
 
 #include "tui/app.hpp"
 #include "tui/help_text.hpp"
@@ -61,7 +62,7 @@ std::string App::log_page_text() const {
     const int page = std::min(log_page_, pages - 1);
     std::string text = !driver_->referee()
                            ? "Practice: no referee, no log"
-                           : (snooker_play() ? "Frame " : "Rack ") +
+                           : std::string(game_row(game().type()).words.heading) + " " +
                                  std::to_string(driver_->match().rack()) + ": the shots";
     if (lines.empty() && driver_->referee())
         text += "\n\nNo shot yet";

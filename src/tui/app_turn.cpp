@@ -77,7 +77,8 @@ void App::start_aiming() {
         game().is_break() && game_row(game().type()).default_break.aim == BreakAim::end_red;
     const std::optional<Strike> opening =
         break_off ? std::optional(break_off_strike(table_, params_, game().balls())) : std::nullopt;
-    aim().set_break(game().is_break(), opening ? power_from_speed(opening->speed, true) : 1.0);
+    const double speed = opening ? opening->speed : game_row(game().type()).default_break.speed;
+    aim().set_break(game().is_break(), power_from_speed(speed, true));
     aim_at_easiest();
     if (opening) {
         aim().aim_deg = opening->angle_deg;

@@ -1,6 +1,5 @@
 #include "tui/table_news.hpp"
 
-#include <cctype>
 #include <termpool/game_registry.hpp>
 #include <termpool/setup.hpp>
 
@@ -54,17 +53,16 @@ std::optional<TableNews> take_action(Match& match, const RecordedAction& action,
 std::string breaks_words(const Match& match, int breaker, bool here) {
     const GameRow& row = game_row(match.game().type());
     const std::string breaks = match.name(breaker) + " " + row.words.breaks;
-    // "in the D": the player here is told what to do; of another seat it is said what it
-    // does ("breaks off from the D").
+    // The player here is told what to do; of another seat it is said what it does ("breaks
+    // off from the D").
     const std::string area = ball_in_hand_words(row.break_from);
-    return here ? breaks + ": place the cue ball " + area
-                : breaks + " from" + area.substr(area.find(' '));
+    const std::string from = area.starts_with("in ") ? "from " + area.substr(3) : area;
+    return here ? breaks + ": place the cue ball " + area : breaks + " " + from;
 }
 
 std::string rack_words(const Match& match, int breaker, bool here) {
-    std::string unit = game_row(match.game().type()).words.unit;
-    unit[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(unit[0])));
-    return unit + " " + std::to_string(match.rack()) + ": " + breaks_words(match, breaker, here);
+    return std::string(game_row(match.game().type()).words.heading) + " " +
+           std::to_string(match.rack()) + ": " + breaks_words(match, breaker, here);
 }
 
 std::string next_words(const Match& match) {
