@@ -53,10 +53,6 @@ double aim_sigma_deg(const PhysicsParams& params) {
     return std::sqrt(std::max(0.0, sigma_aim_deg * sigma_aim_deg - from_tip * from_tip));
 }
 
-double degrees(Vec2 v) {
-    return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
-}
-
 // The referee's opinion of a simulated shot, from the shooter's side.
 double score(const Verdict& v, int shooter) {
     if (v.winner != 0)
@@ -168,9 +164,33 @@ double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue
         const Vec2 turned{want.x * portable::cos(error) - want.y * portable::sin(error),
                           want.x * portable::sin(error) + want.y * portable::cos(error)};
         const Vec2 ghost = object.position - turned * (2 * game.params().ball_radius);
-        return degrees(ghost - cue.position);
+        return aim_degrees(ghost - cue.position);
     }
     return strike.angle_deg;
+}
+
+std::vector<std::pair<Strike, ShotCall>> combination_shots(const Game& game, const Ball& cue,
+                                                           const Ball& first, const Ball& second) {
+    std::vector<std::pair<Strike, ShotCall>> shots;
+    const double R = game.params().ball_radius;
+    for (int pocket = 1; pocket <= 6; ++pocket) {
+        const Vec2 pocket_at = game.table().pockets[pocket - 1].position;
+        const Vec2 to_pocket = normalized(pocket_at - second.position);
+        const Vec2 second_ghost = second.position - to_pocket * (2 * R);
+        const Vec2 travel = normalized(second_ghost - first.position);
+        if (dot(travel, to_pocket) < 0.7)
+            continue;
+        const Vec2 first_ghost = first.position - travel * (2 * R);
+        if (dot(normalized(first_ghost - cue.position), travel) < 0.5 ||
+            path_blocked(game.balls(), cue.position, first_ghost, {0, first.id}, R) ||
+            path_blocked(game.balls(), first.position, second_ghost, {first.id, second.id}, R) ||
+            path_blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
+            continue;
+        for (const double speed : {2.5, 4.0})
+            shots.push_back({{speed, aim_degrees(first_ghost - cue.position), 0, 0},
+                             {{second.id, pocket, false}}});
+    }
+    return shots;
 }
 
 double direction_sigma_deg(Level level) {
@@ -263,7 +283,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             return;
         for (const double speed : at)
             for (const double follow : spins) {
-                Strike strike{speed, degrees(line), 0, follow};
+                Strike strike{speed, aim_degrees(line), 0, follow};
                 // The players who plan position allow for throw and squirt as well; pro stays
                 // above hard by its steadier stroke and its deeper search.
                 if (level_ == Level::pro || level_ == Level::hard)
@@ -272,30 +292,13 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             }
     };
     const Table& table = game.table();
-    // Combinations: the legal ball driven into another, which drops. Only fairly full cuts on
-    // both balls and clear lines, so that the search stays within its time.
+    // Combinations: the legal ball driven into another, which drops.
     auto add_combinations = [&](const Ball& first) {
         for (const Ball& second : game.balls()) {
             if (second.id == 0 || second.id == first.id || second.state == MotionState::pocketed)
                 continue;
-            for (int pocket = 1; pocket <= 6; ++pocket) {
-                const Vec2 pocket_at = table.pockets[pocket - 1].position;
-                const Vec2 to_pocket = normalized(pocket_at - second.position);
-                const Vec2 second_ghost = second.position - to_pocket * (2 * R);
-                const Vec2 travel = normalized(second_ghost - first.position);
-                if (dot(travel, to_pocket) < 0.7)
-                    continue;
-                const Vec2 first_ghost = first.position - travel * (2 * R);
-                if (dot(normalized(first_ghost - cue->position), travel) < 0.5 ||
-                    path_blocked(game.balls(), cue->position, first_ghost, {0, first.id}, R) ||
-                    path_blocked(game.balls(), first.position, second_ghost, {first.id, second.id},
-                                 R) ||
-                    path_blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
-                    continue;
-                for (const double speed : {2.5, 4.0})
-                    candidates.push_back({{speed, degrees(first_ghost - cue->position), 0, 0},
-                                          {{second.id, pocket, false}}});
-            }
+            for (const auto& [strike, call] : combination_shots(game, *cue, first, second))
+                candidates.push_back({strike, call});
         }
     };
     for (const int target : game.legal_targets()) {
@@ -309,11 +312,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
                 continue;
             // One-rail banks: aim at the pocket's mirror image in a rail, moved in by R because
             // the ball's centre turns R from the cushion.
-            const Vec2 mirrors[4] = {{pocket_at.x, 2 * R - pocket_at.y},
-                                     {pocket_at.x, 2 * (table.width - R) - pocket_at.y},
-                                     {2 * R - pocket_at.x, pocket_at.y},
-                                     {2 * (table.length - R) - pocket_at.x, pocket_at.y}};
-            for (const Vec2 mirror : mirrors)
+            for (const Vec2 mirror : rail_mirrors(table, pocket_at, R))
                 if (length(mirror - pocket_at) > 0.2)
                     add(*object, mirror, pocket, {2.5, 4.0});
         }
@@ -330,7 +329,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             for (const double speed : {0.8, 1.6}) {
                 ShotCall call;
                 call.call.safety = true;
-                candidates.push_back({{speed, degrees(aim - cue->position), 0, 0}, call});
+                candidates.push_back({{speed, aim_degrees(aim - cue->position), 0, 0}, call});
             }
         }
     }
@@ -387,7 +386,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         // Nothing pottable: hit the first legal ball softly.
         const Ball* object = ball_in_play(game.balls(), game.legal_targets().front());
         if (object)
-            best.planned = {2.0, degrees(object->position - cue->position), 0, 0};
+            best.planned = {2.0, aim_degrees(object->position - cue->position), 0, 0};
         best.score = 0;
     }
     return best;
@@ -430,7 +429,7 @@ Strike ComputerPlayer::break_strike(const Game& game, const Ball& cue) const {
         if (!apex || b.position.x < apex->position.x)
             apex = &b;
     }
-    return {break_speed, apex ? degrees(apex->position - cue.position) : 0, 0, 0};
+    return {break_speed, apex ? aim_degrees(apex->position - cue.position) : 0, 0, 0};
 }
 
 Strike ComputerPlayer::snooker_break_strike(const Game& game) const {

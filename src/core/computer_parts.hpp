@@ -4,6 +4,8 @@
 
 #include <termpool/level.hpp>
 #include <termpool/rules.hpp>
+#include <utility>
+#include <vector>
 
 namespace termpool {
 
@@ -19,5 +21,11 @@ int samples_per_candidate(Level level);
 // aim when its first contact is not with `object`.
 double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue,
                          const Ball& object, Vec2 aim_point);
+
+// The combinations of `first` driven into `second`, which drops: for each pocket where the cuts
+// on both balls are fairly full and the lines clear (so that the search stays within its
+// time), the aim at `first`'s ghost ball at two paces, called as `second` into that pocket.
+std::vector<std::pair<Strike, ShotCall>> combination_shots(const Game& game, const Ball& cue,
+                                                           const Ball& first, const Ball& second);
 
 } // namespace termpool

@@ -20,10 +20,6 @@
 namespace termpool {
 namespace {
 
-double degrees(Vec2 v) {
-    return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
-}
-
 // Standard normal distribution function.
 double normal_cdf(double x) {
     return 0.5 * std::erfc(-x / std::numbers::sqrt2);
@@ -134,7 +130,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
         std::vector<Stroke> strokes;
         for (const double speed : paces)
             for (const double follow : spins) {
-                Strike strike{speed, degrees(line), 0, follow};
+                Strike strike{speed, aim_degrees(line), 0, follow};
                 strike.angle_deg = corrected_aim_deg(game, strike, *cue, object, aim_point);
                 Game trial = game;
                 const Verdict v = trial.play(strike, call);
@@ -197,18 +193,13 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
                 const Vec2 aim =
                     object.position + normalized(perpendicular(to_ball)) * (offset * R);
                 for (const double speed : {0.8, 1.6, 2.6, 3.6})
-                    sampled.push_back({{speed, degrees(aim - cue->position), 0, 0}, call});
+                    sampled.push_back({{speed, aim_degrees(aim - cue->position), 0, 0}, call});
             }
             return;
         }
-        const Vec2 at = object.position;
-        const Vec2 mirrors[4] = {{at.x, 2 * R - at.y},
-                                 {at.x, 2 * (table.width - R) - at.y},
-                                 {2 * R - at.x, at.y},
-                                 {2 * (table.length - R) - at.x, at.y}};
-        for (const Vec2 mirror : mirrors)
+        for (const Vec2 mirror : rail_mirrors(table, object.position, R))
             for (const double speed : {1.6, 2.6, 3.6})
-                sampled.push_back({{speed, degrees(mirror - cue->position), 0, 0}, call});
+                sampled.push_back({{speed, aim_degrees(mirror - cue->position), 0, 0}, call});
     };
     // A combination is a red into a red: any other pots a ball not on, or hits one first.
     auto add_combinations = [&](const Ball& first) {
@@ -219,24 +210,8 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
             if (!is_snooker_red(second.id) || second.id == first.id ||
                 second.state == MotionState::pocketed)
                 continue;
-            for (int pocket = 1; pocket <= 6; ++pocket) {
-                const Vec2 pocket_at = table.pockets[pocket - 1].position;
-                const Vec2 to_pocket = normalized(pocket_at - second.position);
-                const Vec2 second_ghost = second.position - to_pocket * (2 * R);
-                const Vec2 travel = normalized(second_ghost - first.position);
-                if (dot(travel, to_pocket) < 0.7)
-                    continue;
-                const Vec2 first_ghost = first.position - travel * (2 * R);
-                if (dot(normalized(first_ghost - cue->position), travel) < 0.5 ||
-                    path_blocked(game.balls(), cue->position, first_ghost, {0, first.id}, R) ||
-                    path_blocked(game.balls(), first.position, second_ghost, {first.id, second.id},
-                                 R) ||
-                    path_blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
-                    continue;
-                for (const double speed : {2.5, 4.0})
-                    sampled.push_back({{speed, degrees(first_ghost - cue->position), 0, 0},
-                                       {{second.id, pocket, false}}});
-            }
+            for (const auto& [strike, call] : combination_shots(game, *cue, first, second))
+                sampled.push_back({strike, call});
         }
     };
 
@@ -249,11 +224,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
             add_pot(*object, pocket_at, pocket, speeds);
             if (!plays_banks)
                 continue;
-            const Vec2 mirrors[4] = {{pocket_at.x, 2 * R - pocket_at.y},
-                                     {pocket_at.x, 2 * (table.width - R) - pocket_at.y},
-                                     {2 * R - pocket_at.x, pocket_at.y},
-                                     {2 * (table.length - R) - pocket_at.x, pocket_at.y}};
-            for (const Vec2 mirror : mirrors)
+            for (const Vec2 mirror : rail_mirrors(table, pocket_at, R))
                 if (length(mirror - pocket_at) > 0.2)
                     add_pot(*object, mirror, pocket, {2.5, 4.0});
         }
@@ -304,7 +275,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
     if (best.score == -1e9 && !game.legal_targets().empty()) {
         // Nothing in sight: hit the first legal ball softly.
         if (const Ball* object = ball_in_play(game.balls(), game.legal_targets().front()))
-            best.planned = {2.0, degrees(object->position - cue->position), 0, 0};
+            best.planned = {2.0, aim_degrees(object->position - cue->position), 0, 0};
         best.score = 0;
     }
     return best;

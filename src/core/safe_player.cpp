@@ -18,10 +18,6 @@ namespace {
 constexpr double sigma_aim_deg = 0.125;
 constexpr double sigma_speed = 0.075;
 
-double degrees(Vec2 v) {
-    return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
-}
-
 // `planned` as its stroke plays it: Box-Muller from the given stream, so that a seed replays
 // the same frame.
 Strike with_noise(const Strike& planned, Random& rng) {
@@ -118,7 +114,7 @@ std::vector<Pot> pots(const Game& game, Random& noise) {
                 path_blocked(game.balls(), cue->position, ghost, {0, id}, R) ||
                 path_blocked(game.balls(), object->position, at, {0, id}, R))
                 continue;
-            Pot pot{{std::clamp(1.0 + 0.5 * travel, 1.2, 2.6), degrees(line), 0, 0},
+            Pot pot{{std::clamp(1.0 + 0.5 * travel, 1.2, 2.6), aim_degrees(line), 0, 0},
                     call_for(game, id, pocket),
                     0,
                     snooker_value(id),
@@ -167,18 +163,13 @@ std::vector<std::pair<Strike, ShotCall>> safeties(const Game& game) {
                 const Vec2 aim =
                     object->position + normalized(perpendicular(to_ball)) * (offset * R);
                 for (const double speed : {0.8, 1.4, 2.2, 3.2})
-                    found.push_back({{speed, degrees(aim - cue->position), 0, 0}, call});
+                    found.push_back({{speed, aim_degrees(aim - cue->position), 0, 0}, call});
             }
             continue;
         }
-        const Vec2 at = object->position;
-        const Vec2 mirrors[4] = {{at.x, 2 * R - at.y},
-                                 {at.x, 2 * (t.width - R) - at.y},
-                                 {2 * R - at.x, at.y},
-                                 {2 * (t.length - R) - at.x, at.y}};
-        for (const Vec2 mirror : mirrors)
+        for (const Vec2 mirror : rail_mirrors(t, object->position, R))
             for (const double speed : {1.5, 2.5, 3.5})
-                found.push_back({{speed, degrees(mirror - cue->position), 0, 0}, call});
+                found.push_back({{speed, aim_degrees(mirror - cue->position), 0, 0}, call});
     }
     return found;
 }
@@ -231,7 +222,7 @@ ComputerShot SafePlayer::shot(const Game& game) {
         const std::vector<int> on = targets(game);
         const Ball* object = on.empty() ? nullptr : ball_in_play(game.balls(), on.front());
         if (cue && object)
-            chosen.planned = {2.0, degrees(object->position - cue->position), 0, 0};
+            chosen.planned = {2.0, aim_degrees(object->position - cue->position), 0, 0};
         chosen.call = call_for(game, object ? object->id : 0, 0);
         chosen.strike = with_noise(chosen.planned, rng_);
         return chosen;

@@ -2,6 +2,8 @@
 #include "shot_lines.hpp"
 
 #include <algorithm>
+#include <numbers>
+#include <termpool/portable_math.hpp>
 
 namespace termpool {
 
@@ -25,6 +27,17 @@ bool path_blocked(const std::vector<Ball>& balls, Vec2 a, Vec2 b, std::pair<int,
             return true;
     }
     return false;
+}
+
+double aim_degrees(Vec2 v) {
+    return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
+}
+
+std::array<Vec2, 4> rail_mirrors(const Table& table, Vec2 point, double R) {
+    return {{{point.x, 2 * R - point.y},
+             {point.x, 2 * (table.width - R) - point.y},
+             {2 * R - point.x, point.y},
+             {2 * (table.length - R) - point.x, point.y}}};
 }
 
 } // namespace termpool

@@ -2,7 +2,9 @@
 // Lines of play on a table of balls, as the computer players see them: which ball is where,
 // and whether a ball's path is clear.
 
+#include <array>
 #include <termpool/ball.hpp>
+#include <termpool/table.hpp>
 #include <utility>
 #include <vector>
 
@@ -15,5 +17,12 @@ const Ball* ball_in_play(const std::vector<Ball>& balls, int id);
 // from a to b: a ball rolled along it would touch that ball.
 bool path_blocked(const std::vector<Ball>& balls, Vec2 a, Vec2 b, std::pair<int, int> ignore,
                   double R);
+
+// The direction of `v` as a strike's angle, degrees.
+double aim_degrees(Vec2 v);
+
+// The images of `point` in the four rails, moved in by R because a ball's centre turns R from
+// the cushion: aiming at one plays a ball off that rail towards `point`.
+std::array<Vec2, 4> rail_mirrors(const Table& table, Vec2 point, double R);
 
 } // namespace termpool
