@@ -107,16 +107,10 @@ double next_shot_quality(const Game& game) {
     return weighted_next_quality(game, [](int) { return 1.0; });
 }
 
-// Snooker: how much a ball on is worth taking next. A red opens the way to the black; a
-// colour counts its value.
-double snooker_weight(int id) {
-    return is_snooker_red(id) ? 1.0 : 0.5 + 0.5 * snooker_value(id) / 7.0;
-}
-
 // Snooker: the best next pot for whoever is on now, each ball weighted by what it is worth (a
 // colour after a red: the black before the yellow).
 double snooker_next_quality(const Game& game) {
-    return weighted_next_quality(game, snooker_weight);
+    return weighted_next_quality(game, snooker_ball_weight);
 }
 
 // Snooker, easy: a shot's worth from the shooter's side in points scored and given away, and
@@ -502,15 +496,7 @@ Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
 }
 
 bool ComputerPlayer::concedes(const Game& game) const {
-    if (game.type() != GameType::snooker || game.winner() != 0)
-        return false;
-    const int me = game.chooser() != 0 ? game.chooser() : game.shooter();
-    const int behind = game.score_of(3 - me) - game.score_of(me);
-    const auto reds = std::ranges::count_if(game.balls(), [](const Ball& b) {
-        return is_snooker_red(b.id) && b.state != MotionState::pocketed;
-    });
-    // Snookers could still win it, but with the reds nearly gone the frame is as good as lost.
-    return reds <= 3 && behind > game.points_remaining();
+    return snooker_frame_lost(game);
 }
 
 Choice ComputerPlayer::choose(const Game& game) {

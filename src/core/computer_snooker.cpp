@@ -20,11 +20,6 @@
 namespace termpool {
 namespace {
 
-// Standard normal distribution function.
-double normal_cdf(double x) {
-    return 0.5 * std::erfc(-x / std::numbers::sqrt2);
-}
-
 // What a missed pot costs besides the table it leaves, in the search's units (12 to a point).
 // The two misses simulated are near ones, at the window's edges; a wider miss, or an opponent
 // who plays better than this player's own stroke, leaves more. Without it the computer goes
@@ -148,7 +143,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
             const double below =
                 window_edge(game, stroke.strike, call, object.id, -1, simulations_);
             const double middle = (above - below) / 2, half = (above + below) / 2;
-            const double chance = 2 * normal_cdf(half / sigma) - 1;
+            const double chance = chance_within(half, sigma);
             Strike strike = stroke.strike;
             double made = stroke.made;
             if (middle != 0) {

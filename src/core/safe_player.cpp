@@ -10,6 +10,7 @@
 #include <termpool/snooker_layout.hpp>
 
 #include "shot_lines.hpp"
+#include "snooker_leave.hpp"
 
 namespace termpool {
 namespace {
@@ -68,28 +69,7 @@ double safety_value(const Verdict& v, const Game& after, int me) {
         return -1000.0 - 10.0 * v.penalty;
     if (v.next_shooter == me)
         return 20.0 + 10.0 * v.points;
-    double s = -100.0 * pot_ease(after);
-    if (after.shooter_snookered())
-        s += 40;
-    const Ball* cue = ball_in_play(after.balls(), 0);
-    if (!cue)
-        return s;
-    const Table& t = after.table();
-    double nearest = 1e9;
-    for (const int id : after.balls_on())
-        if (const Ball* b = ball_in_play(after.balls(), id))
-            nearest = std::min(nearest, length(b->position - cue->position));
-    if (nearest < 1e9)
-        s += 15.0 * std::min(1.0, nearest / (0.5 * t.length));
-    const double R = after.params().ball_radius;
-    const double to_cushion = std::min({cue->position.x, t.length - cue->position.x,
-                                        cue->position.y, t.width - cue->position.y}) -
-                              R;
-    if (to_cushion < 2 * R)
-        s += 8;
-    if (cue->position.x < snooker_baulk_x(t))
-        s += 10;
-    return s;
+    return with_leave_worth(-100.0 * pot_ease(after), after, false);
 }
 
 // The pots from the cue ball's place: every ball on into every pocket with clear lines, a cut
@@ -302,14 +282,7 @@ Choice SafePlayer::choose(const Game& game) const {
 }
 
 bool SafePlayer::concedes(const Game& game) const {
-    if (game.type() != GameType::snooker || game.winner() != 0)
-        return false;
-    const int me = game.chooser() != 0 ? game.chooser() : game.shooter();
-    const int behind = game.score_of(3 - me) - game.score_of(me);
-    const auto reds = std::ranges::count_if(game.balls(), [](const Ball& b) {
-        return is_snooker_red(b.id) && b.state != MotionState::pocketed;
-    });
-    return reds <= 3 && behind > game.points_remaining();
+    return snooker_frame_lost(game);
 }
 
 } // namespace termpool
