@@ -163,6 +163,20 @@ double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue
     return strike.angle_deg;
 }
 
+std::vector<PotAim> pot_aims(const Table& table, double R, bool banks) {
+    std::vector<PotAim> aims;
+    for (int pocket = 1; pocket <= 6; ++pocket) {
+        const Vec2 pocket_at = table.pockets[pocket - 1].position;
+        aims.push_back({pocket_at, pocket, false});
+        if (!banks)
+            continue;
+        for (const Vec2 mirror : rail_mirrors(table, pocket_at, R))
+            if (length(mirror - pocket_at) > 0.2)
+                aims.push_back({mirror, pocket, true});
+    }
+    return aims;
+}
+
 std::vector<std::pair<Strike, ShotCall>> combination_shots(const Game& game, const Ball& cue,
                                                            const Ball& first, const Ball& second) {
     std::vector<std::pair<Strike, ShotCall>> shots;
@@ -286,6 +300,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             }
     };
     const Table& table = game.table();
+    const std::vector<double> bank_speeds{2.5, 4.0};
     // Combinations: the legal ball driven into another, which drops.
     auto add_combinations = [&](const Ball& first) {
         for (const Ball& second : game.balls()) {
@@ -299,17 +314,8 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         const Ball* object = ball_in_play(game.balls(), target);
         if (!object)
             continue;
-        for (int pocket = 1; pocket <= 6; ++pocket) {
-            const Vec2 pocket_at = table.pockets[pocket - 1].position;
-            add(*object, pocket_at, pocket, speeds);
-            if (level_ < Level::hard)
-                continue;
-            // One-rail banks: aim at the pocket's mirror image in a rail, moved in by R because
-            // the ball's centre turns R from the cushion.
-            for (const Vec2 mirror : rail_mirrors(table, pocket_at, R))
-                if (length(mirror - pocket_at) > 0.2)
-                    add(*object, mirror, pocket, {2.5, 4.0});
-        }
+        for (const PotAim& aim : pot_aims(table, R, level_ >= Level::hard))
+            add(*object, aim.point, aim.pocket, aim.banked ? bank_speeds : speeds);
         if (level_ >= Level::hard)
             add_combinations(*object);
         if (level_ == Level::easy)

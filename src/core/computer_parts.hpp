@@ -22,6 +22,18 @@ int samples_per_candidate(Level level);
 double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue,
                          const Ball& object, Vec2 aim_point);
 
+// An aim of a pot: the point the object ball is sent at, and the pocket it is meant for.
+struct PotAim {
+    Vec2 point;
+    int pocket = 0;
+    bool banked = false; // off one rail: `point` is the pocket's mirror image in it
+};
+
+// The aims of a pot into each pocket in turn: straight at it, and with `banks` off each rail
+// as well (at the pocket's image in the rail, moved in by R because the ball's centre turns R
+// from the cushion), where that image is not the pocket itself.
+std::vector<PotAim> pot_aims(const Table& table, double R, bool banks);
+
 // The combinations of `first` driven into `second`, which drops: for each pocket where the cuts
 // on both balls are fairly full and the lines clear (so that the search stays within its
 // time), the aim at `first`'s ghost ball at two paces, called as `second` into that pocket.

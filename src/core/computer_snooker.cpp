@@ -84,6 +84,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
     // window of a pot is measured around an aim that pots it without noise.
     const bool plays_banks = level_ >= Level::hard;
     const std::vector<double> speeds{1.0, 1.5, 2.5, 4.0};
+    const std::vector<double> bank_speeds{2.5, 4.0};
     const std::vector<double> spins{-0.45, -0.2, 0.0, 0.2, 0.45};
     const std::size_t windows_per_pot = level_ == Level::pro ? 4 : 3;
 
@@ -214,15 +215,8 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
         const Ball* object = ball_in_play(game.balls(), target);
         if (!object)
             continue;
-        for (int pocket = 1; pocket <= 6; ++pocket) {
-            const Vec2 pocket_at = table.pockets[pocket - 1].position;
-            add_pot(*object, pocket_at, pocket, speeds);
-            if (!plays_banks)
-                continue;
-            for (const Vec2 mirror : rail_mirrors(table, pocket_at, R))
-                if (length(mirror - pocket_at) > 0.2)
-                    add_pot(*object, mirror, pocket, {2.5, 4.0});
-        }
+        for (const PotAim& aim : pot_aims(table, R, plays_banks))
+            add_pot(*object, aim.point, aim.pocket, aim.banked ? bank_speeds : speeds);
         if (plays_banks)
             add_combinations(*object);
         add_safeties(*object);
