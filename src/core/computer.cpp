@@ -74,32 +74,18 @@ double score(const Verdict& v, int shooter) {
 // in the way, rated 0..1 by how full the cut is and how far the balls travel, times what the
 // ball is worth (`weight`).
 template <class Weight> double weighted_next_quality(const Game& game, Weight weight) {
-    const Ball* cue = ball_in_play(game.balls(), 0);
-    if (!cue)
-        return 0;
     const double R = game.params().ball_radius;
-    double best = 0;
-    for (const int target : game.legal_targets()) {
-        const Ball* object = ball_in_play(game.balls(), target);
-        if (!object)
-            continue;
-        for (const Pocket& pocket : game.table().pockets) {
-            const Vec2 to_pocket = pocket.position - object->position;
-            const Vec2 ghost = object->position - normalized(to_pocket) * (2 * R);
-            const Vec2 line = ghost - cue->position;
-            const double cut = dot(normalized(line), normalized(to_pocket));
-            if (cut < 0.34)
-                continue;
-            // A weight of 1 leaves the product's bits as they were without it.
-            const double quality = weight(target) * cut * cut *
-                                   portable::exp(-(length(line) + length(to_pocket)) / 2.5);
-            if (quality > best &&
-                !path_blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
-                !path_blocked(game.balls(), object->position, pocket.position, {0, target}, R))
-                best = quality;
-        }
-    }
-    return best;
+    return best_clear_pot(game, [&](int target, const Ball& cue, const Ball& object, int pocket) {
+        const Vec2 to_pocket = game.table().pockets[pocket - 1].position - object.position;
+        const Vec2 ghost = object.position - normalized(to_pocket) * (2 * R);
+        const Vec2 line = ghost - cue.position;
+        const double cut = dot(normalized(line), normalized(to_pocket));
+        if (cut < 0.34)
+            return 0.0;
+        // A weight of 1 leaves the product's bits as they were without it.
+        return weight(target) * cut * cut *
+               portable::exp(-(length(line) + length(to_pocket)) / 2.5);
+    });
 }
 
 // Pool: every legal ball is worth the same.

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <termpool/snooker_layout.hpp>
 
+#include "computer_parts.hpp"
 #include "shot_lines.hpp"
 
 namespace termpool {
@@ -58,30 +59,11 @@ double snooker_pot_chance(const Table& table, double R, Vec2 cue, Vec2 object, i
 }
 
 double snooker_best_chance(const Game& game, double sigma_deg) {
-    const Ball* cue = ball_in_play(game.balls(), 0);
-    if (!cue)
-        return 0;
     const double R = game.params().ball_radius;
-    double best = 0;
-    for (const int target : game.legal_targets()) {
-        const Ball* object = ball_in_play(game.balls(), target);
-        if (!object)
-            continue;
-        const double weight = snooker_ball_weight(target);
-        if (weight <= best)
-            continue;
-        for (int pocket = 1; pocket <= 6; ++pocket) {
-            const Vec2 at = game.table().pockets[pocket - 1].position;
-            const Vec2 ghost = object->position - normalized(at - object->position) * (2 * R);
-            const double chance = weight * snooker_pot_chance(game.table(), R, cue->position,
-                                                              object->position, pocket, sigma_deg);
-            if (chance > best &&
-                !path_blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
-                !path_blocked(game.balls(), object->position, at, {0, target}, R))
-                best = chance;
-        }
-    }
-    return best;
+    return best_clear_pot(game, [&](int target, const Ball& cue, const Ball& object, int pocket) {
+        return snooker_ball_weight(target) * snooker_pot_chance(game.table(), R, cue.position,
+                                                                object.position, pocket, sigma_deg);
+    });
 }
 
 double snooker_shot_value(const Verdict& v, int shooter, const Game& after, double sigma_deg) {
