@@ -163,26 +163,31 @@ std::vector<PotAim> pot_aims(const Table& table, double R, bool banks) {
     return aims;
 }
 
-std::vector<std::pair<Strike, ShotCall>> combination_shots(const Game& game, const Ball& cue,
-                                                           const Ball& first, const Ball& second) {
+std::vector<std::pair<Strike, ShotCall>>
+combination_shots(const Game& game, const Ball& cue, const Ball& first, bool (*partner)(int id)) {
     std::vector<std::pair<Strike, ShotCall>> shots;
     const double R = game.params().ball_radius;
-    for (int pocket = 1; pocket <= 6; ++pocket) {
-        const Vec2 pocket_at = game.table().pockets[pocket - 1].position;
-        const Vec2 to_pocket = normalized(pocket_at - second.position);
-        const Vec2 second_ghost = second.position - to_pocket * (2 * R);
-        const Vec2 travel = normalized(second_ghost - first.position);
-        if (dot(travel, to_pocket) < 0.7)
+    for (const Ball& second : game.balls()) {
+        if (!partner(second.id) || second.id == first.id || second.state == MotionState::pocketed)
             continue;
-        const Vec2 first_ghost = first.position - travel * (2 * R);
-        if (dot(normalized(first_ghost - cue.position), travel) < 0.5 ||
-            path_blocked(game.balls(), cue.position, first_ghost, {0, first.id}, R) ||
-            path_blocked(game.balls(), first.position, second_ghost, {first.id, second.id}, R) ||
-            path_blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
-            continue;
-        for (const double speed : {2.5, 4.0})
-            shots.push_back({{speed, aim_degrees(first_ghost - cue.position), 0, 0},
-                             {{second.id, pocket, false}}});
+        for (int pocket = 1; pocket <= 6; ++pocket) {
+            const Vec2 pocket_at = game.table().pockets[pocket - 1].position;
+            const Vec2 to_pocket = normalized(pocket_at - second.position);
+            const Vec2 second_ghost = second.position - to_pocket * (2 * R);
+            const Vec2 travel = normalized(second_ghost - first.position);
+            if (dot(travel, to_pocket) < 0.7)
+                continue;
+            const Vec2 first_ghost = first.position - travel * (2 * R);
+            if (dot(normalized(first_ghost - cue.position), travel) < 0.5 ||
+                path_blocked(game.balls(), cue.position, first_ghost, {0, first.id}, R) ||
+                path_blocked(game.balls(), first.position, second_ghost, {first.id, second.id},
+                             R) ||
+                path_blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
+                continue;
+            for (const double speed : {2.5, 4.0})
+                shots.push_back({{speed, aim_degrees(first_ghost - cue.position), 0, 0},
+                                 {{second.id, pocket, false}}});
+        }
     }
     return shots;
 }
@@ -289,12 +294,9 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     const std::vector<double> bank_speeds{2.5, 4.0};
     // Combinations: the legal ball driven into another, which drops.
     auto add_combinations = [&](const Ball& first) {
-        for (const Ball& second : game.balls()) {
-            if (second.id == 0 || second.id == first.id || second.state == MotionState::pocketed)
-                continue;
-            for (const auto& [strike, call] : combination_shots(game, *cue, first, second))
-                candidates.push_back({strike, call});
-        }
+        for (const auto& [strike, call] :
+             combination_shots(game, *cue, first, [](int id) { return id != 0; }))
+            candidates.push_back({strike, call});
     };
     for (const int target : game.legal_targets()) {
         const Ball* object = ball_in_play(game.balls(), target);

@@ -62,10 +62,11 @@ struct PotAim {
 // from the cushion), where that image is not the pocket itself.
 std::vector<PotAim> pot_aims(const Table& table, double R, bool banks);
 
-// The combinations of `first` driven into `second`, which drops: for each pocket where the cuts
-// on both balls are fairly full and the lines clear (so that the search stays within its
-// time), the aim at `first`'s ghost ball at two paces, called as `second` into that pocket.
-std::vector<std::pair<Strike, ShotCall>> combination_shots(const Game& game, const Ball& cue,
-                                                           const Ball& first, const Ball& second);
+// The combinations of `first` driven into another ball on the table that `partner` accepts
+// (by its id), which drops: for each such ball and pocket where the cuts on both balls are
+// fairly full and the lines clear (so that the search stays within its time), the aim at
+// `first`'s ghost ball at two paces, called as that ball into that pocket.
+std::vector<std::pair<Strike, ShotCall>>
+combination_shots(const Game& game, const Ball& cue, const Ball& first, bool (*partner)(int id));
 
 } // namespace termpool

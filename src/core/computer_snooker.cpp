@@ -202,13 +202,8 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
         if (game.snooker().ball_on != BallOn::red || game.snooker().free_ball ||
             !is_snooker_red(first.id))
             return;
-        for (const Ball& second : game.balls()) {
-            if (!is_snooker_red(second.id) || second.id == first.id ||
-                second.state == MotionState::pocketed)
-                continue;
-            for (const auto& [strike, call] : combination_shots(game, *cue, first, second))
-                sampled.push_back({strike, call});
-        }
+        for (const auto& [strike, call] : combination_shots(game, *cue, first, is_snooker_red))
+            sampled.push_back({strike, call});
     };
 
     for (const int target : game.legal_targets()) {
