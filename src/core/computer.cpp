@@ -272,17 +272,14 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     };
     std::vector<Candidate> candidates;
     auto add = [&](const Ball& object, Vec2 aim_point, int pocket, const std::vector<double>& at) {
-        const Vec2 to_aim = aim_point - object.position;
-        const Vec2 ghost = object.position - normalized(to_aim) * (2 * R);
-        const Vec2 line = ghost - cue->position;
         // Skip cuts thinner than about 80 degrees, and shots another ball is in the way of.
-        if (dot(normalized(line), normalized(to_aim)) < 0.17 ||
-            path_blocked(game.balls(), cue->position, ghost, {0, object.id}, R) ||
-            path_blocked(game.balls(), object.position, aim_point, {0, object.id}, R))
+        const std::optional<Vec2> line =
+            open_pot_line(game.balls(), cue->position, object, aim_point, 0.17, R);
+        if (!line)
             return;
         for (const double speed : at)
             for (const double follow : spins) {
-                Strike strike{speed, aim_degrees(line), 0, follow};
+                Strike strike{speed, aim_degrees(*line), 0, follow};
                 // The players who plan position allow for throw and squirt as well; pro stays
                 // above hard by its steadier stroke and its deeper search.
                 if (level_ == Level::pro || level_ == Level::hard)

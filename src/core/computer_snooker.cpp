@@ -109,12 +109,9 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
     // their chance times that table plus the misses times the tables two near misses leave.
     auto add_pot = [&](const Ball& object, Vec2 aim_point, int pocket,
                        const std::vector<double>& paces) {
-        const Vec2 to_aim = aim_point - object.position;
-        const Vec2 ghost = object.position - normalized(to_aim) * (2 * R);
-        const Vec2 line = ghost - cue->position;
-        if (dot(normalized(line), normalized(to_aim)) < 0.17 ||
-            path_blocked(game.balls(), cue->position, ghost, {0, object.id}, R) ||
-            path_blocked(game.balls(), object.position, aim_point, {0, object.id}, R))
+        const std::optional<Vec2> line =
+            open_pot_line(game.balls(), cue->position, object, aim_point, 0.17, R);
+        if (!line)
             return;
         const ShotCall call{{object.id, pocket, false}};
         // Every pace and spin without noise first: those that pot it with the table kept, by
@@ -126,7 +123,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
         std::vector<Stroke> strokes;
         for (const double speed : paces)
             for (const double follow : spins) {
-                Strike strike{speed, aim_degrees(line), 0, follow};
+                Strike strike{speed, aim_degrees(*line), 0, follow};
                 strike.angle_deg = corrected_aim_deg(game, strike, *cue, object, aim_point);
                 Game trial = game;
                 const Verdict v = trial.play(strike, call);

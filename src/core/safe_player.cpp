@@ -87,14 +87,14 @@ std::vector<Pot> pots(const Game& game, Random& noise) {
             continue;
         for (int pocket = 1; pocket <= 6; ++pocket) {
             const Vec2 at = game.table().pockets[pocket - 1].position;
-            const Vec2 ghost = object->position - normalized(at - object->position) * (2 * R);
-            const Vec2 line = ghost - cue->position;
-            const double travel = length(line) + length(at - object->position);
-            if (dot(normalized(line), normalized(at - object->position)) < 0.77 || travel > 2.6 ||
-                path_blocked(game.balls(), cue->position, ghost, {0, id}, R) ||
-                path_blocked(game.balls(), object->position, at, {0, id}, R))
+            const std::optional<Vec2> line =
+                open_pot_line(game.balls(), cue->position, *object, at, 0.77, R);
+            if (!line)
                 continue;
-            Pot pot{{std::clamp(1.0 + 0.5 * travel, 1.2, 2.6), aim_degrees(line), 0, 0},
+            const double travel = length(*line) + length(at - object->position);
+            if (travel > 2.6)
+                continue;
+            Pot pot{{std::clamp(1.0 + 0.5 * travel, 1.2, 2.6), aim_degrees(*line), 0, 0},
                     call_for(game, id, pocket),
                     0,
                     snooker_value(id),
