@@ -7,7 +7,7 @@
 #include <termpool/snooker_layout.hpp>
 #include <termpool/table_physics.hpp>
 
-#include "physics_helpers.hpp"
+#include "snooker_helpers.hpp"
 
 using namespace termpool;
 using namespace termpool::test;
@@ -16,32 +16,12 @@ namespace {
 
 constexpr double R = snooker_ball_radius;
 
-const Table& snooker_table() {
-    static const Table table = make_table(TableSize::snooker, snooker_ball_radius);
-    return table;
-}
-
-Ball sball(int id, Vec2 p) {
-    return ball_at(id, p.x, p.y, snooker_ball_mass);
-}
-
-// The colours on their spots, the reds given, the cue ball at `cue`.
-std::vector<Ball> layout(Vec2 cue, const std::vector<std::pair<int, Vec2>>& reds) {
-    std::vector<Ball> balls{sball(0, cue)};
-    for (const auto& [id, p] : reds)
-        balls.push_back(sball(id, p));
-    for (int colour = snooker_yellow; colour <= snooker_black; ++colour)
-        balls.push_back(sball(colour, snooker_spot(snooker_table(), colour)));
-    return balls;
-}
-
 Game frame(std::vector<Ball> balls, BallOn on, int score1 = 0, int score2 = 0) {
     SnookerState state;
     state.ball_on = on;
     state.scores[0] = score1;
     state.scores[1] = score2;
-    return Game::from_snooker_position(snooker_table(), physics_for_table(TableSize::snooker),
-                                       std::move(balls), 1, state);
+    return snooker_frame(std::move(balls), state);
 }
 
 // The point `distance` behind `ball` on the line from `pocket` through it.
@@ -74,7 +54,7 @@ TEST_CASE("snooker computer: it pots an easy red", "[computer][snooker]") {
     const Vec2 red{1.4, 0.3};
     auto reds = spare_reds;
     reds.push_back({1, red});
-    const Game game = frame(layout(behind(red, 2, 0.45), reds), BallOn::red);
+    const Game game = frame(colours_on_spots(behind(red, 2, 0.45), reds), BallOn::red);
     for (const Level level : {Level::medium, Level::hard, Level::pro}) {
         ComputerPlayer computer(level, 5);
         const ComputerShot shot = computer.shot(game);
@@ -91,7 +71,7 @@ TEST_CASE("snooker computer: it pots an easy red", "[computer][snooker]") {
 TEST_CASE("snooker computer: after a red it nominates the colour it pots", "[computer][snooker]") {
     // The black is straight into the top corner from here: worth most and easiest.
     const Vec2 black = snooker_spot(snooker_table(), snooker_black);
-    const Game game = frame(layout(behind(black, 6, 0.4), spare_reds), BallOn::colour);
+    const Game game = frame(colours_on_spots(behind(black, 6, 0.4), spare_reds), BallOn::colour);
     REQUIRE(game.nomination_owed());
     for (const Level level : {Level::hard, Level::pro}) {
         ComputerPlayer computer(level, 9);
@@ -110,7 +90,7 @@ TEST_CASE("snooker computer: after a red it nominates the colour it pots", "[com
 TEST_CASE("snooker computer: a colour it nominates is one it can pot", "[computer][snooker]") {
     // The blue straight into a middle pocket; the cue ball far from the black and the pink.
     const Vec2 blue = snooker_spot(snooker_table(), snooker_blue);
-    const Game game = frame(layout(behind(blue, 5, 0.35), spare_reds), BallOn::colour);
+    const Game game = frame(colours_on_spots(behind(blue, 5, 0.35), spare_reds), BallOn::colour);
     ComputerPlayer computer(Level::pro, 3);
     const ComputerShot shot = computer.shot(game);
     REQUIRE(is_snooker_colour(shot.call.call.ball));
@@ -125,8 +105,8 @@ TEST_CASE("snooker computer: with no pot on it plays safe", "[computer][snooker]
     // The only red frozen to the top cushion, off the colours' line: no pot from baulk, a safety
     // to play (both levels choose one here; at y = 0.5 pro calls a bank instead).
     const Table& t = snooker_table();
-    const Game game =
-        frame(layout({1.0, t.width / 2}, {{1, {t.length - R - 0.001, 1.4}}}), BallOn::red);
+    const Game game = frame(
+        colours_on_spots({1.0, t.width / 2}, {{1, {t.length - R - 0.001, 1.4}}}), BallOn::red);
     REQUIRE(pot_ease(game) == 0);
     for (const Level level : {Level::hard, Level::pro}) {
         ComputerPlayer computer(level, 21);
@@ -163,7 +143,7 @@ TEST_CASE("snooker computer: it plays safe rather than a long pot it would mostl
     // and thin, made by hard's stroke about one time in five. Hard used to call one (a lucky
     // sample among a few made it look good); it now weighs the chance and plays safe, and the
     // safety as planned is legal.
-    const Game game = frame(layout({0.5, 0.7}, {{1, {3.0, 0.5}}}), BallOn::red);
+    const Game game = frame(colours_on_spots({0.5, 0.7}, {{1, {3.0, 0.5}}}), BallOn::red);
     for (const std::uint64_t seed : {3, 11}) {
         ComputerPlayer computer(Level::hard, seed);
         const ComputerShot shot = computer.shot(game);
@@ -186,7 +166,7 @@ TEST_CASE("snooker computer: it takes a free ball that gives a pot", "[computer]
     const Vec2 cue = behind(black, 6, 0.4);
     const Vec2 pink = snooker_spot(t, snooker_pink);
     const Vec2 red = pink + normalized(pink - cue) * 0.1;
-    const Game base = frame(layout(cue, {{1, red}}), BallOn::red);
+    const Game base = frame(colours_on_spots(cue, {{1, red}}), BallOn::red);
     REQUIRE(base.shooter_snookered());
     SnookerState state = base.snooker();
     state.free_ball = true;
@@ -209,7 +189,7 @@ TEST_CASE("snooker computer: after a miss it plays on when left an easy pot",
     auto reds = spare_reds;
     reds.push_back({1, red});
     const Table& t = snooker_table();
-    const Game g = after_miss(layout({1.0, t.width / 2}, reds), behind(red, 2, 0.45));
+    const Game g = after_miss(colours_on_spots({1.0, t.width / 2}, reds), behind(red, 2, 0.45));
     ComputerPlayer computer(Level::hard, 2);
     CHECK(computer.choose(g) == Choice::play_on);
 }
@@ -222,7 +202,8 @@ TEST_CASE("snooker computer: it does not put back an offender who missed an easy
     auto reds = spare_reds;
     reds.push_back({1, red});
     const Table& t = snooker_table();
-    const Game g = after_miss(layout(behind(red, 2, 0.45), reds), {R + 0.001, t.width / 2});
+    const Game g =
+        after_miss(colours_on_spots(behind(red, 2, 0.45), reds), {R + 0.001, t.width / 2});
     ComputerPlayer computer(Level::hard, 2);
     const Choice c = computer.choose(g);
     CHECK(c != Choice::replace_and_replay);
@@ -233,7 +214,7 @@ TEST_CASE("snooker computer: it concedes only a frame it cannot win", "[computer
     ComputerPlayer computer(Level::hard, 1);
     const Table& t = snooker_table();
     // The colours only: 27 points remain.
-    const std::vector<Ball> colours = layout({0.5, t.width / 2}, {});
+    const std::vector<Ball> colours = colours_on_spots({0.5, t.width / 2}, {});
     CHECK(computer.concedes(frame(colours, BallOn::in_order, 10, 40)));
     CHECK_FALSE(computer.concedes(frame(colours, BallOn::in_order, 10, 37)));
     CHECK_FALSE(computer.concedes(frame(colours, BallOn::in_order, 40, 10)));
@@ -241,11 +222,13 @@ TEST_CASE("snooker computer: it concedes only a frame it cannot win", "[computer
     std::vector<std::pair<int, Vec2>> reds;
     for (int id = 1; id <= 6; ++id)
         reds.push_back({id, {2.6 + 0.06 * id, 0.3}});
-    CHECK_FALSE(computer.concedes(frame(layout({0.5, t.width / 2}, reds), BallOn::red, 0, 120)));
+    CHECK_FALSE(
+        computer.concedes(frame(colours_on_spots({0.5, t.width / 2}, reds), BallOn::red, 0, 120)));
     // Two reds left, 16 + 27 on the table: behind by 44 it concedes.
     reds.resize(2);
-    CHECK(computer.concedes(frame(layout({0.5, t.width / 2}, reds), BallOn::red, 0, 44)));
-    CHECK_FALSE(computer.concedes(frame(layout({0.5, t.width / 2}, reds), BallOn::red, 0, 43)));
+    CHECK(computer.concedes(frame(colours_on_spots({0.5, t.width / 2}, reds), BallOn::red, 0, 44)));
+    CHECK_FALSE(
+        computer.concedes(frame(colours_on_spots({0.5, t.width / 2}, reds), BallOn::red, 0, 43)));
 }
 
 TEST_CASE("snooker computer: its concession goes through the match", "[computer][snooker]") {

@@ -11,6 +11,7 @@
 
 #include "match_helpers.hpp"
 #include "rules_helpers.hpp"
+#include "snooker_helpers.hpp"
 
 using namespace termpool;
 using namespace termpool::test;
@@ -19,17 +20,12 @@ namespace {
 
 constexpr double R = snooker_ball_radius;
 
-const Table& snooker_table() {
-    static const Table table = make_table(TableSize::snooker, snooker_ball_radius);
-    return table;
-}
-
 PhysicsParams snooker_params() {
     return physics_for_table(TableSize::snooker);
 }
 
 Ball sball(int id, double x, double y) {
-    return ball_at(id, x, y, snooker_ball_mass);
+    return snooker_ball(id, {x, y});
 }
 
 Ball on_spot(int colour) {

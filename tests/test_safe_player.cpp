@@ -7,7 +7,7 @@
 #include <termpool/snooker_layout.hpp>
 #include <termpool/table_physics.hpp>
 
-#include "physics_helpers.hpp"
+#include "snooker_helpers.hpp"
 
 using namespace termpool;
 using namespace termpool::test;
@@ -16,30 +16,10 @@ namespace {
 
 constexpr double R = snooker_ball_radius;
 
-const Table& snooker_table() {
-    static const Table table = make_table(TableSize::snooker, snooker_ball_radius);
-    return table;
-}
-
-Ball sball(int id, Vec2 p) {
-    return ball_at(id, p.x, p.y, snooker_ball_mass);
-}
-
-// The colours on their spots, the reds given, the cue ball at `cue`.
-std::vector<Ball> layout(Vec2 cue, const std::vector<std::pair<int, Vec2>>& reds) {
-    std::vector<Ball> balls{sball(0, cue)};
-    for (const auto& [id, p] : reds)
-        balls.push_back(sball(id, p));
-    for (int colour = snooker_yellow; colour <= snooker_black; ++colour)
-        balls.push_back(sball(colour, snooker_spot(snooker_table(), colour)));
-    return balls;
-}
-
 Game frame(std::vector<Ball> balls, BallOn on, BallInHand in_hand = BallInHand::none) {
     SnookerState state;
     state.ball_on = on;
-    return Game::from_snooker_position(snooker_table(), physics_for_table(TableSize::snooker),
-                                       std::move(balls), 1, state, in_hand);
+    return snooker_frame(std::move(balls), state, in_hand);
 }
 
 } // namespace
@@ -49,7 +29,8 @@ TEST_CASE("safe player: it pots an easy red", "[safe][snooker]") {
     const Pocket& corner = snooker_table().pockets[2];
     const Vec2 in = -corner.capture_normal;
     const Vec2 red = corner.position - in * 0.3;
-    const Game game = frame(layout(red - in * 0.3, {{1, red}, {2, {1.1, 1.6}}}), BallOn::red);
+    const Game game =
+        frame(colours_on_spots(red - in * 0.3, {{1, red}, {2, {1.1, 1.6}}}), BallOn::red);
     SafePlayer player(4);
     const ComputerShot shot = player.shot(game);
     CHECK_FALSE(shot.call.call.safety);
@@ -63,8 +44,8 @@ TEST_CASE("safe player: it pots an easy red", "[safe][snooker]") {
 TEST_CASE("safe player: with no easy pot it plays a legal safety", "[safe][snooker]") {
     // The only red frozen to the top cushion, the cue ball in baulk: nothing to pot.
     const Table& t = snooker_table();
-    const Game game =
-        frame(layout({1.0, t.width / 2}, {{1, {t.length - R - 0.001, 1.4}}}), BallOn::red);
+    const Game game = frame(
+        colours_on_spots({1.0, t.width / 2}, {{1, {t.length - R - 0.001, 1.4}}}), BallOn::red);
     for (const std::uint64_t seed : {1, 2, 3}) {
         SafePlayer player(seed);
         const ComputerShot shot = player.shot(game);
@@ -82,7 +63,7 @@ TEST_CASE("safe player: with no easy pot it plays a legal safety", "[safe][snook
 
 TEST_CASE("safe player: on a colour it nominates the colour it plays at", "[safe][snooker]") {
     // After a red, the cue ball on the baulk cushion: no colour is easy from there.
-    const Game game = frame(layout({R + 0.001, 1.1}, {{1, {2.9, 1.5}}}), BallOn::colour);
+    const Game game = frame(colours_on_spots({R + 0.001, 1.1}, {{1, {2.9, 1.5}}}), BallOn::colour);
     REQUIRE(game.nomination_owed());
     SafePlayer player(7);
     const ComputerShot shot = player.shot(game);
@@ -99,7 +80,7 @@ TEST_CASE("safe player: it places the cue ball in the D and breaks off legally",
           "[safe][snooker]") {
     const Table& t = snooker_table();
     // Ball in hand after an in-off: a legal spot in the D.
-    std::vector<Ball> balls = layout({0.5, 0.5}, {{1, {2.9, 1.5}}, {2, {2.2, 0.4}}});
+    std::vector<Ball> balls = colours_on_spots({0.5, 0.5}, {{1, {2.9, 1.5}}, {2, {2.2, 0.4}}});
     balls.erase(balls.begin());
     const Game in_hand = frame(balls, BallOn::red, BallInHand::d);
     SafePlayer player(5);
@@ -125,11 +106,13 @@ TEST_CASE("safe player: it concedes only a frame it cannot win", "[safe][snooker
     SnookerState state;
     state.ball_on = BallOn::in_order;
     state.scores[1] = 40;
-    const Game behind = Game::from_snooker_position(t, physics_for_table(TableSize::snooker),
-                                                    layout({0.5, t.width / 2}, {}), 1, state);
+    const Game behind =
+        Game::from_snooker_position(t, physics_for_table(TableSize::snooker),
+                                    colours_on_spots({0.5, t.width / 2}, {}), 1, state);
     CHECK(player.concedes(behind));
     state.scores[1] = 20;
-    const Game close = Game::from_snooker_position(t, physics_for_table(TableSize::snooker),
-                                                   layout({0.5, t.width / 2}, {}), 1, state);
+    const Game close =
+        Game::from_snooker_position(t, physics_for_table(TableSize::snooker),
+                                    colours_on_spots({0.5, t.width / 2}, {}), 1, state);
     CHECK_FALSE(player.concedes(close));
 }

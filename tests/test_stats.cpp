@@ -27,6 +27,7 @@ using namespace termpool::cli;
 using termpool::StatsStore;
 
 #include "lines_of.hpp"
+#include "match_helpers.hpp"
 #include "temp_dir.hpp"
 
 namespace {
@@ -432,23 +433,13 @@ TEST_CASE("snooker: the tally follows the referee's score sheet through a frame"
     header.seed = 5;
     header.computers[0] = Level::hard;
     header.computers[1] = Level::medium;
-    auto started = Match::start(header, 9);
-    REQUIRE(std::holds_alternative<Match>(started));
-    Match match = std::move(std::get<Match>(started));
+    Match match = started(header, 9);
     int breaks_seen = 0;
     for (int step = 0; step < 160; ++step) {
         const PendingAction p = match.pending();
         if (p.kind == Pending::over || p.kind == Pending::next_rack)
             break;
-        const std::optional<ComputerMove> move = match.computer_move();
-        REQUIRE(move);
-        if (move->kind == Pending::place)
-            REQUIRE(match.place(p.player, move->spot) == MatchError::none);
-        else if (move->kind == Pending::choose)
-            REQUIRE(match.choose(p.player, move->choice) == MatchError::none);
-        else
-            REQUIRE(std::holds_alternative<PlayedShot>(
-                match.shoot(p.player, move->shot.strike, move->shot.call)));
+        REQUIRE(play_computer_move(match) == MatchError::none);
         const SnookerState& sheet = match.game().snooker();
         CHECK(match.tally().frame_score(1) == sheet.scores[0]);
         CHECK(match.tally().frame_score(2) == sheet.scores[1]);

@@ -18,6 +18,7 @@
 #include <variant>
 #include <vector>
 
+#include "match_helpers.hpp"
 #include "player/options.hpp"
 #include "tmux_session.hpp"
 #include "tui/aim_state.hpp"
@@ -404,9 +405,7 @@ std::string frame_owing_a_nomination() {
     header.names[0] = "Ann";
     header.names[1] = "Bob";
     header.computers[0] = header.computers[1] = Level::easy;
-    auto started = Match::start(header, 5);
-    REQUIRE(std::holds_alternative<Match>(started));
-    Match match = std::move(std::get<Match>(started));
+    Match match = test::started(header, 5);
     for (int step = 0; step < 400; ++step) {
         const PendingAction p = match.pending();
         if (p.kind == Pending::shoot && match.game().nomination_owed() &&
@@ -417,15 +416,7 @@ std::string frame_owing_a_nomination() {
         }
         if (p.kind == Pending::over || p.kind == Pending::next_rack)
             return "";
-        const std::optional<ComputerMove> move = match.computer_move();
-        REQUIRE(move);
-        if (move->kind == Pending::place)
-            REQUIRE(match.place(p.player, move->spot) == MatchError::none);
-        else if (move->kind == Pending::choose)
-            REQUIRE(match.choose(p.player, move->choice) == MatchError::none);
-        else
-            REQUIRE(std::holds_alternative<PlayedShot>(
-                match.shoot(p.player, move->shot.strike, move->shot.call)));
+        REQUIRE(test::play_computer_move(match) == MatchError::none);
     }
     return "";
 }

@@ -53,10 +53,6 @@ double aim_sigma_deg(const PhysicsParams& params) {
     return std::sqrt(std::max(0.0, sigma_aim_deg * sigma_aim_deg - from_tip * from_tip));
 }
 
-double degrees(Vec2 v) {
-    return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
-}
-
 // The referee's opinion of a simulated shot, from the shooter's side.
 double score(const Verdict& v, int shooter) {
     if (v.winner != 0)
@@ -78,32 +74,18 @@ double score(const Verdict& v, int shooter) {
 // in the way, rated 0..1 by how full the cut is and how far the balls travel, times what the
 // ball is worth (`weight`).
 template <class Weight> double weighted_next_quality(const Game& game, Weight weight) {
-    const Ball* cue = ball_in_play(game.balls(), 0);
-    if (!cue)
-        return 0;
     const double R = game.params().ball_radius;
-    double best = 0;
-    for (const int target : game.legal_targets()) {
-        const Ball* object = ball_in_play(game.balls(), target);
-        if (!object)
-            continue;
-        for (const Pocket& pocket : game.table().pockets) {
-            const Vec2 to_pocket = pocket.position - object->position;
-            const Vec2 ghost = object->position - normalized(to_pocket) * (2 * R);
-            const Vec2 line = ghost - cue->position;
-            const double cut = dot(normalized(line), normalized(to_pocket));
-            if (cut < 0.34)
-                continue;
-            // A weight of 1 leaves the product's bits as they were without it.
-            const double quality = weight(target) * cut * cut *
-                                   portable::exp(-(length(line) + length(to_pocket)) / 2.5);
-            if (quality > best &&
-                !path_blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
-                !path_blocked(game.balls(), object->position, pocket.position, {0, target}, R))
-                best = quality;
-        }
-    }
-    return best;
+    return best_clear_pot(game, [&](int target, const Ball& cue, const Ball& object, int pocket) {
+        const Vec2 to_pocket = game.table().pockets[pocket - 1].position - object.position;
+        const Vec2 ghost = object.position - normalized(to_pocket) * (2 * R);
+        const Vec2 line = ghost - cue.position;
+        const double cut = dot(normalized(line), normalized(to_pocket));
+        if (cut < 0.34)
+            return 0.0;
+        // A weight of 1 leaves the product's bits as they were without it.
+        return weight(target) * cut * cut *
+               portable::exp(-(length(line) + length(to_pocket)) / 2.5);
+    });
 }
 
 // Pool: every legal ball is worth the same.
@@ -111,16 +93,10 @@ double next_shot_quality(const Game& game) {
     return weighted_next_quality(game, [](int) { return 1.0; });
 }
 
-// Snooker: how much a ball on is worth taking next. A red opens the way to the black; a
-// colour counts its value.
-double snooker_weight(int id) {
-    return is_snooker_red(id) ? 1.0 : 0.5 + 0.5 * snooker_value(id) / 7.0;
-}
-
 // Snooker: the best next pot for whoever is on now, each ball weighted by what it is worth (a
 // colour after a red: the black before the yellow).
 double snooker_next_quality(const Game& game) {
-    return weighted_next_quality(game, snooker_weight);
+    return weighted_next_quality(game, snooker_ball_weight);
 }
 
 // Snooker, easy: a shot's worth from the shooter's side in points scored and given away, and
@@ -168,9 +144,52 @@ double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue
         const Vec2 turned{want.x * portable::cos(error) - want.y * portable::sin(error),
                           want.x * portable::sin(error) + want.y * portable::cos(error)};
         const Vec2 ghost = object.position - turned * (2 * game.params().ball_radius);
-        return degrees(ghost - cue.position);
+        return aim_degrees(ghost - cue.position);
     }
     return strike.angle_deg;
+}
+
+std::vector<PotAim> pot_aims(const Table& table, double R, bool banks) {
+    std::vector<PotAim> aims;
+    for (int pocket = 1; pocket <= 6; ++pocket) {
+        const Vec2 pocket_at = table.pockets[pocket - 1].position;
+        aims.push_back({pocket_at, pocket, false});
+        if (!banks)
+            continue;
+        for (const Vec2 mirror : rail_mirrors(table, pocket_at, R))
+            if (length(mirror - pocket_at) > 0.2)
+                aims.push_back({mirror, pocket, true});
+    }
+    return aims;
+}
+
+std::vector<std::pair<Strike, ShotCall>>
+combination_shots(const Game& game, const Ball& cue, const Ball& first, bool (*partner)(int id)) {
+    std::vector<std::pair<Strike, ShotCall>> shots;
+    const double R = game.params().ball_radius;
+    for (const Ball& second : game.balls()) {
+        if (!partner(second.id) || second.id == first.id || second.state == MotionState::pocketed)
+            continue;
+        for (int pocket = 1; pocket <= 6; ++pocket) {
+            const Vec2 pocket_at = game.table().pockets[pocket - 1].position;
+            const Vec2 to_pocket = normalized(pocket_at - second.position);
+            const Vec2 second_ghost = second.position - to_pocket * (2 * R);
+            const Vec2 travel = normalized(second_ghost - first.position);
+            if (dot(travel, to_pocket) < 0.7)
+                continue;
+            const Vec2 first_ghost = first.position - travel * (2 * R);
+            if (dot(normalized(first_ghost - cue.position), travel) < 0.5 ||
+                path_blocked(game.balls(), cue.position, first_ghost, {0, first.id}, R) ||
+                path_blocked(game.balls(), first.position, second_ghost, {first.id, second.id},
+                             R) ||
+                path_blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
+                continue;
+            for (const double speed : {2.5, 4.0})
+                shots.push_back({{speed, aim_degrees(first_ghost - cue.position), 0, 0},
+                                 {{second.id, pocket, false}}});
+        }
+    }
+    return shots;
 }
 
 double direction_sigma_deg(Level level) {
@@ -253,17 +272,14 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     };
     std::vector<Candidate> candidates;
     auto add = [&](const Ball& object, Vec2 aim_point, int pocket, const std::vector<double>& at) {
-        const Vec2 to_aim = aim_point - object.position;
-        const Vec2 ghost = object.position - normalized(to_aim) * (2 * R);
-        const Vec2 line = ghost - cue->position;
         // Skip cuts thinner than about 80 degrees, and shots another ball is in the way of.
-        if (dot(normalized(line), normalized(to_aim)) < 0.17 ||
-            path_blocked(game.balls(), cue->position, ghost, {0, object.id}, R) ||
-            path_blocked(game.balls(), object.position, aim_point, {0, object.id}, R))
+        const std::optional<Vec2> line =
+            open_pot_line(game.balls(), cue->position, object, aim_point, 0.17, R);
+        if (!line)
             return;
         for (const double speed : at)
             for (const double follow : spins) {
-                Strike strike{speed, degrees(line), 0, follow};
+                Strike strike{speed, aim_degrees(*line), 0, follow};
                 // The players who plan position allow for throw and squirt as well; pro stays
                 // above hard by its steadier stroke and its deeper search.
                 if (level_ == Level::pro || level_ == Level::hard)
@@ -272,51 +288,19 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             }
     };
     const Table& table = game.table();
-    // Combinations: the legal ball driven into another, which drops. Only fairly full cuts on
-    // both balls and clear lines, so that the search stays within its time.
+    const std::vector<double> bank_speeds{2.5, 4.0};
+    // Combinations: the legal ball driven into another, which drops.
     auto add_combinations = [&](const Ball& first) {
-        for (const Ball& second : game.balls()) {
-            if (second.id == 0 || second.id == first.id || second.state == MotionState::pocketed)
-                continue;
-            for (int pocket = 1; pocket <= 6; ++pocket) {
-                const Vec2 pocket_at = table.pockets[pocket - 1].position;
-                const Vec2 to_pocket = normalized(pocket_at - second.position);
-                const Vec2 second_ghost = second.position - to_pocket * (2 * R);
-                const Vec2 travel = normalized(second_ghost - first.position);
-                if (dot(travel, to_pocket) < 0.7)
-                    continue;
-                const Vec2 first_ghost = first.position - travel * (2 * R);
-                if (dot(normalized(first_ghost - cue->position), travel) < 0.5 ||
-                    path_blocked(game.balls(), cue->position, first_ghost, {0, first.id}, R) ||
-                    path_blocked(game.balls(), first.position, second_ghost, {first.id, second.id},
-                                 R) ||
-                    path_blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
-                    continue;
-                for (const double speed : {2.5, 4.0})
-                    candidates.push_back({{speed, degrees(first_ghost - cue->position), 0, 0},
-                                          {{second.id, pocket, false}}});
-            }
-        }
+        for (const auto& [strike, call] :
+             combination_shots(game, *cue, first, [](int id) { return id != 0; }))
+            candidates.push_back({strike, call});
     };
     for (const int target : game.legal_targets()) {
         const Ball* object = ball_in_play(game.balls(), target);
         if (!object)
             continue;
-        for (int pocket = 1; pocket <= 6; ++pocket) {
-            const Vec2 pocket_at = table.pockets[pocket - 1].position;
-            add(*object, pocket_at, pocket, speeds);
-            if (level_ < Level::hard)
-                continue;
-            // One-rail banks: aim at the pocket's mirror image in a rail, moved in by R because
-            // the ball's centre turns R from the cushion.
-            const Vec2 mirrors[4] = {{pocket_at.x, 2 * R - pocket_at.y},
-                                     {pocket_at.x, 2 * (table.width - R) - pocket_at.y},
-                                     {2 * R - pocket_at.x, pocket_at.y},
-                                     {2 * (table.length - R) - pocket_at.x, pocket_at.y}};
-            for (const Vec2 mirror : mirrors)
-                if (length(mirror - pocket_at) > 0.2)
-                    add(*object, mirror, pocket, {2.5, 4.0});
-        }
+        for (const PotAim& aim : pot_aims(table, R, level_ >= Level::hard))
+            add(*object, aim.point, aim.pocket, aim.banked ? bank_speeds : speeds);
         if (level_ >= Level::hard)
             add_combinations(*object);
         if (level_ == Level::easy)
@@ -330,7 +314,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             for (const double speed : {0.8, 1.6}) {
                 ShotCall call;
                 call.call.safety = true;
-                candidates.push_back({{speed, degrees(aim - cue->position), 0, 0}, call});
+                candidates.push_back({{speed, aim_degrees(aim - cue->position), 0, 0}, call});
             }
         }
     }
@@ -387,7 +371,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         // Nothing pottable: hit the first legal ball softly.
         const Ball* object = ball_in_play(game.balls(), game.legal_targets().front());
         if (object)
-            best.planned = {2.0, degrees(object->position - cue->position), 0, 0};
+            best.planned = {2.0, aim_degrees(object->position - cue->position), 0, 0};
         best.score = 0;
     }
     return best;
@@ -430,7 +414,7 @@ Strike ComputerPlayer::break_strike(const Game& game, const Ball& cue) const {
         if (!apex || b.position.x < apex->position.x)
             apex = &b;
     }
-    return {break_speed, apex ? degrees(apex->position - cue.position) : 0, 0, 0};
+    return {break_speed, apex ? aim_degrees(apex->position - cue.position) : 0, 0, 0};
 }
 
 Strike ComputerPlayer::snooker_break_strike(const Game& game) const {
@@ -503,15 +487,7 @@ Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
 }
 
 bool ComputerPlayer::concedes(const Game& game) const {
-    if (game.type() != GameType::snooker || game.winner() != 0)
-        return false;
-    const int me = game.chooser() != 0 ? game.chooser() : game.shooter();
-    const int behind = game.score_of(3 - me) - game.score_of(me);
-    const auto reds = std::ranges::count_if(game.balls(), [](const Ball& b) {
-        return is_snooker_red(b.id) && b.state != MotionState::pocketed;
-    });
-    // Snookers could still win it, but with the reds nearly gone the frame is as good as lost.
-    return reds <= 3 && behind > game.points_remaining();
+    return snooker_frame_lost(game);
 }
 
 Choice ComputerPlayer::choose(const Game& game) {

@@ -20,15 +20,6 @@
 namespace termpool {
 namespace {
 
-double degrees(Vec2 v) {
-    return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
-}
-
-// Standard normal distribution function.
-double normal_cdf(double x) {
-    return 0.5 * std::erfc(-x / std::numbers::sqrt2);
-}
-
 // What a missed pot costs besides the table it leaves, in the search's units (12 to a point).
 // The two misses simulated are near ones, at the window's edges; a wider miss, or an opponent
 // who plays better than this player's own stroke, leaves more. Without it the computer goes
@@ -93,6 +84,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
     // window of a pot is measured around an aim that pots it without noise.
     const bool plays_banks = level_ >= Level::hard;
     const std::vector<double> speeds{1.0, 1.5, 2.5, 4.0};
+    const std::vector<double> bank_speeds{2.5, 4.0};
     const std::vector<double> spins{-0.45, -0.2, 0.0, 0.2, 0.45};
     const std::size_t windows_per_pot = level_ == Level::pro ? 4 : 3;
 
@@ -117,12 +109,9 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
     // their chance times that table plus the misses times the tables two near misses leave.
     auto add_pot = [&](const Ball& object, Vec2 aim_point, int pocket,
                        const std::vector<double>& paces) {
-        const Vec2 to_aim = aim_point - object.position;
-        const Vec2 ghost = object.position - normalized(to_aim) * (2 * R);
-        const Vec2 line = ghost - cue->position;
-        if (dot(normalized(line), normalized(to_aim)) < 0.17 ||
-            path_blocked(game.balls(), cue->position, ghost, {0, object.id}, R) ||
-            path_blocked(game.balls(), object.position, aim_point, {0, object.id}, R))
+        const std::optional<Vec2> line =
+            open_pot_line(game.balls(), cue->position, object, aim_point, 0.17, R);
+        if (!line)
             return;
         const ShotCall call{{object.id, pocket, false}};
         // Every pace and spin without noise first: those that pot it with the table kept, by
@@ -134,7 +123,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
         std::vector<Stroke> strokes;
         for (const double speed : paces)
             for (const double follow : spins) {
-                Strike strike{speed, degrees(line), 0, follow};
+                Strike strike{speed, aim_degrees(*line), 0, follow};
                 strike.angle_deg = corrected_aim_deg(game, strike, *cue, object, aim_point);
                 Game trial = game;
                 const Verdict v = trial.play(strike, call);
@@ -152,7 +141,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
             const double below =
                 window_edge(game, stroke.strike, call, object.id, -1, simulations_);
             const double middle = (above - below) / 2, half = (above + below) / 2;
-            const double chance = 2 * normal_cdf(half / sigma) - 1;
+            const double chance = chance_within(half, sigma);
             Strike strike = stroke.strike;
             double made = stroke.made;
             if (middle != 0) {
@@ -197,66 +186,29 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
                 const Vec2 aim =
                     object.position + normalized(perpendicular(to_ball)) * (offset * R);
                 for (const double speed : {0.8, 1.6, 2.6, 3.6})
-                    sampled.push_back({{speed, degrees(aim - cue->position), 0, 0}, call});
+                    sampled.push_back({{speed, aim_degrees(aim - cue->position), 0, 0}, call});
             }
             return;
         }
-        const Vec2 at = object.position;
-        const Vec2 mirrors[4] = {{at.x, 2 * R - at.y},
-                                 {at.x, 2 * (table.width - R) - at.y},
-                                 {2 * R - at.x, at.y},
-                                 {2 * (table.length - R) - at.x, at.y}};
-        for (const Vec2 mirror : mirrors)
+        for (const Vec2 mirror : rail_mirrors(table, object.position, R))
             for (const double speed : {1.6, 2.6, 3.6})
-                sampled.push_back({{speed, degrees(mirror - cue->position), 0, 0}, call});
+                sampled.push_back({{speed, aim_degrees(mirror - cue->position), 0, 0}, call});
     };
     // A combination is a red into a red: any other pots a ball not on, or hits one first.
     auto add_combinations = [&](const Ball& first) {
         if (game.snooker().ball_on != BallOn::red || game.snooker().free_ball ||
             !is_snooker_red(first.id))
             return;
-        for (const Ball& second : game.balls()) {
-            if (!is_snooker_red(second.id) || second.id == first.id ||
-                second.state == MotionState::pocketed)
-                continue;
-            for (int pocket = 1; pocket <= 6; ++pocket) {
-                const Vec2 pocket_at = table.pockets[pocket - 1].position;
-                const Vec2 to_pocket = normalized(pocket_at - second.position);
-                const Vec2 second_ghost = second.position - to_pocket * (2 * R);
-                const Vec2 travel = normalized(second_ghost - first.position);
-                if (dot(travel, to_pocket) < 0.7)
-                    continue;
-                const Vec2 first_ghost = first.position - travel * (2 * R);
-                if (dot(normalized(first_ghost - cue->position), travel) < 0.5 ||
-                    path_blocked(game.balls(), cue->position, first_ghost, {0, first.id}, R) ||
-                    path_blocked(game.balls(), first.position, second_ghost, {first.id, second.id},
-                                 R) ||
-                    path_blocked(game.balls(), second.position, pocket_at, {0, second.id}, R))
-                    continue;
-                for (const double speed : {2.5, 4.0})
-                    sampled.push_back({{speed, degrees(first_ghost - cue->position), 0, 0},
-                                       {{second.id, pocket, false}}});
-            }
-        }
+        for (const auto& [strike, call] : combination_shots(game, *cue, first, is_snooker_red))
+            sampled.push_back({strike, call});
     };
 
     for (const int target : game.legal_targets()) {
         const Ball* object = ball_in_play(game.balls(), target);
         if (!object)
             continue;
-        for (int pocket = 1; pocket <= 6; ++pocket) {
-            const Vec2 pocket_at = table.pockets[pocket - 1].position;
-            add_pot(*object, pocket_at, pocket, speeds);
-            if (!plays_banks)
-                continue;
-            const Vec2 mirrors[4] = {{pocket_at.x, 2 * R - pocket_at.y},
-                                     {pocket_at.x, 2 * (table.width - R) - pocket_at.y},
-                                     {2 * R - pocket_at.x, pocket_at.y},
-                                     {2 * (table.length - R) - pocket_at.x, pocket_at.y}};
-            for (const Vec2 mirror : mirrors)
-                if (length(mirror - pocket_at) > 0.2)
-                    add_pot(*object, mirror, pocket, {2.5, 4.0});
-        }
+        for (const PotAim& aim : pot_aims(table, R, plays_banks))
+            add_pot(*object, aim.point, aim.pocket, aim.banked ? bank_speeds : speeds);
         if (plays_banks)
             add_combinations(*object);
         add_safeties(*object);
@@ -304,7 +256,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
     if (best.score == -1e9 && !game.legal_targets().empty()) {
         // Nothing in sight: hit the first legal ball softly.
         if (const Ball* object = ball_in_play(game.balls(), game.legal_targets().front()))
-            best.planned = {2.0, degrees(object->position - cue->position), 0, 0};
+            best.planned = {2.0, aim_degrees(object->position - cue->position), 0, 0};
         best.score = 0;
     }
     return best;

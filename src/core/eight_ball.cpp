@@ -15,9 +15,12 @@ Group other_group(Group g) {
     return g == Group::solids ? Group::stripes : Group::solids;
 }
 
-class EightBallReferee final : public RefereeOf<EightBallReferee> {
+class EightBallReferee final : public StalemateReferee {
 public:
     explicit EightBallReferee(bool bar) : bar_(bar) {}
+    std::unique_ptr<Referee> clone() const override {
+        return std::make_unique<EightBallReferee>(*this);
+    }
 
     void new_rack(const GameState&) override {
         player1_group_ = Group::open;
@@ -37,14 +40,6 @@ public:
             group != Group::open &&
             std::ranges::none_of(group_balls(group), [&](int id) { return s.on_table(id); });
     }
-    Verdict judge(GameState& s, const ShotCall& call, const ShotFacts& facts) override {
-        Verdict v = judge_shot(s, call, facts);
-        if (stalemate_.after_turn(s, facts.object_ball_dropped())) {
-            rerack(s, s.breaker);
-            v.stalemate_rerack = true;
-        }
-        return v;
-    }
     void choose(GameState& s, int who, Choice choice) override;
     ScoreSheet score_sheet(const GameState&) const override {
         ScoreSheet sheet;
@@ -60,13 +55,12 @@ private:
     }
     // `player` takes group `g`, the opponent the other.
     void assign(int player, Group g) { player1_group_ = player == 1 ? g : other_group(g); }
-    Verdict judge_shot(GameState& s, const ShotCall& call, const ShotFacts& facts);
+    Verdict judge_shot(GameState& s, const ShotCall& call, const ShotFacts& facts) override;
     Verdict judge_break(GameState& s, const ShotFacts& facts);
 
     bool bar_ = false;
     Group player1_group_ = Group::open;
     bool group_cleared_ = false; // the shooter's group was all down before the shot
-    Stalemate stalemate_;
 };
 
 std::vector<int> EightBallReferee::legal_targets(const GameState& s) const {

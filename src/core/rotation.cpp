@@ -10,7 +10,7 @@
 namespace termpool {
 namespace {
 
-class RotationReferee : public Referee {
+class RotationReferee : public StalemateReferee {
 public:
     void new_rack(const GameState&) override {
         pusher_ = 0;
@@ -32,14 +32,6 @@ public:
                 lowest = b.id;
         return lowest == 0 ? std::vector<int>{} : std::vector<int>{lowest};
     }
-    Verdict judge(GameState& s, const ShotCall& call, const ShotFacts& facts) override {
-        Verdict v = judge_shot(s, call, facts);
-        if (stalemate_.after_turn(s, facts.object_ball_dropped())) {
-            rerack(s, s.breaker);
-            v.stalemate_rerack = true;
-        }
-        return v;
-    }
     void choose(GameState& s, int who, Choice choice) override {
         if (choice == Choice::shoot) {
             s.shooter = who;
@@ -57,8 +49,23 @@ public:
     }
 
 protected:
-    // What each game judges once the shared start is done (`start`).
-    virtual Verdict judge_shot(GameState& s, const ShotCall& call, const ShotFacts& facts) = 0;
+    // The shared start (`start`); a foul or a push-out is judged there, the rest by the game.
+    Verdict judge_shot(GameState& s, const ShotCall& shot, const ShotFacts& facts) final {
+        Verdict v;
+        const Start started = start(s, v, shot, facts);
+        if (started.fouled)
+            return v;
+        if (started.push_out) {
+            push_out(s, v, facts);
+            return v;
+        }
+        judge_play(s, v, shot, facts, started.was_break);
+        return v;
+    }
+    // What each game judges of a shot that was neither a foul nor a push-out, into `v`;
+    // `was_break` when it was the break.
+    virtual void judge_play(GameState& s, Verdict& v, const ShotCall& shot, const ShotFacts& facts,
+                            bool was_break) = 0;
 
     // The start of judging a shot: the break and push-out flags move on, fouls are judged and
     // a foul's penalty paid.
@@ -94,7 +101,6 @@ private:
     int pusher_ = 0; // who played the push-out (or the uncalled pot) chosen on
     bool push_out_allowed_ = false;
     int fouls_in_a_row_[2] = {0, 0};
-    Stalemate stalemate_;
 };
 
 void RotationReferee::judge_fouls(Verdict& v, const ShotFacts& facts, bool was_break,
@@ -159,22 +165,14 @@ public:
     bool pocket_must_be_called(const GameState&, int) const override { return false; }
 
 private:
-    Verdict judge_shot(GameState& s, const ShotCall& shot, const ShotFacts& facts) override {
-        Verdict v;
-        const Start started = start(s, v, shot, facts);
-        if (started.fouled)
-            return v;
-        if (started.push_out) {
-            push_out(s, v, facts);
-            return v;
-        }
+    void judge_play(GameState& s, Verdict&, const ShotCall&, const ShotFacts& facts,
+                    bool) override {
         if (facts.dropped(9)) {
             s.win(s.shooter, WinReason::nine_pocketed);
-            return v;
+            return;
         }
         if (!facts.object_ball_dropped())
             s.shooter = GameState::opponent(s.shooter);
-        return v;
     }
 };
 
@@ -188,26 +186,20 @@ public:
     bool pocket_must_be_called(const GameState&, int) const override { return true; }
 
 private:
-    Verdict judge_shot(GameState& s, const ShotCall& shot, const ShotFacts& facts) override;
+    void judge_play(GameState& s, Verdict& v, const ShotCall& shot, const ShotFacts& facts,
+                    bool was_break) override;
 };
 
-Verdict TenBallReferee::judge_shot(GameState& s, const ShotCall& shot, const ShotFacts& facts) {
-    Verdict v;
+void TenBallReferee::judge_play(GameState& s, Verdict& v, const ShotCall& shot,
+                                const ShotFacts& facts, bool was_break) {
     const int me = s.shooter, other = GameState::opponent(s.shooter);
-    const Start started = start(s, v, shot, facts);
-    if (started.fouled)
-        return v;
-    if (started.push_out) {
-        push_out(s, v, facts);
-        return v;
-    }
-    if (started.was_break) {
+    if (was_break) {
         // Nothing is called on the break: what drops stays down but the 10, which is spotted,
         // and any ball down keeps the table.
         spot_if_down(s, v, facts);
         if (!facts.object_ball_dropped())
             s.shooter = other;
-        return v;
+        return;
     }
 
     // Without a call the referee calls the obvious shot, as in 8-ball: the first ball hit,
@@ -221,19 +213,18 @@ Verdict TenBallReferee::judge_shot(GameState& s, const ShotCall& shot, const Sho
                            call.pocket == facts.pocket_of(call.ball);
     if (called_in && call.ball == 10) {
         s.win(me, WinReason::ten_pocketed);
-        return v;
+        return;
     }
     // The 10 down any other way comes back; the other balls stay down.
     spot_if_down(s, v, facts);
     if (called_in)
-        return v; // the shooter plays on
+        return; // the shooter plays on
     if (call.safety || !facts.object_ball_dropped()) {
         s.shooter = other;
-        return v;
+        return;
     }
     // A ball down that was not called: the incoming player takes the table or hands it back.
     offer_table_back(s);
-    return v;
 }
 
 } // namespace

@@ -10,6 +10,7 @@
 #include <termpool/snooker_layout.hpp>
 
 #include "shot_lines.hpp"
+#include "snooker_leave.hpp"
 
 namespace termpool {
 namespace {
@@ -17,10 +18,6 @@ namespace {
 // Execution noise as the hard computer's: the direction (degrees) and the pace (m/s).
 constexpr double sigma_aim_deg = 0.125;
 constexpr double sigma_speed = 0.075;
-
-double degrees(Vec2 v) {
-    return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
-}
 
 // `planned` as its stroke plays it: Box-Muller from the given stream, so that a seed replays
 // the same frame.
@@ -72,28 +69,7 @@ double safety_value(const Verdict& v, const Game& after, int me) {
         return -1000.0 - 10.0 * v.penalty;
     if (v.next_shooter == me)
         return 20.0 + 10.0 * v.points;
-    double s = -100.0 * pot_ease(after);
-    if (after.shooter_snookered())
-        s += 40;
-    const Ball* cue = ball_in_play(after.balls(), 0);
-    if (!cue)
-        return s;
-    const Table& t = after.table();
-    double nearest = 1e9;
-    for (const int id : after.balls_on())
-        if (const Ball* b = ball_in_play(after.balls(), id))
-            nearest = std::min(nearest, length(b->position - cue->position));
-    if (nearest < 1e9)
-        s += 15.0 * std::min(1.0, nearest / (0.5 * t.length));
-    const double R = after.params().ball_radius;
-    const double to_cushion = std::min({cue->position.x, t.length - cue->position.x,
-                                        cue->position.y, t.width - cue->position.y}) -
-                              R;
-    if (to_cushion < 2 * R)
-        s += 8;
-    if (cue->position.x < snooker_baulk_x(t))
-        s += 10;
-    return s;
+    return with_leave_worth(-100.0 * pot_ease(after), after, false);
 }
 
 // The pots from the cue ball's place: every ball on into every pocket with clear lines, a cut
@@ -111,14 +87,14 @@ std::vector<Pot> pots(const Game& game, Random& noise) {
             continue;
         for (int pocket = 1; pocket <= 6; ++pocket) {
             const Vec2 at = game.table().pockets[pocket - 1].position;
-            const Vec2 ghost = object->position - normalized(at - object->position) * (2 * R);
-            const Vec2 line = ghost - cue->position;
-            const double travel = length(line) + length(at - object->position);
-            if (dot(normalized(line), normalized(at - object->position)) < 0.77 || travel > 2.6 ||
-                path_blocked(game.balls(), cue->position, ghost, {0, id}, R) ||
-                path_blocked(game.balls(), object->position, at, {0, id}, R))
+            const std::optional<Vec2> line =
+                open_pot_line(game.balls(), cue->position, *object, at, 0.77, R);
+            if (!line)
                 continue;
-            Pot pot{{std::clamp(1.0 + 0.5 * travel, 1.2, 2.6), degrees(line), 0, 0},
+            const double travel = length(*line) + length(at - object->position);
+            if (travel > 2.6)
+                continue;
+            Pot pot{{std::clamp(1.0 + 0.5 * travel, 1.2, 2.6), aim_degrees(*line), 0, 0},
                     call_for(game, id, pocket),
                     0,
                     snooker_value(id),
@@ -167,18 +143,13 @@ std::vector<std::pair<Strike, ShotCall>> safeties(const Game& game) {
                 const Vec2 aim =
                     object->position + normalized(perpendicular(to_ball)) * (offset * R);
                 for (const double speed : {0.8, 1.4, 2.2, 3.2})
-                    found.push_back({{speed, degrees(aim - cue->position), 0, 0}, call});
+                    found.push_back({{speed, aim_degrees(aim - cue->position), 0, 0}, call});
             }
             continue;
         }
-        const Vec2 at = object->position;
-        const Vec2 mirrors[4] = {{at.x, 2 * R - at.y},
-                                 {at.x, 2 * (t.width - R) - at.y},
-                                 {2 * R - at.x, at.y},
-                                 {2 * (t.length - R) - at.x, at.y}};
-        for (const Vec2 mirror : mirrors)
+        for (const Vec2 mirror : rail_mirrors(t, object->position, R))
             for (const double speed : {1.5, 2.5, 3.5})
-                found.push_back({{speed, degrees(mirror - cue->position), 0, 0}, call});
+                found.push_back({{speed, aim_degrees(mirror - cue->position), 0, 0}, call});
     }
     return found;
 }
@@ -231,7 +202,7 @@ ComputerShot SafePlayer::shot(const Game& game) {
         const std::vector<int> on = targets(game);
         const Ball* object = on.empty() ? nullptr : ball_in_play(game.balls(), on.front());
         if (cue && object)
-            chosen.planned = {2.0, degrees(object->position - cue->position), 0, 0};
+            chosen.planned = {2.0, aim_degrees(object->position - cue->position), 0, 0};
         chosen.call = call_for(game, object ? object->id : 0, 0);
         chosen.strike = with_noise(chosen.planned, rng_);
         return chosen;
@@ -311,14 +282,7 @@ Choice SafePlayer::choose(const Game& game) const {
 }
 
 bool SafePlayer::concedes(const Game& game) const {
-    if (game.type() != GameType::snooker || game.winner() != 0)
-        return false;
-    const int me = game.chooser() != 0 ? game.chooser() : game.shooter();
-    const int behind = game.score_of(3 - me) - game.score_of(me);
-    const auto reds = std::ranges::count_if(game.balls(), [](const Ball& b) {
-        return is_snooker_red(b.id) && b.state != MotionState::pocketed;
-    });
-    return reds <= 3 && behind > game.points_remaining();
+    return snooker_frame_lost(game);
 }
 
 } // namespace termpool

@@ -2,6 +2,8 @@
 #include "shot_lines.hpp"
 
 #include <algorithm>
+#include <numbers>
+#include <termpool/portable_math.hpp>
 
 namespace termpool {
 
@@ -25,6 +27,29 @@ bool path_blocked(const std::vector<Ball>& balls, Vec2 a, Vec2 b, std::pair<int,
             return true;
     }
     return false;
+}
+
+std::optional<Vec2> open_pot_line(const std::vector<Ball>& balls, Vec2 cue, const Ball& object,
+                                  Vec2 aim_point, double min_cut, double R) {
+    const Vec2 to_aim = aim_point - object.position;
+    const Vec2 ghost = object.position - normalized(to_aim) * (2 * R);
+    const Vec2 line = ghost - cue;
+    if (dot(normalized(line), normalized(to_aim)) < min_cut ||
+        path_blocked(balls, cue, ghost, {0, object.id}, R) ||
+        path_blocked(balls, object.position, aim_point, {0, object.id}, R))
+        return std::nullopt;
+    return line;
+}
+
+double aim_degrees(Vec2 v) {
+    return portable::atan2(v.y, v.x) * 180 / std::numbers::pi;
+}
+
+std::array<Vec2, 4> rail_mirrors(const Table& table, Vec2 point, double R) {
+    return {{{point.x, 2 * R - point.y},
+             {point.x, 2 * (table.width - R) - point.y},
+             {2 * R - point.x, point.y},
+             {2 * (table.length - R) - point.x, point.y}}};
 }
 
 } // namespace termpool

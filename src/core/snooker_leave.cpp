@@ -6,6 +6,7 @@
 #include <numbers>
 #include <termpool/snooker_layout.hpp>
 
+#include "computer_parts.hpp"
 #include "shot_lines.hpp"
 
 namespace termpool {
@@ -24,13 +25,15 @@ double normal_cdf(double x) {
     return 0.5 * std::erfc(-x / std::numbers::sqrt2);
 }
 
-// What a ball on is worth taking next: a red opens the way to the black; a colour counts its
-// value.
-double ball_weight(int id) {
+} // namespace
+
+double snooker_ball_weight(int id) {
     return is_snooker_red(id) ? 1.0 : 0.5 + 0.5 * snooker_value(id) / 7.0;
 }
 
-} // namespace
+double chance_within(double half_window, double sigma) {
+    return 2 * normal_cdf(half_window / sigma) - 1;
+}
 
 double snooker_pot_chance(const Table& table, double R, Vec2 cue, Vec2 object, int pocket,
                           double sigma_deg) {
@@ -52,34 +55,15 @@ double snooker_pot_chance(const Table& table, double R, Vec2 cue, Vec2 object, i
     // miss of `tolerance` at d2.
     const double window = tolerance * 2 * R * cut / (std::max(d1, R) * d2);
     const double sigma = sigma_deg * std::numbers::pi / 180;
-    return 2 * normal_cdf(window / sigma) - 1;
+    return chance_within(window, sigma);
 }
 
 double snooker_best_chance(const Game& game, double sigma_deg) {
-    const Ball* cue = ball_in_play(game.balls(), 0);
-    if (!cue)
-        return 0;
     const double R = game.params().ball_radius;
-    double best = 0;
-    for (const int target : game.legal_targets()) {
-        const Ball* object = ball_in_play(game.balls(), target);
-        if (!object)
-            continue;
-        const double weight = ball_weight(target);
-        if (weight <= best)
-            continue;
-        for (int pocket = 1; pocket <= 6; ++pocket) {
-            const Vec2 at = game.table().pockets[pocket - 1].position;
-            const Vec2 ghost = object->position - normalized(at - object->position) * (2 * R);
-            const double chance = weight * snooker_pot_chance(game.table(), R, cue->position,
-                                                              object->position, pocket, sigma_deg);
-            if (chance > best &&
-                !path_blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
-                !path_blocked(game.balls(), object->position, at, {0, target}, R))
-                best = chance;
-        }
-    }
-    return best;
+    return best_clear_pot(game, [&](int target, const Ball& cue, const Ball& object, int pocket) {
+        return snooker_ball_weight(target) * snooker_pot_chance(game.table(), R, cue.position,
+                                                                object.position, pocket, sigma_deg);
+    });
 }
 
 double snooker_shot_value(const Verdict& v, int shooter, const Game& after, double sigma_deg) {
@@ -91,6 +75,10 @@ double snooker_shot_value(const Verdict& v, int shooter, const Game& after, doub
     if (v.next_shooter == shooter)
         return s + kept_worth + chance_worth * snooker_best_chance(after, sigma_deg);
     s -= chance_worth * snooker_best_chance(after, sigma_deg);
+    return with_leave_worth(s, after, true);
+}
+
+double with_leave_worth(double s, const Game& after, bool baulk_wants_distance) {
     if (after.shooter_snookered())
         s += 40;
     const Ball* cue = ball_in_play(after.balls(), 0);
@@ -109,9 +97,22 @@ double snooker_shot_value(const Verdict& v, int shooter, const Game& after, doub
                               R;
     if (to_cushion < 2 * R)
         s += 8;
-    if (cue->position.x < snooker_baulk_x(t) && nearest > 0.25 * t.length)
+    if (cue->position.x < snooker_baulk_x(t) &&
+        (!baulk_wants_distance || nearest > 0.25 * t.length))
         s += 10;
     return s;
+}
+
+bool snooker_frame_lost(const Game& game) {
+    if (game.type() != GameType::snooker || game.winner() != 0)
+        return false;
+    const int me = game.chooser() != 0 ? game.chooser() : game.shooter();
+    const int behind = game.score_of(3 - me) - game.score_of(me);
+    const auto reds = std::ranges::count_if(game.balls(), [](const Ball& b) {
+        return is_snooker_red(b.id) && b.state != MotionState::pocketed;
+    });
+    // Snookers could still win it, but with the reds nearly gone the frame is as good as lost.
+    return reds <= 3 && behind > game.points_remaining();
 }
 
 } // namespace termpool

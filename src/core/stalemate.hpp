@@ -3,6 +3,7 @@
 // a ball dropping a stalemate is declared, each player has three more turns, and then the
 // original breaker breaks a new rack.
 
+#include <termpool/referee.hpp>
 #include <termpool/rules.hpp>
 
 namespace termpool {
@@ -25,6 +26,27 @@ struct Stalemate {
             turns_left = 6;
         return false;
     }
+};
+
+// A pool referee that keeps the stalemate rule: each shot is judged by judge_shot, then the
+// turn is counted, and the original breaker breaks a new rack when the rule says so. (Its
+// new_rack forgets the count: `stalemate_ = {}`.)
+class StalemateReferee : public Referee {
+public:
+    Verdict judge(GameState& s, const ShotCall& call, const ShotFacts& facts) final {
+        Verdict v = judge_shot(s, call, facts);
+        if (stalemate_.after_turn(s, facts.object_ball_dropped())) {
+            rerack(s, s.breaker);
+            v.stalemate_rerack = true;
+        }
+        return v;
+    }
+
+protected:
+    // What the game's own rules make of the shot.
+    virtual Verdict judge_shot(GameState& s, const ShotCall& call, const ShotFacts& facts) = 0;
+
+    Stalemate stalemate_;
 };
 
 } // namespace termpool
