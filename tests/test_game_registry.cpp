@@ -122,12 +122,11 @@ TEST_CASE("the rows say what differs between the games", "[registry]") {
     CHECK(table_played({GameType::nine_ball, TableSize::seven_foot, {}}) == TableSize::seven_foot);
     CHECK(snooker.scoring == Scoring::points);
     CHECK(std::string(snooker.words.unit) == "frame");
-    CHECK(snooker.keeps(GameStat::centuries));
-    CHECK_FALSE(snooker.keeps(GameStat::break_and_runs));
+    CHECK(snooker.stats == StatsKind::snooker);
     CHECK(game_row(GameType::nine_ball).deciding_ball == 9);
     CHECK(game_row(GameType::ten_ball).deciding_ball == 10);
     CHECK(game_row(GameType::eight_ball_bar).deciding_ball == 8);
-    CHECK(game_row(GameType::nine_ball).keeps(GameStat::break_and_runs));
+    CHECK(game_row(GameType::nine_ball).stats == StatsKind::pool);
     // The rotation games: the push-out after the break, no groups, fouls in a row counted.
     for (const GameType type : all_game_types()) {
         const GameRow& row = game_row(type);

@@ -87,23 +87,12 @@ struct PanelLines {
     PocketedLine pocketed = PocketedLine::outside_groups; ///< the balls down
 };
 
-/// A statistic a game keeps for its players (flags of `GameRow::stats`).
-enum class GameStat : unsigned {
-    break_and_runs = 1u << 0, ///< racks won from the player's own break in one visit
-    longest_run = 1u << 1,    ///< most balls potted in one visit
-    centuries = 1u << 2,      ///< breaks of 100 or more
-    highest_break = 1u << 3,  ///< the highest break, in points
-    frame_scores = 1u << 4,   ///< the points of each frame
+/// Which figures a game type keeps for its players (stats.hpp tallies them, the player's files
+/// and the game-over box show them).
+enum class StatsKind {
+    pool,    ///< racks won, balls potted, break-and-runs and the longest run
+    snooker, ///< frames won, points, frame scores, the highest break and centuries
 };
-
-/// The flags `a` and `b` together.
-constexpr unsigned operator|(GameStat a, GameStat b) {
-    return static_cast<unsigned>(a) | static_cast<unsigned>(b);
-}
-/// The flags `a` with `b`.
-constexpr unsigned operator|(unsigned a, GameStat b) {
-    return a | static_cast<unsigned>(b);
-}
 
 /// One game type: all that differs between games, outside its referee.
 struct GameRow {
@@ -120,16 +109,13 @@ struct GameRow {
     DefaultBreak default_break;                  ///< the break a player starts from
     CallRule calls = CallRule::every_pot;        ///< what a shot calls (the referee judges it)
     bool groups = false;                         ///< the players take groups (solids and stripes)
-    bool push_out = false;            ///< a push-out may be declared on the shot after the break
-    GameWords words;                  ///< its words
-    Scoring scoring = Scoring::racks; ///< racks or points
-    PanelLines panel;                 ///< the panel's lines
-    unsigned stats = 0;               ///< the statistics it keeps: GameStat flags
+    bool push_out = false;             ///< a push-out may be declared on the shot after the break
+    GameWords words;                   ///< its words
+    Scoring scoring = Scoring::racks;  ///< racks or points
+    PanelLines panel;                  ///< the panel's lines
+    StatsKind stats = StatsKind::pool; ///< the statistics it keeps
     /// Makes the referee of a new game of this type.
     std::unique_ptr<Referee> (*make_referee)() = nullptr;
-
-    /// True when the game keeps `stat`.
-    bool keeps(GameStat stat) const { return (stats & static_cast<unsigned>(stat)) != 0; }
 };
 
 /// The game types known: the standard ones, and any a test adds.

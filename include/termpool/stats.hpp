@@ -37,20 +37,14 @@
 
 #include <array>
 #include <optional>
+#include <termpool/game_registry.hpp>
 #include <termpool/record.hpp>
 #include <termpool/rules.hpp>
 #include <variant>
 
 namespace termpool {
 
-/// Which figures a game type keeps: a pool game's racks and runs, or snooker's frames and
-/// breaks.
-enum class StatsKind {
-    pool,    ///< 8-ball (both rules), 9-ball, 10-ball
-    snooker, ///< snooker
-};
-
-/// The figures `type` keeps. The one place that maps a game type to its statistics.
+/// The figures `type` keeps: its registry row's (`GameRow::stats`).
 StatsKind stats_kind(GameType type);
 
 /// One player's figures; all counts start at zero. Which of them a game keeps depends on its

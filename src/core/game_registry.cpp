@@ -26,9 +26,6 @@ constexpr GameWords frame_words{"frame",
 constexpr DefaultBreak pool_break{12.0, BreakAim::head_ball};
 // Snooker breaks off softly, thin off the end red, so that the cue ball comes back to baulk.
 constexpr DefaultBreak snooker_break{break_off_speed, BreakAim::end_red};
-constexpr unsigned pool_stats = GameStat::break_and_runs | GameStat::longest_run;
-constexpr unsigned snooker_stats =
-    GameStat::centuries | GameStat::highest_break | GameStat::frame_scores;
 
 std::vector<GameRow> standard_rows() {
     return {
@@ -41,7 +38,7 @@ std::vector<GameRow> standard_rows() {
          .groups = true,
          .words = rack_words,
          .panel = {PlayerLine::group, PocketedLine::outside_groups},
-         .stats = pool_stats,
+         .stats = StatsKind::pool,
          .make_referee = make_eight_ball_referee},
         {.type = GameType::eight_ball_bar,
          .name = "8ball-bar",
@@ -53,7 +50,7 @@ std::vector<GameRow> standard_rows() {
          .groups = true,
          .words = rack_words,
          .panel = {PlayerLine::group, PocketedLine::outside_groups},
-         .stats = pool_stats,
+         .stats = StatsKind::pool,
          .make_referee = make_bar_eight_ball_referee},
         {.type = GameType::nine_ball,
          .name = "9ball",
@@ -65,7 +62,7 @@ std::vector<GameRow> standard_rows() {
          .push_out = true,
          .words = rack_words,
          .panel = {PlayerLine::fouls_in_a_row, PocketedLine::all},
-         .stats = pool_stats,
+         .stats = StatsKind::pool,
          .make_referee = make_nine_ball_referee},
         {.type = GameType::ten_ball,
          .name = "10ball",
@@ -77,7 +74,7 @@ std::vector<GameRow> standard_rows() {
          .push_out = true,
          .words = rack_words,
          .panel = {PlayerLine::fouls_in_a_row, PocketedLine::all},
-         .stats = pool_stats,
+         .stats = StatsKind::pool,
          .make_referee = make_ten_ball_referee},
         {.type = GameType::snooker,
          .name = "snooker",
@@ -91,7 +88,7 @@ std::vector<GameRow> standard_rows() {
          .words = frame_words,
          .scoring = Scoring::points,
          .panel = {PlayerLine::highest_break, PocketedLine::none},
-         .stats = snooker_stats,
+         .stats = StatsKind::snooker,
          .make_referee = make_snooker_referee},
     };
 }

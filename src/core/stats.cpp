@@ -59,7 +59,7 @@ std::optional<double> pot_success(const PlayerStats& stats) {
 }
 
 StatsKind stats_kind(GameType type) {
-    return game_row(type).keeps(GameStat::frame_scores) ? StatsKind::snooker : StatsKind::pool;
+    return game_row(type).stats;
 }
 
 void StatsTally::on_shot(int shooter, bool was_break, const ShotCall& call, const Verdict& v) {
