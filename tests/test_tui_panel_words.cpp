@@ -98,6 +98,17 @@ bool shortened_name(const std::string& word, const View& v) {
     return false;
 }
 
+// A message cut short at the end of its rows, visibly: a whole word of it and an ellipsis.
+bool message_cut_visibly(const std::string& word, const View& v) {
+    if (word.size() < ellipsis.size() ||
+        word.compare(word.size() - ellipsis.size(), ellipsis.size(), ellipsis) != 0)
+        return false;
+    std::set<std::string> message_words;
+    add_words(message_words, v.message);
+    const std::string start = word.substr(0, word.size() - ellipsis.size());
+    return start.empty() || message_words.count(bare(start)) > 0;
+}
+
 // The panel's rows as text.
 std::vector<std::string> panel_rows(const Grid& g, const Layout& l) {
     std::vector<std::string> rows;
@@ -119,11 +130,17 @@ std::vector<std::string> cut_words(const View& v, int w, int h) {
     for (const std::string& row : panel_rows(g, l)) {
         std::istringstream in(row);
         for (std::string word; in >> word;)
-            if (!expected.count(bare(word)) && !shortened_name(word, v))
+            if (!expected.count(bare(word)) && !shortened_name(word, v) &&
+                !message_cut_visibly(word, v))
                 cut.push_back(word + "  (in \"" + row + "\")");
     }
     return cut;
 }
+
+// A foul's message with the computer's choice after it, as a player met it at 80x24.
+const std::string long_foul_message =
+    "Foul and a miss: in-off \u2014 4 points to CPU (hard); CPU (hard) chooses. CPU (hard) "
+    "chooses: put the offender back in, the cue ball in the D; Ann has ball in hand in the D";
 
 const PhysicsParams snooker_params = physics_for_table(TableSize::snooker);
 const Table snooker_table = make_table(TableSize::snooker, snooker_params.ball_radius);
@@ -204,9 +221,13 @@ TEST_CASE("the panel never cuts a word, at every width from 80 to 250 columns", 
     short_names.names[0] = "Ann";
     short_names.names[1] = "Bob";
     short_names.message = "Ann scores 1 and plays on";
+    // A message longer than its rows at 80x24: cut at a whole word, visibly.
+    View long_message = snooker_view();
+    long_message.message = long_foul_message;
     const Case cases[] = {{"snooker", snooker_view()},
                           {"snooker, short names", short_names},
                           {"snooker, free ball, placing", free_ball},
+                          {"snooker, a long message", long_message},
                           {"8-ball", eight_ball_view()},
                           {"9-ball", nine_ball_view()}};
     // Every failure is gathered, the first few told: a cut at one width is often a cut at many.
@@ -251,4 +272,29 @@ TEST_CASE("at 80x24 the snooker panel shows both players, the score and what is 
     CHECK(panel.find("Bartholomew") != std::string::npos);
     CHECK(panel.find("122") != std::string::npos);
     CHECK(panel.find("on a colour: black") != std::string::npos);
+}
+
+TEST_CASE("a message longer than its rows ends in an ellipsis after a whole word",
+          "[tui][panel][snooker]") {
+    View v = snooker_view();
+    v.message = long_foul_message;
+    const Layout l = make_layout(snooker_table, 80, 24);
+    REQUIRE(l.fits);
+    const Grid g = render(v, l, {256, true}, 80, 24);
+    std::string panel;
+    for (const std::string& row : panel_rows(g, l))
+        panel += row + "\n";
+    CAPTURE(panel);
+    // Too long for the rows below the table: its start is shown, its end is marked as left out.
+    REQUIRE(panel.find("Foul and a miss") != std::string::npos);
+    CHECK(panel.find("has ball in hand in the D") == std::string::npos);
+    CHECK(panel.find(ellipsis) != std::string::npos);
+    CHECK(cut_words(v, 80, 24).empty());
+    // With room for it all, nothing is marked.
+    const Layout tall = make_layout(snooker_table, 200, 60);
+    const Grid whole = render(v, tall, {256, true}, 200, 60);
+    std::string all;
+    for (const std::string& row : panel_rows(whole, tall))
+        all += row + " ";
+    CHECK(all.find(ellipsis) == std::string::npos);
 }

@@ -104,6 +104,20 @@ std::vector<Line> piece_rows(const std::vector<std::string>& pieces, int width, 
     return rows;
 }
 
+// The last of `lines` kept when the rest had no room: it ends in an ellipsis after a whole
+// word, so that the player sees there is more (the log, `l`, has the message whole).
+void mark_cut(Line& line, int width, bool utf8) {
+    if (line.empty())
+        return;
+    const std::string more = utf8 ? "\u2026" : "...";
+    std::string& text = line.back().text;
+    while (!text.empty() && display_width(text) + display_width(more) > width) {
+        const std::size_t space = text.find_last_of(' ');
+        text.erase(space == std::string::npos ? 0 : space);
+    }
+    text += more;
+}
+
 bool in_group(int id, Group g) {
     return (g == Group::solids && id >= 1 && id <= 7) ||
            (g == Group::stripes && id >= 9 && id <= 15);
@@ -430,7 +444,13 @@ void draw_side_panel(const Frame& f) {
     ++y;
     // The message matters most after the players.
     if (!v.message.empty()) {
-        put_lines(wrapped(v.message, width, {}));
+        std::vector<Line> message = wrapped(v.message, width, {});
+        const int fits = std::max(0, limit - y);
+        if (fits > 0 && fits < static_cast<int>(message.size())) {
+            message.resize(static_cast<std::size_t>(fits));
+            mark_cut(message.back(), width, p.utf8());
+        }
+        put_lines(message);
         ++y;
     }
     const std::string call = call_text(v);
@@ -568,6 +588,13 @@ void draw_below_panel(const Frame& f) {
                 worst = it;
         left.erase(worst);
     }
+    // Message rows left out from the end: the last one kept says so.
+    if (!beside && std::ranges::count(left, 1, &Row::drop) < static_cast<long>(message.size()))
+        for (auto it = left.rbegin(); it != left.rend(); ++it)
+            if (it->drop == 1) {
+                mark_cut(it->line, right - x, f.paint.utf8());
+                break;
+            }
     // Snooker's frame score lost its row with the title: it goes under the message.
     if (beside && snooker_panel(v) && !frames_text(v).empty() &&
         (left.empty() || left.front().drop != 4))
@@ -584,6 +611,8 @@ void draw_below_panel(const Frame& f) {
                                        std::max(0, rows - chat_rows - (message.empty() ? 0 : 1)));
         const int message_rows =
             std::min(static_cast<int>(message.size()), rows - call_rows - chat_rows);
+        if (message_rows > 0 && message_rows < static_cast<int>(message.size()))
+            mark_cut(message[static_cast<std::size_t>(message_rows - 1)], mid_w, f.paint.utf8());
         int y = l.panel_y;
         for (int i = 0; i < message_rows; ++i)
             draw_line(p, mid_x, y++, message[static_cast<std::size_t>(i)], mid_w);
