@@ -146,6 +146,16 @@ const PhysicsParams snooker_params = physics_for_table(TableSize::snooker);
 const Table snooker_table = make_table(TableSize::snooker, snooker_params.ball_radius);
 const Table pool_table = make_table(TableSize::nine_foot);
 
+// The panel of `v` (on its table) at `w` x `h`, a row a line; the layout must fit.
+std::string panel_text(const View& v, int w, int h) {
+    const Layout l = make_layout(*v.table, w, h);
+    REQUIRE(l.fits);
+    std::string panel;
+    for (const std::string& row : panel_rows(render(v, l, {256, true}, w, h), l))
+        panel += row + "\n";
+    return panel;
+}
+
 // A snooker match late in a frame: a break of 122 on a colour, the black proposed.
 View snooker_view() {
     View v;
@@ -260,13 +270,7 @@ TEST_CASE("snooker's status line loses its least telling pieces, never a piece c
 
 TEST_CASE("at 80x24 the snooker panel shows both players, the score and what is on",
           "[tui][panel][snooker]") {
-    const View v = snooker_view();
-    const Layout l = make_layout(snooker_table, 80, 24);
-    REQUIRE(l.fits);
-    const Grid g = render(v, l, {256, true}, 80, 24);
-    std::string panel;
-    for (const std::string& row : panel_rows(g, l))
-        panel += row + "\n";
+    const std::string panel = panel_text(snooker_view(), 80, 24);
     CAPTURE(panel);
     CHECK(panel.find("Alexandrina") != std::string::npos);
     CHECK(panel.find("Bartholomew") != std::string::npos);
@@ -278,12 +282,7 @@ TEST_CASE("a message longer than its rows ends in an ellipsis after a whole word
           "[tui][panel][snooker]") {
     View v = snooker_view();
     v.message = long_foul_message;
-    const Layout l = make_layout(snooker_table, 80, 24);
-    REQUIRE(l.fits);
-    const Grid g = render(v, l, {256, true}, 80, 24);
-    std::string panel;
-    for (const std::string& row : panel_rows(g, l))
-        panel += row + "\n";
+    const std::string panel = panel_text(v, 80, 24);
     CAPTURE(panel);
     // Too long for the rows below the table: its start is shown, its end is marked as left out.
     REQUIRE(panel.find("Foul and a miss") != std::string::npos);
@@ -291,10 +290,5 @@ TEST_CASE("a message longer than its rows ends in an ellipsis after a whole word
     CHECK(panel.find(ellipsis) != std::string::npos);
     CHECK(cut_words(v, 80, 24).empty());
     // With room for it all, nothing is marked.
-    const Layout tall = make_layout(snooker_table, 200, 60);
-    const Grid whole = render(v, tall, {256, true}, 200, 60);
-    std::string all;
-    for (const std::string& row : panel_rows(whole, tall))
-        all += row + " ";
-    CHECK(all.find(ellipsis) == std::string::npos);
+    CHECK(panel_text(v, 200, 60).find(ellipsis) == std::string::npos);
 }
