@@ -6,8 +6,9 @@
 // save waits for the disk, and a hundred tables' saves one after the other held every table
 // up behind them.
 //
-// The loop's state and its pieces are in server_state.hpp; each server_*.cpp holds one part:
-// connections, the lobby, seats, the game's actions, persistence, and the messages' dispatch.
+// The loop turns bytes into lines for the hall core (hall_core.hpp: tables, seats, the lobby,
+// the computer seats, the saves) and the core's outbox into bytes; its state is in
+// server_loop.hpp, its connections in server_connections.cpp.
 
 #include "hall/server.hpp"
 
@@ -21,54 +22,11 @@
 #include <unistd.h>
 #include <vector>
 
-#include "hall/server_state.hpp"
+#include "hall/server_loop.hpp"
 
 namespace termpool::hall {
 
-using serving::Clock;
-
-// With idle_exit set, a hall nobody uses goes: no connection and no table for idle_exit in a
-// row (counted from when it last had one, or from its start).
-bool Server::State::idle_for_good(Clock::time_point now) {
-    if (!clients.empty() || !tables.empty()) {
-        idle_since.reset();
-        return false;
-    }
-    if (!idle_since)
-        idle_since = now;
-    if (options.idle_exit.count() <= 0 || now - *idle_since < options.idle_exit)
-        return false;
-    log("no connection and no table for " + std::to_string(options.idle_exit.count()) +
-        " s: exiting");
-    return true;
-}
-
-// Milliseconds until the hall has been idle for idle_exit, -1 for never.
-int Server::State::idle_timeout(Clock::time_point now) const {
-    if (options.idle_exit.count() <= 0 || !idle_since)
-        return -1;
-    const auto due = *idle_since + options.idle_exit - now;
-    return static_cast<int>(
-        std::clamp<long long>(std::chrono::ceil<std::chrono::milliseconds>(due).count(), 0,
-                              std::numeric_limits<int>::max()));
-}
-
-// How long actions took to handle (`termpool hall bench` reads these two lines).
-void Server::State::log_figures() const {
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "handling: %llu actions, p50 %.2f ms, p99 %.2f ms (from the loop's "
-                  "wake-up to the broadcast queued)",
-                  static_cast<unsigned long long>(handling.count()), handling.percentile_ms(0.5),
-                  handling.percentile_ms(0.99));
-    log(line);
-    std::snprintf(line, sizeof line,
-                  "saving: %llu rounds of saves, p50 %.2f ms, p99 %.2f ms (a round's saves "
-                  "side by side)",
-                  static_cast<unsigned long long>(saving.count()), saving.percentile_ms(0.5),
-                  saving.percentile_ms(0.99));
-    log(line);
-}
+using Clock = std::chrono::steady_clock;
 
 Server::Server(ServerOptions options) : state_(std::make_unique<State>(std::move(options))) {}
 
@@ -84,12 +42,12 @@ Server::~Server() {
 
 std::string Server::open() {
     State& s = *state_;
-    if (!s.stop_pipe.open() || !s.pool.ok())
+    if (!s.stop_pipe.open() || !s.core.ok())
         return std::string("pipe: ") + std::strerror(errno);
     if (std::string problem = s.listen_on(s.options.socket_path); !problem.empty())
         return problem;
-    s.restore();
-    s.log("serving on " + s.options.socket_path);
+    s.core.restore(Clock::now(), std::chrono::system_clock::now());
+    s.core.log("serving on " + s.options.socket_path);
     return {};
 }
 
@@ -98,7 +56,7 @@ void Server::stop() {
 }
 
 std::size_t Server::table_count() const {
-    return state_->table_count;
+    return state_->core.table_count();
 }
 
 std::size_t Server::rounds() const {
@@ -117,76 +75,64 @@ int Server::run() {
         fds.clear();
         ids.clear();
         fds.push_back({s.stop_pipe.read_end.get(), POLLIN, 0});
-        fds.push_back({s.pool.wake_fd(), POLLIN, 0});
+        fds.push_back({s.core.computer_fd(), POLLIN, 0});
         const auto now = Clock::now();
-        if (s.idle_for_good(now))
+        if (s.core.idle_for_good(now))
             break;
         if (s.accept_paused_until && now >= *s.accept_paused_until)
             s.accept_paused_until.reset();
         // A negative fd is left out by poll.
         fds.push_back({s.accept_paused_until ? -1 : s.listener.get(), POLLIN, 0});
         bool lines_waiting = false; // lines read and not handled yet: poll must not sleep
-        for (auto& [id, client] : s.clients) {
-            const bool waiting = client.connection.has_line() && !client.closing;
+        for (auto& [id, link] : s.links) {
+            const bool waiting = link.connection.has_line() && !link.closing;
             lines_waiting = lines_waiting || waiting;
-            const short events = static_cast<short>(
-                (waiting ? 0 : POLLIN) | (client.connection.wants_write() ? POLLOUT : 0));
-            fds.push_back({client.connection.fd(), events, 0});
+            const short events = static_cast<short>((waiting ? 0 : POLLIN) |
+                                                    (link.connection.wants_write() ? POLLOUT : 0));
+            fds.push_back({link.connection.fd(), events, 0});
             ids.push_back(id);
         }
         // A lobby change left over from the last round (a connection dropped) goes out now.
-        const int aim = s.aim_timeout(now);
-        const int away = s.away_timeout(now);
-        int timeout = aim < 0 ? away : away < 0 ? aim : std::min(aim, away);
-        const int paused = s.accept_paused_until
-                               ? static_cast<int>(std::chrono::ceil<std::chrono::milliseconds>(
-                                                      *s.accept_paused_until - now)
-                                                      .count())
-                               : -1;
-        for (const int due :
-             {s.lobby_timeout(now), s.hello_timeout(now), paused, s.idle_timeout(now)})
-            if (due >= 0)
-                timeout = timeout < 0 ? due : std::min(timeout, due);
+        int timeout = s.core.timeout(now);
+        if (s.accept_paused_until) {
+            const int paused = static_cast<int>(
+                std::chrono::ceil<std::chrono::milliseconds>(*s.accept_paused_until - now).count());
+            timeout = timeout < 0 ? paused : std::min(timeout, paused);
+        }
         if (lines_waiting)
             timeout = 0;
         if (::poll(fds.data(), fds.size(), timeout) < 0 && errno != EINTR) {
-            s.log(std::string("poll: ") + std::strerror(errno));
+            s.core.log(std::string("poll: ") + std::strerror(errno));
             break;
         }
         s.woke = Clock::now();
         ++s.rounds;
         if (fds[0].revents & POLLIN)
             break;
-        if (fds[1].revents & POLLIN)
-            s.computer_answers();
+        if (fds[1].revents & POLLIN) {
+            s.core.on_computer_answers(s.woke);
+            s.deliver();
+        }
         if (fds[2].revents & POLLIN)
             s.accept_clients();
         for (std::size_t i = 0; i < ids.size(); ++i) {
-            const auto found = s.clients.find(ids[i]);
-            if (found == s.clients.end() || found->second.closing)
+            const auto found = s.links.find(ids[i]);
+            if (found == s.links.end() || found->second.closing)
                 continue;
             const bool readable = fds[i + 3].revents & (POLLIN | POLLHUP | POLLERR);
             if (readable || found->second.connection.has_line())
-                s.serve_client(found->second, readable);
+                s.serve_client(found->first, found->second, readable);
         }
-        s.settle();
-        s.flush_aims(Clock::now());
+        s.core.tick(Clock::now());
+        s.deliver();
         s.drop_closed();
-        s.expire_away(Clock::now());
-        s.expire_unwelcomed(Clock::now());
-        s.send_lobbies(Clock::now());
-        for (auto& [id, client] : s.clients)
-            if (!client.closing && client.connection.wants_write() && !client.connection.flush())
-                client.closing = true;
+        s.flush_all();
         s.drop_closed();
     }
 
-    int status = 0;
-    for (auto& [number, table] : s.tables)
-        if (!s.save(table))
-            status = 1;
-    s.log_figures();
-    s.log("stopped with " + std::to_string(s.tables.size()) + " tables saved");
+    const int status = s.core.save_all() ? 0 : 1;
+    s.core.log_figures();
+    s.core.log("stopped with " + std::to_string(s.core.table_count()) + " tables saved");
     return status;
 }
 

@@ -1,5 +1,6 @@
-// The hall server's connections: the listening socket, accepting, reading lines, sending
-// (each client's queue bounded), and connections that go.
+// The hall server's connections: the listening socket, accepting, reading lines for the
+// hall core, and sending what the core says (each client's queue bounded: a client that
+// stops reading is cut off).
 
 #include <algorithm>
 #include <cerrno>
@@ -8,73 +9,32 @@
 #include <sys/stat.h>
 #include <sys/un.h>
 #include <unistd.h>
+#include <vector>
 
-#include "hall/server_state.hpp"
+#include "hall/server_loop.hpp"
 
 namespace termpool::hall {
 
-void Server::State::send(Client& client, const ServerMessage& message) {
-    if (client.closing)
-        return;
-    if (!client.connection.queue(format_server(message), options.output_limit)) {
-        log("client " + std::to_string(client.id) + " stopped reading: disconnected");
-        client.closing = true;
+// The core's outbox, queued on each client's connection; a connection the core ends sends
+// what it can now and closes its writing side, so that the peer reads the last reply before
+// the close rather than lose it to a reset (its unread input is discarded with the socket).
+void Server::State::deliver() {
+    for (Outgoing& out : core.take_outbox()) {
+        const auto found = links.find(out.client);
+        if (found == links.end() || found->second.closing)
+            continue;
+        Link& link = found->second;
+        if (!out.text.empty() && !link.connection.queue(out.text, options.output_limit)) {
+            core.log("client " + std::to_string(out.client) + " stopped reading: disconnected");
+            link.closing = true;
+            continue;
+        }
+        if (out.close) {
+            link.connection.flush();
+            ::shutdown(link.connection.fd(), SHUT_WR);
+            link.closing = true;
+        }
     }
-}
-
-void Server::State::send_error(Client& client, ErrorCode code, const std::string& text) {
-    send(client, Error{code, text});
-    // A budget that refills: a player who now and then sends something stale (a lobby row that
-    // just went, a second Enter) over a long evening is not cut off; a flood is.
-    if (!client.errors.take(options.error_rate, std::max(0, options.max_errors - 1),
-                            Clock::now())) {
-        log("client " + std::to_string(client.id) + ": too many errors, disconnected");
-        client.closing = true;
-    }
-}
-
-// Sends what can go now and ends the connection (after a fatal error).
-void Server::State::send_and_close(Client& client, ErrorCode code, const std::string& text) {
-    send(client, Error{code, text});
-    client.connection.flush();
-    // The end of the stream follows the reply, so the peer reads it before the close
-    // rather than lose it to a reset (its unread input is discarded with the socket).
-    ::shutdown(client.connection.fd(), SHUT_WR);
-    client.closing = true;
-}
-
-void Server::State::send_to_table(const Table& table, const ServerMessage& message, int except) {
-    const std::string line = format_server(message);
-    for (auto& [id, client] : clients)
-        if (client.table == table.number && id != except && !client.closing &&
-            !client.connection.queue(line, options.output_limit)) {
-            log("client " + std::to_string(id) + " stopped reading: disconnected");
-            client.closing = true;
-        }
-}
-
-// A connection that has not said hello within hello_timeout goes: a silent one must not
-// hold a place.
-void Server::State::expire_unwelcomed(Clock::time_point now) {
-    for (auto& [id, client] : clients)
-        if (!client.welcomed && !client.closing &&
-            now - client.connected_at >= options.hello_timeout) {
-            log("client " + std::to_string(id) + " said no hello: disconnected");
-            send_and_close(client, ErrorCode::hello_first, "no hello in time");
-        }
-}
-
-// Milliseconds until a connection's hello is due, -1 for none.
-int Server::State::hello_timeout(Clock::time_point now) const {
-    int timeout = -1;
-    for (const auto& [id, client] : clients)
-        if (!client.welcomed && !client.closing) {
-            const auto due = client.connected_at + options.hello_timeout - now;
-            const int ms = static_cast<int>(
-                std::max<long long>(0, std::chrono::ceil<std::chrono::milliseconds>(due).count()));
-            timeout = timeout < 0 ? ms : std::min(timeout, ms);
-        }
-    return timeout;
 }
 
 void Server::State::accept_clients() {
@@ -83,7 +43,7 @@ void Server::State::accept_clients() {
         UniqueFd fd(::accept(listener.get(), nullptr, nullptr));
         if (!fd) {
             if (errno == EMFILE || errno == ENFILE || errno == ENOBUFS || errno == ENOMEM) {
-                log(std::string("accept: ") + std::strerror(errno) + ": pausing 100 ms");
+                core.log(std::string("accept: ") + std::strerror(errno) + ": pausing 100 ms");
                 accept_paused_until = Clock::now() + std::chrono::milliseconds(100);
                 ++accept_pauses;
             }
@@ -91,58 +51,66 @@ void Server::State::accept_clients() {
         }
         if (!make_nonblocking(fd.get()))
             continue;
-        Client client(next_client_id++, Connection(std::move(fd)), Clock::now());
-        const auto unwelcomed = std::count_if(clients.begin(), clients.end(), [](const auto& e) {
-            return !e.second.welcomed && !e.second.closing;
-        });
-        if (unwelcomed >= options.max_unwelcomed) {
-            send_and_close(client, ErrorCode::full, "too many connections wait for hello");
-            continue; // closed as it goes out of scope
-        }
-        clients.emplace(client.id, std::move(client));
+        const int id = next_client_id++;
+        links.emplace(id, Link{Connection(std::move(fd)), false});
+        core.on_connect(id, Clock::now());
+        deliver();
     }
 }
 
 // Reads what the socket holds only once the lines read before are handled (the input
-// buffer stays bounded), then handles at most lines_per_round of them: a client that
+// buffer stays bounded), then hands the core at most lines_per_round of them: a client that
 // sends a flood waits its turn behind the others, round by round.
-void Server::State::serve_client(Client& client, bool readable) {
-    if (readable && !client.connection.has_line()) {
-        switch (client.connection.read()) {
+void Server::State::serve_client(int id, Link& link, bool readable) {
+    if (readable && !link.connection.has_line()) {
+        switch (link.connection.read()) {
         case Connection::ReadResult::closed:
-            client.closing = true;
+            link.closing = true;
             return;
         case Connection::ReadResult::too_long:
-            send_and_close(client, ErrorCode::too_long,
-                           "a line is at most " + std::to_string(max_line_bytes) + " bytes");
+            link.connection.queue(
+                format_server(
+                    Error{ErrorCode::too_long,
+                          "a line is at most " + std::to_string(max_line_bytes) + " bytes"}),
+                options.output_limit);
+            link.connection.flush();
+            ::shutdown(link.connection.fd(), SHUT_WR);
+            link.closing = true;
             return;
         case Connection::ReadResult::ok:
             break;
         }
     }
-    for (int i = 0; i < options.lines_per_round && client.connection.has_line(); ++i) {
-        if (client.closing)
+    for (int i = 0; i < options.lines_per_round && link.connection.has_line(); ++i) {
+        if (link.closing)
             return;
-        on_line(client, client.connection.take_line());
+        core.on_line(id, link.connection.take_line(), woke);
+        deliver();
     }
 }
 
+// The connections to close go, and the core is told (their seats go away, which others see).
 void Server::State::drop_closed() {
-    std::vector<int> closed;
-    for (auto& [id, client] : clients)
-        if (client.closing)
-            closed.push_back(id);
-    for (const int id : closed) {
-        Client& client = clients.at(id);
-        const int number = client.table;
-        const std::string token_hash = client.token_hash;
-        leave_table(client);
-        clients.erase(id);
-        if (auto found = tables.find(number); found != tables.end())
-            forget_if_idle(found->second);
-        forget_waiting_tables_of(token_hash);
-        lobby_dirty = true;
+    for (;;) {
+        std::vector<int> closed;
+        for (const auto& [id, link] : links)
+            if (link.closing)
+                closed.push_back(id);
+        if (closed.empty())
+            return;
+        for (const int id : closed) {
+            links.erase(id);
+            core.on_disconnect(id, Clock::now());
+        }
+        deliver();
     }
+}
+
+// Writes what each socket takes now.
+void Server::State::flush_all() {
+    for (auto& [id, link] : links)
+        if (!link.closing && link.connection.wants_write() && !link.connection.flush())
+            link.closing = true;
 }
 
 std::string Server::State::listen_on(const std::string& path) {

@@ -1,10 +1,10 @@
-// The hall server's game: an action checked by the table's Match on a copy, saved with the
+// The hall core's game: an action checked by the table's Match on a copy, saved with the
 // round's others side by side, then taken and sent; the computer's moves; aims and chat.
 
 #include <algorithm>
 #include <cstdio>
 
-#include "hall/server_state.hpp"
+#include "hall/hall_core.hpp"
 
 namespace termpool::hall {
 
@@ -23,72 +23,73 @@ using serving::default_name;
 // After a change: a computer to act gets a search; a race whose next breaker is a computer
 // racks at once (a person racks with next-rack when they are ready).
 // Two seats trading fouls could grow a record without end: a table keeps so many actions.
-bool Server::State::at_action_cap(const Table& table) const {
-    return table.match.record().actions.size() >= options.max_actions;
+bool HallCore::at_action_cap(const Table& table) const {
+    return table.match.record().actions.size() >= options_.max_actions;
 }
 
 // A table whose action waits for its save thinks once it is saved (action_taken).
-void Server::State::think(Table& table) {
+void HallCore::think(Table& table, Clock::time_point now) {
     if (!full(table) || table.searching || table.saving || at_action_cap(table))
         return;
     const PendingAction pending = table.match.pending();
     if (pending.kind == Pending::next_rack && table.seats[pending.player - 1].computer) {
         Match next = table.match;
         if (next.next_rack(pending.player) == MatchError::none)
-            propose(table, std::move(next), Proposal::From::computer_rack, 0, pending.player);
+            propose(table, std::move(next), Proposal::From::computer_rack, 0, pending.player, now);
         return;
     }
     if (!table.match.computer_to_act())
         return;
     table.searching = true;
     table.search_ticket = table.ticket;
-    pool.submit(ComputerJob{table.number, table.ticket, table.match, std::nullopt});
+    pool_.submit(ComputerJob{table.number, table.ticket, table.match, std::nullopt});
 }
 
 // `next`, the table's match with one more action, is saved at the end of the round (or
 // sooner, see on_message); only then does it become the table's, and the table is told. An
 // action that could not be saved is not taken: were it played, a restart would lose it.
-void Server::State::propose(Table& table, Match next, Proposal::From from, int client, int seat) {
+void HallCore::propose(Table& table, Match next, Proposal::From from, int client, int seat,
+                       Clock::time_point now) {
     table.saving = true;
-    batch.push_back(Proposal{table.number, std::move(next), from, client, seat, woke, {}});
+    batch_.push_back(Proposal{table.number, std::move(next), from, client, seat, now, {}});
 }
 
 // Saves the actions waiting, side by side (each save waits for the disk: a round's saves
 // one after the other held every table up), then takes each one saved and tells its
 // table. Nothing else happened to those tables in between: the result is as if each had
 // been saved and taken at once.
-void Server::State::settle() {
-    if (settling)
+void HallCore::settle(Clock::time_point now) {
+    if (settling_)
         return; // settle's own loop takes what is proposed meanwhile
-    settling = true;
-    while (!batch.empty()) {
-        std::vector<Proposal> round = std::exchange(batch, {});
-        if (!options.state_dir.empty()) {
+    settling_ = true;
+    while (!batch_.empty()) {
+        std::vector<Proposal> round = std::exchange(batch_, {});
+        if (!options_.state_dir.empty()) {
             std::vector<SavedTable> stored;
             for (const Proposal& p : round)
-                stored.push_back(saved_form(tables.at(p.table), p.next));
-            const auto start = Clock::now();
-            savers.run(round.size(), [&](std::size_t i) {
-                round[i].problem = save_table(options.state_dir, stored[i]);
+                stored.push_back(saved_form(tables_.at(p.table), p.next));
+            const auto start = stopwatch();
+            savers_.run(round.size(), [&](std::size_t i) {
+                round[i].problem = save_table(options_.state_dir, stored[i]);
             });
-            saving.add(Clock::now() - start);
+            saving_.add(stopwatch() - start);
         }
         for (Proposal& p : round)
-            taken_or_not(p);
+            taken_or_not(p, now);
     }
-    settling = false;
+    settling_ = false;
 }
 
-void Server::State::taken_or_not(Proposal& p) {
-    const auto found = tables.find(p.table);
-    if (found == tables.end())
+void HallCore::taken_or_not(Proposal& p, Clock::time_point now) {
+    const auto found = tables_.find(p.table);
+    if (found == tables_.end())
         return;
     Table& table = found->second;
     table.saving = false;
     if (p.problem.empty()) {
         table.match = std::move(p.next);
-        action_taken(table);
-        handling.add(Clock::now() - p.since);
+        action_taken(table, now);
+        handling_.add(stopwatch() - p.since);
         if (p.from == Proposal::From::computer_move)
             table.refusals = 0;
         return;
@@ -96,12 +97,12 @@ void Server::State::taken_or_not(Proposal& p) {
     log("cannot save table " + std::to_string(table.number) + ": " + p.problem);
     switch (p.from) {
     case Proposal::From::person:
-        if (const auto client = clients.find(p.client); client != clients.end())
+        if (const auto client = clients_.find(p.client); client != clients_.end())
             send_error(client->second, ErrorCode::internal,
-                       "the action could not be saved: nothing changed, try again");
+                       "the action could not be saved: nothing changed, try again", now);
         break;
     case Proposal::From::computer_move:
-        computer_refused(table, p.seat, "it could not be saved");
+        computer_refused(table, p.seat, "it could not be saved", now);
         break;
     case Proposal::From::computer_rack:
         log("table " + std::to_string(table.number) + ": the next rack waits");
@@ -110,7 +111,7 @@ void Server::State::taken_or_not(Proposal& p) {
 }
 
 // The match took an action (saved): tell the table, move on.
-void Server::State::action_taken(Table& table) {
+void HallCore::action_taken(Table& table, Clock::time_point now) {
     changed(table);
     const bool now_over = over(table);
     const auto& actions = table.match.record().actions;
@@ -122,14 +123,14 @@ void Server::State::action_taken(Table& table) {
     for (SeatSlot& slot : table.seats)
         slot.pending_aim.reset();
     if (now_over)
-        lobby_dirty = true;
-    think(table);
+        lobby_dirty_ = true;
+    think(table, now);
 }
 
-void Server::State::on_sync(Client& client, const Sync& sync) {
+void HallCore::on_sync(Client& client, const Sync& sync, Clock::time_point now) {
     Table* table = table_of(client);
     if (!table)
-        return send_error(client, ErrorCode::no_table, "you are at no table");
+        return send_error(client, ErrorCode::no_table, "you are at no table", now);
     const std::string at = "table " + std::to_string(table->number) + ": ";
     if (!sync.seq) {
         log("client " + std::to_string(client.id) + " resynchronises table " +
@@ -159,7 +160,7 @@ void Server::State::on_sync(Client& client, const Sync& sync) {
     send_record(client, *table);
 }
 
-MatchError Server::State::play(Match& match, int seat, const RecordedAction& action) {
+MatchError HallCore::play(Match& match, int seat, const RecordedAction& action) {
     switch (action.kind) {
     case RecordedAction::Kind::place:
         return match.place(seat, action.place);
@@ -177,29 +178,29 @@ MatchError Server::State::play(Match& match, int seat, const RecordedAction& act
     return MatchError::not_now;
 }
 
-void Server::State::computer_answers() {
-    for (ComputerJob& answer : pool.take_answers()) {
-        const auto found = tables.find(answer.table);
-        if (found == tables.end() || !found->second.searching ||
+void HallCore::computer_answers(std::vector<ComputerJob> answers, Clock::time_point now) {
+    for (ComputerJob& answer : answers) {
+        const auto found = tables_.find(answer.table);
+        if (found == tables_.end() || !found->second.searching ||
             found->second.search_ticket != answer.ticket)
             continue; // a table that is gone (its number may be another table's now)
         Table& table = found->second;
         if (table.saving)
-            settle();
+            settle(now);
         table.searching = false;
         // The table changed while the computer thought (someone left, a seat changed):
         // the answer is for a table that is no more; ask again if still the computer's turn.
         if (answer.ticket != table.ticket) {
             log("table " + std::to_string(table.number) +
                 ": the computer's answer is for the table as it was: dropped");
-            think(table);
+            think(table, now);
             continue;
         }
         if (!full(table) || !table.match.computer_to_act())
             continue;
         const int seat = table.match.to_act();
         if (!answer.move) {
-            computer_refused(table, seat, "it found no move");
+            computer_refused(table, seat, "it found no move", now);
             continue;
         }
         RecordedAction action;
@@ -215,21 +216,22 @@ void Server::State::computer_answers() {
         // carrying).
         Match next = table.match;
         if (const MatchError error = play(next, seat, action); error != MatchError::none) {
-            computer_refused(table, seat, match_error_text(error));
+            computer_refused(table, seat, match_error_text(error), now);
             continue;
         }
-        next.reseed_computers(random());
-        propose(table, std::move(next), Proposal::From::computer_move, 0, seat);
+        next.reseed_computers(random_());
+        propose(table, std::move(next), Proposal::From::computer_move, 0, seat, now);
     }
 }
 
 // The computer's move did not play: it searches again (with a new stream); after a few
 // refusals in a row the seat is freed rather than leave the table stuck.
-void Server::State::computer_refused(Table& table, int seat, const std::string& why) {
+void HallCore::computer_refused(Table& table, int seat, const std::string& why,
+                                Clock::time_point now) {
     log("table " + std::to_string(table.number) + ": the computer's move was refused: " + why);
-    table.match.reseed_computers(random());
+    table.match.reseed_computers(random_());
     if (++table.refusals < 3)
-        return think(table);
+        return think(table, now);
     log("table " + std::to_string(table.number) + ": seat " + std::to_string(seat) +
         " freed: its computer cannot move");
     table.refusals = 0;
@@ -240,21 +242,22 @@ void Server::State::computer_refused(Table& table, int seat, const std::string& 
     seat_changed(table, seat);
 }
 
-void Server::State::on_act(Client& client, const RecordedAction& action) {
+void HallCore::on_act(Client& client, const RecordedAction& action, Clock::time_point now) {
     Table* table = table_of(client);
     if (!table)
-        return send_error(client, ErrorCode::no_table, "you are at no table");
+        return send_error(client, ErrorCode::no_table, "you are at no table", now);
     if (client.seat == 0)
-        return send_error(client, ErrorCode::not_seated, "spectators do not play");
+        return send_error(client, ErrorCode::not_seated, "spectators do not play", now);
     if (!full(*table))
-        return send_error(client, ErrorCode::refused, "waiting for an opponent");
-    if (!table->seats[client.seat - 1].actions.take(options.action_rate, options.action_burst,
-                                                    Clock::now()))
-        return send_error(client, ErrorCode::rate, "too many actions: slow down");
+        return send_error(client, ErrorCode::refused, "waiting for an opponent", now);
+    if (!table->seats[client.seat - 1].actions.take(options_.action_rate, options_.action_burst,
+                                                    now))
+        return send_error(client, ErrorCode::rate, "too many actions: slow down", now);
     if (at_action_cap(*table))
         return send_error(client, ErrorCode::refused,
-                          "this game has had " + std::to_string(options.max_actions) +
-                              " actions, the most a table keeps: no more are taken");
+                          "this game has had " + std::to_string(options_.max_actions) +
+                              " actions, the most a table keeps: no more are taken",
+                          now);
     Match next = table->match;
     if (const MatchError error = play(next, client.seat, action); error != MatchError::none) {
         // A refused strike is told in the simulator's words (which limit, how far off).
@@ -262,27 +265,28 @@ void Server::State::on_act(Client& client, const RecordedAction& action) {
             action.kind == RecordedAction::Kind::shot && error == MatchError::bad_strike
                 ? strike_problem(action.strike, table->match.game().params())
                 : std::nullopt;
-        return send_error(client, ErrorCode::refused, why ? *why : match_error_text(error));
+        return send_error(client, ErrorCode::refused, why ? *why : match_error_text(error), now);
     }
-    propose(*table, std::move(next), Proposal::From::person, client.id, client.seat);
+    propose(*table, std::move(next), Proposal::From::person, client.id, client.seat, now);
 }
 
-void Server::State::on_aim(Client& client, const Aim& aim) {
+void HallCore::on_aim(Client& client, const Aim& aim, Clock::time_point now) {
     Table* table = table_of(client);
     // An aim from someone not to shoot is dropped silently: one sent just before the
     // other player's shot arrived is no fault.
     if (!table || client.seat == 0 || !full(*table) || table->match.to_act() != client.seat)
         return;
     table->seats[client.seat - 1].pending_aim = aim.strike;
-    flush_aims(Clock::now());
+    flush_aims(now);
 }
 
 // Forwards each seat's newest aim once its interval has passed.
-void Server::State::flush_aims(Clock::time_point now) {
-    for (auto& [number, table] : tables)
+void HallCore::flush_aims(Clock::time_point now) {
+    for (auto& [number, table] : tables_)
         for (int s = 1; s <= 2; ++s) {
             SeatSlot& slot = table.seats[s - 1];
-            if (!slot.pending_aim || (slot.last_aim && now - *slot.last_aim < options.aim_interval))
+            if (!slot.pending_aim ||
+                (slot.last_aim && now - *slot.last_aim < options_.aim_interval))
                 continue;
             send_to_table(table, AimShown{number, s, *slot.pending_aim}, slot.client);
             slot.pending_aim.reset();
@@ -291,12 +295,12 @@ void Server::State::flush_aims(Clock::time_point now) {
 }
 
 // Milliseconds until the next aim is due, -1 for none.
-int Server::State::aim_timeout(Clock::time_point now) const {
+int HallCore::aim_timeout(Clock::time_point now) const {
     int timeout = -1;
-    for (const auto& [number, table] : tables)
+    for (const auto& [number, table] : tables_)
         for (const SeatSlot& slot : table.seats)
             if (slot.pending_aim && slot.last_aim) {
-                const auto due = *slot.last_aim + options.aim_interval - now;
+                const auto due = *slot.last_aim + options_.aim_interval - now;
                 const int ms = static_cast<int>(std::max<long long>(
                     0, std::chrono::ceil<std::chrono::milliseconds>(due).count()));
                 timeout = timeout < 0 ? ms : std::min(timeout, ms);
@@ -304,13 +308,12 @@ int Server::State::aim_timeout(Clock::time_point now) const {
     return timeout;
 }
 
-void Server::State::on_chat(Client& client, const Chat& chat) {
+void HallCore::on_chat(Client& client, const Chat& chat, Clock::time_point now) {
     Table* table = table_of(client);
     if (!table)
-        return send_error(client, ErrorCode::no_table, "chat is at a table");
-    const auto now = Clock::now();
-    if (client.last_chat && now - *client.last_chat < options.chat_interval)
-        return send_error(client, ErrorCode::rate, "one chat line a second");
+        return send_error(client, ErrorCode::no_table, "chat is at a table", now);
+    if (client.last_chat && now - *client.last_chat < options_.chat_interval)
+        return send_error(client, ErrorCode::rate, "one chat line a second", now);
     client.last_chat = now;
     send_to_table(*table, ChatShown{table->number, client.name, chat.text});
 }

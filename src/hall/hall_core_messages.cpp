@@ -1,12 +1,12 @@
-// The hall server's messages: each line read, parsed, budgeted and handed to its handler.
+// The hall core's messages: each line read, parsed, budgeted and handed to its handler.
 
-#include "hall/server_state.hpp"
+#include "hall/hall_core.hpp"
 
 namespace termpool::hall {
 
-void Server::State::on_message(Client& client, const ClientMessage& message) {
+void HallCore::on_message(Client& client, const ClientMessage& message, Clock::time_point now) {
     if (!client.welcomed && !std::holds_alternative<Hello>(message))
-        return send_error(client, ErrorCode::hello_first, "say hello first");
+        return send_error(client, ErrorCode::hello_first, "say hello first", now);
     // An action at a table waits for its save (settle) until the round ends, unless a
     // message could see or change that table first: every message but an action, an aim
     // or a chat line at the sender's own table settles the round's actions before it is
@@ -16,57 +16,61 @@ void Server::State::on_message(Client& client, const ClientMessage& message) {
         std::holds_alternative<Aim>(message) || std::holds_alternative<Chat>(message) ||
         std::holds_alternative<Ping>(message);
     if (const Table* own = table_of(client);
-        !batch.empty() && (!own_table_only || (own && own->saving)))
-        settle();
+        !batch_.empty() && (!own_table_only || (own && own->saving)))
+        settle(now);
     if (const auto* m = std::get_if<Hello>(&message))
-        return on_hello(client, *m);
+        return on_hello(client, *m, now);
     // The requests that send a record or change the lobby have a budget, so that one
     // client cannot make the hall busy for everyone.
     const bool costly =
         std::holds_alternative<Create>(message) || std::holds_alternative<Sit>(message) ||
         std::holds_alternative<Watch>(message) || std::holds_alternative<Leave>(message) ||
         std::holds_alternative<Sync>(message);
-    if (costly && !client.requests.take(options.request_rate, options.request_burst, Clock::now()))
-        return send_error(client, ErrorCode::rate, "too many requests: slow down");
+    if (costly && !client.requests.take(options_.request_rate, options_.request_burst, now))
+        return send_error(client, ErrorCode::rate, "too many requests: slow down", now);
     if (const auto* m = std::get_if<Create>(&message))
-        return on_create(client, *m);
+        return on_create(client, *m, now);
     if (const auto* m = std::get_if<Sit>(&message))
-        return on_sit(client, *m);
+        return on_sit(client, *m, now);
     if (const auto* m = std::get_if<Watch>(&message))
-        return on_watch(client, *m);
+        return on_watch(client, *m, now);
     if (std::holds_alternative<Leave>(message)) {
         const int number = client.table;
         if (number == 0)
-            return send_error(client, ErrorCode::no_table, "you are at no table");
-        leave_table(client);
+            return send_error(client, ErrorCode::no_table, "you are at no table", now);
+        leave_table(client, now);
         return send(client, Left{number});
     }
     if (const auto* m = std::get_if<Act>(&message))
-        return on_act(client, m->action);
+        return on_act(client, m->action, now);
     if (std::holds_alternative<NextRack>(message)) {
         RecordedAction rack;
         rack.kind = RecordedAction::Kind::rack;
-        return on_act(client, rack);
+        return on_act(client, rack, now);
     }
     if (const auto* m = std::get_if<Aim>(&message))
-        return on_aim(client, *m);
+        return on_aim(client, *m, now);
     if (const auto* m = std::get_if<Chat>(&message))
-        return on_chat(client, *m);
+        return on_chat(client, *m, now);
     if (const auto* m = std::get_if<SeatComputer>(&message))
-        return on_computer(client, *m);
+        return on_computer(client, *m, now);
     if (const auto* m = std::get_if<Sync>(&message))
-        return on_sync(client, *m);
+        return on_sync(client, *m, now);
     send(client, Pong{});
 }
 
-void Server::State::on_line(Client& client, std::string_view line) {
+void HallCore::on_line(int id, std::string_view line, Clock::time_point now) {
+    const auto found = clients_.find(id);
+    if (found == clients_.end() || found->second.closing)
+        return;
+    Client& client = found->second;
     auto parsed = parse_client(line);
     if (const auto* error = std::get_if<ProtocolError>(&parsed)) {
         if (error->code == ErrorCode::version)
             return send_and_close(client, ErrorCode::version, error->text);
-        return send_error(client, error->code, error->text);
+        return send_error(client, error->code, error->text, now);
     }
-    on_message(client, std::get<ClientMessage>(parsed));
+    on_message(client, std::get<ClientMessage>(parsed), now);
 }
 
 } // namespace termpool::hall

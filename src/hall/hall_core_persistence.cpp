@@ -1,25 +1,25 @@
-// The hall server's state folder: each table saved after every change, all restored when
+// The hall core's state folder: each table saved after every change, all restored when
 // the server starts again.
 
 #include <limits>
 #include <sys/stat.h>
 
-#include "hall/server_state.hpp"
+#include "hall/hall_core.hpp"
 
 namespace termpool::hall {
 
 // `table` as it is with `match` in place of its own, as it is saved.
-SavedTable Server::State::saved_form(const Table& table, const Match& match) {
+SavedTable HallCore::saved_form(const Table& table, const Match& match) {
     SavedTable stored{table.number, match.record(), {}};
     for (int s = 0; s < 2; ++s)
         stored.seat_tokens[s] = table.seats[s].token_hash;
     return stored;
 }
 
-bool Server::State::save(const Table& table) {
-    if (options.state_dir.empty())
+bool HallCore::save(const Table& table) {
+    if (options_.state_dir.empty())
         return true;
-    if (const std::string problem = save_table(options.state_dir, saved_form(table, table.match));
+    if (const std::string problem = save_table(options_.state_dir, saved_form(table, table.match));
         !problem.empty()) {
         log("cannot save table " + std::to_string(table.number) + ": " + problem);
         return false;
@@ -27,25 +27,25 @@ bool Server::State::save(const Table& table) {
     return true;
 }
 
-void Server::State::restore() {
-    if (options.state_dir.empty())
+void HallCore::restore(Clock::time_point now, std::chrono::system_clock::time_point wall_now) {
+    if (options_.state_dir.empty())
         return;
     std::vector<std::string> problems;
-    for (SavedTable& stored : load_tables(options.state_dir, problems)) {
+    for (SavedTable& stored : load_tables(options_.state_dir, problems)) {
         // A restored computer starts a new stream, as a resumed local game's does.
         auto replayed =
-            Match::replay(stored.record, std::numeric_limits<std::size_t>::max(), {}, random());
+            Match::replay(stored.record, std::numeric_limits<std::size_t>::max(), {}, random_());
         if (!std::holds_alternative<Match>(replayed))
             continue;
         Table table{stored.number,
                     std::move(std::get<Match>(replayed)),
                     {},
-                    ++last_ticket,
+                    ++last_ticket_,
                     false,
                     {},
                     0,
                     0};
-        const auto away_since = file_changed(stored.number);
+        const auto away_since = file_changed(stored.number, now, wall_now);
         for (int s = 0; s < 2; ++s) {
             table.seats[s].computer = stored.record.computers[s].has_value();
             // Nobody is connected yet: a seat of a game not started is nobody's.
@@ -54,31 +54,32 @@ void Server::State::restore() {
                 table.seats[s].away_since = away_since;
             }
         }
-        tables.emplace(stored.number, std::move(table));
+        tables_.emplace(stored.number, std::move(table));
     }
     for (const std::string& problem : problems)
         log("not restored: " + problem);
-    table_count = tables.size();
-    expire_away(Clock::now());
+    table_count_ = tables_.size();
+    expire_away(now);
     std::vector<int> numbers;
-    for (const auto& [number, table] : tables)
+    for (const auto& [number, table] : tables_)
         numbers.push_back(number);
     for (const int number : numbers)
-        forget_if_idle(tables.at(number));
-    log("restored " + std::to_string(tables.size()) + " tables");
-    for (auto& [number, table] : tables)
-        think(table);
+        forget_if_idle(tables_.at(number));
+    log("restored " + std::to_string(tables_.size()) + " tables");
+    for (auto& [number, table] : tables_)
+        think(table, now);
 }
 
 // When table `number`'s file last changed, on the steady clock: a restored away seat went
 // away then at the latest (the file is rewritten on every change of the table).
-Server::State::Clock::time_point Server::State::file_changed(int number) const {
+HallCore::Clock::time_point
+HallCore::file_changed(int number, Clock::time_point now,
+                       std::chrono::system_clock::time_point wall_now) const {
     struct stat info {};
-    const auto now = Clock::now();
-    if (::stat(table_path(options.state_dir, number).c_str(), &info) != 0)
+    if (::stat(table_path(options_.state_dir, number).c_str(), &info) != 0)
         return now;
     const auto changed = std::chrono::system_clock::from_time_t(info.st_mtim.tv_sec);
-    const auto age = std::chrono::system_clock::now() - changed;
+    const auto age = wall_now - changed;
     return age > Clock::duration::zero() ? now - std::chrono::duration_cast<Clock::duration>(age)
                                          : now;
 }
