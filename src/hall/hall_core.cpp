@@ -2,6 +2,8 @@
 // The other parts are in hall_core_*.cpp: the lobby, seats, the game's actions, persistence,
 // and the messages' dispatch.
 
+#include <sys/stat.h>
+
 #include "hall/hall_core.hpp"
 
 #include <algorithm>
@@ -171,10 +173,17 @@ void HallCore::drop(int id, Clock::time_point now) {
     lobby_dirty_ = true;
 }
 
-// With idle_exit set, a hall nobody uses goes: no connection and no table for idle_exit in a
-// row (counted from when it last had one, or from its start).
+// With idle_exit set, a hall nobody uses goes: nobody connected, no search or save under way,
+// and no table that lives only here, for idle_exit in a row (counted from when it last had one,
+// or from its start). With a state folder every table is on disk as it stands (each change is
+// saved before it is taken), so an unfinished game does not keep the process: the next
+// `termpool hall` starts the hall again and it restores the table, its away seats counting
+// from the file's last change as before.
 bool HallCore::idle_for_good(Clock::time_point now) {
-    if (!clients_.empty() || !tables_.empty()) {
+    const bool searching = std::any_of(tables_.begin(), tables_.end(),
+                                       [](const auto& entry) { return entry.second.searching; });
+    const bool tables_held = !tables_.empty() && (options_.state_dir.empty() || !unsaved_.empty());
+    if (!clients_.empty() || tables_held || searching || !batch_.empty()) {
         idle_since_.reset();
         return false;
     }
@@ -182,8 +191,9 @@ bool HallCore::idle_for_good(Clock::time_point now) {
         idle_since_ = now;
     if (options_.idle_exit.count() <= 0 || now - *idle_since_ < options_.idle_exit)
         return false;
-    log("no connection and no table for " + std::to_string(options_.idle_exit.count()) +
-        " s: exiting");
+    log("no connection and no table in memory only for " +
+        std::to_string(options_.idle_exit.count()) + " s: exiting (" +
+        std::to_string(tables_.size()) + " tables wait in the state folder)");
     return true;
 }
 
@@ -196,11 +206,19 @@ int HallCore::idle_timeout(Clock::time_point now) const {
                               std::numeric_limits<int>::max()));
 }
 
-bool HallCore::save_all() {
-    bool saved = true;
-    for (auto& [number, table] : tables_)
-        saved = save(table) && saved;
-    return saved;
+// Only the tables whose last save failed (or that have no file): every other one is on disk
+// as it stands, and writing it again would move its file's date, which a restored away seat
+// counts from.
+std::size_t HallCore::save_all() {
+    std::size_t failed = 0;
+    for (auto& [number, table] : tables_) {
+        struct stat st {};
+        const bool on_disk = options_.state_dir.empty() ||
+                             ::stat(table_path(options_.state_dir, number).c_str(), &st) == 0;
+        if ((unsaved_.count(number) || !on_disk) && !save(table).empty())
+            ++failed;
+    }
+    return failed;
 }
 
 // How long actions took to handle (`termpool hall bench` reads these two lines).

@@ -18,6 +18,7 @@
 #include <map>
 #include <optional>
 #include <random>
+#include <set>
 #include <string>
 #include <string_view>
 #include <termpool/match.hpp>
@@ -76,6 +77,8 @@ struct SeatSlot {
 
 // How many actions' hashes a table keeps for the log of a sync (Table::recent_hashes).
 inline constexpr std::size_t recent_hashes_kept = 16;
+// How many chat lines a table keeps for whoever sits or watches next (Table::chat).
+inline constexpr std::size_t chat_lines_kept = 50;
 
 // A table: its match (the authority on the game), its seats, and the bookkeeping of its
 // computer searches and saves.
@@ -95,6 +98,9 @@ struct Table {
     // The state hash after each of the last few actions (SEQ, HASH): a client's copy that
     // disagreed is logged against the server's hash at the same action.
     std::deque<std::pair<std::size_t, std::uint64_t>> recent_hashes{};
+    // The last chat_lines_kept lines said at the table, oldest first: a player who comes
+    // back (or a spectator who comes in) reads what was said, after the record.
+    std::deque<ChatShown> chat{};
 };
 
 // An action played on a copy of a table's match, waiting for its save: only once saved is it
@@ -168,8 +174,9 @@ public:
     bool idle_for_good(Clock::time_point now);
     /// Milliseconds until the hall has been idle for idle_exit, -1 for never.
     int idle_timeout(Clock::time_point now) const;
-    /// Saves every table (at the end); false if a save failed.
-    bool save_all();
+    /// Saves every table not on disk as it stands (at the end): those whose last save failed;
+    /// how many still could not be saved.
+    std::size_t save_all();
     /// Logs how long actions took to handle and to save (`termpool hall bench` reads it).
     void log_figures() const;
     /// Writes `line` to the log, if any.
@@ -254,9 +261,12 @@ private:
 
     // --- hall_core_persistence.cpp: saving and restoring tables
     static SavedTable saved_form(const Table& table, const Match& match);
-    bool save(const Table& table);
+    std::string save(const Table& table);
     Clock::time_point file_changed(int number, Clock::time_point now,
                                    std::chrono::system_clock::time_point wall_now) const;
+
+    // --- hall_core_who.cpp: the hall's state for its host
+    std::vector<std::string> who_lines(Clock::time_point now) const;
 
     // --- hall_core_messages.cpp: each client message to its handler
     void on_message(Client& client, const ClientMessage& message, Clock::time_point now);
@@ -277,7 +287,8 @@ private:
     std::vector<Proposal> batch_;
     bool settling_ = false;
     WorkCrew savers_;
-    std::optional<Clock::time_point> idle_since_; // no connection and no table since then
+    std::optional<Clock::time_point> idle_since_; // nothing keeps the hall since then
+    std::set<int> unsaved_; // the tables whose last save failed (by number)
     LatencyHistogram handling_; // each action, from the loop's wake-up to its broadcast queued
     LatencyHistogram saving_;   // each round's saves of actions, side by side
 };

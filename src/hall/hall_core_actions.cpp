@@ -87,6 +87,7 @@ void HallCore::taken_or_not(Proposal& p, Clock::time_point now) {
     Table& table = found->second;
     table.saving = false;
     if (p.problem.empty()) {
+        unsaved_.erase(table.number); // the file holds the whole table as it now stands
         table.match = std::move(p.next);
         action_taken(table, now);
         handling_.add(stopwatch() - p.since);
@@ -315,7 +316,11 @@ void HallCore::on_chat(Client& client, const Chat& chat, Clock::time_point now) 
     if (client.last_chat && now - *client.last_chat < options_.chat_interval)
         return send_error(client, ErrorCode::rate, "one chat line a second", now);
     client.last_chat = now;
-    send_to_table(*table, ChatShown{table->number, client.name, chat.text});
+    ChatShown line{table->number, client.name, chat.text};
+    send_to_table(*table, line);
+    table->chat.push_back(std::move(line));
+    if (table->chat.size() > serving::chat_lines_kept)
+        table->chat.pop_front();
 }
 
 } // namespace termpool::hall

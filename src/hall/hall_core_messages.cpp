@@ -5,6 +5,17 @@
 namespace termpool::hall {
 
 void HallCore::on_message(Client& client, const ClientMessage& message, Clock::time_point now) {
+    // The host's question: before hello too, since `termpool hall who` has no name to give
+    // (the socket's folder is its user's alone: whoever reaches it may say hello anyway).
+    // Budgeted like the other requests that make the hall work for one client.
+    if (std::holds_alternative<Who>(message)) {
+        if (!client.requests.take(options_.request_rate, options_.request_burst, now))
+            return send_error(client, ErrorCode::rate, "too many requests: slow down", now);
+        std::string text;
+        for (std::string& line : who_lines(now))
+            text += format_server(WhoLine{std::move(line)});
+        return send_text(client, text + format_server(WhoEnd{}));
+    }
     if (!client.welcomed && !std::holds_alternative<Hello>(message))
         return send_error(client, ErrorCode::hello_first, "say hello first", now);
     // An action at a table waits for its save (settle) until the round ends, unless a

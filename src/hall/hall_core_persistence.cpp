@@ -16,15 +16,19 @@ SavedTable HallCore::saved_form(const Table& table, const Match& match) {
     return stored;
 }
 
-bool HallCore::save(const Table& table) {
+// "" or why not (the file and the system's reason). A failed save is remembered (unsaved_):
+// save_all tries it again at the end, and the hall does not go idle on it.
+std::string HallCore::save(const Table& table) {
     if (options_.state_dir.empty())
-        return true;
-    if (const std::string problem = save_table(options_.state_dir, saved_form(table, table.match));
-        !problem.empty()) {
-        log("cannot save table " + std::to_string(table.number) + ": " + problem);
-        return false;
+        return {};
+    std::string problem = save_table(options_.state_dir, saved_form(table, table.match));
+    if (problem.empty()) {
+        unsaved_.erase(table.number);
+        return {};
     }
-    return true;
+    unsaved_.insert(table.number);
+    log("cannot save table " + std::to_string(table.number) + ": " + problem);
+    return problem;
 }
 
 void HallCore::restore(Clock::time_point now, std::chrono::system_clock::time_point wall_now) {

@@ -139,6 +139,7 @@ void HallCore::forget_if_idle(Table& table) {
     if (!options_.state_dir.empty())
         forget_table(options_.state_dir, table.number);
     log("table " + std::to_string(table.number) + " closed");
+    unsaved_.erase(table.number);
     tables_.erase(table.number);
     table_count_ = tables_.size();
     lobby_dirty_ = true;
@@ -149,6 +150,8 @@ void HallCore::join(Client& client, Table& table, int seat) {
     client.seat = seat;
     send(client, Joined{table.number, seat});
     send_record(client, table);
+    for (const ChatShown& line : table.chat)
+        send(client, line);
     lobby_dirty_ = true;
 }
 
@@ -214,7 +217,20 @@ void HallCore::on_create(Client& client, const Create& create, Clock::time_point
                                   0,
                                   0});
     table_count_ = tables_.size();
-    save(tables_.at(number));
+    // A table that cannot be saved could never be played (every action is saved before it is
+    // taken): it is not made, and the player is told why.
+    if (const std::string problem = save(tables_.at(number)); !problem.empty()) {
+        unsaved_.erase(number);
+        tables_.erase(number);
+        table_count_ = tables_.size();
+        return send_error(client, ErrorCode::internal,
+                          "the hall cannot save tables (" +
+                              problem.substr(problem.rfind(": ") == std::string::npos
+                                                 ? 0
+                                                 : problem.rfind(": ") + 2) +
+                              "): no table was made; tell the hall's host",
+                          now);
+    }
     send(client, Created{number});
     lobby_dirty_ = true;
     log("table " + std::to_string(number) + " created by " + client.name);

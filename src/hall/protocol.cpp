@@ -353,6 +353,7 @@ std::string format_client(const ClientMessage& message) {
                                         : std::string("sync");
                        },
                        [](const Ping&) { return std::string("ping"); },
+                       [](const Who&) { return std::string("who"); },
                    },
                    message);
     return line + "\n";
@@ -408,6 +409,8 @@ std::string format_server(const ServerMessage& message) {
                        encode_field(m.text);
             },
             [](const Pong&) { return std::string("pong"); },
+            [](const WhoLine& m) { return "who " + m.text; },
+            [](const WhoEnd&) { return std::string("who-end"); },
         },
         message);
     return line + "\n";
@@ -516,6 +519,8 @@ std::variant<ClientMessage, ProtocolError> parse_client(std::string_view line) {
     }
     if (kind == "ping")
         return wrap(finish(r, Ping{}));
+    if (kind == "who")
+        return wrap(finish(r, Who{}));
     return ProtocolError{ErrorCode::syntax, "unknown message"};
 }
 
@@ -568,6 +573,10 @@ std::variant<ServerMessage, ProtocolError> parse_server(std::string_view line) {
         return wrap(finish(r, LobbyEnd{}));
     if (kind == "pong")
         return wrap(finish(r, Pong{}));
+    if (kind == "who-end")
+        return wrap(finish(r, WhoEnd{}));
+    if (kind == "who")
+        return wrap(finish(r, WhoLine{raw_text()}));
     if (kind == "table") {
         TableView m;
         m.number = r.integer(1, max_table_number, "a table");

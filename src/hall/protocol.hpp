@@ -34,6 +34,8 @@
 ///                                     SEQ and HASH say what my copy came to (it holds SEQ
 ///                                     actions and hashes HASH), for the server's log
 ///   ping                              answered by pong
+///   who                               the hall's tables, people and connections, for its
+///                                     host (`termpool hall who`); may come before hello
 ///
 /// Server to client:
 ///
@@ -60,6 +62,8 @@
 ///                                     the shooter's cue, at most every 50 ms
 ///   chat TABLE NAME TEXT              a chat line at the table
 ///   pong                              the answer to ping
+///   who TEXT                          one line of the answer to who (no control characters)
+///   who-end                           the answer to who is complete
 // clang-format on
 
 #include <cstddef>
@@ -191,10 +195,12 @@ struct Sync {
 };
 /// `ping`.
 struct Ping {};
+/// `who`.
+struct Who {};
 
 /// Anything a client says.
 using ClientMessage = std::variant<Hello, Create, Sit, Watch, Leave, Act, NextRack, Aim, Chat,
-                                   SeatComputer, Sync, Ping>;
+                                   SeatComputer, Sync, Ping, Who>;
 
 // --- server to client ---------------------------------------------------------------------
 
@@ -329,11 +335,18 @@ struct ChatShown {
 };
 /// `pong`.
 struct Pong {};
+/// `who TEXT`: one line of the hall's state for its host.
+struct WhoLine {
+    std::string text; ///< the line (may be empty; no control characters)
+};
+/// `who-end`.
+struct WhoEnd {};
 
 /// Anything the server says.
 using ServerMessage =
     std::variant<Welcome, Error, LobbyBegin, TableView, PlayerView, LobbyEnd, Created, Joined, Left,
-                 Yours, RecordLine, RecordEnd, SeatChange, ActionDone, AimShown, ChatShown, Pong>;
+                 Yours, RecordLine, RecordEnd, SeatChange, ActionDone, AimShown, ChatShown, Pong,
+                 WhoLine, WhoEnd>;
 
 // --- text ---------------------------------------------------------------------------------
 

@@ -130,10 +130,16 @@ int Server::run() {
         s.drop_closed();
     }
 
-    const int status = s.core.save_all() ? 0 : 1;
+    const std::size_t unsaved = s.core.save_all();
     s.core.log_figures();
-    s.core.log("stopped with " + std::to_string(s.core.table_count()) + " tables saved");
-    return status;
+    const std::size_t tables = s.core.table_count();
+    if (unsaved == 0) {
+        s.core.log("stopped with " + std::to_string(tables) + " tables saved");
+        return 0;
+    }
+    s.core.log("stopped: " + std::to_string(unsaved) + " of " + std::to_string(tables) +
+               " tables could not be saved (see above why); the rest are saved");
+    return 1;
 }
 
 } // namespace termpool::hall
