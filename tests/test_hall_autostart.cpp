@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <poll.h>
 #include <string>
 #include <sys/prctl.h>
 #include <sys/socket.h>
@@ -32,6 +33,7 @@
 #include "hall/client.hpp"
 #include "hall/hall_lock.hpp"
 #include "hall/reconnect_backoff.hpp"
+#include "hall/socket_trust.hpp"
 #include "hall_helpers.hpp"
 #include "scoped_env.hpp"
 #include "temp_dir.hpp"
@@ -196,6 +198,45 @@ void make_stale_socket(const std::string& path) {
     REQUIRE(fs::is_socket(path));
 }
 
+// connect_or_start's error; the started server's log in `log`, whether it refused the hall
+// in `refused`.
+std::string reach_hall(HallClient& client, const std::string& socket, const std::string& exe,
+                       std::string& log, bool* refused = nullptr) {
+    const HallReach reach = connect_or_start(client, socket, exe);
+    log = reach.started_log;
+    if (refused)
+        *refused = reach.refused;
+    return reach.error;
+}
+
+// A listening socket at `path`, as a planted hall has: it accepts nothing by itself, so that
+// the test can see whether anyone connected (accepted_any).
+UniqueFd listen_at(const std::string& path) {
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    REQUIRE(path.size() < sizeof address.sun_path);
+    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+    UniqueFd fd(::socket(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0));
+    REQUIRE(fd);
+    REQUIRE(::bind(fd.get(), reinterpret_cast<const sockaddr*>(&address), sizeof address) == 0);
+    REQUIRE(::listen(fd.get(), 8) == 0);
+    return fd;
+}
+
+// True when a connection waits on the listening (non-blocking) socket `listener`.
+bool accepted_any(const UniqueFd& listener) {
+    const UniqueFd connection(::accept4(listener.get(), nullptr, nullptr, SOCK_CLOEXEC));
+    return static_cast<bool>(connection);
+}
+
+// A stat as lstat gives it, for the judgements: a file of type and mode `mode`, owned by `uid`.
+struct stat stat_of(mode_t mode, uid_t uid) {
+    struct stat st {};
+    st.st_mode = mode;
+    st.st_uid = uid;
+    return st;
+}
+
 // The folders of one test, nothing of the user's: the state (and so hall.log) in `dir`.
 struct PrivateEnv {
     explicit PrivateEnv(const std::string& dir)
@@ -301,7 +342,7 @@ TEST_CASE("connect_or_start: no hall, one is started detached; the next client j
     HallClient ann;
     std::string log = "unset";
     const auto start = Clock::now();
-    REQUIRE(connect_or_start(ann, socket, binary(), log) == "");
+    REQUIRE(reach_hall(ann, socket, binary(), log) == "");
     CHECK(Clock::now() - start < hall_start_wait);
     CHECK(log == expected_log);
     CHECK(mode_of(sockets) == 0700); // made as the server wants it
@@ -345,7 +386,7 @@ TEST_CASE("connect_or_start: no hall, one is started detached; the next client j
 
     // The next client finds it running: nothing is started.
     HallClient bob;
-    REQUIRE(connect_or_start(bob, socket, binary(), log) == "");
+    REQUIRE(reach_hall(bob, socket, binary(), log) == "");
     CHECK(log == "");
     CHECK(bob.server_pid() == pid);
     REQUIRE(bob.hello("Bob", "", kWait) == "");
@@ -359,14 +400,14 @@ TEST_CASE("connect_or_start: no hall, one is started detached; the next client j
     // A server killed outright leaves its socket file: nobody answers there, so a new one is
     // started in its place.
     HallClient cy;
-    REQUIRE(connect_or_start(cy, socket, binary(), log) == "");
+    REQUIRE(reach_hall(cy, socket, binary(), log) == "");
     const pid_t killed = cy.server_pid();
     REQUIRE(killed > 0);
     ::kill(killed, SIGKILL);
     CHECK(reap(killed, kWait) == 128 + SIGKILL);
     REQUIRE(fs::is_socket(socket));
     HallClient dee;
-    REQUIRE(connect_or_start(dee, socket, binary(), log) == "");
+    REQUIRE(reach_hall(dee, socket, binary(), log) == "");
     CHECK(log == expected_log);
     const pid_t fresh = dee.server_pid();
     CHECK(fresh > 0);
@@ -401,7 +442,7 @@ TEST_CASE("connect_or_start: two clients starting at once end on one server",
                 ++ready;
                 for (const auto end = Clock::now() + kWait; ready < 2 && Clock::now() < end;)
                     std::this_thread::yield();
-                errors[c] = connect_or_start(clients[c], socket, binary(), logs[c]);
+                errors[c] = reach_hall(clients[c], socket, binary(), logs[c]);
             });
         for (std::thread& t : threads)
             t.join();
@@ -443,7 +484,7 @@ TEST_CASE("connect_or_start: what cannot start says why, soon, and leaves nothin
     SECTION("a program that is not there") {
         HallClient client;
         const auto start = Clock::now();
-        CHECK_THAT(connect_or_start(client, socket, dir.path() + "/no-such-termpool", log),
+        CHECK_THAT(reach_hall(client, socket, dir.path() + "/no-such-termpool", log),
                    Catch::StartsWith("cannot run " + dir.path() + "/no-such-termpool: ") &&
                        Catch::Contains(std::strerror(ENOENT)));
         CHECK(Clock::now() - start < 2s);
@@ -454,7 +495,7 @@ TEST_CASE("connect_or_start: what cannot start says why, soon, and leaves nothin
         HallClient client;
         const auto start = Clock::now();
         // sh takes "hall" for a script to run, finds none and says so on stderr (the log).
-        const std::string error = connect_or_start(client, socket, "/bin/sh", log);
+        const std::string error = reach_hall(client, socket, "/bin/sh", log);
         CHECK(Clock::now() - start < hall_start_wait);
         CHECK_THAT(error, Catch::StartsWith(socket +
                                             ": the hall started in the background does "
@@ -472,7 +513,7 @@ TEST_CASE("connect_or_start: what cannot start says why, soon, and leaves nothin
         REQUIRE(::mkdir(open.c_str(), 0700) == 0);
         REQUIRE(::chmod(open.c_str(), 0777) == 0);
         HallClient client;
-        CHECK_THAT(connect_or_start(client, open + "/hall.sock", binary(), log),
+        CHECK_THAT(reach_hall(client, open + "/hall.sock", binary(), log),
                    Catch::Contains(open + ": the socket folder is writable by"));
         CHECK(log == "");
     }
@@ -480,10 +521,223 @@ TEST_CASE("connect_or_start: what cannot start says why, soon, and leaves nothin
         REQUIRE(::mkdir((dir.path() + "/run").c_str(), 0700) == 0);
         std::ofstream(socket) << "not a socket\n";
         HallClient client;
-        CHECK_THAT(connect_or_start(client, socket, binary(), log),
-                   Catch::StartsWith(socket + ": "));
+        CHECK_THAT(reach_hall(client, socket, binary(), log), Catch::StartsWith(socket + ": "));
         CHECK(log == "");
         CHECK(file_text(socket) == "not a socket\n");
     }
     CHECK(detached_children().empty());
+}
+
+TEST_CASE("socket trust: the folder, the socket file and the server must be this user's alone",
+          "[hall][autostart][trust]") {
+    const uid_t me = 1001;
+    const uid_t other = 1002;
+    const std::string folder = "/tmp/termpool-1001";
+    const std::string socket = folder + "/hall.sock";
+    CHECK(describe_uid(0) == "uid 0 (root)");
+    CHECK(describe_uid(3999999999U) == "uid 3999999999"); // nobody's: no name
+
+    SECTION("the folder") {
+        CHECK(judge_socket_folder(folder, stat_of(S_IFDIR | 0700, me), me) == "");
+        // Another user's folder, though private: whoever owns it can plant a socket in it.
+        CHECK(judge_socket_folder(folder, stat_of(S_IFDIR | 0700, other), me) ==
+              folder + ": the socket folder is owned by " + describe_uid(other) +
+                  ", not by this user (" + describe_uid(me) + ")");
+        CHECK_THAT(judge_socket_folder(folder, stat_of(S_IFDIR | 0755, other), me),
+                   Catch::Contains("owned by uid 1002"));
+        // Any permission for the group or others, read only too: they could reach the hall.
+        for (const mode_t mode : {mode_t{0755}, mode_t{0750}, mode_t{0701}, mode_t{0710},
+                                  mode_t{0770}, mode_t{0777}, mode_t{01777}}) {
+            INFO("mode " << std::oct << mode);
+            const std::string problem =
+                judge_socket_folder(folder, stat_of(S_IFDIR | mode, me), me);
+            CHECK_THAT(problem, Catch::StartsWith(folder + ": the socket folder is ") &&
+                                    Catch::Contains("owned by " + describe_uid(me)) &&
+                                    Catch::Contains("make it private with chmod 700"));
+        }
+        CHECK_THAT(judge_socket_folder(folder, stat_of(S_IFDIR | 0755, me), me),
+                   Catch::Contains("open to others (mode 0755, owned by uid 1001"));
+        CHECK_THAT(judge_socket_folder(folder, stat_of(S_IFDIR | 0750, me), me),
+                   Catch::Contains("open to its group (mode 0750"));
+        CHECK_THAT(judge_socket_folder(folder, stat_of(S_IFDIR | 0777, me), me),
+                   Catch::Contains("writable by others (mode 0777"));
+        CHECK(judge_socket_folder(folder, stat_of(S_IFLNK | 0777, other), me) ==
+              folder + ": the socket folder is a symbolic link (owned by " + describe_uid(other) +
+                  "), not a directory");
+        CHECK(judge_socket_folder(folder, stat_of(S_IFREG | 0600, me), me) ==
+              folder + ": the socket folder is not a directory (owned by " + describe_uid(me) +
+                  ")");
+    }
+    SECTION("the socket file") {
+        CHECK(judge_socket_file(socket, stat_of(S_IFSOCK | 0777, me), me) == "");
+        CHECK(judge_socket_file(socket, stat_of(S_IFSOCK | 0777, other), me) ==
+              socket + ": the hall's socket is owned by " + describe_uid(other) +
+                  ", not by this user (" + describe_uid(me) + ")");
+        CHECK(judge_socket_file(socket, stat_of(S_IFREG | 0600, me), me) ==
+              socket + ": not a socket (owned by " + describe_uid(me) + ")");
+    }
+    SECTION("the server at the other end") {
+        CHECK(judge_peer(socket, me, me) == "");
+        CHECK(judge_peer(socket, other, me) == socket + ": the hall there runs as " +
+                                                   describe_uid(other) + ", not as this user (" +
+                                                   describe_uid(me) + "); nothing was sent to it");
+        CHECK_THAT(judge_peer(socket, 0, me), Catch::Contains("runs as uid 0 (root)"));
+        // SO_PEERCRED on a real pair: both ends are this process, so this user.
+        int ends[2];
+        REQUIRE(::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) == 0);
+        const UniqueFd a(ends[0]), b(ends[1]);
+        CHECK(check_peer(a.get(), socket) == "");
+        CHECK_THAT(check_peer(-1, socket),
+                   Catch::StartsWith(socket + ": cannot tell who runs the hall there: "));
+    }
+}
+
+TEST_CASE("connect_or_start: a hall whose folder or socket is not this user's alone is refused "
+          "before connecting",
+          "[hall][e2e][autostart][trust]") {
+    TempDir dir("termpool-autostart");
+    PrivateEnv env(dir.path());
+    DetachedServers servers;
+    std::string log = "unset";
+    bool refused = false;
+    HallClient client;
+
+    SECTION("a folder others may read (0755), with someone listening in it") {
+        const std::string open = dir.path() + "/open";
+        REQUIRE(::mkdir(open.c_str(), 0700) == 0);
+        REQUIRE(::chmod(open.c_str(), 0755) == 0);
+        const UniqueFd listener = listen_at(open + "/hall.sock");
+        CHECK(reach_hall(client, open + "/hall.sock", binary(), log, &refused) ==
+              open + ": the socket folder is open to others (mode 0755, owned by " +
+                  describe_uid(::geteuid()) + "); make it private with chmod 700");
+        CHECK(refused);
+        CHECK_FALSE(accepted_any(listener)); // not even connected to
+    }
+    SECTION("a symbolic link to a good folder, with someone listening in it") {
+        const std::string real = dir.path() + "/real";
+        REQUIRE(::mkdir(real.c_str(), 0700) == 0);
+        const UniqueFd listener = listen_at(real + "/hall.sock");
+        REQUIRE(::symlink(real.c_str(), (dir.path() + "/link").c_str()) == 0);
+        CHECK_THAT(reach_hall(client, dir.path() + "/link/hall.sock", binary(), log, &refused),
+                   Catch::StartsWith(dir.path() + "/link: the socket folder is a symbolic link"));
+        CHECK(refused);
+        CHECK_FALSE(accepted_any(listener));
+    }
+    SECTION("a folder or a socket owned by another user (as root: given to uid 65534)") {
+        if (::geteuid() != 0) {
+            WARN("not root: another user's folder is judged by judge_socket_folder only");
+            return;
+        }
+        // The attack as found: another user made /tmp/termpool-UID, and listens there.
+        const std::string theirs = dir.path() + "/theirs";
+        REQUIRE(::mkdir(theirs.c_str(), 0700) == 0);
+        const UniqueFd listener = listen_at(theirs + "/hall.sock");
+        REQUIRE(::chown(theirs.c_str(), 65534, 65534) == 0);
+        CHECK(reach_hall(client, theirs + "/hall.sock", binary(), log, &refused) ==
+              theirs + ": the socket folder is owned by " + describe_uid(65534) +
+                  ", not by this user (" + describe_uid(::geteuid()) + ")");
+        CHECK(refused);
+        CHECK_FALSE(accepted_any(listener));
+        // Our folder, their socket file.
+        const std::string ours = dir.path() + "/ours";
+        REQUIRE(::mkdir(ours.c_str(), 0700) == 0);
+        const UniqueFd second = listen_at(ours + "/hall.sock");
+        REQUIRE(::lchown((ours + "/hall.sock").c_str(), 65534, 65534) == 0);
+        refused = false;
+        CHECK(reach_hall(client, ours + "/hall.sock", binary(), log, &refused) ==
+              ours + "/hall.sock: the hall's socket is owned by " + describe_uid(65534) +
+                  ", not by this user (" + describe_uid(::geteuid()) + ")");
+        CHECK(refused);
+        CHECK_FALSE(accepted_any(second));
+    }
+    CHECK(client.closed());
+    CHECK(log == ""); // nothing was started
+    CHECK(detached_children().empty());
+}
+
+TEST_CASE("connect_or_start: a hall that runs as another user is refused before hello",
+          "[hall][e2e][autostart][trust]") {
+    if (::geteuid() != 0) {
+        WARN("not root: a server of another uid is judged by judge_peer only");
+        return;
+    }
+    TempDir dir("termpool-autostart");
+    PrivateEnv env(dir.path());
+    DetachedServers servers;
+    // Our folder and our socket file, as a server of ours would leave them; but the process
+    // that listens there runs as uid 65534 (it bound the socket as root, then changed its uid
+    // and listened: SO_PEERCRED gives the uid at listen).
+    const std::string folder = dir.path() + "/run";
+    REQUIRE(::mkdir(folder.c_str(), 0700) == 0);
+    const std::string socket = folder + "/hall.sock";
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    REQUIRE(socket.size() < sizeof address.sun_path);
+    std::memcpy(address.sun_path, socket.c_str(), socket.size() + 1);
+    int ends[2];
+    REQUIRE(::pipe2(ends, O_CLOEXEC) == 0);
+    UniqueFd report(ends[0]);
+    UniqueFd report_end(ends[1]);
+    const pid_t planted = ::fork();
+    REQUIRE(planted >= 0);
+    if (planted == 0) {
+        // The planted hall: only system calls until _exit. It reports 'r' once listening, then
+        // the number of bytes the client sent before it closed (or -1 when none came in 5 s).
+        const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+        if (fd < 0 || ::bind(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) ||
+            ::setresgid(65534, 65534, 65534) || ::setresuid(65534, 65534, 65534) || ::listen(fd, 8))
+            ::_exit(1);
+        [[maybe_unused]] auto ignored = ::write(report_end.get(), "r", 1);
+        pollfd p{fd, POLLIN, 0};
+        int heard = -1;
+        if (::poll(&p, 1, 5000) == 1) {
+            const int connection = ::accept(fd, nullptr, nullptr);
+            char buffer[512];
+            heard = 0;
+            for (ssize_t n; (n = ::read(connection, buffer, sizeof buffer)) > 0;)
+                heard += static_cast<int>(n);
+        }
+        ignored = ::write(report_end.get(), &heard, sizeof heard);
+        ::_exit(0);
+    }
+    report_end.reset();
+    pollfd p{report.get(), POLLIN, 0};
+    char ready = 0;
+    REQUIRE(::poll(&p, 1, static_cast<int>(kWait.count())) == 1);
+    REQUIRE(::read(report.get(), &ready, 1) == 1);
+    REQUIRE(ready == 'r');
+
+    HallClient client;
+    std::string log = "unset";
+    bool refused = false;
+    CHECK(reach_hall(client, socket, binary(), log, &refused) ==
+          socket + ": the hall there runs as " + describe_uid(65534) + ", not as this user (" +
+              describe_uid(::geteuid()) + "); nothing was sent to it");
+    CHECK(refused);
+    CHECK(client.closed());
+    CHECK(log == "");
+    // It was connected to, and closed at once: not a byte of hello or token went to it.
+    int heard = -2;
+    REQUIRE(::poll(&p, 1, static_cast<int>(kWait.count())) == 1);
+    REQUIRE(::read(report.get(), &heard, sizeof heard) == static_cast<ssize_t>(sizeof heard));
+    CHECK(heard == 0);
+    CHECK(reap(planted, kWait) == 0);
+    CHECK(detached_children().empty());
+}
+
+TEST_CASE("termpool hall refuses a socket folder that is not the user's alone, exit status 1",
+          "[hall][e2e][autostart][trust]") {
+    TempDir dir("termpool-autostart");
+    PrivateEnv env(dir.path());
+    const std::string open = dir.path() + "/open";
+    REQUIRE(::mkdir(open.c_str(), 0700) == 0);
+    REQUIRE(::chmod(open.c_str(), 0777) == 0);
+    const UniqueFd listener = listen_at(open + "/hall.sock");
+    const std::string out = dir.path() + "/out.log";
+    ChildProcess client({binary(), "hall", "--name", "Ann", "--socket", open + "/hall.sock"}, out);
+    CHECK(client.wait_exit(kWait) == 1);
+    CHECK(file_text(out) == "termpool hall: " + open +
+                                ": the socket folder is writable by others (mode 0777, owned by " +
+                                describe_uid(::geteuid()) + "); make it private with chmod 700\n");
+    CHECK_FALSE(accepted_any(listener));
 }

@@ -84,9 +84,17 @@ TEST_CASE("the socket folder is made private, and refused when someone else coul
         CHECK(fs::is_directory(folder));
         CHECK(mode_of(folder) == 0700);
         CHECK(prepare_socket_dir(folder + "/hall.sock") == "");
-        // Readable by others is not tmux's concern: only writing lets someone swap the socket.
-        REQUIRE(::chmod(folder.c_str(), 0755) == 0);
-        CHECK(prepare_socket_dir(folder + "/hall.sock") == "");
+    }
+    SECTION("a folder others or its group may only read is refused too: they could reach the "
+            "hall") {
+        REQUIRE(::mkdir(folder.c_str(), 0700) == 0);
+        for (const mode_t mode : {mode_t{0755}, mode_t{0750}, mode_t{0711}}) {
+            INFO("mode " << std::oct << mode);
+            REQUIRE(::chmod(folder.c_str(), mode) == 0);
+            CHECK_THAT(prepare_socket_dir(folder + "/hall.sock"),
+                       Catch::StartsWith(folder + ": the socket folder is open to ") &&
+                           Catch::Contains("make it private with chmod 700"));
+        }
     }
     SECTION("group-writable and world-writable folders are refused, naming the folder") {
         REQUIRE(::mkdir(folder.c_str(), 0700) == 0);
@@ -102,7 +110,8 @@ TEST_CASE("the socket folder is made private, and refused when someone else coul
     SECTION("a file, or a symbolic link to a good folder, is not a directory") {
         tmp.write("plain", "not a folder\n");
         CHECK_THAT(prepare_socket_dir(tmp.path() + "/plain/hall.sock"),
-                   Catch::Equals(tmp.path() + "/plain: the socket folder is not a directory"));
+                   Catch::StartsWith(
+                       tmp.path() + "/plain: the socket folder is not a directory (owned by uid "));
         REQUIRE(::mkdir(folder.c_str(), 0700) == 0);
         REQUIRE(::symlink(folder.c_str(), (tmp.path() + "/link").c_str()) == 0);
         CHECK_THAT(prepare_socket_dir(tmp.path() + "/link/hall.sock"),

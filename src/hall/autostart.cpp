@@ -17,6 +17,7 @@
 #include "files/atomic_file.hpp"
 #include "hall/hall_state.hpp"
 #include "hall/socket_dir.hpp"
+#include "hall/socket_trust.hpp"
 #include "hall/unique_fd.hpp"
 
 namespace termpool::hall {
@@ -132,6 +133,25 @@ bool process_gone(pid_t pid) {
            ((*stat)[paren + 2] == 'Z' || (*stat)[paren + 2] == 'X');
 }
 
+// Connects `client` to the hall at `path` only when its folder and socket file are this
+// user's, and then keeps the connection only when the server runs as this user, so that a
+// hall another user planted is never sent a name or a token. `refused` is set when one of
+// those checks said no (the client is left closed).
+std::string connect_trusted(HallClient& client, const std::string& path, bool& refused) {
+    if (std::string problem = check_socket_path(path); !problem.empty()) {
+        refused = true;
+        return problem;
+    }
+    if (std::string error = client.connect(path); !error.empty())
+        return error;
+    if (std::string problem = check_peer(client.fd(), path); !problem.empty()) {
+        client.disconnect();
+        refused = true;
+        return problem;
+    }
+    return {};
+}
+
 // The last line of the log (it grows with every start; only its end is read).
 std::string last_log_line(const std::string& path) {
     const UniqueFd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
@@ -244,21 +264,28 @@ pid_t start_detached(const std::vector<std::string>& args, const std::string& lo
     return server;
 }
 
-std::string connect_or_start(HallClient& client, const std::string& socket_path,
-                             const std::string& self_exe, std::string& started_log) {
-    started_log.clear();
-    std::string error = client.connect(socket_path);
-    if (error.empty())
-        return error;
+HallReach connect_or_start(HallClient& client, const std::string& socket_path,
+                           const std::string& self_exe) {
+    HallReach reach;
+    std::string& error = reach.error;
+    error = connect_trusted(client, socket_path, reach.refused);
+    if (error.empty() || reach.refused)
+        return reach;
     // Somebody answers now though the connection was refused: a hall another client started
     // came up between the two (or the path is no socket: then the same error again).
-    if (!nobody_answers(socket_path))
-        return client.connect(socket_path);
+    if (!nobody_answers(socket_path)) {
+        error = connect_trusted(client, socket_path, reach.refused);
+        return reach;
+    }
     // The folder the server would refuse is refused here, before anything is started.
-    if (std::string problem = prepare_socket_dir(socket_path); !problem.empty())
-        return problem;
-    if (std::string problem = make_directories(default_state_dir()); !problem.empty())
-        return problem;
+    if (std::string problem = prepare_socket_dir(socket_path); !problem.empty()) {
+        error = problem;
+        return reach;
+    }
+    if (std::string problem = make_directories(default_state_dir()); !problem.empty()) {
+        error = problem;
+        return reach;
+    }
     const std::string log = started_hall_log_path();
     const std::vector<std::string> args = {self_exe,    "hall",        "serve", "--socket",
                                            socket_path, "--idle-exit", "60"};
@@ -271,16 +298,18 @@ std::string connect_or_start(HallClient& client, const std::string& socket_path,
         if (!server) {
             std::string why;
             server = start_detached(args, log, why);
-            if (!server)
-                return why;
-            started_log = log;
+            if (!server) {
+                error = why;
+                return reach;
+            }
+            reach.started_log = log;
             ++starts;
             gone_since = not_gone;
         }
         std::this_thread::sleep_for(poll_interval);
-        error = client.connect(socket_path);
-        if (error.empty())
-            return {};
+        error = connect_trusted(client, socket_path, reach.refused);
+        if (error.empty() || reach.refused)
+            return reach;
         const auto now = Clock::now();
         if (now >= until)
             break;
@@ -297,8 +326,9 @@ std::string connect_or_start(HallClient& client, const std::string& socket_path,
         server = 0;
     }
     const std::string last = last_log_line(log);
-    return socket_path + ": the hall started in the background does not answer (" + log +
-           (last.empty() ? std::string() : ": " + last) + ")";
+    error = socket_path + ": the hall started in the background does not answer (" + log +
+            (last.empty() ? std::string() : ": " + last) + ")";
+    return reach;
 }
 
 } // namespace termpool::hall

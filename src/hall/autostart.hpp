@@ -25,19 +25,32 @@ std::string own_executable();
 /// The log of a hall started in the background: hall.log in default_state_dir().
 std::string started_hall_log_path();
 
-/// Connects `client` to the hall at `socket_path`. When nothing answers there (no socket file,
+/// What connect_or_start came to.
+struct HallReach {
+    /// "" when connected, else why not.
+    std::string error;
+    /// The started server's log file (started_hall_log_path()), or "" when a running hall
+    /// answered.
+    std::string started_log;
+    /// The socket's folder or file, or the server that answered, is not this user's alone
+    /// (hall/socket_trust.hpp): nothing was sent there, and trying again would not help.
+    bool refused = false;
+};
+
+/// Connects `client` to the hall at `socket_path`, trusting only this user's own: before each
+/// try the socket's folder and file are checked (check_socket_path) and after it the server's
+/// uid (check_peer); a hall that fails either is refused at once (`refused`, nothing sent, the
+/// client left closed), never replaced by a started one. When nothing answers (no socket file,
 /// or a stale one nobody listens on), makes the socket's folder (prepare_socket_dir), starts
 /// `self_exe hall serve --socket SOCKET_PATH --idle-exit 60` detached, and tries to connect
 /// again every 20 ms for up to hall_start_wait; should the server it started exit meanwhile
 /// without anyone answering (another hall was just going away and held the lock), it starts
 /// one again, three times at most. Of two clients doing this at once, both end up on the one
-/// server that took the socket's lock (hall/hall_lock.hpp).
-/// `started_log` is the started server's log file (started_hall_log_path()), or "" when a
-/// running hall answered. Returns "" when connected, else why not: the connection's error
-/// when something other than "nothing there" stopped it, the folder's problem, or, when the
-/// started server never answered, the last line of its log.
-std::string connect_or_start(HallClient& client, const std::string& socket_path,
-                             const std::string& self_exe, std::string& started_log);
+/// server that took the socket's lock (hall/hall_lock.hpp). The error is the refusal, the
+/// connection's error when something other than "nothing there" stopped it, the folder's
+/// problem, or, when the started server never answered, the last line of its log.
+HallReach connect_or_start(HallClient& client, const std::string& socket_path,
+                           const std::string& self_exe);
 
 /// Starts `args` (args[0] the program's path) detached: fork, setsid, fork again (the first
 /// child exits at once and is reaped, so no zombie stays and the server cannot get a

@@ -7,6 +7,7 @@
 #include "hall/autostart.hpp"
 #include "hall/hall_main.hpp"
 #include "hall/socket_dir.hpp"
+#include "hall/socket_trust.hpp"
 #include "hall/token_store.hpp"
 #include "player/player_name.hpp"
 #include "tui/hall_session.hpp"
@@ -67,10 +68,25 @@ int run_hall(const std::vector<std::string>& args) {
     if (options.self_exe.empty())
         options.self_exe = "termpool"; // from PATH
     options.token_dir = hall::default_token_dir();
+    // A hall another user planted is refused before the screen is taken or a name asked; one
+    // found later ends the session, and is said once the terminal is given back.
+    if (const std::string problem = hall::check_socket_path(options.socket_path);
+        !problem.empty()) {
+        std::fprintf(stderr, "termpool hall: %s\n", problem.c_str());
+        return 1;
+    }
     try {
-        Terminal terminal(options.ascii, options.ascii);
-        HallSession session(terminal, options);
-        session.run();
+        std::string refusal;
+        {
+            Terminal terminal(options.ascii, options.ascii);
+            HallSession session(terminal, options);
+            session.run();
+            refusal = session.refusal();
+        }
+        if (!refusal.empty()) {
+            std::fprintf(stderr, "termpool hall: %s\n", refusal.c_str());
+            return 1;
+        }
         const int signal = Terminal::signal_number();
         return signal != 0 ? 128 + signal : 0;
     } catch (const std::exception& e) {

@@ -34,6 +34,8 @@ int HallSession::run() {
     while (running_) {
         if (form_ != Form::name && !stopped_ && client_.closed() && Clock::now() >= retry_at_)
             connect();
+        if (!running_)
+            break; // the hall was refused
         receive();
         if (app_) {
             app_->step();
@@ -66,7 +68,7 @@ int HallSession::run() {
     }
     // A seat in a game under way waits for us (the server marks it away); nothing to save.
     client_.disconnect();
-    return 0;
+    return refusal_.empty() ? 0 : 1;
 }
 
 int HallSession::wait_ms() const {
@@ -84,11 +86,16 @@ int HallSession::wait_ms() const {
 void HallSession::connect() {
     // The hall is started when none answers, at the first try and after a server went away
     // (it restores its tables): a second terminal doing the same at once finds it locked.
-    std::string started_log;
-    const std::string why =
-        hall::connect_or_start(client_, options_.socket_path, options_.self_exe, started_log);
-    if (!why.empty()) {
-        lost_connection(why);
+    const hall::HallReach reach =
+        hall::connect_or_start(client_, options_.socket_path, options_.self_exe);
+    if (reach.refused) {
+        // Not our own hall: nothing more is said to it, nor tried again. run_hall tells why.
+        refusal_ = reach.error;
+        running_ = false;
+        return;
+    }
+    if (!reach.error.empty()) {
+        lost_connection(reach.error);
         return;
     }
     client_.keep_copies(false); // the App plays every action itself

@@ -38,9 +38,12 @@ public:
     // The table's App holds callbacks into this session: it stays where it was made.
     HallSession(const HallSession&) = delete;
     HallSession& operator=(const HallSession&) = delete;
-    /// Runs until the player quits or a signal arrives; 0, or 1 when the hall could not be
-    /// reached at all.
+    /// Runs until the player quits or a signal arrives; 0, or 1 when the hall at the socket
+    /// was refused (refusal()).
     int run();
+    /// Why the hall at the socket was not trusted (its folder, socket or server is not this
+    /// user's: hall::HallReach::refused), or "".
+    const std::string& refusal() const { return refusal_; }
 
 private:
     using Clock = std::chrono::steady_clock;
@@ -75,6 +78,7 @@ private:
     bool welcomed_ = false;
     bool ever_connected_ = false;
     bool stopped_ = false; // replaced by another terminal, or another version: no more tries
+    std::string refusal_;  // the hall is not this user's: the session ends, saying why
 
     // The hall: the lobby's last snapshot (and the one being read), what is marked.
     std::vector<hall::TableView> tables_, next_tables_;

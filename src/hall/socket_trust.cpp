@@ -1,0 +1,103 @@
+#include "hall/socket_trust.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <pwd.h>
+#include <sys/socket.h>
+#include <unistd.h>
+#include <vector>
+
+#include "hall/socket_dir.hpp"
+
+namespace termpool::hall {
+namespace {
+
+std::string octal_mode(mode_t mode) {
+    char text[8];
+    std::snprintf(text, sizeof text, "%04o", static_cast<unsigned>(mode & 07777));
+    return text;
+}
+
+// Who may reach into a folder of mode `mode`, worst first.
+std::string reached_by(mode_t mode) {
+    if ((mode & S_IWOTH) != 0)
+        return "writable by others";
+    if ((mode & S_IWGRP) != 0)
+        return "writable by its group";
+    if ((mode & S_IRWXO) != 0)
+        return "open to others";
+    return "open to its group";
+}
+
+std::string this_user(uid_t user) {
+    return "this user (" + describe_uid(user) + ")";
+}
+
+} // namespace
+
+std::string describe_uid(uid_t uid) {
+    std::string text = "uid " + std::to_string(uid);
+    // getpwuid_r, not getpwuid: the client may look from two threads (tests do).
+    std::vector<char> buffer(16384);
+    passwd entry{};
+    passwd* found = nullptr;
+    if (::getpwuid_r(uid, &entry, buffer.data(), buffer.size(), &found) == 0 && found &&
+        found->pw_name && *found->pw_name)
+        text += std::string(" (") + found->pw_name + ")";
+    return text;
+}
+
+std::string judge_socket_folder(const std::string& folder, const struct stat& st, uid_t user) {
+    const std::string owner = "owned by " + describe_uid(st.st_uid);
+    // A link could be pointed elsewhere after the check, by whoever owns the folder it is in.
+    if (S_ISLNK(st.st_mode))
+        return folder + ": the socket folder is a symbolic link (" + owner + "), not a directory";
+    if (!S_ISDIR(st.st_mode))
+        return folder + ": the socket folder is not a directory (" + owner + ")";
+    if (st.st_uid != user)
+        return folder + ": the socket folder is " + owner + ", not by " + this_user(user);
+    if ((st.st_mode & (S_IRWXG | S_IRWXO)) != 0)
+        return folder + ": the socket folder is " + reached_by(st.st_mode) + " (mode " +
+               octal_mode(st.st_mode) + ", " + owner + "); make it private with chmod 700";
+    return {};
+}
+
+std::string judge_socket_file(const std::string& path, const struct stat& st, uid_t user) {
+    const std::string owner = "owned by " + describe_uid(st.st_uid);
+    if (!S_ISSOCK(st.st_mode))
+        return path + ": not a socket (" + owner + ")";
+    if (st.st_uid != user)
+        return path + ": the hall's socket is " + owner + ", not by " + this_user(user);
+    return {};
+}
+
+std::string judge_peer(const std::string& path, uid_t peer, uid_t user) {
+    if (peer == user)
+        return {};
+    return path + ": the hall there runs as " + describe_uid(peer) + ", not as " + this_user(user) +
+           "; nothing was sent to it";
+}
+
+std::string check_socket_path(const std::string& socket_path) {
+    const uid_t user = ::geteuid();
+    const std::string folder = socket_folder_of(socket_path);
+    struct stat st {};
+    if (::lstat(folder.c_str(), &st) != 0)
+        return errno == ENOENT ? std::string() : folder + ": " + std::strerror(errno);
+    if (std::string problem = judge_socket_folder(folder, st, user); !problem.empty())
+        return problem;
+    if (::lstat(socket_path.c_str(), &st) != 0)
+        return errno == ENOENT ? std::string() : socket_path + ": " + std::strerror(errno);
+    return judge_socket_file(socket_path, st, user);
+}
+
+std::string check_peer(int fd, const std::string& socket_path) {
+    ucred peer{};
+    socklen_t size = sizeof peer;
+    if (::getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &peer, &size) != 0)
+        return socket_path + ": cannot tell who runs the hall there: " + std::strerror(errno);
+    return judge_peer(socket_path, peer.uid, ::geteuid());
+}
+
+} // namespace termpool::hall

@@ -1,0 +1,45 @@
+#pragma once
+/// \file
+/// Whether a hall's socket may be trusted with a player's name and seat token: its folder and
+/// the socket file are this user's alone, and the process that answers runs as this user.
+/// Another local user who makes /tmp/termpool-UID first (or any folder on a --socket path)
+/// could otherwise listen there, take the token and show a lobby of their own. The folder and
+/// file are looked at (lstat) before connecting, the server's uid (SO_PEERCRED) after, before
+/// anything is sent. The judgements are pure functions of what lstat and SO_PEERCRED give, so
+/// that an owner other than oneself can be tested without root.
+
+#include <string>
+#include <sys/stat.h>
+#include <sys/types.h>
+
+namespace termpool::hall {
+
+/// Who `uid` is, for a message: "uid 1002 (mallory)", or "uid 1002" when the system has no
+/// name for it.
+std::string describe_uid(uid_t uid);
+
+/// The socket folder's lstat `st` judged for `user`: a directory, not a symbolic link, owned
+/// by `user`, with no permission for its group or others (tmux's rule, made strict: whoever
+/// can reach into the folder can reach the hall). "" when good, else why not, naming the
+/// folder and its owner ("F: the socket folder is owned by uid 1002 (mallory), not by this
+/// user (uid 1001 (ann))").
+std::string judge_socket_folder(const std::string& folder, const struct stat& st, uid_t user);
+
+/// The socket file's lstat `st` judged for `user`: a socket owned by `user`. "" or why not,
+/// naming the path and its owner.
+std::string judge_socket_file(const std::string& path, const struct stat& st, uid_t user);
+
+/// The uid of the process that answered at `path` (SO_PEERCRED) judged for `user`: the same
+/// uid, or why not, naming the path and who runs the hall there.
+std::string judge_peer(const std::string& path, uid_t peer, uid_t user);
+
+/// Before connecting to `socket_path`: its folder and, when there, the socket file, as they
+/// are now (lstat), judged for this user (geteuid). Nothing there yet (no folder, or no file)
+/// is no problem: "". Else why not.
+std::string check_socket_path(const std::string& socket_path);
+
+/// After connecting on `fd` to `socket_path`: the process at the other end runs as this user
+/// (geteuid; SO_PEERCRED gives the uid the server listened with). "" or why not.
+std::string check_peer(int fd, const std::string& socket_path);
+
+} // namespace termpool::hall
