@@ -95,7 +95,8 @@ int main(int argc, char** argv) {
         }
         if (command == "hall") {
             // serve and bench are the hall's own; the rest is a player's terminal in it.
-            if (!rest.empty() && (rest.front() == "serve" || rest.front() == "bench"))
+            if (!rest.empty() &&
+                (rest.front() == "serve" || rest.front() == "bench" || rest.front() == "who"))
                 return termpool::hall::hall_command(rest);
             return termpool::tui::run_hall(rest);
         }

@@ -266,7 +266,7 @@ private:
                                    std::chrono::system_clock::time_point wall_now) const;
 
     // --- hall_core_who.cpp: the hall's state for its host
-    std::vector<std::string> who_lines(Clock::time_point now) const;
+    std::vector<std::string> who_lines(int asker, Clock::time_point now) const;
 
     // --- hall_core_messages.cpp: each client message to its handler
     void on_message(Client& client, const ClientMessage& message, Clock::time_point now);
@@ -288,7 +288,7 @@ private:
     bool settling_ = false;
     WorkCrew savers_;
     std::optional<Clock::time_point> idle_since_; // nothing keeps the hall since then
-    std::set<int> unsaved_; // the tables whose last save failed (by number)
+    std::set<int> unsaved_;                       // the tables whose last save failed (by number)
     LatencyHistogram handling_; // each action, from the loop's wake-up to its broadcast queued
     LatencyHistogram saving_;   // each round's saves of actions, side by side
 };

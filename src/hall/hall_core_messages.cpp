@@ -12,7 +12,7 @@ void HallCore::on_message(Client& client, const ClientMessage& message, Clock::t
         if (!client.requests.take(options_.request_rate, options_.request_burst, now))
             return send_error(client, ErrorCode::rate, "too many requests: slow down", now);
         std::string text;
-        for (std::string& line : who_lines(now))
+        for (std::string& line : who_lines(client.id, now))
             text += format_server(WhoLine{std::move(line)});
         return send_text(client, text + format_server(WhoEnd{}));
     }

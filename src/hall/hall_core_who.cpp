@@ -14,8 +14,8 @@ namespace {
 
 // A duration as a person reads it: "45 s", "12 min", "3 h 05 min", "2 d 4 h".
 std::string span_words(std::chrono::steady_clock::duration span) {
-    const long long s = std::max<long long>(
-        0, std::chrono::duration_cast<std::chrono::seconds>(span).count());
+    const long long s =
+        std::max<long long>(0, std::chrono::duration_cast<std::chrono::seconds>(span).count());
     char text[40];
     if (s < 60)
         std::snprintf(text, sizeof text, "%lld s", s);
@@ -30,28 +30,28 @@ std::string span_words(std::chrono::steady_clock::duration span) {
 
 } // namespace
 
-std::vector<std::string> HallCore::who_lines(Clock::time_point now) const {
+std::vector<std::string> HallCore::who_lines(int asker, Clock::time_point now) const {
     std::map<int, int> spectators; // by table
     int welcomed = 0;
+    std::size_t others = 0; // connections not past hello, the asker's aside
     for (const auto& [id, client] : clients_) {
         welcomed += client.welcomed ? 1 : 0;
+        others += !client.welcomed && id != asker ? 1 : 0;
         if (client.table != 0 && client.seat == 0)
             ++spectators[client.table];
     }
     std::vector<std::string> lines;
     lines.push_back("hall: " + std::to_string(welcomed) + " of " +
-                    std::to_string(options_.max_clients) + " people, " +
-                    std::to_string(clients_.size() - static_cast<std::size_t>(welcomed)) +
-                    " connections before hello, " + std::to_string(tables_.size()) + " of " +
+                    std::to_string(options_.max_clients) + " people, " + std::to_string(others) +
+                    " connections waiting for hello, " + std::to_string(tables_.size()) + " of " +
                     std::to_string(options_.max_tables) + " tables");
     for (const auto& [number, table] : tables_) {
         const auto found = spectators.find(number);
         const TableView view = table_view(table, found == spectators.end() ? 0 : found->second);
-        std::string line = "table " + std::to_string(number) + ": " +
-                           game_row(view.game).title + ", race to " +
-                           std::to_string(view.race_to) + ", " + table_state_name(view.state) +
-                           ", " + std::to_string(table.match.record().actions.size()) +
-                           " actions;";
+        std::string line = "table " + std::to_string(number) + ": " + game_row(view.game).title +
+                           ", race to " + std::to_string(view.race_to) + ", " +
+                           table_state_name(view.state) + ", " +
+                           std::to_string(table.match.record().actions.size()) + " actions;";
         for (int s = 0; s < 2; ++s) {
             const SeatView& seat = view.seats[s];
             line += " seat " + std::to_string(s + 1) + " " + seat_kind_name(seat.kind);
@@ -66,7 +66,9 @@ std::vector<std::string> HallCore::who_lines(Clock::time_point now) const {
     }
     for (const auto& [id, client] : clients_) {
         std::string line = "connection " + std::to_string(id) + ": ";
-        if (!client.welcomed)
+        if (id == asker)
+            line += "this question";
+        else if (!client.welcomed)
             line += "no hello yet";
         else if (client.table == 0)
             line += client.name + " in the lobby";

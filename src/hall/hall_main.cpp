@@ -14,6 +14,7 @@
 #include "hall/hall_bench.hpp"
 #include "hall/hall_lock.hpp"
 #include "hall/hall_state.hpp"
+#include "hall/hall_who.hpp"
 #include "hall/server.hpp"
 #include "hall/socket_dir.hpp"
 
@@ -32,6 +33,8 @@ constexpr const char* kUsage =
     "  --max-tables N   tables at once (default 100)\n"
     "  --idle-exit S    save and exit 0 after S seconds with no connection and no table\n"
     "                   (default 0: never)\n"
+    "       termpool hall who [--socket PATH]\n"
+    "  who              print a running hall's tables, people and connections (for its host)\n"
     "       termpool hall bench [--tables N] [--seconds S] [--think MS] [--seed S]\n"
     "  bench            play N tables of computers through a private server; print actions a\n"
     "                   second, the action round trip, the server's CPU and memory\n";
@@ -147,7 +150,7 @@ const char* hall_usage() {
 
 int hall_command(const std::vector<std::string>& args) {
     if (args.empty())
-        return usage_error("which hall command? (serve or bench)");
+        return usage_error("which hall command? (serve, who or bench)");
     if (args.front() == "--help" || args.front() == "-h") {
         std::cout << kUsage;
         return 0;
@@ -156,6 +159,8 @@ int hall_command(const std::vector<std::string>& args) {
         return serve(args);
     if (args.front() == "bench")
         return hall_bench_command(args);
+    if (args.front() == "who")
+        return hall_who_command(args);
     return usage_error("unknown hall command '" + args.front() + "'");
 }
 

@@ -343,10 +343,9 @@ struct WhoLine {
 struct WhoEnd {};
 
 /// Anything the server says.
-using ServerMessage =
-    std::variant<Welcome, Error, LobbyBegin, TableView, PlayerView, LobbyEnd, Created, Joined, Left,
-                 Yours, RecordLine, RecordEnd, SeatChange, ActionDone, AimShown, ChatShown, Pong,
-                 WhoLine, WhoEnd>;
+using ServerMessage = std::variant<Welcome, Error, LobbyBegin, TableView, PlayerView, LobbyEnd,
+                                   Created, Joined, Left, Yours, RecordLine, RecordEnd, SeatChange,
+                                   ActionDone, AimShown, ChatShown, Pong, WhoLine, WhoEnd>;
 
 // --- text ---------------------------------------------------------------------------------
 
