@@ -179,6 +179,11 @@ public:
     std::size_t table_count() const { return table_count_; }
     /// Connections known (welcomed or not).
     std::size_t client_count() const { return clients_.size(); }
+    /// Table `number`'s match, nullptr when there is no such table (for tests).
+    const Match* match(int number) const {
+        const auto found = tables_.find(number);
+        return found == tables_.end() ? nullptr : &found->second.match;
+    }
 
 private:
     using Client = serving::Client;
