@@ -81,7 +81,7 @@ void HallCore::on_connect(int client, Clock::time_point now) {
         return !e.second.welcomed && !e.second.closing;
     });
     if (unwelcomed > options_.max_unwelcomed)
-        send_and_close(clients_.at(client), ErrorCode::full, "too many connections wait for hello");
+        evict_for_newcomer(clients_.at(client));
 }
 
 void HallCore::on_disconnect(int client, Clock::time_point now) {
@@ -113,6 +113,7 @@ void HallCore::tick(Clock::time_point now) {
     flush_aims(now);
     drop_closed(now);
     expire_away(now);
+    archive_idle(now);
     expire_unwelcomed(now);
     send_lobbies(now);
 }
@@ -120,7 +121,7 @@ void HallCore::tick(Clock::time_point now) {
 int HallCore::timeout(Clock::time_point now) const {
     int timeout = -1;
     for (const int due : {aim_timeout(now), away_timeout(now), lobby_timeout(now),
-                          hello_timeout(now), idle_timeout(now)})
+                          hello_timeout(now), idle_timeout(now), archive_timeout(now)})
         if (due >= 0)
             timeout = timeout < 0 ? due : std::min(timeout, due);
     return timeout;

@@ -48,7 +48,8 @@ using Clock = std::chrono::steady_clock;
 
 // A person connected: who they said they are, where they are.
 struct Client {
-    Client(int client_id, Clock::time_point now) : id(client_id), connected_at(now) {}
+    Client(int client_id, Clock::time_point now)
+        : id(client_id), connected_at(now), last_heard(now) {}
     int id = 0;
     bool welcomed = false;
     std::string token;
@@ -62,6 +63,7 @@ struct Client {
     TokenBucket requests;           // sit, watch, leave, create, sync
     bool lobby_owed = false;        // a lobby snapshot is due once its output queue drains
     Clock::time_point connected_at; // hello is due within hello_timeout of it
+    Clock::time_point last_heard;   // its last line but a ping (lobby_idle_limit)
 };
 
 // A seat as the server keeps it.
@@ -98,6 +100,8 @@ struct Table {
     // The state hash after each of the last few actions (SEQ, HASH): a client's copy that
     // disagreed is logged against the server's hash at the same action.
     std::deque<std::pair<std::size_t, std::uint64_t>> recent_hashes{};
+    std::string creator_name{};    // the creator's name (empty for a restored table)
+    Clock::time_point last_move{}; // its creation or its last action (archive_after)
     // The last chat_lines_kept lines said at the table, oldest first: a player who comes
     // back (or a spectator who comes in) reads what was said, after the record.
     std::deque<ChatShown> chat{};
@@ -186,6 +190,11 @@ public:
     std::size_t table_count() const { return table_count_; }
     /// Connections known (welcomed or not).
     std::size_t client_count() const { return clients_.size(); }
+    /// Table `number`'s match, nullptr when there is no such table (for tests).
+    const Match* match(int number) const {
+        const auto found = tables_.find(number);
+        return found == tables_.end() ? nullptr : &found->second.match;
+    }
 
 private:
     using Client = serving::Client;
@@ -241,6 +250,16 @@ private:
     void on_computer(Client& client, const SeatComputer& request, Clock::time_point now);
     void forget_waiting_tables_of(const std::string& token_hash);
 
+    // --- hall_core_limits.cpp: what one person may hold, who gives way, idle tables archived
+    bool holds(const Table& table, const Client& client) const;
+    int tables_held(const Client& client) const;
+    std::string create_refusal(const Client& client) const;
+    std::string sit_refusal(const Table& table, const Client& client) const;
+    void evict_for_newcomer(const Client& newcomer);
+    bool evict_idle_lobby(const std::string& newcomer_hash, Clock::time_point now);
+    void archive_idle(Clock::time_point now);
+    int archive_timeout(Clock::time_point now) const;
+
     // --- hall_core_actions.cpp: the game: actions, their saves, the computer, aims, chat
     bool at_action_cap(const Table& table) const;
     void think(Table& table, Clock::time_point now);
@@ -287,8 +306,9 @@ private:
     std::vector<Proposal> batch_;
     bool settling_ = false;
     WorkCrew savers_;
-    std::optional<Clock::time_point> idle_since_; // nothing keeps the hall since then
-    std::set<int> unsaved_;                       // the tables whose last save failed (by number)
+    std::optional<Clock::time_point> idle_since_;   // nothing keeps the hall since then
+    std::optional<Clock::time_point> next_archive_; // when archive_idle looks again
+    std::set<int> unsaved_; // the tables whose last save failed (by number)
     LatencyHistogram handling_; // each action, from the loop's wake-up to its broadcast queued
     LatencyHistogram saving_;   // each round's saves of actions, side by side
 };

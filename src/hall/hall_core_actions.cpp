@@ -114,6 +114,7 @@ void HallCore::taken_or_not(Proposal& p, Clock::time_point now) {
 // The match took an action (saved): tell the table, move on.
 void HallCore::action_taken(Table& table, Clock::time_point now) {
     changed(table);
+    table.last_move = now;
     const bool now_over = over(table);
     const auto& actions = table.match.record().actions;
     const std::uint64_t hash = table.match.state_hash();

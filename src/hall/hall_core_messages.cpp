@@ -18,6 +18,8 @@ void HallCore::on_message(Client& client, const ClientMessage& message, Clock::t
     }
     if (!client.welcomed && !std::holds_alternative<Hello>(message))
         return send_error(client, ErrorCode::hello_first, "say hello first", now);
+    if (!std::holds_alternative<Ping>(message))
+        client.last_heard = now; // a ping alone does not keep a place in a full hall
     // An action at a table waits for its save (settle) until the round ends, unless a
     // message could see or change that table first: every message but an action, an aim
     // or a chat line at the sender's own table settles the round's actions before it is

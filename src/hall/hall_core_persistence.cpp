@@ -50,6 +50,7 @@ void HallCore::restore(Clock::time_point now, std::chrono::system_clock::time_po
                     0,
                     0};
         const auto away_since = file_changed(stored.number, now, wall_now);
+        table.last_move = away_since;
         for (int s = 0; s < 2; ++s) {
             table.seats[s].computer = stored.record.computers[s].has_value();
             // Nobody is connected yet: a seat of a game not started is nobody's.

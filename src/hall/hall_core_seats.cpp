@@ -168,7 +168,7 @@ void HallCore::on_hello(Client& client, const Hello& hello, Clock::time_point no
         const Client& other = entry.second;
         return other.welcomed && !other.closing && !same_digest(other.token_hash, hash);
     });
-    if (others >= options_.max_clients)
+    if (others >= options_.max_clients && !evict_idle_lobby(hash, now))
         return send_and_close(client, ErrorCode::full, "the hall has all the clients it takes");
     // The same person again: the old connection gives way (its seats go away, then the
     // new one may take them back).
@@ -200,6 +200,8 @@ void HallCore::on_create(Client& client, const Create& create, Clock::time_point
     if (waiting >= options_.max_waiting_tables)
         return send_error(client, ErrorCode::full,
                           "you have " + std::to_string(waiting) + " tables waiting already", now);
+    if (const std::string why = create_refusal(client); !why.empty())
+        return send_error(client, ErrorCode::full, why, now);
     int number = 1;
     while (tables_.count(number))
         ++number;
@@ -216,6 +218,8 @@ void HallCore::on_create(Client& client, const Create& create, Clock::time_point
                                   client.token_hash,
                                   0,
                                   0});
+    tables_.at(number).creator_name = client.name;
+    tables_.at(number).last_move = now;
     table_count_ = tables_.size();
     // A table that cannot be saved could never be played (every action is saved before it is
     // taken): it is not made, and the player is told why.
@@ -258,6 +262,8 @@ void HallCore::on_sit(Client& client, const Sit& sit, Clock::time_point now) {
         client.table == sit.table && client.seat == 3 - sit.seat && !started(table) && !over(table);
     if (same_digest(other.token_hash, client.token_hash) && !moving_over)
         return send_error(client, ErrorCode::refused, "you hold the other seat of this table", now);
+    if (const std::string why = sit_refusal(table, client); !why.empty())
+        return send_error(client, ErrorCode::full, why, now);
     if (client.table != 0)
         leave_table(client, now, sit.table); // never closes this table
     const bool mine = same_digest(slot.token_hash, client.token_hash);

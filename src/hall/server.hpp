@@ -18,13 +18,32 @@ namespace termpool::hall {
 struct ServerOptions {
     std::string socket_path; ///< where to listen (the folder must exist)
     std::string state_dir;   ///< where tables are saved and restored from; empty: nowhere
-    /// People (connections that said hello) beyond this are told "full" and closed.
+    /// People (connections that said hello) at most. One more is let in by closing the
+    /// connection idle longest in the lobby (at no table, nothing said for lobby_idle_limit),
+    /// which is told why; with none such, the newcomer is told "full" and closed.
     int max_clients = 256;
-    /// Connections not yet past hello beyond this are told "full" and closed at once.
+    /// A person in the lobby who has said nothing (pings aside) for this long may give way to
+    /// a newcomer when the hall is full (max_clients).
+    std::chrono::milliseconds lobby_idle_limit = std::chrono::minutes(5);
+    /// Connections not yet past hello at most: one more closes the one that has waited
+    /// longest, which is told "full".
     int max_unwelcomed = 32;
     /// A connection that has not said hello within this is closed.
     std::chrono::milliseconds hello_timeout{10000};
     int max_tables = 100; ///< tables beyond this are refused
+    /// Tables one person may hold in any state (waiting, under way, with an away seat, not
+    /// over): those they created or hold a seat of. A person is a name (compared ignoring
+    /// ASCII case) or a token, so a new token per hello holds no more; beyond, create and sit
+    /// are refused ("full").
+    int max_tables_per_person = 3;
+    /// The last free tables, this many at most and a tenth of max_tables (rounded up) at
+    /// most, are kept for people who hold none: someone holding a table cannot create one of
+    /// them ("full").
+    int reserved_tables = 10;
+    /// A table nobody is at (its seats away, empty or the computer's) with no action for this
+    /// long is archived: its file moves to archive/ in the state folder (table-N.save, then
+    /// .1, .2, ... never over another) and it leaves the lobby.
+    std::chrono::milliseconds archive_after = std::chrono::hours(24);
     /// Tables not started yet that one token may have created; more are refused ("full"). A
     /// table nobody sits at or watches goes when its creator disconnects, and any table not
     /// started goes when the last person leaves it.
