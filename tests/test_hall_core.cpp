@@ -213,7 +213,7 @@ TEST_CASE("hall core: a restart restores the tables and the seats", "[hall][core
             hall.play_one(ann, bob, table);
         hash = hall.core().match(table)->state_hash();
         ann_token = hall.token(ann);
-        REQUIRE(hall.core().save_all());
+        REQUIRE(hall.core().save_all() == 0);
     }
     FakeHall hall(saved_in(dir.path()));
     hall.restore();
@@ -269,7 +269,7 @@ TEST_CASE("hall core: an away seat is freed after away_limit, to the millisecond
         CHECK(told_seat(hall, bob, 1, SeatKind::empty));
         CHECK(saved_tokens(dir.path(), table)[0].empty());
         CHECK(saved_tokens(dir.path(), table)[1] != "");
-        REQUIRE(hall.core().save_all());
+        REQUIRE(hall.core().save_all() == 0);
     }
     // Restarted after Bob's time was up (the file's time says when he left): the table goes.
     FakeHall hall(options);

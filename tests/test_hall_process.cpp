@@ -424,7 +424,9 @@ TEST_CASE("hall process: --idle-exit: a hall nobody uses saves and exits 0", "[h
     CHECK(*status == 0);
     CHECK(ended - left >= 1s);
     CHECK_FALSE(std::filesystem::exists(socket_of(dir.path())));
-    CHECK(file_text(log).find("no connection and no table for 1 s: exiting") != std::string::npos);
+    CHECK(file_text(log).find(
+              "no connection for 1 s and every table saved: exiting (0 tables wait") !=
+          std::string::npos);
 }
 
 TEST_CASE("hall process: --idle-exit takes whole seconds from 0", "[hall][e2e]") {
@@ -454,4 +456,38 @@ TEST_CASE("hall process: a second server on another socket is refused the same s
     CHECK(server->running());
     HallClient probe;
     CHECK(probe.connect(socket_of(dir.path())).empty());
+}
+
+TEST_CASE("hall process: hall who prints a running hall for its host, exits 1 with none",
+          "[hall][e2e]") {
+    TempDir dir("termpool-hall-who");
+    {
+        const std::string log = dir.path() + "/who-none.log";
+        auto who =
+            run_termpool(dir.path(), {"hall", "who", "--socket", socket_of(dir.path())}, log);
+        const auto status = who->wait_exit(kWait);
+        REQUIRE(status);
+        CHECK(*status == 1);
+        CHECK(file_text(log).find("termpool hall who: no hall answers on " +
+                                  socket_of(dir.path())) != std::string::npos);
+    }
+    auto server = start_hall(dir.path());
+    HallClient ann;
+    REQUIRE(ann.connect(socket_of(dir.path())) == "");
+    REQUIRE(ann.hello("Ann", "", kWait) == "");
+    ann.send(Create{GameType::nine_ball, TableSize::seven_foot, 3});
+    REQUIRE(ann.wait_for(is<Created>, kWait));
+    const std::string log = dir.path() + "/who.log";
+    auto who = run_termpool(dir.path(), {"hall", "who", "--socket", socket_of(dir.path())}, log);
+    const auto status = who->wait_exit(kWait);
+    const std::string text = file_text(log);
+    INFO(text);
+    REQUIRE(status);
+    CHECK(*status == 0);
+    CHECK(text.find("hall: 1 of 256 people, 0 connections waiting for hello, 1 of 100 tables\n") ==
+          0);
+    CHECK(text.find("table 1: 9-ball, race to 3, waiting, 0 actions; seat 1 empty, seat 2 empty, 0 "
+                    "watching\n") != std::string::npos);
+    CHECK(text.find(": Ann in the lobby, connected ") != std::string::npos);
+    CHECK(text.find(ann.token()) == std::string::npos);
 }

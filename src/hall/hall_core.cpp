@@ -192,9 +192,9 @@ bool HallCore::idle_for_good(Clock::time_point now) {
         idle_since_ = now;
     if (options_.idle_exit.count() <= 0 || now - *idle_since_ < options_.idle_exit)
         return false;
-    log("no connection and no table in memory only for " +
-        std::to_string(options_.idle_exit.count()) + " s: exiting (" +
-        std::to_string(tables_.size()) + " tables wait in the state folder)");
+    log("no connection for " + std::to_string(options_.idle_exit.count()) +
+        " s and every table saved: exiting (" + std::to_string(tables_.size()) +
+        " tables wait in the state folder)");
     return true;
 }
 

@@ -173,8 +173,8 @@ public:
     /// What was said since the last call, in order.
     std::vector<Outgoing> take_outbox() { return std::exchange(outbox_, {}); }
 
-    /// With idle_exit set: true once the hall has had no connection and no table for that
-    /// long (the caller then stops).
+    /// With idle_exit set: true once nothing has kept the hall for that long
+    /// (ServerOptions::idle_exit says what keeps it; the caller then stops).
     bool idle_for_good(Clock::time_point now);
     /// Milliseconds until the hall has been idle for idle_exit, -1 for never.
     int idle_timeout(Clock::time_point now) const;
@@ -308,7 +308,7 @@ private:
     WorkCrew savers_;
     std::optional<Clock::time_point> idle_since_;   // nothing keeps the hall since then
     std::optional<Clock::time_point> next_archive_; // when archive_idle looks again
-    std::set<int> unsaved_; // the tables whose last save failed (by number)
+    std::set<int> unsaved_;                         // the tables whose last save failed (by number)
     LatencyHistogram handling_; // each action, from the loop's wake-up to its broadcast queued
     LatencyHistogram saving_;   // each round's saves of actions, side by side
 };

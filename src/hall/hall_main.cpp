@@ -31,7 +31,7 @@ constexpr const char* kUsage =
     "  --state DIR      where tables are saved (default $XDG_STATE_HOME/termpool/hall)\n"
     "  --max-clients N  people in the hall at once (default 256)\n"
     "  --max-tables N   tables at once (default 100)\n"
-    "  --idle-exit S    save and exit 0 after S seconds with no connection and no table\n"
+    "  --idle-exit S    exit 0 after S seconds with nobody connected and every table saved\n"
     "                   (default 0: never)\n"
     "       termpool hall who [--socket PATH]\n"
     "  who              print a running hall's tables, people and connections (for its host)\n"

@@ -83,8 +83,10 @@ struct ServerOptions {
     /// Actions one table's record may hold (a game of pool takes a few hundred); beyond, an
     /// action is refused, so that a record cannot grow without end.
     std::size_t max_actions = 5000;
-    /// The server saves and exits once it has had no connection and no table for this long
-    /// (0: never). A hall `termpool hall` starts in the background runs with 60 s.
+    /// The server exits once nothing has kept it for this long (0: never): no connection, no
+    /// computer's search, no save waiting, and no table that lives only in memory (with a
+    /// state folder every table is on disk and restored by the next server; without one, a
+    /// table keeps the server). A hall `termpool hall` starts in the background runs with 60 s.
     std::chrono::seconds idle_exit{0};
     /// Where the racks' deals and the computers' seeds come from: the system's randomness when
     /// empty; with a seed, the same deals in the same order on every run (tests, which must not
