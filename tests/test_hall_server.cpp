@@ -27,6 +27,7 @@
 #include <variant>
 #include <vector>
 
+#include "file_helpers.hpp"
 #include "hall/client.hpp"
 #include "hall/hall_state.hpp"
 #include "hall/server.hpp"
@@ -813,14 +814,14 @@ TEST_CASE("hall server: an action that cannot be saved is not taken", "[hall]") 
     const int table = create_table(ann);
     sit(ann, table, 1);
     sit(bob, table, 2);
-    // A folder where the save's temporary file goes makes the atomic write fail (a chmod
-    // would not stop the tests' root).
-    const std::string in_the_way = table_path(dir.path(), table) + ".tmp";
-    REQUIRE(::mkdir(in_the_way.c_str(), 0700) == 0);
+    // A full disk (a file size limit; a chmod would not stop the tests' root) makes the
+    // atomic write fail.
     const RecordedAction move = chosen_move(*ann.match(table));
-    REQUIRE(ann.send(Act{move}));
-    CHECK(expect_error(ann).code == ErrorCode::internal);
-    REQUIRE(::rmdir(in_the_way.c_str()) == 0);
+    {
+        const test::FileSizeLimit full(0);
+        REQUIRE(ann.send(Act{move}));
+        CHECK(expect_error(ann).code == ErrorCode::internal);
+    }
     // Nothing changed: the same move is action 1 still, for everyone and in the file.
     REQUIRE(ann.send(Act{move}));
     await_action(bob, table, 1);

@@ -9,7 +9,10 @@
 #include <termpool/text_lines.hpp>
 #include <unistd.h>
 
+#include "files/atomic_file.hpp"
+#include "files/file_limits.hpp"
 #include "files/keep_aside.hpp"
+#include "files/read_file.hpp"
 #include "files/xdg_dir.hpp"
 #include "player/save_file.hpp"
 #include <termpool/text_width.hpp>
@@ -215,7 +218,7 @@ std::string stats_path() {
 StatsFile read_stats_file(const std::string& path) {
     StatsFile file;
     std::string error;
-    const std::optional<std::string> text = read_whole_file(path, error);
+    const std::optional<std::string> text = read_whole_file(path, error, max_stats_bytes);
     if (!text) {
         file.state = error.empty() ? StatsFile::State::missing : StatsFile::State::unreadable;
         file.problem = error;
@@ -233,7 +236,7 @@ StatsFile read_stats_file(const std::string& path) {
 }
 
 StatsLock::StatsLock(const std::string& path) {
-    fd_ = ::open((path + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+    fd_ = ::open((path + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0600);
     if (fd_ < 0)
         return;
     while (::flock(fd_, LOCK_EX) != 0 && errno == EINTR) {
@@ -248,6 +251,7 @@ StatsLock::~StatsLock() {
 std::string save_game_stats(const std::string& path, const std::string names[2], GameType game,
                             const PlayerStats stats[2]) {
     const StatsLock lock(path);
+    remove_temporaries_of(path); // what a writer killed midway left; none runs now
     StatsFile file = read_stats_file(path);
     std::string notice;
     switch (file.state) {
