@@ -10,7 +10,7 @@ namespace termpool {
 
 /// A game's save or a hall's table file, bytes. The largest record the hall keeps has 5000
 /// actions (hall::Server::Options::max_actions); with every shot at its longest (spin,
-/// elevation, a call, numbers of 17 digits) such a record is about 0.6 MB, and an ordinary
+/// elevation, a call, numbers of 17 digits) such a record is 0.66 MB, and an ordinary
 /// one of that length about 0.25 MB, so 4 MiB leaves a margin of six times the worst (a test
 /// measures it).
 inline constexpr std::size_t max_save_bytes = 4 * 1024 * 1024;
