@@ -262,6 +262,24 @@ TEST_CASE("a command whose input file is over its bound exits with status 2 and 
     CHECK(simulate.second ==
           "termpool: " + big + ": 400000000 bytes, more than the 1048576 allowed\n");
 
+    // Statistics over their bound: damaged, so `termpool stats` says so with status 2 and the
+    // next game keeps the file aside and starts new totals.
+    REQUIRE(make_directories(tmp.path() + "/state/termpool") == "");
+    const std::string stats = tmp.path() + "/state/termpool/stats";
+    make_sparse(stats, 2'000'000);
+    const std::string too_large = stats + ": 2000000 bytes, more than the 1048576 allowed";
+    const auto listed = run_game(tmp, {"stats"});
+    CHECK(listed.first == 2);
+    CHECK(listed.second == too_large +
+                               "\ntermpool: the file is left as it is; the next finished game "
+                               "moves it aside (.bad) and starts new totals\n");
+    const std::string names[2] = {"Ann", "Bob"};
+    const PlayerStats figures[2] = {};
+    CHECK(save_game_stats(stats, names, GameType::nine_ball, figures) ==
+          too_large + "; kept as " + stats + ".bad, new totals started");
+    CHECK(fs::file_size(stats + ".bad") == 2'000'000);
+    CHECK(contents(stats).find(" Ann\n") != std::string::npos);
+
     REQUIRE(make_directories(tmp.path() + "/config/termpool") == "");
     const std::string config = tmp.path() + "/config/termpool/config";
     make_sparse(config, 100'000);

@@ -70,7 +70,7 @@ std::optional<std::string> read_whole_file(const std::string& path, std::string&
     if (fd < 0) {
         if (errno == ELOOP && links == Links::no_follow)
             error = path + ": a symbolic link, not read";
-        else if (errno != ENOENT)
+        else if (errno != ENOENT && errno != ENOTDIR) // a file under a file: missing too
             error = problem(path, "cannot open", errno);
         return std::nullopt;
     }

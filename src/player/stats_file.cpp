@@ -5,6 +5,7 @@
 #include <charconv>
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <termpool/game_registry.hpp>
 #include <termpool/text_lines.hpp>
 #include <unistd.h>
@@ -220,7 +221,14 @@ StatsFile read_stats_file(const std::string& path) {
     std::string error;
     const std::optional<std::string> text = read_whole_file(path, error, max_stats_bytes);
     if (!text) {
-        file.state = error.empty() ? StatsFile::State::missing : StatsFile::State::unreadable;
+        // Too large is no passing trouble: like a damaged file it is kept aside by the next
+        // game, which starts new totals.
+        struct stat st {};
+        const bool too_large = ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+                               static_cast<unsigned long long>(st.st_size) > max_stats_bytes;
+        file.state = error.empty() ? StatsFile::State::missing
+                     : too_large   ? StatsFile::State::damaged
+                                   : StatsFile::State::unreadable;
         file.problem = error;
         return file;
     }
