@@ -27,8 +27,9 @@ std::optional<std::string> read_bounded(int fd, const std::string& name, std::si
 
 /// The whole regular file at `path`, or nothing (with `error`) when it cannot be read, is not
 /// a regular file, or holds more than `max_bytes` (too_large_message); a missing file (or one
-/// whose folder is a file) gives nothing with an empty error. Opened without blocking, so that a FIFO in a file's place
-/// cannot hang the reader; with Links::no_follow a link at `path` is refused (ELOOP).
+/// whose folder is a file) gives nothing with an empty error. Opened without blocking, so that a
+/// FIFO in a file's place cannot hang the reader; with Links::no_follow a link at `path` is refused
+/// (ELOOP).
 std::optional<std::string> read_whole_file(const std::string& path, std::string& error,
                                            std::size_t max_bytes, Links links = Links::follow);
 
