@@ -213,7 +213,8 @@ FUZZ_FLAGS    := $(FUZZ_CORE_FLAGS) -Isrc
 FUZZ_APP_SRCS := src/cli/scenario.cpp src/cli/numbers.cpp \
                  src/player/config.cpp src/files/xdg_dir.cpp src/player/player_name.cpp \
                  src/player/options.cpp src/player/stats_file.cpp src/player/stats_figures.cpp \
-                 src/files/keep_aside.cpp src/files/atomic_file.cpp src/player/save_file.cpp \
+                 src/files/keep_aside.cpp src/files/atomic_file.cpp src/files/read_file.cpp \
+                 src/player/save_file.cpp \
                  src/hall/protocol.cpp
 FUZZ_CORE_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(CORE_SRCS))
 FUZZ_APP_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_APP_SRCS))

@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <vector>
 
@@ -37,5 +39,28 @@ inline std::vector<std::string> names_in(const std::string& dir) {
     std::sort(names.begin(), names.end());
     return names;
 }
+
+/// While it lives, no regular file this process writes grows past `bytes` (RLIMIT_FSIZE, with
+/// SIGXFSZ ignored, so that the write fails with EFBIG): a save fails as on a full disk, for
+/// root too, whom a folder's mode bits do not stop.
+class FileSizeLimit {
+public:
+    explicit FileSizeLimit(rlim_t bytes) {
+        REQUIRE(::getrlimit(RLIMIT_FSIZE, &before_) == 0);
+        old_handler_ = std::signal(SIGXFSZ, SIG_IGN);
+        const rlimit limit{bytes, before_.rlim_max};
+        REQUIRE(::setrlimit(RLIMIT_FSIZE, &limit) == 0);
+    }
+    ~FileSizeLimit() {
+        ::setrlimit(RLIMIT_FSIZE, &before_);
+        std::signal(SIGXFSZ, old_handler_);
+    }
+    FileSizeLimit(const FileSizeLimit&) = delete;
+    FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+
+private:
+    rlimit before_{};
+    void (*old_handler_)(int) = SIG_DFL;
+};
 
 } // namespace termpool::test

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "fake_hall.hpp"
+#include "file_helpers.hpp"
 #include "hall/hall_state.hpp"
 #include "hall_helpers.hpp"
 #include "temp_dir.hpp"
@@ -396,14 +397,16 @@ TEST_CASE("hall core: an action that cannot be saved is not taken", "[hall][core
     const int table = hall.create(ann);
     hall.sit(ann, table, 1);
     hall.sit(bob, table, 2);
-    const std::string in_the_way = table_path(dir.path(), table) + ".tmp";
-    REQUIRE(::mkdir(in_the_way.c_str(), 0700) == 0);
+    // A full disk (a file size limit; a chmod would not stop the tests' root) makes the
+    // atomic write fail.
     const RecordedAction move = chosen_move(*hall.core().match(table));
-    hall.send(ann, Act{move});
-    hall.tick();
+    {
+        const test::FileSizeLimit full(0);
+        hall.send(ann, Act{move});
+        hall.tick();
+    }
     CHECK(hall.error(ann) == ErrorCode::internal);
     CHECK(hall.core().match(table)->record().actions.empty());
-    REQUIRE(::rmdir(in_the_way.c_str()) == 0);
     hall.play_one(ann, bob, table);
     CHECK(saved_hash(dir.path(), table) == hall.core().match(table)->state_hash());
 }

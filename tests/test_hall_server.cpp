@@ -29,6 +29,7 @@
 #include <variant>
 #include <vector>
 
+#include "file_helpers.hpp"
 #include "hall/client.hpp"
 #include "hall/hall_state.hpp"
 #include "hall/server.hpp"

@@ -266,20 +266,25 @@ TEST_CASE("a save is atomic: a temporary file in the same folder, synced, rename
     CHECK(names_in(dir) == std::vector<std::string>{"table-1.save"}); // no temporary file left
 
     SECTION("a failed save leaves the old file whole and says why") {
-        // The temporary name taken by a folder: the file cannot be made.
-        REQUIRE(::mkdir((table_path(dir, 1) + ".tmp").c_str(), 0700) == 0);
-        CHECK(save_table(dir, second) ==
-              table_path(dir, 1) + ".tmp: cannot create: " + std::strerror(EISDIR));
+        // A full disk (a file size limit, which stops root too): the text cannot be written.
+        {
+            const test::FileSizeLimit full(0);
+            CHECK_THAT(save_table(dir, second),
+                       Catch::StartsWith(table_path(dir, 1) + ".tmp.") &&
+                           Catch::EndsWith(": cannot write: " + std::string(std::strerror(EFBIG))));
+        }
         CHECK(contents(table_path(dir, 1)) == short_text);
-        REQUIRE(::rmdir((table_path(dir, 1) + ".tmp").c_str()) == 0);
+        CHECK(names_in(dir) == std::vector<std::string>{"table-1.save"}); // the temporary went
         // The file's own name taken by a folder that is not empty: the rename fails, and the
         // temporary file goes.
         REQUIRE(::mkdir(table_path(dir, 2).c_str(), 0700) == 0);
         tmp.write("table-2.save/inside", "x");
         CHECK_THAT(save_table(dir, table_of(2, short_game, "", "")),
                    Catch::StartsWith(table_path(dir, 2) + ": cannot rename " + table_path(dir, 2) +
-                                     ".tmp to it: "));
-        CHECK_FALSE(fs::exists(table_path(dir, 2) + ".tmp"));
+                                     ".tmp.") &&
+                       Catch::Contains(" to it: "));
+        CHECK(names_in(dir) == std::vector<std::string>{"table-1.save", "table-2.save"});
+        CHECK(names_in(table_path(dir, 2)) == std::vector<std::string>{"inside"});
         CHECK_THAT(save_table(tmp.path() + "/table-1.save/sub", first),
                    Catch::Contains("cannot create the folder: ") &&
                        Catch::Contains(std::strerror(ENOTDIR)));
@@ -338,9 +343,10 @@ TEST_CASE("a save is atomic: a temporary file in the same folder, synced, rename
             CHECK((text == short_text || text == long_text));
             std::vector<std::string> problems;
             CHECK(load_tables(dir, problems).size() == 1);
-            CHECK(problems.empty()); // a leftover table-1.save.tmp is not a table
+            CHECK(problems.empty()); // a leftover table-1.save.tmp.XXXXXX is not a table
+            // ... and the server starting (load_tables) removed it.
+            CHECK(names_in(dir) == std::vector<std::string>{"table-1.save"});
         }
-        // The next save takes over a temporary file the killed writer left.
         REQUIRE(save_table(dir, first) == "");
         CHECK(names_in(dir) == std::vector<std::string>{"table-1.save"});
     }

@@ -1,7 +1,9 @@
 // Player statistics: the tally of a game's shots, the totals file (text form, damaged files
 // kept aside, atomic writes), the game-over summary and `termpool stats`.
 #include <catch2/catch.hpp>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -14,7 +16,9 @@
 #include <unistd.h>
 
 #include "cli/stats_command.hpp"
+#include "file_helpers.hpp"
 #include "files/atomic_file.hpp"
+#include "files/read_file.hpp"
 #include "player/stats_file.hpp"
 #include "player/stats_summary.hpp"
 #include "record_helpers.hpp"
@@ -735,7 +739,7 @@ TEST_CASE("a file read is bounded: one too large is refused, not read", "[stats]
     CHECK(termpool::read_whole_file(path, error, 5000) == std::string(5000, 'x'));
     CHECK(error.empty());
     CHECK_FALSE(termpool::read_whole_file(path, error, 4999));
-    CHECK(error == path + ": larger than 4999 bytes");
+    CHECK(error == path + ": 5000 bytes, more than the 4999 allowed");
 }
 
 TEST_CASE("a failed write leaves the old totals whole and no temporary file", "[stats][file]") {
@@ -745,13 +749,15 @@ TEST_CASE("a failed write leaves the old totals whole and no temporary file", "[
     const PlayerStats stats[2] = {some_stats(1), some_stats(2)};
     REQUIRE(termpool::save_game_stats(path, names, GameType::eight_ball, stats) == "");
     const std::string before = slurp(path);
-    // write_atomically writes PATH.tmp first: a directory in its way makes it fail.
-    const std::string temporary = path + ".tmp";
-    std::filesystem::create_directory(temporary);
-    const std::string notice = termpool::save_game_stats(path, names, GameType::eight_ball, stats);
-    CHECK(notice.starts_with("could not save the statistics: " + temporary));
+    // A full disk (a file size limit, which stops root too) makes the write fail.
+    std::string notice;
+    {
+        const termpool::test::FileSizeLimit full(0);
+        notice = termpool::save_game_stats(path, names, GameType::eight_ball, stats);
+    }
+    CHECK(notice.starts_with("could not save the statistics: " + path + ".tmp."));
+    CHECK(notice.ends_with(": cannot write: " + std::string(std::strerror(EFBIG))));
     CHECK(slurp(path) == before);
-    std::filesystem::remove(temporary);
     CHECK(files_in(dir.path() + "/termpool") == std::vector<std::string>{"stats", "stats.lock"});
 }
 

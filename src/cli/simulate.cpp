@@ -4,14 +4,18 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <string>
 #include <termpool/rules.hpp>
 #include <termpool/simulator.hpp>
+#include <unistd.h>
 #include <variant>
 
 #include "cli/commands.hpp"
 #include "cli/scenario.hpp"
 #include "cli/shot_output.hpp"
+#include "files/file_limits.hpp"
+#include "files/read_file.hpp"
 
 namespace termpool::cli {
 namespace {
@@ -23,26 +27,24 @@ constexpr const char* usage =
 struct Input {
     bool ok = false;
     std::string text;  ///< the whole input when ok
-    std::string error; ///< strerror of the failure otherwise
+    std::string error; ///< the message otherwise, after "termpool: "
 };
 
-/// Reads all of `path`, or of standard input for "-".
-Input read_input(const std::string& path) {
+/// Reads all of `path` (shown as `name`), or of standard input for "-", at most
+/// max_scenario_bytes: a scenario is a screenful, and a file or pipe that goes on and on is
+/// refused, not read.
+Input read_input(const std::string& path, const std::string& name) {
     const bool from_stdin = path == "-";
-    std::FILE* file = from_stdin ? stdin : std::fopen(path.c_str(), "rb");
-    if (!file)
-        return {false, {}, std::strerror(errno)};
-    Input input{true, {}, {}};
-    char buffer[65536];
-    std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0)
-        input.text.append(buffer, n);
-    // errno means something only right after the failing call, so take it before fclose.
-    const int error = std::ferror(file) ? errno : 0;
+    const int fd = from_stdin ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return {false, {}, "cannot read " + name + ": " + std::strerror(errno)};
+    Input input;
+    if (auto text = read_bounded(fd, name, max_scenario_bytes, input.error)) {
+        input.ok = true;
+        input.text = std::move(*text);
+    }
     if (!from_stdin)
-        std::fclose(file);
-    if (error != 0)
-        return {false, {}, std::strerror(error)};
+        ::close(fd);
     return input;
 }
 
@@ -60,9 +62,9 @@ int simulate_command(const std::vector<std::string>& args) {
     const std::string path = args.empty() ? "-" : args[0];
     const std::string name = path == "-" ? "<stdin>" : path;
 
-    const Input input = read_input(path);
+    const Input input = read_input(path, name);
     if (!input.ok) {
-        std::fprintf(stderr, "termpool: cannot read %s: %s\n", name.c_str(), input.error.c_str());
+        std::fprintf(stderr, "termpool: %s\n", input.error.c_str());
         return 2;
     }
     // Everything is parsed and checked before the first byte of output.

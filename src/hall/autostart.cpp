@@ -15,6 +15,8 @@
 #include <unistd.h>
 
 #include "files/atomic_file.hpp"
+#include "files/file_limits.hpp"
+#include "files/read_file.hpp"
 #include "hall/hall_state.hpp"
 #include "hall/socket_dir.hpp"
 #include "hall/socket_trust.hpp"
@@ -125,7 +127,7 @@ bool process_gone(pid_t pid) {
         return errno == ESRCH;
     const std::string path = "/proc/" + std::to_string(pid) + "/stat";
     std::string error;
-    const auto stat = read_whole_file(path, error);
+    const auto stat = read_whole_file(path, error, max_proc_file_bytes);
     if (!stat)
         return error.empty();                   // vanished between the two looks
     const std::size_t paren = stat->rfind(')'); // the name in parentheses may hold anything

@@ -71,7 +71,8 @@ public:
             return std::string("fork: ") + std::strerror(errno);
         if (pid_ == 0) {
             // The server's log goes to a file: the figures are what the bench prints.
-            const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+            const int fd =
+                ::open(log.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
             if (fd >= 0)
                 ::dup2(fd, STDERR_FILENO);
             const std::string tables = std::to_string(max_tables);

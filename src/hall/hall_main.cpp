@@ -110,6 +110,13 @@ int serve(const std::vector<std::string>& args) {
         std::cerr << "termpool hall: " << problem << '\n';
         return 1;
     }
+    // A hall whose folder cannot take a save could make no table that can be played: the host
+    // hears it now, not a player at the first table (a folder that fails later refuses new
+    // tables, HallCore::on_create).
+    if (const std::string problem = can_write_in(options.state_dir); !problem.empty()) {
+        std::cerr << "termpool hall: " << problem << '\n';
+        return 1;
+    }
 
     // The log goes to stderr, which may be a pipe whose reader is gone: a write there must
     // fail, not kill the hall with every table unsaved.

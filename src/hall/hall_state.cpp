@@ -1,7 +1,9 @@
 #include "hall/hall_state.hpp"
 
 #include "files/atomic_file.hpp"
+#include "files/file_limits.hpp"
 #include "files/keep_aside.hpp"
+#include "files/read_file.hpp"
 #include "hall/sha256.hpp"
 
 #include <algorithm>
@@ -191,27 +193,37 @@ std::string save_table(const std::string& dir, const SavedTable& table) {
 void forget_table(const std::string& dir, int number) {
     const std::string path = table_path(dir, number);
     ::unlink(path.c_str());
-    ::unlink((path + ".tmp").c_str()); // what a save killed midway left
+    remove_temporaries_of(path); // what a save killed midway left
 }
 
 std::vector<SavedTable> load_tables(const std::string& dir, std::vector<std::string>& problems) {
-    std::vector<int> numbers;
+    std::vector<int> numbers, left_temporaries;
     if (DIR* folder = ::opendir(dir.c_str())) {
-        while (const dirent* entry = ::readdir(folder))
-            if (const auto n = number_of_file_name(entry->d_name))
+        while (const dirent* entry = ::readdir(folder)) {
+            const std::string_view name = entry->d_name;
+            if (const auto n = number_of_file_name(name))
                 numbers.push_back(*n);
+            else if (const std::size_t mark = name.find(".save.tmp"); mark != name.npos)
+                if (const auto of = number_of_file_name(name.substr(0, mark + 5)))
+                    left_temporaries.push_back(*of);
+        }
         ::closedir(folder);
     } else {
         if (errno != ENOENT)
             problems.push_back(system_error(dir, "cannot read the state folder"));
         return {};
     }
+    // The folder's one server is starting: no save is running, so every temporary file is
+    // what a killed one left.
+    for (const int number : left_temporaries)
+        remove_temporaries_of(table_path(dir, number));
     std::sort(numbers.begin(), numbers.end());
     std::vector<SavedTable> tables;
     for (const int number : numbers) {
         const std::string path = table_path(dir, number);
         std::string problem;
-        if (const auto text = read_whole_file(path, problem)) {
+        // Only the server writes here, never a link: one is refused like a damaged file.
+        if (const auto text = read_whole_file(path, problem, max_save_bytes, Links::no_follow)) {
             auto table = parse_table(*text, number);
             if (auto* saved = std::get_if<SavedTable>(&table)) {
                 tables.push_back(std::move(*saved));

@@ -58,21 +58,26 @@ bool valid_seat_token_hash(std::string_view hash);
 /// The path of table `number`'s file in `dir`: DIR/table-N.save.
 std::string table_path(const std::string& dir, int number);
 
-/// Writes table-N.save atomically in `dir` (made, mode 0700, if missing): the text goes to
-/// table-N.save.tmp in the same folder, is synced, and is renamed over the old file, so a
-/// crash leaves the old file or the new one, never half of one. "" or why not, naming the
+/// Writes table-N.save atomically in `dir` (made, mode 0700, if missing): the text goes to a
+/// new temporary file table-N.save.tmp.XXXXXX in the same folder (write_atomically: never a
+/// link or a file already there), is synced, and is renamed over the old file, so a crash
+/// leaves the old file or the new one, never half of one. "" or why not, naming the
 /// file and the system's reason; a number below 1 or a malformed token hash is refused.
 std::string save_table(const std::string& dir, const SavedTable& table);
 
-/// Removes table-N.save (and a temporary file a crash left); a missing file is no error.
+/// Removes table-N.save (and the temporary files a crash left, remove_temporaries_of; links
+/// are removed, never followed); a missing file is no error.
 void forget_table(const std::string& dir, int number);
 
 /// Every table-N.save in `dir` that reads back (Match::replay succeeds), in number order;
 /// one that does not is moved aside as table-N.save.bad (.bad.1, .bad.2, ... never over an
 /// older one) and reported, appended to `problems`, as "FILE:LINE: msg (moved aside as
 /// FILE.bad)"; a file that cannot be read is reported as "FILE: cannot open: strerror" and
-/// moved aside too, so that a new table of that number cannot write over it.
-/// Other names in the folder are left alone. A missing folder holds no tables.
+/// moved aside too, so that a new table of that number cannot write over it, and so is one
+/// over max_save_bytes ("FILE: N bytes, more than the M allowed", refused from its size) and a
+/// symbolic link (the server writes none). Temporary files of table files that killed saves
+/// left are removed (the caller is the folder's one server, so no save is running). Other
+/// names in the folder are left alone. A missing folder holds no tables.
 std::vector<SavedTable> load_tables(const std::string& dir, std::vector<std::string>& problems);
 
 } // namespace termpool::hall

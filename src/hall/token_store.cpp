@@ -5,6 +5,8 @@
 #include <termpool/record.hpp>
 
 #include "files/atomic_file.hpp"
+#include "files/file_limits.hpp"
+#include "files/read_file.hpp"
 #include "files/xdg_dir.hpp"
 #include "hall/protocol.hpp"
 
@@ -45,7 +47,9 @@ std::string load_token(const std::string& dir, const std::string& name) {
     if (!valid_player_name(name))
         return {};
     std::string ignored;
-    const auto text = read_whole_file(token_path(dir, name), ignored);
+    // Only this program writes the folder: a link there is refused, not read through.
+    const auto text =
+        read_whole_file(token_path(dir, name), ignored, max_token_bytes, Links::no_follow);
     if (!text)
         return {};
     std::string_view token = *text;

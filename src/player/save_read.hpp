@@ -3,6 +3,8 @@
 // to where it stands. Reading never changes the file; moving aside a save that is not a game is
 // the caller's decision.
 
+#include "files/file_limits.hpp"
+
 #include <optional>
 #include <string>
 #include <termpool/match.hpp>
@@ -10,9 +12,6 @@
 #include <variant>
 
 namespace termpool {
-
-/// The largest save read back: a game's record is a few kilobytes, a long match's some tens.
-inline constexpr std::size_t max_save_bytes = 16 * 1024 * 1024;
 
 /// A save's text read back as a game: the record parsed and replayed to where it stands, or
 /// why it is not a game (the line and the problem).

@@ -74,7 +74,8 @@ std::string display_path(const std::string& path) {
 }
 
 SaveLock::SaveLock(std::string save_path) : path_(std::move(save_path)) {
-    fd_ = ::open((path_ + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+    // Never through a link: O_CREAT would make its target.
+    fd_ = ::open((path_ + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0600);
     if (fd_ < 0)
         return;
     int locked;
@@ -83,6 +84,7 @@ SaveLock::SaveLock(std::string save_path) : path_(std::move(save_path)) {
     while (locked != 0 && errno == EINTR);
     if (locked == 0) {
         state_ = State::held;
+        remove_temporaries_of(path_); // what a game killed while saving left; none saves now
         return;
     }
     state_ = errno == EWOULDBLOCK ? State::busy : State::unavailable;

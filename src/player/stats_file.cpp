@@ -5,11 +5,15 @@
 #include <charconv>
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <termpool/game_registry.hpp>
 #include <termpool/text_lines.hpp>
 #include <unistd.h>
 
+#include "files/atomic_file.hpp"
+#include "files/file_limits.hpp"
 #include "files/keep_aside.hpp"
+#include "files/read_file.hpp"
 #include "files/xdg_dir.hpp"
 #include "player/save_file.hpp"
 #include <termpool/text_width.hpp>
@@ -215,9 +219,16 @@ std::string stats_path() {
 StatsFile read_stats_file(const std::string& path) {
     StatsFile file;
     std::string error;
-    const std::optional<std::string> text = read_whole_file(path, error);
+    const std::optional<std::string> text = read_whole_file(path, error, max_stats_bytes);
     if (!text) {
-        file.state = error.empty() ? StatsFile::State::missing : StatsFile::State::unreadable;
+        // Too large is no passing trouble: like a damaged file it is kept aside by the next
+        // game, which starts new totals.
+        struct stat st {};
+        const bool too_large = ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+                               static_cast<unsigned long long>(st.st_size) > max_stats_bytes;
+        file.state = error.empty() ? StatsFile::State::missing
+                     : too_large   ? StatsFile::State::damaged
+                                   : StatsFile::State::unreadable;
         file.problem = error;
         return file;
     }
@@ -233,7 +244,7 @@ StatsFile read_stats_file(const std::string& path) {
 }
 
 StatsLock::StatsLock(const std::string& path) {
-    fd_ = ::open((path + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
+    fd_ = ::open((path + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0600);
     if (fd_ < 0)
         return;
     while (::flock(fd_, LOCK_EX) != 0 && errno == EINTR) {
@@ -248,6 +259,7 @@ StatsLock::~StatsLock() {
 std::string save_game_stats(const std::string& path, const std::string names[2], GameType game,
                             const PlayerStats stats[2]) {
     const StatsLock lock(path);
+    remove_temporaries_of(path); // what a writer killed midway left; none runs now
     StatsFile file = read_stats_file(path);
     std::string notice;
     switch (file.state) {

@@ -84,7 +84,8 @@ struct StatsFile {
     enum class State {
         missing,    ///< no file yet
         read,       ///< `store` holds it
-        damaged,    ///< its text was refused: `problem` is "FILE:LINE: message"
+        damaged,    ///< its text was refused: `problem` is "FILE:LINE: message", or it is
+                    ///< over max_stats_bytes: "FILE: N bytes, more than the M allowed"
         unreadable, ///< it could not be read: `problem` says why
     };
     State state = State::missing; ///< which
@@ -92,7 +93,7 @@ struct StatsFile {
     std::string problem;          ///< for damaged and unreadable
 };
 
-/// Reads and parses `path`.
+/// Reads and parses `path`, at most max_stats_bytes of it (a larger file is damaged, unread).
 StatsFile read_stats_file(const std::string& path);
 
 /// Holds an exclusive lock beside `path` (`path`.lock) while it lives, so that two games

@@ -10,7 +10,9 @@
 #include <utility>
 #include <variant>
 
+#include "files/file_limits.hpp"
 #include "files/keep_aside.hpp"
+#include "files/read_file.hpp"
 #include "files/self_command.hpp"
 #include "player/config.hpp"
 #include "player/options.hpp"
@@ -189,9 +191,12 @@ std::variant<Chosen, int> resume_named(const std::string& which) {
         report_bad_save(path, *read.problem);
         return 2;
     }
+    if (!read.error.empty()) {
+        std::fprintf(stderr, "termpool: %s\n", read.error.c_str()); // too large, not a file...
+        return 2;
+    }
     if (!read.game) {
-        std::fprintf(stderr, "termpool: no saved game to resume (%s)\n",
-                     read.error.empty() ? path.c_str() : read.error.c_str());
+        std::fprintf(stderr, "termpool: no saved game to resume (%s)\n", path.c_str());
         return 1;
     }
     if (number && finished(*read.game)) {
@@ -316,7 +321,12 @@ int run_game(const std::vector<std::string>& args) {
     GameOptions defaults;
     std::vector<std::string> notices;
     std::string config_error;
-    if (const auto config = read_whole_file(config_path(), config_error)) {
+    const auto config = read_whole_file(config_path(), config_error, max_config_bytes);
+    if (!config_error.empty()) {
+        std::fprintf(stderr, "termpool: %s\n", config_error.c_str());
+        return 2;
+    }
+    if (config) {
         std::vector<std::string> warnings;
         if (const auto bad = apply_config(*config, defaults, warnings)) {
             std::fprintf(stderr, "%s:%s\n", config_path().c_str(), bad->c_str());
@@ -347,7 +357,12 @@ int run_practice(const std::vector<std::string>& args) {
     GameOptions defaults;
     std::string config_error;
     std::vector<std::string> warnings;
-    if (const auto config = read_whole_file(config_path(), config_error)) {
+    const auto config = read_whole_file(config_path(), config_error, max_config_bytes);
+    if (!config_error.empty()) {
+        std::fprintf(stderr, "termpool: %s\n", config_error.c_str());
+        return 2;
+    }
+    if (config) {
         if (const auto bad = apply_config(*config, defaults, warnings)) {
             std::fprintf(stderr, "%s:%s\n", config_path().c_str(), bad->c_str());
             return 2;
@@ -417,7 +432,7 @@ int run_replay(const std::vector<std::string>& args) {
         }
     }
     std::string error;
-    const std::optional<std::string> text = read_whole_file(path, error);
+    const std::optional<std::string> text = read_whole_file(path, error, max_save_bytes);
     if (!text) {
         std::fprintf(stderr, "termpool: cannot read %s\n",
                      error.empty() ? (path + ": no such file").c_str() : error.c_str());
