@@ -34,9 +34,14 @@ struct ServerOptions {
     /// change (its mtime: the file is rewritten on every change of the table), so a restart
     /// does not give it more time; a seat of a restored game not started is freed at once.
     std::chrono::milliseconds away_limit = std::chrono::hours(7 * 24);
-    /// Bytes queued for one client beyond which it is disconnected (it stopped reading). A
-    /// whole race-to-99 record still fits.
+    /// Bytes queued for one client beyond which it is disconnected (it stopped reading), not
+    /// counting what is left of a record's allowance (record_allowance).
     std::size_t output_limit = 256 * 1024;
+    /// A table's record goes to a joining client as one bulk whose first this many bytes count
+    /// against output_limit only once written late: the client that reads gets it whole. The
+    /// largest record at max_actions 5000 takes at most 850 KB on the wire (5000 lines of at
+    /// most 170 bytes); a realistic one of 8-ball shots with spin and calls, 620 KB.
+    std::size_t record_allowance = 1024 * 1024;
     int max_errors = 10;          ///< error replies in a row before a client is cut
     double error_rate = 1.0 / 30; ///< errors forgiven a second (one every 30 s)
     int computer_threads = 2;     ///< the computer seats' worker pool

@@ -22,6 +22,14 @@ void Server::State::send(Client& client, const ServerMessage& message) {
     }
 }
 
+void Server::State::send_bulk(Client& client, const std::string& text) {
+    if (!client.closing &&
+        !client.connection.queue_bulk(text, options.output_limit, options.record_allowance)) {
+        log("client " + std::to_string(client.id) + " stopped reading: disconnected");
+        client.closing = true;
+    }
+}
+
 void Server::State::send_error(Client& client, ErrorCode code, const std::string& text) {
     send(client, Error{code, text});
     // A budget that refills: a player who now and then sends something stale (a lobby row that

@@ -172,6 +172,7 @@ struct Server::State {
 
     // --- server_connections.cpp: sockets, sending, connections coming and going
     void send(Client& client, const ServerMessage& message);
+    void send_bulk(Client& client, const std::string& text); // see Connection::queue_bulk
     void send_error(Client& client, ErrorCode code, const std::string& text);
     void send_and_close(Client& client, ErrorCode code, const std::string& text);
     void send_to_table(const Table& table, const ServerMessage& message, int except = 0);
