@@ -2,11 +2,9 @@
 // far over the output queue's bound, reaches a client that reads at full speed. The
 // connection's bulk allowance that lets it, tested on its own.
 #include <catch2/catch.hpp>
-#include <memory>
 #include <string>
 #include <sys/socket.h>
 #include <termpool/text_numbers.hpp>
-#include <thread>
 
 #include "hall/client.hpp"
 #include "hall/connection.hpp"
@@ -15,6 +13,7 @@
 #include "hall/server.hpp"
 #include "hall_helpers.hpp"
 #include "long_record.hpp"
+#include "server_thread.hpp"
 #include "temp_dir.hpp"
 
 using namespace termpool;
@@ -22,28 +21,6 @@ using namespace termpool::hall;
 using namespace termpool::test;
 
 namespace {
-
-// A server on `dir`/hall.sock with its state in `dir`, serving on a thread until destroyed.
-class ServerThread {
-public:
-    ServerThread(const std::string& dir, ServerOptions options) {
-        options.socket_path = dir + "/hall.sock";
-        options.state_dir = dir;
-        server_ = std::make_unique<Server>(options);
-        REQUIRE(server_->open() == "");
-        thread_ = std::thread([this] { server_->run(); });
-    }
-    ~ServerThread() {
-        server_->stop();
-        thread_.join();
-    }
-    ServerThread(const ServerThread&) = delete;
-    ServerThread& operator=(const ServerThread&) = delete;
-
-private:
-    std::unique_ptr<Server> server_;
-    std::thread thread_;
-};
 
 const std::string ann_token = "0123456789abcdef0123456789abcdef";
 const std::string bob_token = "fedcba9876543210fedcba9876543210";

@@ -582,7 +582,8 @@ TEST_CASE("hall server: the computer's answer for a table that changed is droppe
     LockedLog sink;
     std::ostream log(&sink);
     ServerOptions options;
-    options.log = &log;
+    HallLog hall_log(log);
+    options.log = &hall_log;
     RunningServer running(dir.path(), options);
     HallClient ann = connected(dir.path(), "Ann");
     HallClient eve = connected(dir.path(), "Eve");
@@ -743,7 +744,8 @@ TEST_CASE("hall server: a flood of lines from one client does not starve another
     GateLog gate;
     std::ostream log(&gate);
     ServerOptions options;
-    options.log = &log;
+    HallLog hall_log(log);
+    options.log = &hall_log;
     RunningServer running(dir.path(), options);
     HallClient ann = connected(dir.path(), "Ann");
     HallClient bob = connected(dir.path(), "Bob");
@@ -936,7 +938,8 @@ TEST_CASE("hall server: a sync with the client's copy is logged against the serv
     LockedLog sink;
     std::ostream log(&sink);
     ServerOptions options;
-    options.log = &log;
+    HallLog hall_log(log);
+    options.log = &hall_log;
     RunningServer running(dir.path(), options);
     HallClient ann = connected(dir.path(), "Ann");
     HallClient bob = connected(dir.path(), "Bob");
@@ -1067,7 +1070,8 @@ TEST_CASE("hall server: idle_exit: a table keeps the hall, and once it goes the 
     options.state_dir = dir.path();
     options.idle_exit = std::chrono::seconds(1);
     options.away_limit = std::chrono::ceil<std::chrono::milliseconds>(now - changed) + 400ms;
-    options.log = &log;
+    HallLog hall_log(log);
+    options.log = &hall_log;
     const auto freed = changed + options.away_limit; // on the system clock
     Server server(options);
     REQUIRE(server.open() == "");

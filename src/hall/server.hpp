@@ -9,8 +9,9 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <ostream>
 #include <string>
+
+#include "hall/hall_log.hpp"
 
 namespace termpool::hall {
 
@@ -76,7 +77,7 @@ struct ServerOptions {
     /// empty; with a seed, the same deals in the same order on every run (tests, which must not
     /// meet by chance a rack that ends at once). Seat tokens never come from it.
     std::optional<std::uint64_t> deal_seed;
-    std::ostream* log = nullptr; ///< where to log (nothing when null)
+    HallLog* log = nullptr; ///< where to log (nothing when null)
 };
 
 /// A hall server. `open`, then `run` until `stop`.

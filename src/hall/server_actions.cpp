@@ -132,8 +132,9 @@ void Server::State::on_sync(Client& client, const Sync& sync) {
         return send_error(client, ErrorCode::no_table, "you are at no table");
     const std::string at = "table " + std::to_string(table->number) + ": ";
     if (!sync.seq) {
-        log("client " + std::to_string(client.id) + " resynchronises table " +
-            std::to_string(table->number));
+        log_repeated(client.id, "sync",
+                     "client " + std::to_string(client.id) + " resynchronises table " +
+                         std::to_string(table->number));
         return send_record(client, *table);
     }
     // The client's copy disagreed: what it came to, against the server's state there.
@@ -155,7 +156,7 @@ void Server::State::on_sync(Client& client, const Sync& sync) {
         line += ", but the server holds " + std::to_string(held) + " actions";
     else
         line += ", the server's is no longer kept (it holds " + std::to_string(held) + " actions)";
-    log(line + "; record sent again");
+    log_repeated(client.id, "sync", line + "; record sent again");
     send_record(client, *table);
 }
 

@@ -91,7 +91,8 @@ void Server::State::accept_clients() {
         UniqueFd fd(::accept(listener.get(), nullptr, nullptr));
         if (!fd) {
             if (errno == EMFILE || errno == ENFILE || errno == ENOBUFS || errno == ENOMEM) {
-                log(std::string("accept: ") + std::strerror(errno) + ": pausing 100 ms");
+                log_repeated(0, "accept",
+                             std::string("accept: ") + std::strerror(errno) + ": pausing 100 ms");
                 accept_paused_until = Clock::now() + std::chrono::milliseconds(100);
                 ++accept_pauses;
             }

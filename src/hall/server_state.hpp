@@ -151,7 +151,12 @@ struct Server::State {
 
     void log(const std::string& line) const {
         if (options.log)
-            *options.log << "termpool hall: " << line << '\n' << std::flush;
+            options.log->write(line);
+    }
+    // A line a client can cause again and again: rate-limited per client and kind (HallLog).
+    void log_repeated(int client, std::string_view kind, const std::string& line) const {
+        if (options.log)
+            options.log->write_repeated(client, kind, line);
     }
 
     static bool seat_taken(const SeatSlot& slot) {
