@@ -41,7 +41,7 @@ struct ServerOptions {
     /// A table's record goes to a joining client as one bulk whose first this many bytes count
     /// against output_limit only once written late: the client that reads gets it whole. The
     /// largest record at max_actions 5000 takes at most 850 KB on the wire (5000 lines of at
-    /// most 170 bytes); a realistic one of 8-ball shots with spin and calls, 620 KB.
+    /// most 170 bytes); a realistic one of 8-ball shots with spin and calls, 613 KB of text.
     std::size_t record_allowance = 1024 * 1024;
     int max_errors = 10;          ///< error replies in a row before a client is cut
     double error_rate = 1.0 / 30; ///< errors forgiven a second (one every 30 s)
