@@ -378,7 +378,7 @@ TEST_CASE("connect_or_start: no hall, one is started detached; the next client j
     std::string expected_command;
     for (const std::string& arg :
          {binary(), std::string("hall"), std::string("serve"), std::string("--socket"), socket,
-          std::string("--idle-exit"), std::string("60")})
+          std::string("--idle-exit"), std::string("60"), std::string("--log"), expected_log})
         expected_command += arg + '\0';
     CHECK(command == expected_command);
     // A real hall.

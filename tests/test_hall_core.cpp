@@ -321,7 +321,8 @@ TEST_CASE("hall core: the lobby's changes go out coalesced, requests have a budg
 }
 
 TEST_CASE("hall core: the computer's answer for a table that changed is dropped", "[hall][core]") {
-    std::ostringstream log;
+    std::ostringstream text;
+    HallLog log(text);
     ServerOptions options;
     options.log = &log;
     FakeHall hall(options);
@@ -333,8 +334,8 @@ TEST_CASE("hall core: the computer's answer for a table that changed is dropped"
     hall.send(ann, SeatComputer{1, Level::easy}); // it breaks: a search starts
     hall.send(ann, Leave{});
     REQUIRE(hall.computer());
-    CHECK(log.str().find("table " + std::to_string(table) +
-                         ": the computer's answer is for the table as it was: dropped") !=
+    CHECK(text.str().find("table " + std::to_string(table) +
+                          ": the computer's answer is for the table as it was: dropped") !=
           std::string::npos);
     CHECK(hall.core().match(table)->record().actions.empty());
     CHECK(hall.core().match(table)->record().names[1] == "Player 2");

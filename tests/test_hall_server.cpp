@@ -400,7 +400,8 @@ TEST_CASE("hall server: a flood of lines from one client does not starve another
     GateLog gate;
     std::ostream log(&gate);
     ServerOptions options;
-    options.log = &log;
+    HallLog hall_log(log);
+    options.log = &hall_log;
     RunningServer running(dir.path(), options);
     HallClient ann = connected(dir.path(), "Ann");
     HallClient bob = connected(dir.path(), "Bob");
@@ -495,7 +496,8 @@ TEST_CASE("hall server: a sync with the client's copy is logged against the serv
     LockedLog sink;
     std::ostream log(&sink);
     ServerOptions options;
-    options.log = &log;
+    HallLog hall_log(log);
+    options.log = &hall_log;
     RunningServer running(dir.path(), options);
     HallClient ann = connected(dir.path(), "Ann");
     HallClient bob = connected(dir.path(), "Bob");
@@ -623,7 +625,8 @@ TEST_CASE("hall server: idle_exit: a game on disk does not keep the hall; the ne
     options.socket_path = dir.path() + "/hall.sock";
     options.state_dir = dir.path();
     options.idle_exit = std::chrono::seconds(1);
-    options.log = &log;
+    HallLog hall_log(log);
+    options.log = &hall_log;
     {
         Server server(options);
         REQUIRE(server.open() == "");

@@ -289,8 +289,8 @@ HallReach connect_or_start(HallClient& client, const std::string& socket_path,
         return reach;
     }
     const std::string log = started_hall_log_path();
-    const std::vector<std::string> args = {self_exe,    "hall",        "serve", "--socket",
-                                           socket_path, "--idle-exit", "60"};
+    const std::vector<std::string> args = {self_exe,      "hall", "serve", "--socket", socket_path,
+                                           "--idle-exit", "60",   "--log", log};
     const auto until = Clock::now() + hall_start_wait;
     pid_t server = 0;
     int starts = 0;

@@ -23,6 +23,8 @@ std::string HallClient::connect(const std::string& socket_path) {
     in_.clear();
     followed_.clear();
     table_ = seat_ = 0;
+    bounds_.reset();
+    broken_.clear();
     return {};
 }
 
@@ -64,6 +66,14 @@ std::optional<ServerMessage> HallClient::receive(std::chrono::milliseconds timeo
                 return std::nullopt;
             }
             ServerMessage message = std::move(std::get<ServerMessage>(parsed));
+            if (std::string why = bounds_.check(message); !why.empty()) {
+                // Not a hall of ours: what it sends is not kept, the connection ends.
+                broken_ = "the hall is broken: it sent " + why;
+                in_.clear();
+                followed_.clear();
+                fd_.reset();
+                return std::nullopt;
+            }
             if (keep_copies_)
                 follow(message);
             return message;

@@ -17,6 +17,7 @@
 #include <termpool/match.hpp>
 
 #include "hall/protocol.hpp"
+#include "hall/server_bounds.hpp"
 #include "hall/unique_fd.hpp"
 
 namespace termpool::hall {
@@ -68,6 +69,11 @@ public:
     int mismatches() const { return mismatches_; }
     /// Lines from the server that did not read.
     int bad_lines() const { return bad_lines_; }
+    /// Why the connection was ended for the server's sending more than a hall sends (a record,
+    /// a lobby: ServerBounds), as "the hall is broken: ..."; "" when it was not.
+    const std::string& broken() const { return broken_; }
+    /// The bounds on what the server may send, for a new connection (tests set them low).
+    void set_bounds(ServerBoundLimits limits) { bounds_ = ServerBounds(limits); }
 
 private:
     struct Followed {
@@ -86,6 +92,8 @@ private:
     int mismatches_ = 0;
     int bad_lines_ = 0;
     bool keep_copies_ = true;
+    ServerBounds bounds_;
+    std::string broken_;
 };
 
 } // namespace termpool::hall

@@ -1,5 +1,6 @@
 #include "hall/connection.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <sys/socket.h>
 
@@ -43,7 +44,19 @@ bool Connection::queue(std::string_view bytes, std::size_t limit) {
         sent_ = 0;
     }
     out_.append(bytes);
-    return queued() <= limit;
+    return owed() <= limit;
+}
+
+bool Connection::queue_bulk(std::string_view bytes, std::size_t limit, std::size_t allowance) {
+    if (allowance_left() == 0) {
+        bulk_start_ = written_ + queued(); // where these bytes will start
+        bulk_end_ = bulk_start_ + std::min(bytes.size(), allowance);
+    }
+    return queue(bytes, limit);
+}
+
+std::size_t Connection::allowance_left() const {
+    return bulk_end_ - std::clamp(written_, bulk_start_, bulk_end_);
 }
 
 bool Connection::flush() {
@@ -56,6 +69,7 @@ bool Connection::flush() {
             return errno == EAGAIN || errno == EWOULDBLOCK;
         }
         sent_ += static_cast<std::size_t>(n);
+        written_ += static_cast<std::size_t>(n);
     }
     // Sent in full: give the memory back rather than keep the largest burst's buffer.
     out_.clear();

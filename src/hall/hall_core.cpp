@@ -23,7 +23,12 @@ HallCore::~HallCore() = default;
 
 void HallCore::log(const std::string& line) const {
     if (options_.log)
-        *options_.log << "termpool hall: " << line << '\n' << std::flush;
+        options_.log->write(line);
+}
+
+void HallCore::log_repeated(int client, std::string_view kind, const std::string& line) const {
+    if (options_.log)
+        options_.log->write_repeated(client, kind, line);
 }
 
 void HallCore::send(Client& client, const ServerMessage& message) {
@@ -34,10 +39,17 @@ void HallCore::send(Client& client, const ServerMessage& message) {
 void HallCore::send_text(Client& client, std::string text) {
     if (client.closing)
         return;
-    if (!outbox_.empty() && outbox_.back().client == client.id && !outbox_.back().close)
+    if (!outbox_.empty() && outbox_.back().client == client.id && !outbox_.back().close &&
+        !outbox_.back().bulk)
         outbox_.back().text += text;
     else
         outbox_.push_back(Outgoing{client.id, std::move(text), false});
+}
+
+// A record: an entry of its own, which the connection queues with the record's allowance.
+void HallCore::send_bulk(Client& client, std::string text) {
+    if (!client.closing)
+        outbox_.push_back(Outgoing{client.id, std::move(text), false, true});
 }
 
 void HallCore::send_error(Client& client, ErrorCode code, const std::string& text,

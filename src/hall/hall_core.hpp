@@ -40,6 +40,9 @@ struct Outgoing {
     int client = 0;     ///< the client's id (as given to HallCore::on_connect)
     std::string text;   ///< whole protocol lines, each ending in '\n' (may be empty)
     bool close = false; ///< end the connection once `text` is sent
+    /// `text` is a table's record, queued as one bulk with an allowance of its own
+    /// (ServerOptions::record_allowance, Connection::queue_bulk).
+    bool bulk = false;
 };
 
 namespace serving {
@@ -185,6 +188,9 @@ public:
     void log_figures() const;
     /// Writes `line` to the log, if any.
     void log(const std::string& line) const;
+    /// Writes `line`, a kind of line client `client` can cause again and again, rate-limited
+    /// per client and kind (HallLog::write_repeated).
+    void log_repeated(int client, std::string_view kind, const std::string& line) const;
 
     /// Tables held (readable from any thread).
     std::size_t table_count() const { return table_count_; }
@@ -218,6 +224,7 @@ private:
     // --- hall_core.cpp: the outbox, clients coming and going
     void send(Client& client, const ServerMessage& message);
     void send_text(Client& client, std::string text);
+    void send_bulk(Client& client, std::string text);
     void send_error(Client& client, ErrorCode code, const std::string& text, Clock::time_point now);
     void send_and_close(Client& client, ErrorCode code, const std::string& text);
     void close(Client& client);

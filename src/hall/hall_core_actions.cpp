@@ -135,8 +135,9 @@ void HallCore::on_sync(Client& client, const Sync& sync, Clock::time_point now) 
         return send_error(client, ErrorCode::no_table, "you are at no table", now);
     const std::string at = "table " + std::to_string(table->number) + ": ";
     if (!sync.seq) {
-        log("client " + std::to_string(client.id) + " resynchronises table " +
-            std::to_string(table->number));
+        log_repeated(client.id, "sync",
+                     "client " + std::to_string(client.id) + " resynchronises table " +
+                         std::to_string(table->number));
         return send_record(client, *table);
     }
     // The client's copy disagreed: what it came to, against the server's state there.
@@ -158,7 +159,7 @@ void HallCore::on_sync(Client& client, const Sync& sync, Clock::time_point now) 
         line += ", but the server holds " + std::to_string(held) + " actions";
     else
         line += ", the server's is no longer kept (it holds " + std::to_string(held) + " actions)";
-    log(line + "; record sent again");
+    log_repeated(client.id, "sync", line + "; record sent again");
     send_record(client, *table);
 }
 

@@ -33,14 +33,16 @@ std::string computer_name(Level level) {
 
 void HallCore::send_record(Client& client, const Table& table) {
     const std::string text = format_record(table.match.record());
+    std::string bulk; // one bulk, longer than output_limit at the action limit
     for (std::size_t start = 0; start < text.size();) {
         const std::size_t end = text.find('\n', start);
         const std::size_t stop = end == std::string::npos ? text.size() : end;
-        send(client, RecordLine{table.number, text.substr(start, stop - start)});
+        bulk += format_server(RecordLine{table.number, text.substr(start, stop - start)});
         start = stop + 1;
     }
-    send(client,
-         RecordEnd{table.number, table.match.record().actions.size(), table.match.state_hash()});
+    bulk += format_server(
+        RecordEnd{table.number, table.match.record().actions.size(), table.match.state_hash()});
+    send_bulk(client, bulk);
     for (int s = 1; s <= 2; ++s)
         send(client, SeatChange{table.number, s, seat_view(table, s)});
 }

@@ -13,6 +13,7 @@
 #include "files/atomic_file.hpp"
 #include "hall/hall_bench.hpp"
 #include "hall/hall_lock.hpp"
+#include "hall/hall_log.hpp"
 #include "hall/hall_state.hpp"
 #include "hall/hall_who.hpp"
 #include "hall/server.hpp"
@@ -24,7 +25,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: termpool hall serve [--socket PATH] [--state DIR] [--max-clients N] [--max-tables N]\n"
-    "                           [--idle-exit S]\n"
+    "                           [--idle-exit S] [--log FILE] [--log-cap BYTES]\n"
     "  serve            run the hall's server in the foreground (SIGTERM or SIGINT: save, exit)\n"
     "  --socket PATH    the Unix socket (default $XDG_RUNTIME_DIR/termpool/hall.sock, or\n"
     "                   /tmp/termpool-UID/hall.sock)\n"
@@ -33,6 +34,10 @@ constexpr const char* kUsage =
     "  --max-tables N   tables at once (default 100)\n"
     "  --idle-exit S    exit 0 after S seconds with nobody connected and every table saved\n"
     "                   (default 0: never)\n"
+    "  --log FILE       append the log to FILE (default: stderr); each line starts with its\n"
+    "                   UTC time, a client's repeated lines are cut to one a minute\n"
+    "  --log-cap BYTES  past this FILE is renamed FILE.1, over the older one (default 1048576;\n"
+    "                   0: never)\n"
     "       termpool hall who [--socket PATH]\n"
     "  who              print a running hall's tables, people and connections (for its host)\n"
     "       termpool hall bench [--tables N] [--seconds S] [--think MS] [--seed S]\n"
@@ -55,7 +60,8 @@ int usage_error(const std::string& why) {
 
 int serve(const std::vector<std::string>& args) {
     ServerOptions options;
-    options.log = &std::cerr;
+    HallLogOptions log_options;
+    log_options.stream = &std::cerr;
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& arg = args[i];
         if (arg == "--help" || arg == "-h") {
@@ -81,42 +87,51 @@ int serve(const std::vector<std::string>& args) {
             if (!n || *n < 0 || *n > 1000000)
                 return usage_error(arg + " takes a whole number of seconds from 0 to 1000000");
             options.idle_exit = std::chrono::seconds(*n);
+        } else if (arg == "--log") {
+            log_options.path = value;
+        } else if (arg == "--log-cap") {
+            const auto n = parse_integer(value);
+            if (!n || *n < 0 || *n > (1ll << 40))
+                return usage_error(arg + " takes a whole number of bytes from 0 to 2^40");
+            log_options.cap_bytes = static_cast<std::uint64_t>(*n);
         } else {
             return usage_error("unknown option '" + arg + "'");
         }
     }
+    HallLog log(log_options);
+    options.log = &log;
+    if (const std::string problem = log.open(); !problem.empty())
+        std::cerr << "termpool hall: cannot keep the log in " << problem << "; it goes to stderr\n";
+    // Why the server cannot start goes to the log too, where a hall started in the background
+    // is looked into.
+    const auto cannot_start = [&](const std::string& problem) {
+        if (log_options.path.empty() || ::isatty(STDERR_FILENO))
+            std::cerr << "termpool hall: " << problem << '\n';
+        if (!log_options.path.empty())
+            log.write(problem);
+        return 1;
+    };
     if (options.socket_path.empty())
         options.socket_path = default_socket_path();
     // tmux's rule: the socket's folder is ours alone, or the server does not start.
-    if (const std::string problem = prepare_socket_dir(options.socket_path); !problem.empty()) {
-        std::cerr << "termpool hall: " << problem << '\n';
-        return 1;
-    }
+    if (const std::string problem = prepare_socket_dir(options.socket_path); !problem.empty())
+        return cannot_start(problem);
     // One server per socket, even when two start at once (hall/hall_lock.hpp); held until exit.
     UniqueFd lock;
-    if (const std::string problem = lock_hall(options.socket_path, lock); !problem.empty()) {
-        std::cerr << "termpool hall: " << problem << '\n';
-        return 1;
-    }
+    if (const std::string problem = lock_hall(options.socket_path, lock); !problem.empty())
+        return cannot_start(problem);
     if (options.state_dir.empty())
         options.state_dir = default_state_dir();
-    if (const std::string problem = make_directories(options.state_dir); !problem.empty()) {
-        std::cerr << "termpool hall: " << problem << '\n';
-        return 1;
-    }
+    if (const std::string problem = make_directories(options.state_dir); !problem.empty())
+        return cannot_start(problem);
     UniqueFd state_lock;
-    if (const std::string problem = lock_state_dir(options.state_dir, state_lock);
-        !problem.empty()) {
-        std::cerr << "termpool hall: " << problem << '\n';
-        return 1;
-    }
+    if (const std::string problem = lock_state_dir(options.state_dir, state_lock); !problem.empty())
+        return cannot_start(problem);
     // A hall whose folder cannot take a save could make no table that can be played: the host
     // hears it now, not a player at the first table (a folder that fails later refuses new
     // tables, HallCore::on_create).
-    if (const std::string problem = can_write_in(options.state_dir); !problem.empty()) {
-        std::cerr << "termpool hall: " << problem << '\n';
-        return 1;
-    }
+    if (const std::string problem = can_write_in(options.state_dir); !problem.empty())
+        return cannot_start(problem);
 
     // The log goes to stderr, which may be a pipe whose reader is gone: a write there must
     // fail, not kill the hall with every table unsaved.
@@ -134,10 +149,8 @@ int serve(const std::vector<std::string>& args) {
     ::pthread_sigmask(SIG_BLOCK, &stopping, &previous);
     Server server(options);
     ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
-    if (const std::string problem = server.open(); !problem.empty()) {
-        std::cerr << "termpool hall: " << problem << '\n';
-        return 1;
-    }
+    if (const std::string problem = server.open(); !problem.empty())
+        return cannot_start(problem);
     signalled_server = &server;
     struct sigaction action {};
     action.sa_handler = on_stop_signal;

@@ -9,8 +9,9 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <ostream>
 #include <string>
+
+#include "hall/hall_log.hpp"
 
 namespace termpool::hall {
 
@@ -53,9 +54,14 @@ struct ServerOptions {
     /// change (its mtime: the file is rewritten on every change of the table), so a restart
     /// does not give it more time; a seat of a restored game not started is freed at once.
     std::chrono::milliseconds away_limit = std::chrono::hours(7 * 24);
-    /// Bytes queued for one client beyond which it is disconnected (it stopped reading). A
-    /// whole race-to-99 record still fits.
+    /// Bytes queued for one client beyond which it is disconnected (it stopped reading), not
+    /// counting what is left of a record's allowance (record_allowance).
     std::size_t output_limit = 256 * 1024;
+    /// A table's record goes to a joining client as one bulk whose first this many bytes count
+    /// against output_limit only once written late: the client that reads gets it whole. The
+    /// largest record at max_actions 5000 takes at most 850 KB on the wire (5000 lines of at
+    /// most 170 bytes); a realistic one of 8-ball shots with spin and calls, 613 KB of text.
+    std::size_t record_allowance = 1024 * 1024;
     int max_errors = 10;          ///< error replies in a row before a client is cut
     double error_rate = 1.0 / 30; ///< errors forgiven a second (one every 30 s)
     int computer_threads = 2;     ///< the computer seats' worker pool
@@ -92,7 +98,7 @@ struct ServerOptions {
     /// empty; with a seed, the same deals in the same order on every run (tests, which must not
     /// meet by chance a rack that ends at once). Seat tokens never come from it.
     std::optional<std::uint64_t> deal_seed;
-    std::ostream* log = nullptr; ///< where to log (nothing when null)
+    HallLog* log = nullptr; ///< where to log (nothing when null)
 };
 
 /// A hall server. `open`, then `run` until `stop`.

@@ -24,7 +24,12 @@ void Server::State::deliver() {
         if (found == links.end() || found->second.closing)
             continue;
         Link& link = found->second;
-        if (!out.text.empty() && !link.connection.queue(out.text, options.output_limit)) {
+        // A record goes as one bulk with an allowance of its own (Connection::queue_bulk).
+        const bool queued = out.text.empty() ||
+                            (out.bulk ? link.connection.queue_bulk(out.text, options.output_limit,
+                                                                   options.record_allowance)
+                                      : link.connection.queue(out.text, options.output_limit));
+        if (!queued) {
             core.log("client " + std::to_string(out.client) + " stopped reading: disconnected");
             link.closing = true;
             continue;
@@ -43,7 +48,9 @@ void Server::State::accept_clients() {
         UniqueFd fd(::accept(listener.get(), nullptr, nullptr));
         if (!fd) {
             if (errno == EMFILE || errno == ENFILE || errno == ENOBUFS || errno == ENOMEM) {
-                core.log(std::string("accept: ") + std::strerror(errno) + ": pausing 100 ms");
+                core.log_repeated(0, "accept",
+                                  std::string("accept: ") + std::strerror(errno) +
+                                      ": pausing 100 ms");
                 accept_paused_until = Clock::now() + std::chrono::milliseconds(100);
                 ++accept_pauses;
             }

@@ -134,7 +134,7 @@ void HallSession::receive() {
             break;
     }
     if (client_.closed() && !client_.line_waiting())
-        lost_connection("the connection closed");
+        lost_connection(client_.broken().empty() ? "the connection closed" : client_.broken());
 }
 
 void HallSession::send(const hall::ClientMessage& message) {
