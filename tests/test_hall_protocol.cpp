@@ -304,6 +304,8 @@ TEST_CASE("hall protocol: every number has one text", "[hall]") {
           "act shot 1.5 -0 0 0 call 1 3", "act shot 1.5 0 0 0  call 1 3",
           "act shot 1.5 0 0 0 call 1 3 ", "act shot 1.5 0 0 0 call 1 +3"}},
         {"act place 0.5 0.25", {"act place .5 0.25", "act place 0.5 2.5e-1"}},
+        // A game has other names a player may type; the protocol takes its own.
+        {"create 10ball 9ft 1 standard", {"create 10-ball 9ft 1 standard"}},
     };
     for (const auto& [good, others] : client) {
         INFO(good);
@@ -319,8 +321,9 @@ TEST_CASE("hall protocol: every number has one text", "[hall]") {
         {"action 2 3 " + hash + " choose play-on", {"action 2 03 " + hash + " choose play-on"}},
         {"action 2 3 " + hash + " rack 1 17", {"action 2 3 " + hash + " rack 1 017"}},
         {"welcome 3 " + kToken, {"welcome 03 " + kToken}},
-        {"table 1 8ball 9ft 1 standard waiting empty - empty - 0",
-         {"table 1 8ball 9ft 1 standard waiting empty - empty - 00"}},
+        {"table 1 10ball 9ft 1 standard waiting empty - empty - 0",
+         {"table 1 10ball 9ft 1 standard waiting empty - empty - 00",
+          "table 1 ten-ball 9ft 1 standard waiting empty - empty - 0"}},
     };
     for (const auto& [good, others] : server) {
         INFO(good);

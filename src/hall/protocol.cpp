@@ -44,6 +44,15 @@ bool lower_hex(std::string_view s) {
     return true;
 }
 
+// A game by its own name only, not by the other names a player may type ("10-ball" for
+// 10ball): one game, one text.
+std::optional<GameType> game_of(std::string_view word) {
+    const auto game = parse_game_type(std::string(word));
+    if (!game || word != game_type_name(*game))
+        return std::nullopt;
+    return game;
+}
+
 std::string seat_words(const SeatView& seat) {
     return std::string(seat_kind_name(seat.kind)) + " " +
            (seat.kind == SeatKind::empty ? "-" : encode_field(seat.name));
@@ -459,7 +468,7 @@ std::variant<ClientMessage, ProtocolError> parse_client(std::string_view line) {
     }
     if (kind == "create") {
         Create m;
-        const auto game = parse_game_type(std::string(r.word()));
+        const auto game = game_of(r.word());
         const auto size = parse_table_size(r.word());
         if (r.ok() && !game)
             r.fail("a game is 8ball, 8ball-bar, 9ball, 10ball or snooker");
@@ -584,7 +593,7 @@ std::variant<ServerMessage, ProtocolError> parse_server(std::string_view line) {
     if (kind == "table") {
         TableView m;
         m.number = r.integer(1, max_table_number, "a table");
-        const auto game = parse_game_type(std::string(r.word()));
+        const auto game = game_of(r.word());
         const auto size = parse_table_size(r.word());
         if (r.ok() && (!game || !size))
             r.fail("unknown game or table size");
