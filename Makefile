@@ -48,11 +48,15 @@ SAN_WARNFLAGS :=
 SAN_LDFLAGS   :=
 endif
 
+# ICU's normaliser compares the hall's names (src/hall/name_key.cpp); the core does without it.
+ICU_CFLAGS   := $(shell pkg-config --cflags icu-uc 2>/dev/null)
+ICU_LIBS     := $(shell pkg-config --libs icu-uc 2>/dev/null || echo -licuuc -licudata)
+
 WARNFLAGS    := -Wall -Wextra -Wpedantic -Werror $(SAN_WARNFLAGS)
 # The core sees only the public headers: it includes its private ones relative to itself
 # ("cloth_model.hpp"), and nothing of src/cli or src/tui can be found from it.
 CORE_CPPFLAGS := -Iinclude $(CPPFLAGS)
-ALL_CPPFLAGS := -Iinclude -Isrc $(CPPFLAGS)
+ALL_CPPFLAGS := -Iinclude -Isrc $(ICU_CFLAGS) $(CPPFLAGS)
 # Every build keeps a*b+c as two roundings: GCC (and Clang within an expression) would fuse
 # them where the CPU has FMA, and a saved game would replay differently on another build.
 # GCC 12's vectorizer fuses even so (the rotation c*x - s*y, s*x + c*y became one
@@ -61,7 +65,7 @@ FP_FLAGS     := -ffp-contract=off -fno-tree-vectorize
 ALL_CXXFLAGS := -std=c++20 $(FP_FLAGS) $(OPTFLAGS) $(WARNFLAGS) $(CXXFLAGS)
 DEPFLAGS     := -MMD -MP
 ALL_LDFLAGS  := $(SAN_LDFLAGS) $(LDFLAGS)
-LDLIBS       += -lncursesw
+LDLIBS       += -lncursesw $(ICU_LIBS)
 
 # ---------------------------------------------------------------------------
 # Sources and objects (out of tree, mirroring src/ under $(BUILD)/)
@@ -96,12 +100,12 @@ FORMAT_FILES := $(wildcard src/*.cpp src/*.hpp src/*/*.cpp src/*/*.hpp \
                            include/*/*.hpp include/*/*/*.hpp tests/*.cpp tests/*.hpp)
 
 # What the build needs, and what the tests need besides: tmux runs the end-to-end tests, groff
-# checks the man page.
-DEB_PACKAGES := g++ make libncurses-dev catch2 tmux groff
+# checks the man page. pkg-config finds ICU's libraries.
+DEB_PACKAGES := g++ make libncurses-dev libicu-dev pkg-config catch2 tmux groff
 
 # run/test/check install missing dependencies first. The gate is an order-only prerequisite
 # of every object, so nothing compiles (even with -j) before `make deps` ends.
-DEPS_PRESENT := $(and $(wildcard /usr/include/catch2/catch.hpp),$(wildcard /usr/include/ncursesw/curses.h),$(shell command -v tmux),$(shell command -v groff))
+DEPS_PRESENT := $(and $(wildcard /usr/include/catch2/catch.hpp),$(wildcard /usr/include/ncursesw/curses.h),$(wildcard /usr/include/unicode/unorm2.h),$(shell command -v pkg-config),$(shell command -v tmux),$(shell command -v groff))
 ifeq ($(DEPS_PRESENT),)
 ifneq ($(filter run test check,$(MAKECMDGOALS)),)
 DEPS_GATE := ensure-deps
@@ -189,9 +193,10 @@ ensure-deps:
 
 deps:
 	@if [ -f /usr/include/catch2/catch.hpp ] && [ -f /usr/include/ncursesw/curses.h ] \
+	    && [ -f /usr/include/unicode/unorm2.h ] && command -v pkg-config >/dev/null 2>&1 \
 	    && command -v g++ >/dev/null 2>&1 && command -v tmux >/dev/null 2>&1 \
 	    && command -v groff >/dev/null 2>&1; then \
-	  echo "deps: dependencies present (g++, ncursesw headers, Catch2 v2, tmux, groff)"; \
+	  echo "deps: dependencies present (g++, ncursesw and ICU headers, Catch2 v2, tmux, groff)"; \
 	else \
 	  if [ "$$(id -u)" -eq 0 ]; then SUDO=; \
 	  elif command -v sudo >/dev/null 2>&1; then SUDO="sudo "; \
@@ -209,13 +214,13 @@ FUZZ_CXX      ?= clang++
 FUZZ_SECONDS  ?= 600
 FUZZ_DIR      := build/fuzz
 FUZZ_CORE_FLAGS := -std=c++20 $(FP_FLAGS) -O1 -g -fsanitize=fuzzer-no-link,address,undefined -Iinclude
-FUZZ_FLAGS    := $(FUZZ_CORE_FLAGS) -Isrc
+FUZZ_FLAGS    := $(FUZZ_CORE_FLAGS) -Isrc $(ICU_CFLAGS)
 FUZZ_APP_SRCS := src/cli/scenario.cpp src/cli/numbers.cpp \
                  src/player/config.cpp src/files/xdg_dir.cpp src/player/player_name.cpp \
                  src/player/options.cpp src/player/stats_file.cpp src/player/stats_figures.cpp \
                  src/files/keep_aside.cpp src/files/atomic_file.cpp src/files/read_file.cpp \
                  src/player/save_file.cpp \
-                 src/hall/protocol.cpp
+                 src/hall/protocol.cpp src/hall/name_key.cpp
 FUZZ_CORE_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(CORE_SRCS))
 FUZZ_APP_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_APP_SRCS))
 FUZZ_CORE_LIB := $(FUZZ_DIR)/libtermpool.a
@@ -244,7 +249,7 @@ $(FUZZ_CORE_LIB): $(FUZZ_CORE_OBJS)
 	$(AR) rcs $@ $^
 
 $(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.cpp $(FUZZ_APP_OBJS) $(FUZZ_CORE_LIB)
-	$(FUZZ_CXX) $(FUZZ_FLAGS) -fsanitize=fuzzer $^ -o $@
+	$(FUZZ_CXX) $(FUZZ_FLAGS) -fsanitize=fuzzer $^ -o $@ $(ICU_LIBS)
 
 fuzz-run: fuzz
 	@for t in $(FUZZ_TARGETS); do \

@@ -228,3 +228,25 @@ TEST_CASE("hall core: a table whose save failed keeps the hall and is counted at
     CHECK(hall.core().idle_for_good(hall.now));
     (void)table;
 }
+
+TEST_CASE("hall core: a name already in the hall is refused, however it is typed", "[hall][core]") {
+    FakeHall hall;
+    const int ann = hall.hello("Ann");
+    for (const char* same : {"Ann", "ANN", "\xef\xbc\xa1\xef\xbd\x8e\xef\xbd\x8e" /* ＡＮＮ */}) {
+        const int other = hall.connect();
+        hall.send(other, Hello{protocol_version, "", same});
+        const auto error = hall.find<Error>(other);
+        REQUIRE(error);
+        CHECK(error->code == ErrorCode::name_taken);
+        CHECK(error->text ==
+              "someone in the hall is called Ann already: come in under another name");
+        CHECK(hall.closed(other));
+    }
+    // Ann herself, with her token, from another terminal: the old connection gives way.
+    const int again = hall.hello("Ann", hall.token(ann));
+    CHECK(hall.closed(ann));
+    // Once she has gone, the name is free for anyone.
+    hall.disconnect(again);
+    hall.tick();
+    CHECK(hall.hello("ANN") != 0);
+}

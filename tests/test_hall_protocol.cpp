@@ -283,3 +283,99 @@ TEST_CASE("hall protocol: malformed server lines are refused", "[hall]") {
     for (const std::string& line : bad)
         CHECK(server_refusal(line) == ErrorCode::syntax);
 }
+
+TEST_CASE("hall protocol: every number has one text", "[hall]") {
+    // What the formatters write reads; any other text of the same value is refused, so that
+    // one message has one line (a log, a hash or a test may compare lines).
+    const std::string hash = "fedcba9876543210";
+    const std::vector<std::pair<std::string, std::vector<std::string>>> client = {
+        {"sit 1 2", {"sit 01 2", "sit 1 02", "sit +1 2", "sit 1 +2", "sit 001 2"}},
+        {"watch 10", {"watch 010", "watch +10", "watch 1e1"}},
+        {"create 8ball 9ft 3 standard", {"create 8ball 9ft 03 standard"}},
+        {"computer 2 hard", {"computer 02 hard"}},
+        {"sync 17 " + hash, {"sync 017 " + hash, "sync +17 " + hash}},
+        {"sync 0 " + hash, {"sync 00 " + hash, "sync -0 " + hash}},
+        {"hello 3 - Ann", {"hello 03 - Ann", "hello +3 - Ann"}},
+        {"aim 0 1.5 0 0 0",
+         {"aim -0 1.5 0 0 0", "aim 0 1.50 0 0 0", "aim 0 +1.5 0 0 0", "aim 0 15e-1 0 0 0",
+          "aim 0 01.5 0 0 0", "aim 0.0 1.5 0 0 0"}},
+        {"act shot 1.5 0 0 0 call 1 3",
+         {"act shot 1.50 0 0 0 call 1 3", "act shot 1.5 0 0 0 call 01 3",
+          "act shot 1.5 -0 0 0 call 1 3", "act shot 1.5 0 0 0  call 1 3",
+          "act shot 1.5 0 0 0 call 1 3 ", "act shot 1.5 0 0 0 call 1 +3"}},
+        {"act place 0.5 0.25", {"act place .5 0.25", "act place 0.5 2.5e-1"}},
+        // A game has other names a player may type; the protocol takes its own.
+        {"create 10ball 9ft 1 standard", {"create 10-ball 9ft 1 standard"}},
+    };
+    for (const auto& [good, others] : client) {
+        INFO(good);
+        const auto parsed = parse_client(good);
+        REQUIRE(std::holds_alternative<ClientMessage>(parsed));
+        CHECK(format_client(std::get<ClientMessage>(parsed)) == good + "\n");
+        for (const std::string& other : others)
+            CHECK(client_refusal(other) == ErrorCode::syntax);
+    }
+    const std::vector<std::pair<std::string, std::vector<std::string>>> server = {
+        {"joined 4 1", {"joined 04 1", "joined 4 01"}},
+        {"record-end 2 15 " + hash, {"record-end 2 015 " + hash}},
+        {"action 2 3 " + hash + " choose play-on", {"action 2 03 " + hash + " choose play-on"}},
+        {"action 2 3 " + hash + " rack 1 17", {"action 2 3 " + hash + " rack 1 017"}},
+        {"welcome 3 " + kToken, {"welcome 03 " + kToken}},
+        {"table 1 10ball 9ft 1 standard waiting empty - empty - 0",
+         {"table 1 10ball 9ft 1 standard waiting empty - empty - 00",
+          "table 1 ten-ball 9ft 1 standard waiting empty - empty - 0"}},
+    };
+    for (const auto& [good, others] : server) {
+        INFO(good);
+        const auto parsed = parse_server(good);
+        REQUIRE(std::holds_alternative<ServerMessage>(parsed));
+        CHECK(format_server(std::get<ServerMessage>(parsed)) == good + "\n");
+        for (const std::string& other : others)
+            CHECK(server_refusal(other) == ErrorCode::syntax);
+    }
+    // The refusal says what was wrong.
+    const auto sit = parse_client("sit 01 1");
+    REQUIRE(std::holds_alternative<ProtocolError>(sit));
+    CHECK(std::get<ProtocolError>(sit).text == "a table must be a whole number from 1 to 9999");
+}
+
+TEST_CASE("hall protocol: a name in hello holds nothing invisible and no direction control",
+          "[hall]") {
+    // Each as the client would encode it: the bytes of the character, percent-encoded where
+    // needed.
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {"Ann\u200B", "U+200B (an invisible character)"},
+        {"\u200BAnn", "U+200B (an invisible character)"},
+        {"An\u00ADn", "U+00AD (an invisible character)"},
+        {"Ann\u200D", "U+200D (an invisible character)"},
+        {"Ann\u2060", "U+2060 (an invisible character)"},
+        {"Ann\uFEFF", "U+FEFF (an invisible character)"},
+        {"Ann\u3164", "U+3164 (an invisible character)"},
+        {"Ann\U000E0041", "U+E0041 (an invisible character)"},
+        {"\u202EnnA", "U+202E (it changes the direction of the text)"},
+        {"Ann\u202A", "U+202A (it changes the direction of the text)"},
+        {"Ann\u2066", "U+2066 (it changes the direction of the text)"},
+        {"Ann\u2069", "U+2069 (it changes the direction of the text)"},
+        {"Ann\u200E", "U+200E (it changes the direction of the text)"},
+        {"Ann\u200F", "U+200F (it changes the direction of the text)"},
+        {"Ann\u061C", "U+061C (it changes the direction of the text)"},
+        {"Ann\u2028", "U+2028 (an invisible character)"},
+        {"Ann\u0600", "U+0600 (an invisible character)"},
+        {"Ann\u0085", "no control characters"},
+        {"Ann\x1b", "no control characters"},
+    };
+    for (const auto& [name, why] : bad) {
+        const std::string line = body(format_client(Hello{protocol_version, "", name}));
+        INFO(line);
+        const auto parsed = parse_client(line);
+        REQUIRE(std::holds_alternative<ProtocolError>(parsed));
+        CHECK(std::get<ProtocolError>(parsed).code == ErrorCode::syntax);
+        CHECK(std::get<ProtocolError>(parsed).text.find(why) != std::string::npos);
+    }
+    // Letters of any script, marks that combine with them and emoji without a joiner stay.
+    for (const std::string name : {"Ann", "Ann Lee", "Zoë", "Zoe\u0308", "Åsa", "李小龍", "محمد",
+                                   "שרה", "Ａｎｎ", "🎱 Ann"}) {
+        INFO(name);
+        client_round_trip(Hello{protocol_version, "", name});
+    }
+}

@@ -210,7 +210,7 @@ TEST_CASE("tables save and load back with their seat tokens, in number order", "
                                  seat_token_hash(token2) + "\ntermpool-record "));
     CHECK(text.find(token1) == std::string::npos);
     CHECK_THAT(contents(table_path(dir, 3)),
-               Catch::StartsWith("termpool-hall-table 1\nnumber 3\ntermpool-record 4\n"));
+               Catch::StartsWith("termpool-hall-table 1\nnumber 3\ntermpool-record 6\n"));
 
     std::vector<std::string> problems;
     std::vector<SavedTable> loaded = load_tables(dir, problems);
@@ -363,7 +363,7 @@ TEST_CASE("a damaged table file is moved aside as .bad, never over an older one,
     const std::string good = contents(table_path(dir, 2));
     REQUIRE(good.find("termpool-hall-table 1\nnumber 2\nseat1-token-hash sha256 "
                       "ca978112ca1bbdcafac231b39a23dc4da786eff8147c4e72b9807785afee48bb\n"
-                      "termpool-record 4\n") == 0);
+                      "termpool-record 6\n") == 0);
     // The line (from 1) that starts with `start`, and the text with that line replaced.
     auto line_of = [](const std::string& text, const std::string& start) {
         const std::size_t at = text.find("\n" + start);

@@ -53,3 +53,31 @@ TEST_CASE("every double format_double prints reads back to the same bits", "[tex
     CHECK(format_double(x) != format_double(next));
     CHECK(parse_double(format_double(next)) == next);
 }
+
+TEST_CASE("the canonical readers take each value only in the one text it is written in",
+          "[text-numbers]") {
+    CHECK(parse_canonical_integer("0") == 0);
+    CHECK(parse_canonical_integer("17") == 17);
+    CHECK(parse_canonical_integer("-17") == -17);
+    for (const char* other : {"01", "00", "+1", "-0", " 1", "1 ", "", "1e1", "0x1", "--1"}) {
+        INFO(other);
+        CHECK_FALSE(parse_canonical_integer(other));
+        CHECK_FALSE(parse_canonical_uint64(other));
+    }
+    CHECK(parse_canonical_uint64("18446744073709551615") == 18446744073709551615ULL);
+    CHECK_FALSE(parse_canonical_uint64("018446744073709551615"));
+    CHECK_FALSE(parse_canonical_uint64("-1"));
+
+    CHECK(parse_canonical_double("0.5") == 0.5);
+    CHECK(parse_canonical_double("-1.25") == -1.25);
+    CHECK(parse_canonical_double("1e-05") == 1e-05);
+    CHECK(parse_canonical_double("0") == 0.0);
+    for (const char* other :
+         {"+0.5", ".5", "0.50", "5e-1", "-0", "00.5", "1E-05", "1e-5", "0.5 ", "", "1.0", "10e0"}) {
+        INFO(other);
+        CHECK_FALSE(parse_canonical_double(other));
+    }
+    // The lenient reader, for text people write (scenarios, the command line), takes them.
+    CHECK(parse_double("+0.5") == 0.5);
+    CHECK(parse_double("5e-1") == 0.5);
+}

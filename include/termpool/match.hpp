@@ -19,6 +19,7 @@
 #include <termpool/rules.hpp>
 #include <termpool/setup.hpp>
 #include <termpool/simulator.hpp>
+#include <termpool/state_digest.hpp>
 #include <termpool/stats.hpp>
 #include <variant>
 #include <vector>
@@ -149,9 +150,14 @@ public:
     /// actions. Two copies that played the same actions have the same hash on any build that
     /// computes the same doubles.
     std::uint64_t state_hash() const;
-    /// What a record's `check` line holds: `state_hash` and the race (its length and break
-    /// rule, which the header gives and no action repeats).
+    /// What a record's `check` line holds (version 6 on): a running digest over every action,
+    /// its text as the record writes it and the `state_hash` after it, then the race (its
+    /// length and break rule, which the header gives and no action repeats). An edited action
+    /// moves it even when later actions bring the balls back to where they were.
     std::uint64_t check_hash() const;
+    /// What the `check` line of a record of version 4 or 5 holds: `state_hash` after the last
+    /// action and the race; such records are still read, and compared with this.
+    std::uint64_t final_check_hash() const;
 
     /// What the match waits for and from whom.
     PendingAction pending() const;
@@ -211,8 +217,9 @@ private:
                                                              std::size_t actions,
                                                              const ShotListener& on_shot,
                                                              std::uint64_t computer_seed);
-    /// Keeps the record's check up to date after an action.
-    void stamp_check();
+    /// Keeps the record's check up to date after an action was added to the record, or
+    /// (`replaced_last`) after the last one was replaced (a cue ball placed again).
+    void stamp_check(bool replaced_last = false);
 
     GameRecord record_;
     Game game_;
@@ -224,6 +231,10 @@ private:
     StatsTally tally_;
     std::uint64_t computer_seed_ = 0;
     std::optional<ComputerPlayer> computers_[2];
+    // The running digest of check_hash over the actions so far, and over all but the last (a
+    // replaced last action is folded in again from there).
+    std::uint64_t actions_digest_ = StateDigest().value();
+    std::uint64_t actions_digest_before_last_ = StateDigest().value();
 };
 
 } // namespace termpool

@@ -21,9 +21,12 @@ namespace termpool {
 /// Newest version of the text form, read and written by this build. Version 2 added races,
 /// version 3 the cue (a `cue` line for a shaft other than the standard one, a shot's
 /// `elevation`), version 4 the check (a `physics` line and a `check` line), version 5 the
-/// assist (an `assist` line for an assist other than standard). A record is written in the
-/// oldest version that holds it, so that older builds read it.
-inline constexpr int record_version = 5;
+/// assist (an `assist` line for an assist other than standard), version 6 the running check
+/// (over every action, not only the last state) and one text for every line: each action
+/// line exactly as `format_action` writes it, each number as `format_double` or
+/// `std::to_string` writes it. A record is written in the oldest version that holds it, so
+/// that older builds read it; a record with a check is version 6.
+inline constexpr int record_version = 6;
 
 /// One thing a player did, or the start of a match's next rack.
 struct RecordedAction {
@@ -38,12 +41,17 @@ struct RecordedAction {
     int line = 0;                    ///< the line it was read from (0 when made in memory)
 };
 
-/// What a record's writer saw after its last action, so that a reader can tell whether its
-/// replay gives the same game (`Match::replay` compares).
+/// What a record's writer saw, so that a reader can tell whether its replay gives the same
+/// game (`Match::replay` compares).
 struct RecordCheck {
     int physics_version = 0; ///< the writer's `physics_version` (simulator.hpp)
-    std::uint64_t hash = 0;  ///< the writer's `Match::check_hash` after the last action
-    int line = 0;            ///< the `check` line it was read from (0 when made in memory)
+    /// The writer's `Match::check_hash` after the last action (`final_check_hash` when not
+    /// `running`).
+    std::uint64_t hash = 0;
+    int line = 0; ///< the `check` line it was read from (0 when made in memory)
+    /// True for the check of version 6 on, a digest over every action and the state after it;
+    /// false for versions 4 and 5, whose check names only the state after the last action.
+    bool running = true;
 };
 
 /// A whole game, or a whole match: its racks after the first each start with a rack action.

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <termpool/ball.hpp>
 #include <vector>
 
@@ -41,6 +42,14 @@ public:
         add(b.angular_velocity.x);
         add(b.angular_velocity.y);
         add(b.angular_velocity.z);
+    }
+    /// Adds a text: its length, then its bytes.
+    void add(std::string_view text) {
+        add(static_cast<std::uint64_t>(text.size()));
+        for (const char c : text) {
+            hash_ ^= static_cast<unsigned char>(c);
+            hash_ *= 0x100000001b3ULL;
+        }
     }
     /// Adds every ball, in order.
     void add(const std::vector<Ball>& balls) {

@@ -28,4 +28,17 @@ std::optional<long long> parse_integer(std::string_view text);
 /// The whole of `text` read as an unsigned 64-bit decimal integer; nothing when it is not one.
 std::optional<std::uint64_t> parse_uint64(std::string_view text);
 
+/// `parse_integer` held to the one text of each value, as `std::to_string` writes it: digits
+/// without a leading zero ("0" only as itself), a '-' only before a value below zero, no '+'.
+/// For the formats a program writes and another reads (the hall's messages, records of
+/// version 6), where a second text for a value would be a second meaning to check.
+std::optional<long long> parse_canonical_integer(std::string_view text);
+
+/// `parse_uint64` held to the one text of each value (as `parse_canonical_integer`).
+std::optional<std::uint64_t> parse_canonical_uint64(std::string_view text);
+
+/// `parse_double` held to the one text of each value: only what `format_double` writes for it
+/// ("0.5", not "+0.5", ".5", "0.50", "5e-1" or "-0").
+std::optional<double> parse_canonical_double(std::string_view text);
+
 } // namespace termpool

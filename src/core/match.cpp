@@ -122,7 +122,11 @@ std::variant<Match, RecordError> Match::replay(const GameRecord& record, std::si
     const RecordCheck& check = *record.check;
     const Match* m = std::get_if<Match>(&replayed);
     // A partial replay cannot see the end; the reader checks the whole record once on loading.
-    if (m && (actions < record.actions.size() || m->check_hash() == check.hash))
+    // Versions 4 and 5 checked only the state the last action left.
+    const auto ours = [&check](const Match& match) {
+        return check.running ? match.check_hash() : match.final_check_hash();
+    };
+    if (m && (actions < record.actions.size() || ours(*m) == check.hash))
         return replayed;
     const int line = m ? check.line : std::get<RecordError>(replayed).line;
     if (check.physics_version != physics_version)
@@ -183,12 +187,30 @@ std::variant<Match, RecordError> Match::replay_unchecked(const GameRecord& recor
     return m;
 }
 
-void Match::stamp_check() {
-    record_.check = RecordCheck{physics_version, check_hash(), 0};
+void Match::stamp_check(bool replaced_last) {
+    if (!replaced_last)
+        actions_digest_before_last_ = actions_digest_;
+    // Each action's text and the state it led to, chained: a change anywhere moves every
+    // later value, so a damaged action is caught even where the game comes back to the same
+    // state (a 9-ball call naming another pocket, a cue ball placed elsewhere and potted).
+    StateDigest d;
+    d.add(actions_digest_before_last_);
+    d.add(format_action(record_.actions.back()));
+    d.add(state_hash());
+    actions_digest_ = d.value();
+    record_.check = RecordCheck{physics_version, check_hash(), 0, true};
 }
 
 std::uint64_t Match::check_hash() const {
     // The race is in the header, not in the actions: an edited race must not pass the check.
+    StateDigest d;
+    d.add(actions_digest_);
+    d.add(score_.race_to);
+    d.add(static_cast<int>(score_.break_rule));
+    return d.value();
+}
+
+std::uint64_t Match::final_check_hash() const {
     StateDigest d;
     d.add(state_hash());
     d.add(score_.race_to);
@@ -296,13 +318,14 @@ MatchError Match::place(int player, Vec2 spot) {
     action.place = spot;
     // Putting the cue ball down again this turn replaces the first spot: the record stays as
     // long as the game, however often a player moves the ball.
-    if (placed_ && !record_.actions.empty() &&
-        record_.actions.back().kind == RecordedAction::Kind::place)
+    const bool replaced = placed_ && !record_.actions.empty() &&
+                          record_.actions.back().kind == RecordedAction::Kind::place;
+    if (replaced)
         record_.actions.back() = action;
     else
         record_.actions.push_back(action);
     placed_ = true;
-    stamp_check();
+    stamp_check(replaced);
     return MatchError::none;
 }
 

@@ -58,9 +58,11 @@ bool needs_version_3(const GameRecord& r) {
 }
 
 int version_needed(const GameRecord& r) {
+    if (r.check && r.check->running)
+        return 6;
     if (r.assist != Assist::standard)
         return 5;
-    if (r.check)
+    if (r.check) // read from a record of version 4 or 5 and written back as it was
         return 4;
     return needs_version_3(r) ? 3 : needs_version_2(r) ? 2 : 1;
 }
@@ -81,10 +83,16 @@ std::string cue_text(double end_mass) {
     return name ? name : number(end_mass);
 }
 
-std::optional<double> to_cue_end_mass(std::string_view s) {
+// A number of a version 6 record's header: in the one text the writer gives it.
+std::optional<double> to_canonical_double(std::string_view s) {
+    const auto v = parse_canonical_double(s);
+    return v && std::isfinite(*v) ? v : std::nullopt;
+}
+
+std::optional<double> to_cue_end_mass(std::string_view s, bool canonical) {
     if (const auto named = parse_name(cue_names, s))
         return named;
-    const auto m = to_double(s);
+    const auto m = canonical ? to_canonical_double(s) : to_double(s);
     if (!m || *m < 0)
         return std::nullopt;
     return m;
@@ -242,6 +250,14 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
     std::uint64_t version = 0;
     std::optional<int> physics;
     bool assist_seen = false; // a second assist line would silently win
+    // Version 6 holds every number to its one text (older builds wrote nothing else, but
+    // older versions may have been written by hand, and are read as they always were).
+    const auto whole = [&version](std::string_view s) {
+        return version >= 6 ? parse_canonical_uint64(s) : to_u64(s);
+    };
+    const auto real = [&version](std::string_view s) {
+        return version >= 6 ? to_canonical_double(s) : to_double(s);
+    };
     for (const TextLine& text_line : text_lines(text)) {
         const std::string_view line = text_line.text;
         line_number = text_line.number;
@@ -289,7 +305,7 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
                 return fail("unknown table '" + std::string(f[1]) + "'");
             r.setup.table = *size;
         } else if (key == "seed" && want(2)) {
-            const auto s = to_u64(f[1]);
+            const auto s = whole(f[1]);
             if (!s)
                 return fail("bad seed");
             r.seed = *s;
@@ -312,7 +328,7 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
             r.computers[key.back() - '1'] = *level;
         } else if (key == "friction" && f.size() >= 3) {
             // A line names a model and at least one constant (physical is written as no line).
-            if (const auto k = to_double(f[2]); !k || *k <= 0)
+            if (const auto k = real(f[2]); !k || *k <= 0)
                 return fail("friction constants must be positive numbers");
             const auto model = parse_friction(std::span(f).subspan(1));
             if (const auto* problem = std::get_if<FrictionProblem>(&model))
@@ -323,21 +339,21 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
                                 : "bad friction line");
             // A record writes its numbers without a '+': read them back that way only.
             if (std::any_of(f.begin() + 2, f.end(),
-                            [](std::string_view w) { return !to_double(w); }))
+                            [&real](std::string_view w) { return !real(w); }))
                 return fail("friction constants must be positive numbers");
             r.setup.physics.friction = std::get<FrictionModel>(model);
         } else if (key == "cue-ball-mass" && want(2)) {
-            const auto m = to_double(f[1]);
+            const auto m = real(f[1]);
             if (!m || *m <= 0)
                 return fail("cue-ball-mass must be a positive number");
             r.setup.physics.cue_ball_mass = *m;
         } else if (key == "cue" && want(2)) {
-            const auto m = to_cue_end_mass(f[1]);
+            const auto m = to_cue_end_mass(f[1], version >= 6);
             if (!m)
                 return fail("cue must be standard, low-deflection, none or an end mass in kg");
             r.setup.physics.cue_end_mass = *m;
         } else if (key == "race" && want(2)) {
-            const auto n = to_u64(f[1]);
+            const auto n = whole(f[1]);
             if (!n || *n < 1 || *n > static_cast<std::uint64_t>(max_race_to))
                 return fail("race must be a number of racks from 1 to " +
                             std::to_string(max_race_to));
@@ -360,7 +376,7 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
                 return fail("a second 'physics' line");
             if (!r.actions.empty())
                 return fail("the 'physics' line must come before the actions");
-            const auto v = to_u64(f[1]);
+            const auto v = whole(f[1]);
             if (!v || *v < 1 || *v > 1000000)
                 return fail("physics must be a version number");
             physics = static_cast<int>(*v);
@@ -370,13 +386,18 @@ std::variant<GameRecord, RecordError> parse_record(std::string_view text) {
                 return fail("a check is 16 hexadecimal digits (0-9, a-f)");
             if (!physics)
                 return fail("a 'check' line needs a 'physics' line");
-            r.check = RecordCheck{*physics, *hash, line_number};
+            r.check = RecordCheck{*physics, *hash, line_number, version >= 6};
             checked = true;
         } else if (auto action = read_action(f)) {
             if (const std::string* problem = std::get_if<std::string>(&*action))
                 return fail(*problem);
             if (version < 3 && std::get<RecordedAction>(*action).strike.elevation_deg != 0)
                 return fail("a shot's elevation needs record version 3");
+            // One text per action: the check covers the action as written, and a second
+            // spelling of it ("1E-05" for "1e-05") would pass unseen.
+            if (const std::string written = format_action(std::get<RecordedAction>(*action));
+                version >= 6 && line != written)
+                return fail("a version 6 record writes this action as '" + written + "'");
             std::get<RecordedAction>(*action).line = line_number;
             r.actions.push_back(std::get<RecordedAction>(*action));
         } else if (key == "end" && want(1)) {

@@ -96,4 +96,25 @@ std::optional<std::uint64_t> parse_uint64(std::string_view text) {
     return parse_whole_integer<std::uint64_t>(text);
 }
 
+std::optional<long long> parse_canonical_integer(std::string_view text) {
+    const auto value = parse_integer(text);
+    if (!value || std::to_string(*value) != text)
+        return std::nullopt;
+    return value;
+}
+
+std::optional<std::uint64_t> parse_canonical_uint64(std::string_view text) {
+    const auto value = parse_uint64(text);
+    if (!value || std::to_string(*value) != text)
+        return std::nullopt;
+    return value;
+}
+
+std::optional<double> parse_canonical_double(std::string_view text) {
+    const auto value = parse_double(text);
+    if (!value || format_double(*value) != text)
+        return std::nullopt;
+    return value;
+}
+
 } // namespace termpool

@@ -3,10 +3,10 @@
 // tables everyone left, archived after archive_after without an action.
 
 #include <algorithm>
-#include <cctype>
 #include <limits>
 
 #include "hall/hall_core.hpp"
+#include "hall/name_key.hpp"
 #include "hall/sha256.hpp"
 #include "hall/table_archive.hpp"
 
@@ -14,13 +14,11 @@ namespace termpool::hall {
 
 namespace {
 
-// Two names of one person: equal but for ASCII case. (A new token per hello gives no more
-// tables; a new name per hello is a new person, kept out by the reserve below.)
+// Two names of one person: equal however typed (name_key: case, width, composition). (A new
+// token per hello gives no more tables; a new name per hello is a new person, kept out by the
+// reserve below.)
 bool same_name(const std::string& a, const std::string& b) {
-    return !a.empty() && a.size() == b.size() &&
-           std::equal(a.begin(), a.end(), b.begin(), [](unsigned char x, unsigned char y) {
-               return std::tolower(x) == std::tolower(y);
-           });
+    return !a.empty() && name_key(a) == name_key(b);
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "hall/hall_core.hpp"
+#include "hall/name_key.hpp"
 #include "hall/sha256.hpp"
 
 namespace termpool::hall {
@@ -170,6 +171,15 @@ void HallCore::on_hello(Client& client, const Hello& hello, Clock::time_point no
         const Client& other = entry.second;
         return other.welcomed && !other.closing && !same_digest(other.token_hash, hash);
     });
+    // One name, one person: another person (another token) in the hall under the same name,
+    // however typed (name_key), would make the lobby and the tables say "Ann" of two people.
+    const std::string key = name_key(hello.name);
+    for (const auto& [id, other] : clients_)
+        if (id != client.id && other.welcomed && !other.closing &&
+            !same_digest(other.token_hash, hash) && name_key(other.name) == key)
+            return send_and_close(client, ErrorCode::name_taken,
+                                  "someone in the hall is called " + other.name +
+                                      " already: come in under another name");
     if (others >= options_.max_clients && !evict_idle_lobby(hash, now))
         return send_and_close(client, ErrorCode::full, "the hall has all the clients it takes");
     // The same person again: the old connection gives way (its seats go away, then the

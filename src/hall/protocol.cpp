@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <termpool/match.hpp>
+#include <termpool/name_characters.hpp>
 #include <termpool/text_lines.hpp>
 #include <termpool/text_numbers.hpp>
 #include <vector>
@@ -41,6 +42,15 @@ bool lower_hex(std::string_view s) {
         if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f')))
             return false;
     return true;
+}
+
+// A game by its own name only, not by the other names a player may type ("10-ball" for
+// 10ball): one game, one text.
+std::optional<GameType> game_of(std::string_view word) {
+    const auto game = parse_game_type(std::string(word));
+    if (!game || word != game_type_name(*game))
+        return std::nullopt;
+    return game;
 }
 
 std::string seat_words(const SeatView& seat) {
@@ -93,11 +103,11 @@ public:
     }
     int integer(int low, int high, const char* what) {
         const std::string_view w = word();
-        const auto v = parse_integer(w);
+        // One value, one text: no sign, no leading zero, no spaces.
+        const auto v = parse_canonical_integer(w);
         if (!ok_)
             return low;
-        // Digits only: no sign, no spaces, so one value has one text.
-        if (!v || w.front() == '+' || *v < low || *v > high) {
+        if (!v || *v < low || *v > high) {
             fail(std::string(what) + " must be a whole number from " + std::to_string(low) +
                  " to " + std::to_string(high));
             return low;
@@ -109,12 +119,12 @@ public:
     }
     double real(double low, double high, const char* what) {
         const std::string_view w = word();
-        const auto v = parse_double(w);
+        const auto v = parse_canonical_double(w);
         if (!ok_)
             return 0;
         if (!v || !std::isfinite(*v) || *v < low || *v > high) {
             fail(std::string(what) + " must be a number from " + number(low) + " to " +
-                 number(high));
+                 number(high) + ", written as the hall writes it");
             return 0;
         }
         return *v;
@@ -199,6 +209,12 @@ public:
         auto parsed = parse_action(*r);
         if (const auto* e = std::get_if<RecordError>(&parsed)) {
             fail("bad action: " + e->message);
+            return {};
+        }
+        // As a record of version 6 holds it: one text per action.
+        if (const std::string written = format_action(std::get<RecordedAction>(parsed));
+            *r != written) {
+            fail("bad action: it is written '" + written + "'");
             return {};
         }
         return std::get<RecordedAction>(parsed);
@@ -432,7 +448,7 @@ std::variant<ClientMessage, ProtocolError> parse_client(std::string_view line) {
         Hello m;
         // The version comes first and is checked before anything else: a newer client's hello
         // may not read as ours at all.
-        const auto version = parse_integer(r.word());
+        const auto version = parse_canonical_integer(r.word());
         if (!r.ok() || !version)
             return ProtocolError{ErrorCode::syntax, "hello VERSION TOKEN|- NAME"};
         if (*version != protocol_version)
@@ -445,11 +461,17 @@ std::variant<ClientMessage, ProtocolError> parse_client(std::string_view line) {
             m.token = std::string(token);
         }
         m.name = r.name();
+        // A person's name: nothing hidden in it, nothing that turns the lobby's lines around.
+        // (Names the server sends are not held to it: a table saved by an older hall may
+        // hold one, and its players must still see the lobby.)
+        if (r.ok())
+            if (auto problem = name_characters_problem(m.name))
+                r.fail(std::move(*problem));
         return wrap(finish(r, m));
     }
     if (kind == "create") {
         Create m;
-        const auto game = parse_game_type(std::string(r.word()));
+        const auto game = game_of(r.word());
         const auto size = parse_table_size(r.word());
         if (r.ok() && !game)
             r.fail("a game is 8ball, 8ball-bar, 9ball, 10ball or snooker");
@@ -546,7 +568,7 @@ std::variant<ServerMessage, ProtocolError> parse_server(std::string_view line) {
 
     if (kind == "welcome") {
         Welcome m;
-        const auto version = parse_integer(r.word());
+        const auto version = parse_canonical_integer(r.word());
         if (!r.ok() || !version)
             return ProtocolError{ErrorCode::syntax, "welcome VERSION TOKEN"};
         if (*version != protocol_version)
@@ -580,7 +602,7 @@ std::variant<ServerMessage, ProtocolError> parse_server(std::string_view line) {
     if (kind == "table") {
         TableView m;
         m.number = r.integer(1, max_table_number, "a table");
-        const auto game = parse_game_type(std::string(r.word()));
+        const auto game = game_of(r.word());
         const auto size = parse_table_size(r.word());
         if (r.ok() && (!game || !size))
             r.fail("unknown game or table size");

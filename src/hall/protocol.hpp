@@ -10,9 +10,13 @@
 /// percent-encoded: '%', bytes up to and including ' ', and DEL are written %XX (upper-case
 /// hex), so a name or a chat line can never break a line or a field. An ACTION (the record's
 /// action line, `format_action`) and a raw TEXT (a record line, an error's words) are the
-/// rest of the line, unencoded: they never hold control characters. Numbers are decimal;
-/// doubles are the shortest text that reads back bit for bit; a HASH is 16 lower-case hex
-/// digits (`Match::state_hash`); a TOKEN is 32 lower-case hex digits.
+/// rest of the line, unencoded: they never hold control characters. Every value has one text,
+/// and a line that reads is exactly the line its message formats to: numbers are decimal,
+/// without '+' or a leading zero ("0" only as itself); doubles are the shortest text that
+/// reads back bit for bit (no "-0"); an ACTION is exactly as `format_action` writes it; a GAME
+/// is its own name; a NAME in hello holds no invisible or direction character (names the
+/// server sends are not held to it). A HASH is 16 lower-case hex digits (`Match::state_hash`);
+/// a TOKEN is 32 lower-case hex digits.
 ///
 /// Client to server:
 ///
@@ -110,6 +114,7 @@ enum class ErrorCode {
     rate,        ///< "rate": too many messages of that kind (chat: one a second)
     replaced,    ///< "replaced": the same token connected again (the connection closes)
     internal,    ///< "internal": the server could not do it (e.g. saving failed)
+    name_taken,  ///< "name-taken": someone in the hall has that name (the connection closes)
 };
 
 /// The CODE words.
@@ -126,6 +131,7 @@ inline constexpr NameRow<ErrorCode> error_code_names[] = {
     {ErrorCode::rate, "rate"},
     {ErrorCode::replaced, "replaced"},
     {ErrorCode::internal, "internal"},
+    {ErrorCode::name_taken, "name-taken"},
 };
 static_assert(names_in_order(error_code_names));
 

@@ -2,8 +2,8 @@
 
 #include "player/player_name.hpp"
 
+#include <termpool/name_characters.hpp>
 #include <termpool/record.hpp>
-
 #include <termpool/text_width.hpp>
 
 namespace termpool {
@@ -21,18 +21,12 @@ std::string_view trim_spaces(std::string_view s) {
 
 std::optional<std::string> clean_player_name(std::string_view input, std::string& error) {
     error.clear();
-    for (std::size_t i = 0; i < input.size();) {
-        char32_t cp;
-        if (!decode_utf8(input, i, cp)) {
-            error = "the name is not valid UTF-8";
-            return std::nullopt;
-        }
-        // Control characters would move the cursor or change the terminal's state when the
-        // name is drawn.
-        if (is_control(cp)) {
-            error = "control characters are not allowed in a name";
-            return std::nullopt;
-        }
+    // Control characters would move the cursor or change the terminal's state when the name
+    // is drawn; invisible and direction-changing ones make two names look alike, or turn the
+    // line they are shown on around.
+    if (auto problem = name_characters_problem(input)) {
+        error = std::move(*problem);
+        return std::nullopt;
     }
     // Cutting can leave a space at the end ("ab cd" cut after "ab "), so trim after it too.
     std::string cut = truncate_to_width(trim_spaces(input), max_name_columns);

@@ -12,8 +12,8 @@ inline constexpr int max_name_columns = 20;
 
 /// The name to use for `input`: spaces trimmed at both ends, cut to `max_name_columns` columns
 /// between characters. Returns nothing with an empty `error` when the input is blank (keep the
-/// current name), and nothing with a message in `error` when it holds invalid UTF-8 or a
-/// control character (C0, DEL, C1).
+/// current name), and nothing with a message in `error` when it holds invalid UTF-8, a control
+/// character or an invisible or direction-changing one (`name_characters_problem`).
 std::optional<std::string> clean_player_name(std::string_view input, std::string& error);
 
 } // namespace termpool

@@ -44,9 +44,10 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
             driver_->refused(words);
         else
             message_ = "The hall said: " + words;
-        if (m->code == hall::ErrorCode::replaced || m->code == hall::ErrorCode::version) {
+        if (m->code == hall::ErrorCode::replaced || m->code == hall::ErrorCode::version ||
+            m->code == hall::ErrorCode::name_taken) {
             // Trying again would only throw the other terminal out (or meet the same
-            // version): this one stops until asked.
+            // version, or the same name): this one stops until asked.
             stopped_ = true;
             app_.reset();
             driver_ = nullptr;

@@ -1,0 +1,59 @@
+// The characters a name may not hold, from the Unicode 15 tables (DerivedCoreProperties.txt's
+// Default_Ignorable_Code_Point, UnicodeData.txt's Cc, Cf, Zl and Zp).
+#include <algorithm>
+#include <cstdio>
+#include <iterator>
+#include <termpool/name_characters.hpp>
+#include <termpool/text_width.hpp>
+
+namespace termpool {
+namespace {
+
+struct Range {
+    char32_t first, last;
+};
+
+// The union of Default_Ignorable_Code_Point, Cc, Cf, Zl and Zp, in order, adjacent ranges
+// merged.
+constexpr Range hidden[] = {
+    {0x0000, 0x001F},   {0x007F, 0x009F},   {0x00AD, 0x00AD},   {0x034F, 0x034F},
+    {0x0600, 0x0605},   {0x061C, 0x061C},   {0x06DD, 0x06DD},   {0x070F, 0x070F},
+    {0x0890, 0x0891},   {0x08E2, 0x08E2},   {0x115F, 0x1160},   {0x17B4, 0x17B5},
+    {0x180B, 0x180F},   {0x200B, 0x200F},   {0x2028, 0x202E},   {0x2060, 0x206F},
+    {0x3164, 0x3164},   {0xFE00, 0xFE0F},   {0xFEFF, 0xFEFF},   {0xFFA0, 0xFFA0},
+    {0xFFF0, 0xFFFB},   {0x110BD, 0x110BD}, {0x110CD, 0x110CD}, {0x13430, 0x1343F},
+    {0x1BCA0, 0x1BCA3}, {0x1D173, 0x1D17A}, {0xE0000, 0xE0FFF},
+};
+
+} // namespace
+
+bool is_bidi_control(char32_t cp) {
+    return cp == 0x061C || cp == 0x200E || cp == 0x200F || (cp >= 0x202A && cp <= 0x202E) ||
+           (cp >= 0x2066 && cp <= 0x2069);
+}
+
+bool is_hidden_character(char32_t cp) {
+    const auto after = std::upper_bound(std::begin(hidden), std::end(hidden), cp,
+                                        [](char32_t c, const Range& r) { return c < r.first; });
+    return after != std::begin(hidden) && cp <= std::prev(after)->last;
+}
+
+std::optional<std::string> name_characters_problem(std::string_view name) {
+    for (std::size_t i = 0; i < name.size();) {
+        char32_t cp = 0;
+        if (!decode_utf8(name, i, cp))
+            return "the name is not valid UTF-8";
+        if (!is_hidden_character(cp))
+            continue;
+        char code[16];
+        std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(cp));
+        // Said apart, as each is refused for its own reason.
+        const char* what = is_control(cp)        ? " (a control character)"
+                           : is_bidi_control(cp) ? " (it changes the direction of the text)"
+                                                 : " (an invisible character)";
+        return std::string("a name may not hold ") + code + what;
+    }
+    return std::nullopt;
+}
+
+} // namespace termpool

@@ -1,0 +1,16 @@
+#pragma once
+// The form in which the hall compares names: one person, one name, however it is typed.
+
+#include <string>
+#include <string_view>
+
+namespace termpool::hall {
+
+/// `name` as the hall compares it with the names already in it: Unicode NFKC with case
+/// folding (ICU's NFKC_Casefold), so that "Ann", "ANN", "ａｎｎ" (full width) and an "Å" typed
+/// as A and a combining ring or as one character each give one key, and the invisible
+/// characters that NFKC_Casefold drops do not tell two names apart. Text that is not valid
+/// UTF-8 (a name the protocol would refuse) is its own key.
+std::string name_key(std::string_view name);
+
+} // namespace termpool::hall
