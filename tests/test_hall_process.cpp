@@ -387,6 +387,9 @@ TEST_CASE("hall process: termpool hall bench plays its tables and checks them", 
     INFO(said);
     CHECK(status == 0);
     CHECK(said.find("2 of 2 agree") != std::string::npos);
+    // The server's own figures, read from its log (each line after its time).
+    CHECK(said.find("\nserver handling    ") != std::string::npos);
+    CHECK(said.find("\nserver saving      ") != std::string::npos);
     CHECK(bench->gone());
     // Its private folder (in TMPDIR, here the test's) is removed when all went well.
     for (const auto& entry : std::filesystem::directory_iterator(dir.path()))

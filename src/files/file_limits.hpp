@@ -28,7 +28,11 @@ inline constexpr std::size_t max_token_bytes = 4 * 1024;
 /// A scenario for `termpool simulate`, bytes: a table of 22 balls and a strike.
 inline constexpr std::size_t max_scenario_bytes = 1024 * 1024;
 
-/// A line of /proc (a process's stat), bytes: a few hundred in practice.
+/// A file of /proc (a process's stat or status), bytes: a few hundred to a few thousand.
 inline constexpr std::size_t max_proc_file_bytes = 64 * 1024;
+
+/// A hall's log read back by `termpool hall bench` for the server's figures, bytes: a bench's
+/// server writes a few kilobytes (its lines of a client are rate-limited).
+inline constexpr std::size_t max_bench_log_bytes = 16 * 1024 * 1024;
 
 } // namespace termpool

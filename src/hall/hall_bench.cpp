@@ -15,7 +15,6 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
-#include <fstream>
 #include <latch>
 #include <sstream>
 #include <string>
@@ -27,6 +26,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include "files/file_limits.hpp"
+#include "files/read_file.hpp"
 #include "hall/client.hpp"
 
 namespace termpool::hall {
@@ -87,8 +88,10 @@ public:
     // CPU seconds (user + system) and peak resident memory (kB) so far.
     std::pair<double, long> usage() const {
         double cpu = 0;
-        std::ifstream stat("/proc/" + std::to_string(pid_) + "/stat");
-        std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+        std::string unread;
+        const std::string text =
+            read_whole_file("/proc/" + std::to_string(pid_) + "/stat", unread, max_proc_file_bytes)
+                .value_or("");
         // Fields after the command's closing parenthesis; utime and stime are the 12th and 13th.
         if (const std::size_t close = text.rfind(')'); close != std::string::npos) {
             std::istringstream rest(text.substr(close + 2));
@@ -103,7 +106,9 @@ public:
             cpu = static_cast<double>(utime + stime) / static_cast<double>(::sysconf(_SC_CLK_TCK));
         }
         long peak_kb = 0;
-        std::ifstream status("/proc/" + std::to_string(pid_) + "/status");
+        std::istringstream status(read_whole_file("/proc/" + std::to_string(pid_) + "/status",
+                                                  unread, max_proc_file_bytes)
+                                      .value_or(""));
         for (std::string line; std::getline(status, line);)
             if (line.starts_with("VmHWM:"))
                 peak_kb = std::strtol(line.c_str() + 6, nullptr, 10);
@@ -434,13 +439,19 @@ int hall_bench_command(const std::vector<std::string>& args) {
     std::printf("round trip         p50 %.2f ms, p99 %.2f ms, max %.2f ms (sent until both "
                 "players had it)\n",
                 percentile(trips, 0.5), percentile(trips, 0.99), percentile(trips, 1.0));
-    // The server's own time for each action, which the round trip includes; its log has it.
-    std::ifstream server_log(log);
+    // The server's own time for each action, which the round trip includes; its log has it,
+    // each line after its time.
+    std::string log_problem;
+    std::istringstream server_log(
+        read_whole_file(log, log_problem, max_bench_log_bytes).value_or(""));
+    if (!log_problem.empty())
+        std::printf("server figures     not read: %s\n", log_problem.c_str());
     for (std::string line; std::getline(server_log, line);)
         for (const std::string figure : {"handling", "saving"})
             if (const std::string prefix = "termpool hall: " + figure + ": ";
-                line.starts_with(prefix))
-                std::printf("server %-12s%s\n", figure.c_str(), line.c_str() + prefix.size());
+                line.find(prefix) != std::string::npos)
+                std::printf("server %-12s%s\n", figure.c_str(),
+                            line.c_str() + line.find(prefix) + prefix.size());
     std::printf("server CPU         %.2f s (%.1f%% of one core)\n", cpu, 100 * cpu / wall);
     std::printf("server peak RSS    %.1f MB\n", static_cast<double>(peak_kb) / 1024);
     std::printf("tables checked     %d of %d agree with the server's record%s\n",
