@@ -226,7 +226,8 @@ TEST_CASE("the names the old switches wrote are the tables' names", "[names]") {
                                              {hall::ErrorCode::not_seated, "not-seated"},
                                              {hall::ErrorCode::refused, "refused"},
                                              {hall::ErrorCode::replaced, "replaced"},
-                                             {hall::ErrorCode::internal, "internal"}});
+                                             {hall::ErrorCode::internal, "internal"},
+                                             {hall::ErrorCode::name_taken, "name-taken"}});
     check_old_names(hall::seat_kind_names, {{hall::SeatKind::empty, "empty"},
                                             {hall::SeatKind::player, "player"},
                                             {hall::SeatKind::away, "away"},
