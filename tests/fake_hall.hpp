@@ -132,6 +132,21 @@ public:
         REQUIRE(end);
         CHECK(end->table == table);
     }
+    /// Two people and the table they sit at: the setting most tests start from.
+    struct TwoSeated {
+        int ann;
+        int bob;
+        int table;
+    };
+    /// Ann and Bob say hello, Ann creates an 8-ball table, Ann takes seat 1 and Bob seat 2.
+    TwoSeated ann_and_bob_seated() {
+        const int ann = hello("Ann");
+        const int bob = hello("Bob");
+        const int table = create(ann);
+        sit(ann, table, 1);
+        sit(bob, table, 2);
+        return {ann, bob, table};
+    }
     /// The player to act at `table`, seated by `seat_1` or `seat_2`, plays the easy computer's
     /// move; it is taken at the end of the round.
     void play_one(int seat_1, int seat_2, int table) {

@@ -6,14 +6,18 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <optional>
 #include <string>
+#include <sys/socket.h>
+#include <sys/un.h>
 #include <termpool/match.hpp>
 #include <variant>
 #include <vector>
 
 #include "hall/client.hpp"
 #include "hall/hall_state.hpp"
+#include "hall/unique_fd.hpp"
 #include "wait_until.hpp"
 
 namespace termpool::test {
@@ -22,6 +26,22 @@ namespace termpool::test {
 inline constexpr std::chrono::milliseconds kWait{5000};
 /// kWait in seconds, for wait_until.
 inline constexpr double kWaitSeconds = kWait.count() / 1000.0;
+
+/// The test as the server: a socket at `path` that `client` connects to; the server's end.
+inline hall::UniqueFd fake_server_for(hall::HallClient& client, const std::string& path) {
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    REQUIRE(path.size() < sizeof address.sun_path);
+    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
+    const hall::UniqueFd listener(::socket(AF_UNIX, SOCK_STREAM, 0));
+    REQUIRE(::bind(listener.get(), reinterpret_cast<const sockaddr*>(&address), sizeof address) ==
+            0);
+    REQUIRE(::listen(listener.get(), 1) == 0);
+    REQUIRE(client.connect(path) == "");
+    hall::UniqueFd peer(::accept(listener.get(), nullptr, nullptr));
+    REQUIRE(peer);
+    return peer;
+}
 
 /// True when `m` is a T.
 template <class T> bool is(const hall::ServerMessage& m) {

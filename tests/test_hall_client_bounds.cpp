@@ -69,22 +69,6 @@ TEST_CASE("server bounds: a record's bytes and lines, records at once, lobby row
 
 namespace {
 
-// The test as a server: `client` connects to a socket at `path`; the server's end.
-UniqueFd serve_one(HallClient& client, const std::string& path) {
-    sockaddr_un address{};
-    address.sun_family = AF_UNIX;
-    REQUIRE(path.size() < sizeof address.sun_path);
-    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
-    const UniqueFd listener(::socket(AF_UNIX, SOCK_STREAM, 0));
-    REQUIRE(::bind(listener.get(), reinterpret_cast<const sockaddr*>(&address), sizeof address) ==
-            0);
-    REQUIRE(::listen(listener.get(), 1) == 0);
-    REQUIRE(client.connect(path) == "");
-    UniqueFd peer(::accept(listener.get(), nullptr, nullptr));
-    REQUIRE(peer);
-    return peer;
-}
-
 // Sends `line` `times` times on `fd` from a thread of its own, until the peer goes.
 class Flood {
 public:
@@ -125,7 +109,7 @@ TEST_CASE("hall client: a server that sends a record without end is broken: disc
           "[hall][client-bounds]") {
     test::TempDir dir("termpool-hall");
     HallClient client;
-    UniqueFd server = serve_one(client, dir.path() + "/hall.sock");
+    UniqueFd server = test::fake_server_for(client, dir.path() + "/hall.sock");
     const std::string line = format_server(RecordLine{1, std::string(1000, 'x')});
     {
         Flood flood(server.get(), line, 20000); // 20 MB, more than the 8 MiB taken
@@ -141,7 +125,7 @@ TEST_CASE("hall client: a server that sends a lobby without end is broken",
           "[hall][client-bounds]") {
     test::TempDir dir("termpool-hall");
     HallClient client;
-    UniqueFd server = serve_one(client, dir.path() + "/hall.sock");
+    UniqueFd server = test::fake_server_for(client, dir.path() + "/hall.sock");
     TableView row;
     row.number = 12;
     { Flood begin(server.get(), format_server(LobbyBegin{}), 1); }
@@ -162,7 +146,7 @@ TEST_CASE("hall client: a whole record within the bounds is taken; a new connect
     ServerBoundLimits limits;
     limits.record_lines = 3;
     client.set_bounds(limits);
-    UniqueFd server = serve_one(client, dir.path() + "/hall.sock");
+    UniqueFd server = test::fake_server_for(client, dir.path() + "/hall.sock");
     { Flood lines(server.get(), format_server(RecordLine{1, "x"}), 3); }
     for (int i = 0; i < 3; ++i)
         CHECK(client.receive(test::kWait));
@@ -172,7 +156,7 @@ TEST_CASE("hall client: a whole record within the bounds is taken; a new connect
     CHECK(client.closed());
     CHECK(client.broken() == "the hall is broken: it sent a record of more than 3 lines");
     server.reset();
-    server = serve_one(client, dir.path() + "/hall2.sock");
+    server = test::fake_server_for(client, dir.path() + "/hall2.sock");
     CHECK(client.broken() == "");
     { Flood lines(server.get(), format_server(RecordLine{1, "x"}), 3); }
     for (int i = 0; i < 3; ++i)

@@ -122,11 +122,7 @@ TEST_CASE("hall core: bad input gets an error", "[hall][core]") {
 
 TEST_CASE("hall core: an out-of-turn action is refused, chat has its interval", "[hall][core]") {
     FakeHall hall;
-    const int ann = hall.hello("Ann");
-    const int bob = hall.hello("Bob");
-    const int table = hall.create(ann);
-    hall.sit(ann, table, 1);
-    hall.sit(bob, table, 2);
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
     const std::uint64_t before = hall.core().match(table)->state_hash();
     hall.send(bob, Act{chosen_move(*hall.core().match(table))});
     hall.tick();
@@ -148,11 +144,7 @@ TEST_CASE("hall core: an out-of-turn action is refused, chat has its interval", 
 
 TEST_CASE("hall core: a player who drops keeps the seat and takes it back", "[hall][core]") {
     FakeHall hall;
-    const int ann = hall.hello("Ann");
-    const int bob = hall.hello("Bob");
-    const int table = hall.create(ann);
-    hall.sit(ann, table, 1);
-    hall.sit(bob, table, 2);
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
     for (int i = 0; i < 2; ++i)
         hall.play_one(ann, bob, table);
     const std::string token = hall.token(ann);
@@ -368,11 +360,7 @@ TEST_CASE("hall core: a seat's actions have a budget", "[hall][core]") {
     ServerOptions options;
     options.max_errors = 1000;
     FakeHall hall(options);
-    const int ann = hall.hello("Ann");
-    const int bob = hall.hello("Bob");
-    const int table = hall.create(ann);
-    hall.sit(ann, table, 1);
-    hall.sit(bob, table, 2);
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
     const Act move{chosen_move(*hall.core().match(table))};
     int refused = 0;
     int rate = 0;
@@ -393,11 +381,7 @@ TEST_CASE("hall core: a seat's actions have a budget", "[hall][core]") {
 TEST_CASE("hall core: an action that cannot be saved is not taken", "[hall][core]") {
     test::TempDir dir("termpool-core");
     FakeHall hall(saved_in(dir.path()));
-    const int ann = hall.hello("Ann");
-    const int bob = hall.hello("Bob");
-    const int table = hall.create(ann);
-    hall.sit(ann, table, 1);
-    hall.sit(bob, table, 2);
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
     // A full disk (a file size limit; a chmod would not stop the tests' root) makes the
     // atomic write fail.
     const RecordedAction move = chosen_move(*hall.core().match(table));
@@ -414,11 +398,7 @@ TEST_CASE("hall core: an action that cannot be saved is not taken", "[hall][core
 
 TEST_CASE("hall core: a request sent with an action finds the action taken", "[hall][core]") {
     FakeHall hall;
-    const int ann = hall.hello("Ann");
-    const int bob = hall.hello("Bob");
-    const int table = hall.create(ann);
-    hall.sit(ann, table, 1);
-    hall.sit(bob, table, 2);
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
     hall.send(ann, Act{chosen_move(*hall.core().match(table))});
     hall.send(ann, Sync{}); // in the same round, before its end
     REQUIRE(hall.find<ActionDone>(ann));
@@ -431,11 +411,7 @@ TEST_CASE("hall core: a table keeps at most max_actions actions", "[hall][core]"
     ServerOptions options;
     options.max_actions = 3;
     FakeHall hall(options);
-    const int ann = hall.hello("Ann");
-    const int bob = hall.hello("Bob");
-    const int table = hall.create(ann);
-    hall.sit(ann, table, 1);
-    hall.sit(bob, table, 2);
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
     for (int k = 0; k < 3 && hall.core().match(table)->pending().kind != Pending::over; ++k)
         hall.play_one(ann, bob, table);
     REQUIRE(hall.core().match(table)->record().actions.size() == 3);

@@ -50,11 +50,7 @@ std::vector<std::string> who_of(FakeHall& hall, int id) {
 TEST_CASE("hall core: a table keeps its last 50 chat lines for whoever sits or watches",
           "[hall][core]") {
     FakeHall hall;
-    const int ann = hall.hello("Ann");
-    const int bob = hall.hello("Bob");
-    const int table = hall.create(ann);
-    hall.sit(ann, table, 1);
-    hall.sit(bob, table, 2);
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
     hall.play_one(ann, bob, table);
     for (int i = 1; i <= 55; ++i) {
         hall.send(i % 2 ? ann : bob, Chat{"line " + std::to_string(i)});
@@ -93,11 +89,7 @@ TEST_CASE("hall core: a table keeps its last 50 chat lines for whoever sits or w
 TEST_CASE("hall core: who tells the host the tables, people and connections, never a token",
           "[hall][core]") {
     FakeHall hall;
-    const int ann = hall.hello("Ann");
-    const int bob = hall.hello("Bob");
-    const int table = hall.create(ann);
-    hall.sit(ann, table, 1);
-    hall.sit(bob, table, 2);
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
     hall.play_one(ann, bob, table);
     hall.advance(90s);
     const int silent = hall.connect();
@@ -158,11 +150,7 @@ TEST_CASE("hall core: with a state folder, unfinished games wait on disk and do 
     options.state_dir = dir.path() + "/state";
     options.idle_exit = 60s;
     FakeHall hall(options);
-    const int ann = hall.hello("Ann");
-    const int bob = hall.hello("Bob");
-    const int table = hall.create(ann);
-    hall.sit(ann, table, 1);
-    hall.sit(bob, table, 2);
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
     hall.play_one(ann, bob, table);
     hall.disconnect(ann);
     hall.disconnect(bob);
@@ -184,11 +172,7 @@ TEST_CASE("hall core: without a state folder a table keeps the hall", "[hall][co
     ServerOptions options;
     options.idle_exit = 60s;
     FakeHall hall(options);
-    const int ann = hall.hello("Ann");
-    const int bob = hall.hello("Bob");
-    const int table = hall.create(ann);
-    hall.sit(ann, table, 1);
-    hall.sit(bob, table, 2);
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
     hall.play_one(ann, bob, table);
     hall.disconnect(ann);
     hall.disconnect(bob);
@@ -204,11 +188,7 @@ TEST_CASE("hall core: a table whose save failed keeps the hall and is counted at
     options.state_dir = dir.path() + "/state";
     options.idle_exit = 60s;
     FakeHall hall(options);
-    const int ann = hall.hello("Ann");
-    const int bob = hall.hello("Bob");
-    const int table = hall.create(ann);
-    hall.sit(ann, table, 1);
-    hall.sit(bob, table, 2);
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
     hall.play_one(ann, bob, table);
     // The state folder goes (a plain file in its place): Ann's seat going away is not saved.
     const std::string aside = dir.path() + "/state.aside";

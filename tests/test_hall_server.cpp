@@ -536,25 +536,6 @@ TEST_CASE("hall server: a sync with the client's copy is logged against the serv
     CHECK_THAT(sync(Sync{}), Catch::Contains("resynchronises table " + std::to_string(table)));
 }
 
-namespace {
-// The test as the server: a socket at `path` that `client` connects to; the server's end.
-UniqueFd fake_server_for(HallClient& client, const std::string& path) {
-    sockaddr_un address{};
-    address.sun_family = AF_UNIX;
-    REQUIRE(path.size() < sizeof address.sun_path);
-    std::memcpy(address.sun_path, path.c_str(), path.size() + 1);
-    const UniqueFd listener(::socket(AF_UNIX, SOCK_STREAM, 0));
-    REQUIRE(::bind(listener.get(), reinterpret_cast<const sockaddr*>(&address), sizeof address) ==
-            0);
-    REQUIRE(::listen(listener.get(), 1) == 0);
-    REQUIRE(client.connect(path) == "");
-    UniqueFd peer(::accept(listener.get(), nullptr, nullptr));
-    REQUIRE(peer);
-    return peer;
-}
-
-} // namespace
-
 TEST_CASE("hall client: a copy that disagrees asks sync with what it came to", "[hall]") {
     // The test is the server: a record, then an action whose hash is wrong.
     test::TempDir dir("termpool-hall");
