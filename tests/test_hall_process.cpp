@@ -432,16 +432,23 @@ TEST_CASE("hall process: --idle-exit: a hall nobody uses saves and exits 0", "[h
           std::string::npos);
 }
 
-TEST_CASE("hall process: --idle-exit takes whole seconds from 0", "[hall][e2e]") {
+TEST_CASE("hall process: --idle-exit takes whole seconds from 0, --archive-after hours from 1",
+          "[hall][e2e]") {
     TempDir dir("termpool-hall-idle");
-    const std::string log = dir.path() + "/out.log";
-    for (const std::string bad : {"-1", "x", "1.5", ""}) {
+    int run = 0;
+    const std::pair<std::string, std::string> refused[] = {
+        {"--idle-exit", "-1"},     {"--idle-exit", "x"},       {"--idle-exit", "1.5"},
+        {"--idle-exit", ""},       {"--archive-after", "0"},   {"--archive-after", "1.5"},
+        {"--archive-after", "-2"}, {"--archive-after", "1e9"}, {"--archive-after", "100001"}};
+    for (const auto& [option, bad] : refused) {
+        INFO(option << " " << bad);
+        const std::string log = dir.path() + "/out-" + std::to_string(++run) + ".log";
         auto server = run_termpool(
-            dir.path(), {"hall", "serve", "--socket", socket_of(dir.path()), "--idle-exit", bad},
-            log);
+            dir.path(), {"hall", "serve", "--socket", socket_of(dir.path()), option, bad}, log);
         const auto status = server->wait_exit(kWait);
         REQUIRE(status);
         CHECK(*status == 2);
+        CHECK(file_text(log).find(option + " takes a whole number of") != std::string::npos);
     }
 }
 

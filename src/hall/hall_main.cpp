@@ -25,7 +25,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: termpool hall serve [--socket PATH] [--state DIR] [--max-clients N] [--max-tables N]\n"
-    "                           [--idle-exit S] [--log FILE] [--log-cap BYTES]\n"
+    "                           [--idle-exit S] [--archive-after H] [--log FILE]\n"
+    "                           [--log-cap BYTES]\n"
     "  serve            run the hall's server in the foreground (SIGTERM or SIGINT: save, exit)\n"
     "  --socket PATH    the Unix socket (default $XDG_RUNTIME_DIR/termpool/hall.sock, or\n"
     "                   /tmp/termpool-UID/hall.sock)\n"
@@ -34,6 +35,9 @@ constexpr const char* kUsage =
     "  --max-tables N   tables at once (default 100)\n"
     "  --idle-exit S    exit 0 after S seconds with nobody connected and every table saved\n"
     "                   (default 0: never)\n"
+    "  --archive-after H\n"
+    "                   a table nobody is at with no action for H hours leaves the lobby for\n"
+    "                   the state folder's archive/ (default 24)\n"
     "  --log FILE       append the log to FILE (default: stderr); each line starts with its\n"
     "                   UTC time, a client's repeated lines are cut to one a minute\n"
     "  --log-cap BYTES  past this FILE is renamed FILE.1, over the older one (default 1048576;\n"
@@ -87,6 +91,11 @@ int serve(const std::vector<std::string>& args) {
             if (!n || *n < 0 || *n > 1000000)
                 return usage_error(arg + " takes a whole number of seconds from 0 to 1000000");
             options.idle_exit = std::chrono::seconds(*n);
+        } else if (arg == "--archive-after") {
+            const auto n = parse_integer(value);
+            if (!n || *n < 1 || *n > 100000)
+                return usage_error(arg + " takes a whole number of hours from 1 to 100000");
+            options.archive_after = std::chrono::hours(*n);
         } else if (arg == "--log") {
             log_options.path = value;
         } else if (arg == "--log-cap") {

@@ -33,9 +33,9 @@ struct ServerOptions {
     std::chrono::milliseconds hello_timeout{10000};
     int max_tables = 100; ///< tables beyond this are refused
     /// Tables one person may hold in any state (waiting, under way, with an away seat, not
-    /// over): those they created or hold a seat of. A person is a name (compared ignoring
-    /// ASCII case) or a token, so a new token per hello holds no more; beyond, create and sit
-    /// are refused ("full").
+    /// over): those they created or hold a seat of. A person is a name (compared by name_key:
+    /// NFKC, case folded) or a token, so a new token per hello holds no more; beyond, create and
+    /// sit are refused ("full").
     int max_tables_per_person = 3;
     /// The last free tables, this many at most and a tenth of max_tables (rounded up) at
     /// most, are kept for people who hold none: someone holding a table cannot create one of
@@ -43,7 +43,7 @@ struct ServerOptions {
     int reserved_tables = 10;
     /// A table nobody is at (its seats away, empty or the computer's) with no action for this
     /// long is archived: its file moves to archive/ in the state folder (table-N.save, then
-    /// .1, .2, ... never over another) and it leaves the lobby.
+    /// .1, .2, ... never over another) and it leaves the lobby (hall serve --archive-after).
     std::chrono::milliseconds archive_after = std::chrono::hours(24);
     /// Tables not started yet that one token may have created; more are refused ("full"). A
     /// table nobody sits at or watches goes when its creator disconnects, and any table not
