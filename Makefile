@@ -220,7 +220,7 @@ FUZZ_APP_SRCS := src/cli/scenario.cpp src/cli/numbers.cpp \
                  src/player/options.cpp src/player/stats_file.cpp src/player/stats_figures.cpp \
                  src/files/keep_aside.cpp src/files/atomic_file.cpp src/files/read_file.cpp \
                  src/player/save_file.cpp \
-                 src/hall/protocol.cpp src/hall/name_key.cpp
+                 src/hall/protocol.cpp src/hall/name_key.cpp src/hall/server_bounds.cpp
 FUZZ_CORE_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(CORE_SRCS))
 FUZZ_APP_OBJS := $(patsubst src/%.cpp,$(FUZZ_DIR)/%.o,$(FUZZ_APP_SRCS))
 FUZZ_CORE_LIB := $(FUZZ_DIR)/libtermpool.a
