@@ -314,6 +314,10 @@ TEST_CASE("bench runs small workloads and refuses bad options", "[cli]") {
     CHECK(r.out.find("breaks") != std::string::npos);
     CHECK(r.out.find("shots") != std::string::npos);
     CHECK(r.out.find("one core") != std::string::npos);
+    // Each row has this thread's CPU time beside the wall time.
+    CHECK(r.out.find("CPU med us") != std::string::npos);
+    CHECK(std::regex_search(r.out,
+                            std::regex(R"(breaks \(12 m/s\) +3 +[0-9.]+ +[0-9.]+ +[0-9.]+ )")));
 
     for (const char* bad : {"--breaks", "--breaks 0", "--shots -1", "--seed x", "--fast"}) {
         const Run b = run(dir, std::string("bench ") + bad);
@@ -497,6 +501,8 @@ TEST_CASE("selfplay plays short games to their end and sums them up", "[cli][sel
         CHECK((r.out.find(" centuries ") != std::string::npos) == snooker);
         CHECK((r.out.find("pots as the statistics count them") != std::string::npos) == snooker);
         CHECK(r.out.find(" CPU ") != std::string::npos);
+        // The whole run's wall and CPU time (all jobs' threads), side by side.
+        CHECK(std::regex_search(r.out, std::regex(R"(\d\.\d s wall, \d+\.\d s CPU\n)")));
     }
     CHECK(run(dir, "selfplay --games 2 --p1 easy").status == 2);
     CHECK(run(dir, "selfplay --games 2 --p1 easy --p2 grandmaster").status == 2);

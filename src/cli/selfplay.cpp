@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/cpu_clock.hpp"
 #include "cli/numbers.hpp"
 
 namespace termpool::cli {
@@ -164,14 +165,6 @@ std::string check_invariants(const Game& game) {
     return {};
 }
 
-// CPU time of the calling thread, s: a decision's time on one core, whatever else the
-// machine runs.
-double thread_seconds() {
-    timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
 // The move of the player to act: the seated computer's, or the scripted safe player's (a
 // person's seat to the match). Nothing when neither may act.
 std::optional<ComputerMove> move_of(Match& match, std::optional<SafePlayer> (&scripted)[2]) {
@@ -231,11 +224,11 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
         }
         const int actor = match.to_act();
         SeatFigures& stats = summary.players[actor - 1];
-        const double start = thread_seconds();
+        const double start = thread_cpu_seconds();
         const std::uint64_t simulated = match.computer_simulations(actor);
         std::optional<ComputerMove> move = move_of(match, scripted);
         if (move && move->kind == Pending::choose) {
-            stats.longest_decision = std::max(stats.longest_decision, thread_seconds() - start);
+            stats.longest_decision = std::max(stats.longest_decision, thread_cpu_seconds() - start);
             if (match.choose(actor, move->choice) != MatchError::none) {
                 summary.violation = "a choice the match refused";
                 return summary;
@@ -254,7 +247,7 @@ GameSummary play_one(const Options& o, std::uint64_t index) {
             return summary;
         }
         const ComputerShot& shot = move->shot;
-        const double took = thread_seconds() - start;
+        const double took = thread_cpu_seconds() - start;
         stats.seconds += took;
         stats.longest_decision = std::max(stats.longest_decision, took);
         stats.simulations += match.computer_simulations(actor) - simulated;
@@ -340,6 +333,7 @@ int selfplay_command(const std::vector<std::string>& args) {
     std::vector<GameSummary> records(o.games);
     std::atomic<std::uint64_t> next{0};
     const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = process_cpu_seconds(); // all jobs' threads
     auto worker = [&] {
         for (std::uint64_t i = next++; i < o.games; i = next++)
             records[i] = play_one(o, i);
@@ -352,6 +346,7 @@ int selfplay_command(const std::vector<std::string>& args) {
         t.join();
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpu = process_cpu_seconds() - cpu_start;
 
     int wins[2] = {0, 0};
     std::uint64_t fouls = 0, shots = 0, runs = 0;
@@ -420,8 +415,9 @@ int selfplay_command(const std::vector<std::string>& args) {
                         static_cast<unsigned long long>(s.tally_attempts));
         }
     std::printf("fouls per game %.2f, shots per game %.1f, break-and-runs %llu (%.1f%%), "
-                "%.1f s\n",
-                fouls / n, shots / n, static_cast<unsigned long long>(runs), 100 * runs / n, wall);
+                "%.1f s wall, %.1f s CPU\n",
+                fouls / n, shots / n, static_cast<unsigned long long>(runs), 100 * runs / n, wall,
+                cpu);
     return 0;
 }
 
