@@ -157,15 +157,21 @@ int serve(const std::vector<std::string>& args) {
     sigaddset(&stopping, SIGINT);
     ::pthread_sigmask(SIG_BLOCK, &stopping, &previous);
     Server server(options);
-    ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
-    if (const std::string problem = server.open(); !problem.empty())
-        return cannot_start(problem);
     signalled_server = &server;
     struct sigaction action {};
     action.sa_handler = on_stop_signal;
     sigemptyset(&action.sa_mask);
     ::sigaction(SIGTERM, &action, nullptr);
     ::sigaction(SIGINT, &action, nullptr);
+    // Still blocked while the socket opens: a client may connect and a SIGTERM come at once,
+    // and it must wait for the stop pipe, not kill the hall by default or wake a pipe not
+    // open yet. Unblocked, a signal that came meanwhile stops the loop at its first poll.
+    const std::string problem = server.open();
+    ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    if (!problem.empty()) {
+        signalled_server = nullptr;
+        return cannot_start(problem);
+    }
     const int status = server.run();
     signalled_server = nullptr;
     return status;
