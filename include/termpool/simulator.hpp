@@ -105,6 +105,11 @@ public:
     /// Move assignment.
     World& operator=(World&&) noexcept;
 
+    /// Puts `balls` on the table at time 0, as a new World on this table would, but in this one's
+    /// memory: a search that simulates many shots from one layout allocates nothing per shot.
+    /// Recording stops and the trajectory is emptied.
+    void reset(const std::vector<Ball>& balls);
+
     /// Strikes the cue ball (id 0) at the current time. Returns false if there is none.
     bool strike(const Strike& strike);
     /// Advances to the next event and resolves it. Returns nothing once every ball is at rest.
@@ -113,6 +118,8 @@ public:
     double time() const;
     /// The balls at the current time.
     std::vector<Ball> balls() const;
+    /// The same into `out`, which keeps its memory.
+    void balls(std::vector<Ball>& out) const;
     /// True when nothing moves or spins.
     bool at_rest() const;
     /// Records every ball's motion into a Trajectory from now on.
@@ -128,6 +135,11 @@ private:
 /// Strikes the cue ball and steps the world until every ball is at rest.
 ShotResult simulate_shot(const Table& table, const PhysicsParams& params, std::vector<Ball> balls,
                          const Strike& strike, Trajectory* trajectory = nullptr);
+
+/// The same on `world`, reset to `balls` first (World::reset); `result` is overwritten and keeps
+/// its memory. For searches that simulate many shots.
+void simulate_shot(World& world, const std::vector<Ball>& balls, const Strike& strike,
+                   ShotResult& result);
 
 /// Kinetic energy of a ball, translation plus rotation (solid sphere), J.
 double kinetic_energy(const Ball& ball, double radius);

@@ -101,6 +101,12 @@ Table make_table(TableSize size, double ball_radius = 0.028575);
 /// `ball_radius`.
 Table make_table(TableSize size, double ball_radius, const PocketSpec& spec);
 
+/// A table whose playing surface is `length` by `width` m (along x and y), with the pockets of
+/// `spec`, for balls of radius `ball_radius`: for experiments on tables of other sizes (`termpool
+/// bench --balls` scales the 9 ft table to hold more balls). Its nominal size is `size`.
+Table make_table(double length, double width, double ball_radius, const PocketSpec& spec,
+                 TableSize size = TableSize::nine_foot);
+
 /// Name of a table size as used on the command line ("9ft", "snooker").
 const char* table_size_name(TableSize size);
 

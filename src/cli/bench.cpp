@@ -26,16 +26,21 @@
 namespace termpool::cli {
 namespace {
 
-constexpr const char* usage = "usage: termpool bench [--breaks N] [--shots N] [--seed S]\n"
-                              "       termpool bench --render\n"
-                              "  --breaks N  seeded 8-ball breaks to time, and as many snooker\n"
-                              "              breaks (default 1000, N >= 1)\n"
-                              "  --shots N   random shots on the break layouts of each (default\n"
-                              "              10000)\n"
-                              "  --seed S    seed of the break angles and the shots (default 1)\n"
-                              "  --render    time the terminal front end instead: frame\n"
-                              "              composition, and the bytes a terminal receives\n"
-                              "              per frame of a break (through a pty)\n";
+constexpr const char* usage =
+    "usage: termpool bench [--breaks N] [--shots N] [--seed S]\n"
+    "                      [--balls LIST] [--ball-runs N]\n"
+    "       termpool bench --render\n"
+    "  --breaks N  seeded 8-ball breaks to time, and as many snooker\n"
+    "              breaks (default 1000, N >= 1)\n"
+    "  --shots N   random shots on the break layouts of each (default\n"
+    "              10000)\n"
+    "  --seed S    seed of the break angles and the shots (default 1)\n"
+    "  --balls LIST  ball counts of the cost-per-event rows, each 2..1024\n"
+    "              (default 16,32,64,128)\n"
+    "  --ball-runs N  breaks per ball count (default 100; 0: no rows)\n"
+    "  --render    time the terminal front end instead: frame\n"
+    "              composition, and the bytes a terminal receives\n"
+    "              per frame of a break (through a pty)\n";
 
 constexpr double break_speed = 12.0;        // m/s, a firm break
 constexpr double break_angle_jitter = 0.5;  // degrees either way, so that breaks differ
@@ -49,12 +54,35 @@ constexpr double shot_max_tip_offset = 0.3; // fraction of R, either way
 constexpr double snooker_break_speed = 7.0;        // m/s
 constexpr double snooker_break_angle_jitter = 0.1; // degrees either way
 
+// The cost per event against the number of balls: N balls (the cue ball and a triangle of N - 1)
+// on the 9 ft table scaled by sqrt(N / 16) each way, so that 16 balls break on the 9 ft table
+// itself and the balls have the same room per ball at every N; the break as the 8-ball one.
+constexpr std::size_t most_balls = 1024;
+constexpr double rack_gap = 2e-4; // m between neighbours in the triangle
+
 struct Options {
     std::uint64_t breaks = 1000;
     std::uint64_t shots = 10000;
     std::uint64_t seed = 1;
+    std::vector<std::size_t> balls = {16, 32, 64, 128};
+    std::uint64_t ball_runs = 100;
     bool render = false;
 };
+
+/// "16,32,64" as ball counts, each 2..most_balls; nothing for anything else.
+std::optional<std::vector<std::size_t>> parse_ball_counts(const std::string& text) {
+    std::vector<std::size_t> counts;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        const std::optional<std::uint64_t> n = parse_uint64(text.substr(start, comma - start));
+        if (!n || *n < 2 || *n > most_balls)
+            return std::nullopt;
+        counts.push_back(static_cast<std::size_t>(*n));
+        start = comma + 1;
+    }
+    return counts;
+}
 
 /// The options, or nothing after a message on stderr (bad usage) or on stdout (--help).
 std::optional<Options> parse_options(const std::vector<std::string>& args, bool& help) {
@@ -77,10 +105,23 @@ std::optional<Options> parse_options(const std::vector<std::string>& args, bool&
         } else if (i + 1 < args.size()) {
             value = args[++i];
         }
-        std::uint64_t* target = name == "--breaks"  ? &options.breaks
-                                : name == "--shots" ? &options.shots
-                                : name == "--seed"  ? &options.seed
-                                                    : nullptr;
+        if (name == "--balls") {
+            const auto counts = value ? parse_ball_counts(*value) : std::nullopt;
+            if (!counts) {
+                std::fprintf(stderr,
+                             "termpool bench: --balls needs ball counts 2..%zu, such as "
+                             "16,32,64,128\n",
+                             most_balls);
+                return std::nullopt;
+            }
+            options.balls = *counts;
+            continue;
+        }
+        std::uint64_t* target = name == "--breaks"      ? &options.breaks
+                                : name == "--shots"     ? &options.shots
+                                : name == "--seed"      ? &options.seed
+                                : name == "--ball-runs" ? &options.ball_runs
+                                                        : nullptr;
         if (!target) {
             std::fprintf(stderr, "termpool bench: unknown option '%s'\n", name.c_str());
             return std::nullopt;
@@ -274,6 +315,107 @@ Part snooker_part(const Options& options, Random& rng) {
     return part;
 }
 
+/// The cue ball on the head spot and a triangle of `count - 1` balls from the foot spot on, each
+/// a little apart from its neighbours (a gap drawn per ball, so that runs differ).
+std::vector<Ball> scaled_rack(const Table& table, const PhysicsParams& params, std::size_t count,
+                              Random& rng) {
+    const double R = params.ball_radius;
+    std::vector<Ball> balls(count);
+    balls[0].position = table.head_spot();
+    // Rows a gap's width wider than touching, so that no two balls touch before the break.
+    const double spacing = R + 0.5 * rack_gap;
+    const double row_step = std::sqrt(3.0) * spacing;
+    std::size_t placed = 1;
+    for (int row = 0; placed < count; ++row) {
+        for (int k = 0; k <= row && placed < count; ++k, ++placed) {
+            balls[placed].position = {table.foot_spot().x + row * row_step,
+                                      table.foot_spot().y + (2 * k - row) * spacing +
+                                          rng.uniform(-0.25, 0.25) * rack_gap};
+        }
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        balls[i].id = static_cast<int>(i);
+        balls[i].mass = params.ball_mass;
+    }
+    return balls;
+}
+
+/// One row of the cost per event against the number of balls.
+struct BallsRow {
+    std::size_t balls = 0;
+    Sample breaks;
+};
+
+BallsRow balls_row(std::size_t count, std::uint64_t runs, Random& rng) {
+    const PhysicsParams params;
+    const double scale = std::sqrt(static_cast<double>(count) / 16.0);
+    const Table nine_foot = make_table(TableSize::nine_foot);
+    const Table table = make_table(nine_foot.length * scale, nine_foot.width * scale,
+                                   params.ball_radius, pocket_spec(TableSize::nine_foot));
+    BallsRow row;
+    row.balls = count;
+    // One world, reset for each run outside the timing: the row is the cost of the events, not
+    // of setting balls out.
+    World world(table, params, scaled_rack(table, params, count, rng));
+    const double aim_deg = degrees_of(table.foot_spot() - table.head_spot());
+    std::vector<Ball> final_balls;
+    for (std::uint64_t run = 0; run < runs; ++run) {
+        world.reset(scaled_rack(table, params, count, rng));
+        const Strike strike{break_speed,
+                            aim_deg + rng.uniform(-break_angle_jitter, break_angle_jitter), 0, 0};
+        std::uint64_t events = 0;
+        const double cpu_start = thread_cpu_seconds();
+        const auto start = std::chrono::steady_clock::now();
+        world.strike(strike);
+        while (world.step())
+            ++events;
+        const auto stop = std::chrono::steady_clock::now();
+        row.breaks.cpu_micros.push_back(1e6 * (thread_cpu_seconds() - cpu_start));
+        row.breaks.micros.push_back(
+            std::chrono::duration<double, std::micro>(stop - start).count());
+        row.breaks.events += events;
+        row.breaks.cut_short += world.at_rest() ? 0 : 1;
+        world.balls(final_balls);
+        row.breaks.outcomes.add(events);
+        row.breaks.outcomes.add(world.time());
+        row.breaks.outcomes.add(final_balls);
+    }
+    return row;
+}
+
+double sum(const std::vector<double>& values) {
+    double total = 0;
+    for (const double v : values)
+        total += v;
+    return total;
+}
+
+void print_balls_rows(const std::vector<BallsRow>& rows, std::uint64_t runs) {
+    std::printf("\ncost per event against the number of balls: the cue ball and a triangle of "
+                "N - 1 on the 9ft table scaled by sqrt(N/16), broken at %s m/s, %llu runs each\n",
+                format_number(break_speed).c_str(), static_cast<unsigned long long>(runs));
+    std::printf("%-18s %12s %12s %12s %12s\n", "balls", "events/run", "ns/event", "CPU ns/event",
+                "CPU med us");
+    StateDigest outcomes;
+    for (const BallsRow& row : rows) {
+        const double events = static_cast<double>(std::max<std::uint64_t>(row.breaks.events, 1));
+        std::printf("%-18zu %12.1f %12.1f %12.1f %12.1f\n", row.balls,
+                    row.breaks.events / static_cast<double>(row.breaks.micros.size()),
+                    1e3 * sum(row.breaks.micros) / events,
+                    1e3 * sum(row.breaks.cpu_micros) / events, median(row.breaks.cpu_micros));
+        outcomes.add(row.breaks.outcomes.value());
+    }
+    if (rows.size() > 1) {
+        const auto cpu_per_event = [](const BallsRow& r) {
+            return sum(r.breaks.cpu_micros) /
+                   static_cast<double>(std::max<std::uint64_t>(r.breaks.events, 1));
+        };
+        std::printf("%zu balls: %.2f times the CPU cost per event of %zu\n", rows.back().balls,
+                    cpu_per_event(rows.back()) / cpu_per_event(rows.front()), rows.front().balls);
+    }
+    std::printf("hash of these outcomes: %s\n", digest_hex(outcomes.value()).c_str());
+}
+
 } // namespace
 
 int bench_command(const std::vector<std::string>& args, RenderBench render) {
@@ -327,8 +469,17 @@ int bench_command(const std::vector<std::string>& args, RenderBench render) {
         outcomes.add(s->outcomes.value());
     std::printf("hash of every outcome (events, positions, velocities, spins): %s\n",
                 digest_hex(outcomes.value()).c_str());
-    const std::uint64_t cut_short = eight.breaks.cut_short + eight.shots.cut_short +
-                                    snooker.breaks.cut_short + snooker.shots.cut_short;
+    std::uint64_t cut_short = eight.breaks.cut_short + eight.shots.cut_short +
+                              snooker.breaks.cut_short + snooker.shots.cut_short;
+    if (options.ball_runs > 0) {
+        Random balls_rng(options.seed ^ 0xba115ULL);
+        std::vector<BallsRow> rows;
+        for (const std::size_t count : options.balls) {
+            rows.push_back(balls_row(count, options.ball_runs, balls_rng));
+            cut_short += rows.back().breaks.cut_short;
+        }
+        print_balls_rows(rows, options.ball_runs);
+    }
     if (cut_short > 0)
         std::printf("warning: %llu runs stopped at the limit of %zu events\n",
                     static_cast<unsigned long long>(cut_short), World::max_events);

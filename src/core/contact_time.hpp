@@ -23,10 +23,24 @@ struct Path {
 /// First time two centres are `distance` apart and closing (degree-4 polynomial roots).
 double path_path_contact_time(const Path& a, const Path& b, double distance, double horizon);
 
+/// |dr + dv t + da t^2/2|^2 - distance^2 for the relative motion of two centres.
+inline Polynomial4 pair_gap(const Path& a, const Path& b, double distance) {
+    const Vec2 dr = a.position - b.position;
+    const Vec2 dv = a.velocity - b.velocity;
+    const Vec2 da = a.acceleration - b.acceleration;
+    Polynomial4 f;
+    f.c = {length_squared(dr) - distance * distance, 2 * dot(dr, dv),
+           length_squared(dv) + dot(dr, da), dot(dv, da), 0.25 * length_squared(da)};
+    return f;
+}
+
 /// path_path_contact_time, or a lower bound on it (seconds from now as well) when that is much
-/// cheaper: see first_contact_estimate.
-ContactEstimate path_path_contact_estimate(const Path& a, const Path& b, double distance,
-                                           double horizon);
+/// cheaper: see first_contact_estimate. Inline, as first_contact_estimate is: the pair search
+/// asks it of every pair in reach.
+inline ContactEstimate path_path_contact_estimate(const Path& a, const Path& b, double distance,
+                                                  double horizon) {
+    return first_contact_estimate(pair_gap(a, b, distance), horizon);
+}
 
 /// First time the centre comes within `offset` of the line through `point` (from the side
 /// `normal` points to) while moving towards it.

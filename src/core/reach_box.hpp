@@ -3,6 +3,7 @@
 // them before they solve anything.
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <termpool/vec.hpp>
 
@@ -15,6 +16,25 @@ namespace termpool::core {
 struct Box {
     Vec2 min, max;
 };
+
+/// Where a moving centre can be, tighter than its box for a long diagonal path: within `bulge` of
+/// the segment from `from` to `to`. A ball's pair search walks only the grid cells along it.
+struct Capsule {
+    Vec2 from, to;
+    double bulge = 0; ///< m
+};
+
+/// The capsule of a piece's centre over its first `duration` seconds: the chord of its parabola
+/// and the parabola's greatest distance from it, |a| T^2 / 8. A classic ball moves on a straight
+/// line no further than v T: the chord to where v T would take it holds its path.
+/// (|a| is bounded by |a_x| + |a_y|, which needs no square root.)
+inline Capsule capsule_of(const MotionPiece& piece, double duration) {
+    const Ball& b = piece.ball;
+    const double T = duration;
+    const Vec2 a = piece.acceleration;
+    return {b.position, b.position + b.velocity * T + a * (0.5 * T * T),
+            (std::abs(a.x) + std::abs(a.y)) * T * T / 8};
+}
 
 /// A box no overlap test reaches (min > max), a pocketed ball's.
 inline Box empty_box() {

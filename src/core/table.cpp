@@ -68,6 +68,10 @@ Table make_table(TableSize size, double ball_radius) {
 
 Table make_table(TableSize size, double ball_radius, const PocketSpec& spec) {
     const auto [L, W] = dimensions(size);
+    return make_table(L, W, ball_radius, spec, size);
+}
+
+Table make_table(double L, double W, double ball_radius, const PocketSpec& spec, TableSize size) {
     Table table;
     table.size = size;
     table.length = L;

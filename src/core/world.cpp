@@ -8,8 +8,8 @@
 
 #include "cloth_model.hpp"
 #include "collision.hpp"
+#include "event_schedule.hpp"
 #include "motion_piece.hpp"
-#include "pair_cache.hpp"
 #include "reach_box.hpp"
 #include "table_contacts.hpp"
 #include "wedge.hpp"
@@ -27,16 +27,41 @@ struct World::Impl {
     core::ClothModel cloth; // chosen once, from params.friction
     std::vector<MotionPiece> pieces;
     std::vector<TableEvent> table_events; // each ball's next event on its own
-    core::PairCache pairs;
+    core::EventSchedule schedule;         // what happens next, and the pair contacts
     double now = 0;
     std::size_t events = 0;
     std::vector<Event> pending; // reported by the next step before anything is simulated
     bool recording = false;
+    bool recorded = false; // the trajectory holds pieces
     Trajectory trajectory;
+    // Scratch kept between events, so that stepping allocates nothing once warm: the balls an
+    // event changed, and the held balls next to a ball in a wedge.
+    std::vector<std::size_t> changed;
+    std::vector<std::size_t> wedge_near;
+    std::vector<Ball> wedge_held;
 
     Impl(const Table& t, const PhysicsParams& p, std::vector<Ball> balls)
         : table(t), params(p), cloth(core::cloth_model(p.friction)), pieces(balls.size()),
-          table_events(balls.size()), pairs(balls.size()), trajectory(p, balls.size()) {
+          table_events(balls.size()), schedule(balls.size(), 2 * p.ball_radius),
+          trajectory(p, balls.size()) {
+        place(balls);
+    }
+
+    // Puts `balls` on the table at time 0; the containers keep their memory.
+    void place(const std::vector<Ball>& balls) {
+        if (balls.size() != pieces.size()) {
+            pieces.resize(balls.size());
+            table_events.resize(balls.size());
+            schedule = core::EventSchedule(balls.size(), 2 * params.ball_radius);
+        }
+        if (recorded) {
+            recording = recorded = false;
+            trajectory = Trajectory(params, balls.size());
+        }
+        now = 0;
+        events = 0;
+        pending.clear();
+        schedule.clear();
         for (std::size_t i = 0; i < balls.size(); ++i) {
             set_piece(i, balls[i]);
             refresh_table_event(i);
@@ -45,6 +70,7 @@ struct World::Impl {
         for (std::size_t i = 0; i < pieces.size(); ++i)
             if (is_moving(pieces[i].ball))
                 refresh_pairs(i, i);
+        schedule.earliest(); // brings the schedule up to date now rather than at the first step
     }
 
     std::size_t count() const { return pieces.size(); }
@@ -60,9 +86,11 @@ struct World::Impl {
         const double duration = cloth.time_to_transition(ball, params);
         s.end = now + duration;
         s.acceleration = cloth.acceleration(ball, params);
-        pairs.set_reach(i, ball.state == MotionState::pocketed ? core::empty_box()
-                                                               : reach_of(s, duration));
-        pairs.set_moving(i, is_moving(ball));
+        if (ball.state == MotionState::pocketed)
+            schedule.set_reach(i, core::empty_box(), {});
+        else
+            schedule.set_reach(i, reach_of(s, duration), path_of(s, duration));
+        schedule.set_moving(i, is_moving(ball));
         if (recording)
             trajectory.add(i, now, ball);
     }
@@ -72,9 +100,17 @@ struct World::Impl {
     // ball's box then spans the stretch it really travels rather than its whole slide.
     void refresh_table_event(std::size_t i) {
         table_events[i] = next_table_event(i);
+        schedule.set_table_time(i, table_events[i].time);
         const MotionPiece& s = pieces[i];
         if (is_moving(s.ball) && table_events[i].time < s.end)
-            pairs.set_reach(i, reach_of(s, table_events[i].time - s.start));
+            schedule.set_reach(i, reach_of(s, table_events[i].time - s.start),
+                               path_of(s, table_events[i].time - s.start));
+    }
+
+    // The capsule of the piece's centre over its first `duration` seconds, where the schedule
+    // searches along paths (many balls).
+    core::Capsule path_of(const MotionPiece& s, double duration) const {
+        return schedule.searches_paths() ? core::capsule_of(s, duration) : core::Capsule{};
     }
 
     // Box of the piece's centre over its first `duration` seconds.
@@ -92,14 +128,13 @@ struct World::Impl {
                 return {s.end, TableEventKind::transition, 0};
             return {};
         }
-        return cloth.table_event(s, pairs.reach(i), now, table, params);
+        return cloth.table_event(s, schedule.reach(i), now, table, params);
     }
 
     // Recomputes the pair contacts of ball i, whose table event is already up to date. `done` is
     // a ball that changed in the same event and was refreshed just before.
     void refresh_pairs(std::size_t i, std::size_t done) {
-        pairs.refresh(i, done, now, 2 * params.ball_radius,
-                      [&](std::size_t k) { return pair_contact(i, k); });
+        schedule.refresh(i, done, now, [&](std::size_t k) { return pair_contact(i, k); });
     }
 
     // Seconds from now to the first contact of balls i and k, or a lower bound on them.
@@ -136,28 +171,25 @@ struct World::Impl {
         return next.is_pair ? resolve_pair(next.i, next.j) : resolve_table_event(next.i);
     }
 
-    // The earliest event; ties go to the table, then to the lowest pair. A pair that holds only
-    // a bound is searched when it comes first, and the choice is made again.
+    // The earliest event; ties go to the table, then to the lowest pair (the schedule's order).
+    // A pair that holds only a bound is searched when it comes first, and the choice is made
+    // again.
     NextEvent earliest_event() {
-        NextEvent first_table;
-        for (std::size_t i = 0; i < count(); ++i) {
-            if (table_events[i].time < first_table.time)
-                first_table = {table_events[i].time, i, 0, false};
-        }
         for (;;) {
-            const std::optional<core::PairCache::Pair> pair =
-                pairs.earliest_before(first_table.time);
-            if (!pair)
-                return first_table;
-            if (!pairs.is_bound(pair->i, pair->j))
-                return {pair->time, pair->i, pair->j, true};
-            refine_pair(pair->i, pair->j);
+            const core::ScheduledEvent e = schedule.earliest();
+            if (!(e.time < std::numeric_limits<double>::infinity()))
+                return {};
+            if (!e.is_pair())
+                return {e.time, e.i(), 0, false};
+            if (!schedule.is_bound(e.i(), e.j()))
+                return {e.time, e.i(), e.j(), true};
+            refine_pair(e.i(), e.j());
         }
     }
 
     // Replaces the lower bound kept for pair (i, j) by its contact time.
     void refine_pair(std::size_t i, std::size_t j) {
-        pairs.set_exact(
+        schedule.set_exact(
             i, j,
             now + cloth.pair_contact_time(pieces[i], pieces[j], now, pair_horizon(i, j), params));
     }
@@ -167,15 +199,15 @@ struct World::Impl {
         core::resolve_ball_ball(a, b, params, cloth);
         set_piece(i, a);
         set_piece(j, b);
-        std::vector<std::size_t> changed = {i, j};
+        changed.assign({i, j});
         escape_wedge(i, j, changed);
         escape_wedge(j, i, changed);
-        refresh_changed(changed);
+        refresh_changed();
         return {now, EventKind::ball_ball, std::min(a.id, b.id), std::max(a.id, b.id)};
     }
 
     // Table events first, then pairs, so that each pair search sees both balls' horizons.
-    void refresh_changed(const std::vector<std::size_t>& changed) {
+    void refresh_changed() {
         for (const std::size_t k : changed)
             refresh_table_event(k);
         for (const std::size_t k : changed)
@@ -191,8 +223,10 @@ struct World::Impl {
         if (!cloth.holds_slow_balls || !is_moving(mover))
             return;
         const double apart = 2 * params.ball_radius + core::wedge_touch_gap;
-        std::vector<std::size_t> near;
-        std::vector<Ball> held;
+        std::vector<std::size_t>& near = wedge_near;
+        std::vector<Ball>& held = wedge_held;
+        near.clear();
+        held.clear();
         for (std::size_t k = 0; k < count(); ++k) {
             const Ball& other = pieces[k].ball;
             if (k != i && other.state == MotionState::stationary &&
@@ -263,11 +297,11 @@ struct World::Impl {
             break;
         }
         set_piece(i, b);
-        std::vector<std::size_t> changed = {i};
+        changed.assign({i});
         if (te.kind == TableEventKind::rail || te.kind == TableEventKind::jaw_line ||
             te.kind == TableEventKind::jaw_point)
             escape_wedge(i, i, changed);
-        refresh_changed(changed);
+        refresh_changed();
         return event;
     }
 
@@ -295,6 +329,10 @@ World& World::operator=(const World& other) {
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
+void World::reset(const std::vector<Ball>& balls) {
+    impl_->place(balls);
+}
+
 bool World::strike(const Strike& strike) {
     for (std::size_t i = 0; i < impl_->count(); ++i) {
         const Ball& b = impl_->pieces[i].ball;
@@ -315,10 +353,15 @@ double World::time() const {
 
 std::vector<Ball> World::balls() const {
     std::vector<Ball> out;
+    balls(out);
+    return out;
+}
+
+void World::balls(std::vector<Ball>& out) const {
+    out.clear();
     out.reserve(impl_->count());
     for (std::size_t i = 0; i < impl_->count(); ++i)
         out.push_back(impl_->state_now(i));
-    return out;
 }
 
 bool World::at_rest() const {
@@ -329,6 +372,7 @@ bool World::at_rest() const {
 
 void World::record(bool on) {
     impl_->recording = on;
+    impl_->recorded = impl_->recorded || on;
     if (on) {
         for (std::size_t i = 0; i < impl_->count(); ++i)
             impl_->trajectory.add(i, impl_->now, impl_->state_now(i));
@@ -355,6 +399,18 @@ ShotResult simulate_shot(const Table& table, const PhysicsParams& params, std::v
     if (trajectory)
         *trajectory = world.trajectory();
     return result;
+}
+
+void simulate_shot(World& world, const std::vector<Ball>& balls, const Strike& strike,
+                   ShotResult& result) {
+    world.reset(balls);
+    world.strike(strike);
+    result.events.clear();
+    while (const auto event = world.step())
+        result.events.push_back(*event);
+    result.event_limit_hit = !world.at_rest();
+    result.rest_time = world.time();
+    world.balls(result.balls);
 }
 
 double kinetic_energy(const Ball& b, double radius) {

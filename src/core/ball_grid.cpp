@@ -1,0 +1,149 @@
+#include "ball_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace termpool::core {
+namespace {
+
+// A box that covers more cells than this is on the wide list: walking its cells would cost more
+// than every search looking at it.
+constexpr std::int64_t max_cells = 24;
+// Cell coordinates are clamped here, far beyond any table, so that a wild box cannot overflow.
+constexpr double cell_limit = 1e9;
+
+std::int64_t cell_coordinate(double x) {
+    return static_cast<std::int64_t>(std::floor(std::clamp(x, -cell_limit, cell_limit)));
+}
+
+} // namespace
+
+const BallGrid::Cells BallGrid::empty_cells{0, 0, 0, 0, false, true};
+
+BallGrid::BallGrid(std::size_t balls, double cell, double margin)
+    : cell_(cell), inverse_cell_(1 / cell), margin_(margin), buckets_of_(balls),
+      cells_(balls, empty_cells), is_wide_(balls), is_dirty_(balls), seen_(balls) {
+    std::size_t buckets = 64;
+    while (buckets < 4 * balls)
+        buckets *= 2;
+    mask_ = buckets - 1;
+    buckets_.resize(buckets);
+    dirty_.reserve(balls);
+}
+
+void BallGrid::clear() {
+    for (auto& b : buckets_)
+        b.clear();
+    for (auto& b : buckets_of_)
+        b.clear();
+    wide_.clear();
+    dirty_.clear();
+    std::fill(cells_.begin(), cells_.end(), empty_cells);
+    std::fill(is_wide_.begin(), is_wide_.end(), 0);
+    std::fill(is_dirty_.begin(), is_dirty_.end(), 0);
+}
+
+BallGrid::Cells BallGrid::cells_of(const Box& box) const {
+    // NaN or an empty box: in no cell.
+    if (!(box.min.x <= box.max.x && box.min.y <= box.max.y))
+        return empty_cells;
+    Cells c{};
+    c.x0 = cell_coordinate((box.min.x - margin_) * inverse_cell_);
+    c.y0 = cell_coordinate((box.min.y - margin_) * inverse_cell_);
+    c.x1 = cell_coordinate((box.max.x + margin_) * inverse_cell_);
+    c.y1 = cell_coordinate((box.max.y + margin_) * inverse_cell_);
+    c.wide = (c.x1 - c.x0 + 1) * (c.y1 - c.y0 + 1) > max_cells;
+    return c;
+}
+
+std::size_t BallGrid::bucket(std::int64_t x, std::int64_t y) const {
+    const auto ux = static_cast<std::uint64_t>(x);
+    const auto uy = static_cast<std::uint64_t>(y);
+    return static_cast<std::size_t>(((ux * 0x9E3779B97F4A7C15ull) ^ (uy * 0xC2B2AE3D27D4EB4Full)) >>
+                                    40) &
+           mask_;
+}
+
+void BallGrid::leave(std::size_t i) {
+    const auto k = static_cast<std::uint16_t>(i);
+    if (is_wide_[i]) {
+        wide_.erase(std::find(wide_.begin(), wide_.end(), k));
+        is_wide_[i] = 0;
+    }
+    for (const std::uint32_t b : buckets_of_[i]) {
+        std::vector<std::uint16_t>& in = buckets_[b];
+        *std::find(in.begin(), in.end(), k) = in.back();
+        in.pop_back();
+    }
+    buckets_of_[i].clear();
+    cells_[i] = empty_cells;
+}
+
+void BallGrid::enter(std::size_t i, const Cells& c) {
+    cells_[i] = c;
+    if (c.empty)
+        return;
+    const auto k = static_cast<std::uint16_t>(i);
+    if (c.wide) {
+        wide_.push_back(k);
+        is_wide_[i] = 1;
+        return;
+    }
+    std::vector<std::uint32_t>& mine = buckets_of_[i];
+    for (std::int64_t y = c.y0; y <= c.y1; ++y) {
+        for (std::int64_t x = c.x0; x <= c.x1; ++x) {
+            const auto b = static_cast<std::uint32_t>(bucket(x, y));
+            // Two cells may share a bucket: a ball is entered in each bucket once.
+            if (std::find(mine.begin(), mine.end(), b) == mine.end()) {
+                mine.push_back(b);
+                buckets_[b].push_back(k);
+            }
+        }
+    }
+}
+
+void BallGrid::flush(const std::vector<Box>& boxes) {
+    for (const std::uint16_t i : dirty_) {
+        is_dirty_[i] = 0;
+        const Cells c = cells_of(boxes[i]);
+        // Most changes (a ball stopping, a slow ball's next piece) keep the cells.
+        if (c == cells_[i])
+            continue;
+        leave(i);
+        enter(i, c);
+    }
+    dirty_.clear();
+}
+
+void BallGrid::column_of(const Capsule& path, std::int64_t x, std::int64_t& y0,
+                         std::int64_t& y1) const {
+    // Grown by the margins of both balls and the bulge, and a little more for the rounding of
+    // what follows (micrometres against cells of centimetres).
+    const double w = 2 * margin_ + path.bulge + 1e-6;
+    const double x_lo = static_cast<double>(x) * cell_ - w;
+    const double x_hi = static_cast<double>(x + 1) * cell_ + w;
+    const Vec2 d = path.to - path.from;
+    // The part s in [s0, s1] of the segment from + s d whose x lies in [x_lo, x_hi].
+    double s0 = 0, s1 = 1;
+    if (d.x != 0) {
+        const double a = (x_lo - path.from.x) / d.x, b = (x_hi - path.from.x) / d.x;
+        s0 = std::max(0.0, std::min(a, b));
+        s1 = std::min(1.0, std::max(a, b));
+    } else if (path.from.x < x_lo || path.from.x > x_hi) {
+        y0 = 1;
+        y1 = 0;
+        return;
+    }
+    if (s0 > s1) {
+        y0 = 1;
+        y1 = 0;
+        return;
+    }
+    if (!(s0 <= s1))
+        return; // a NaN path: every cell of the box
+    const double ya = path.from.y + s0 * d.y, yb = path.from.y + s1 * d.y;
+    y0 = std::max(y0, cell_coordinate((std::min(ya, yb) - w) * inverse_cell_));
+    y1 = std::min(y1, cell_coordinate((std::max(ya, yb) + w) * inverse_cell_));
+}
+
+} // namespace termpool::core

@@ -1,0 +1,105 @@
+#pragma once
+// Which balls' boxes may come near a ball's box, without looking at every ball: a uniform grid
+// hashed into buckets, so that the pair search does not test every box when there are many balls.
+// It only culls: every ball it leaves out is out of reach, and the caller still tests the boxes.
+//
+// A ball is entered in every cell its box (grown by a margin) covers. A box that covers more
+// cells than a search should walk (a fast ball's long path) is on a short wide list instead,
+// which every search looks at; its own search walks only the cells along its path.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "reach_box.hpp"
+
+namespace termpool::core {
+
+/// Boxes of `balls` balls, each grown by `margin` and entered in the grid cells it covers.
+class BallGrid {
+public:
+    /// `balls` balls, none entered; `cell` is the side of a grid cell, m (a few ball diameters:
+    /// a ball at rest then covers one to four cells, a rolling ball a handful).
+    BallGrid(std::size_t balls, double cell, double margin);
+
+    /// Forgets every ball's box.
+    void clear();
+    /// Ball i's box changed: it is entered again before the next search.
+    void moved(std::size_t i) {
+        if (!is_dirty_[i]) {
+            is_dirty_[i] = 1;
+            dirty_.push_back(static_cast<std::uint16_t>(i));
+        }
+    }
+
+    /// Calls `visit(k)` once for every ball k != i whose box (in `boxes`) grown by `margin` may
+    /// overlap ball i's grown by `margin`, and perhaps for a few more; where ball i's box covers
+    /// many cells, only for those that may come within 2 `margin` of its `path` (which must hold
+    /// its centre's path). `boxes` holds every ball's current box; an empty box (min > max) is in
+    /// no cell.
+    template <class Visit>
+    void near(std::size_t i, const std::vector<Box>& boxes, const Capsule& path, Visit visit);
+
+private:
+    struct Cells {
+        std::int64_t x0, y0, x1, y1;
+        bool wide; // more cells than a search should walk: the ball is on the wide list
+        bool empty;
+        bool operator==(const Cells&) const = default;
+    };
+    static const Cells empty_cells;
+    Cells cells_of(const Box& box) const;
+    std::size_t bucket(std::int64_t x, std::int64_t y) const;
+    void enter(std::size_t i, const Cells& cells);
+    void leave(std::size_t i);
+    void flush(const std::vector<Box>& boxes);
+    /// Narrows the rows [y0, y1] of column x to those within reach of `path`.
+    void column_of(const Capsule& path, std::int64_t x, std::int64_t& y0, std::int64_t& y1) const;
+
+    double cell_;
+    double inverse_cell_;
+    double margin_;
+    std::size_t mask_; // buckets - 1, a power of two less one
+    std::vector<std::vector<std::uint16_t>> buckets_;
+    std::vector<std::vector<std::uint32_t>> buckets_of_; // per ball, the buckets it is in
+    std::vector<Cells> cells_;                           // per ball, the cells it is entered in
+    std::vector<std::uint16_t> wide_;                    // balls on the wide list
+    std::vector<std::uint8_t> is_wide_;
+    std::vector<std::uint16_t> dirty_; // balls whose box changed since they were entered
+    std::vector<std::uint8_t> is_dirty_;
+    std::vector<std::uint32_t> seen_; // per ball, the search that last visited it
+    std::uint32_t search_ = 0;
+};
+
+template <class Visit>
+void BallGrid::near(std::size_t i, const std::vector<Box>& boxes, const Capsule& path,
+                    Visit visit) {
+    flush(boxes);
+    const Cells c = cells_[i];
+    if (c.empty)
+        return;
+    if (++search_ == 0) { // after 2^32 searches the old marks could match again
+        std::fill(seen_.begin(), seen_.end(), 0);
+        search_ = 1;
+    }
+    seen_[i] = search_;
+    auto visit_once = [&](std::uint16_t k) {
+        if (seen_[k] != search_) {
+            seen_[k] = search_;
+            visit(k);
+        }
+    };
+    for (const std::uint16_t k : wide_)
+        visit_once(k);
+    for (std::int64_t x = c.x0; x <= c.x1; ++x) {
+        std::int64_t y0 = c.y0, y1 = c.y1;
+        // A long path: only the cells along it, not the whole of its box.
+        if (c.wide)
+            column_of(path, x, y0, y1);
+        for (std::int64_t y = y0; y <= y1; ++y)
+            for (const std::uint16_t k : buckets_[bucket(x, y)])
+                visit_once(k);
+    }
+}
+
+} // namespace termpool::core

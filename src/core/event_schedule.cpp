@@ -1,0 +1,86 @@
+#include "event_schedule.hpp"
+
+#include <stdexcept>
+
+namespace termpool::core {
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+// Up to this many balls (a bit each in one word) a search tests every box: on the 16-ball break
+// and the 22-ball snooker break the grid's bookkeeping costs more than it saves.
+constexpr std::size_t most_without_grid = 64;
+
+// `balls`, refused before anything is allocated for them when their indices do not fit.
+std::size_t checked(std::size_t balls) {
+    if (balls > ScheduledEvent::max_balls)
+        throw std::length_error("termpool: a world holds at most 32768 balls");
+    return balls;
+}
+
+} // namespace
+
+EventSchedule::EventSchedule(std::size_t balls, double diameter)
+    : diameter_(diameter), reach_(checked(balls), empty_box()), paths_(balls), moving_(balls),
+      many_(balls > most_without_grid), time_(balls * balls, infinity), bound_(balls * balls, 0),
+      words_((balls + 63) / 64), finite_(balls * words_, 0), searched_(balls, 0),
+      table_time_(balls, infinity), row_min_time_(balls, infinity), row_min_partner_(balls, balls),
+      key_dirty_(balls, 0) {
+    dirty_keys_.reserve(balls);
+    // Boxes grown by a little more than a radius each overlap whenever they come within a
+    // diameter, whatever the rounding. Cells of four diameters: a ball at rest covers one to
+    // four, a rolling ball a handful.
+    if (many_)
+        grid_.emplace(balls, 4 * diameter, 0.5 * diameter * (1 + 1e-6) + 1e-9);
+    const std::size_t blocks = std::max<std::size_t>(1, (balls + block - 1) / block);
+    keys_.assign(blocks * block, {infinity_bits, 0});
+    block_first_.assign(blocks, {infinity_bits, 0});
+    block_dirty_.assign(blocks, 0);
+}
+
+void EventSchedule::clear() {
+    if (!touched_)
+        return; // as new
+    touched_ = false;
+    const std::size_t n = size();
+    for (std::size_t i = 0; i < n; ++i) {
+        visit_finite(i, [&](std::size_t k) { time_[i * n + k] = infinity; });
+        std::fill(finite_.begin() + static_cast<std::ptrdiff_t>(i * words_),
+                  finite_.begin() + static_cast<std::ptrdiff_t>((i + 1) * words_), 0);
+    }
+    std::fill(reach_.begin(), reach_.end(), empty_box());
+    std::fill(moving_.begin(), moving_.end(), 0);
+    if (many_)
+        grid_->clear();
+    std::fill(table_time_.begin(), table_time_.end(), infinity);
+    std::fill(row_min_time_.begin(), row_min_time_.end(), infinity);
+    std::fill(row_min_partner_.begin(), row_min_partner_.end(), n);
+    std::fill(keys_.begin(), keys_.end(), Key{infinity_bits, 0});
+    std::fill(block_first_.begin(), block_first_.end(), Key{infinity_bits, 0});
+    std::fill(block_dirty_.begin(), block_dirty_.end(), 0);
+    dirty_keys_.clear();
+    std::fill(key_dirty_.begin(), key_dirty_.end(), 0);
+}
+
+void EventSchedule::set_exact(std::size_t i, std::size_t j, double time) {
+    const std::size_t n = size();
+    bound_[i * n + j] = bound_[j * n + i] = 0;
+    set_time(i, j, time);
+}
+
+void EventSchedule::rescan_row(std::size_t r) {
+    const double* row = time_.data() + r * size();
+    double min_time = infinity;
+    std::size_t min_partner = size();
+    // In ascending order, and only a strictly earlier time replaces: the lowest partner on ties.
+    visit_finite(r, [&](std::size_t k) {
+        if (row[k] < min_time) {
+            min_time = row[k];
+            min_partner = k;
+        }
+    });
+    row_min_time_[r] = min_time;
+    row_min_partner_[r] = min_partner;
+}
+
+} // namespace termpool::core

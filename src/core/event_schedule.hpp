@@ -1,0 +1,336 @@
+#pragma once
+// What the world does next: each ball's next event on its own (its table event) and the contact
+// time of every pair of balls, kept current as balls change, with the earliest of them all at
+// hand. A ball's row of pair times keeps its minimum, and blocks of balls keep the earliest table
+// event or row minimum among them, so that finding the next event scans a few blocks and a change
+// rescans one. The pair search culls with the box each ball's centre stays in,
+// whether it moves, and (for many balls) a grid over the boxes; only the pairs holding a contact
+// are walked, by a bit per pair. Nothing in an event's work walks every ball, and the cost of an
+// event stays flat from 16 balls to 128.
+
+#include <algorithm>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "ball_grid.hpp"
+#include "polynomial.hpp"
+#include "reach_box.hpp"
+
+namespace termpool::core {
+
+/// The earliest event: a ball's table event or a pair's contact.
+struct ScheduledEvent {
+    double time; ///< absolute, s; +infinity when nothing is scheduled
+    /// `is_pair`, i and j packed so that one comparison breaks ties: at one time a table event
+    /// comes before a pair, the lower ball first, and the lower pair (i, then j) first.
+    std::uint32_t order;
+
+    static constexpr std::uint32_t pair_bit = 1u << 31;
+    /// Ball indices stay below this (15 bits each).
+    static constexpr std::size_t max_balls = 1u << 15;
+
+    static ScheduledEvent table(double time, std::size_t i) {
+        return {time, static_cast<std::uint32_t>(i << 15)};
+    }
+    static ScheduledEvent pair(double time, std::size_t i, std::size_t j) {
+        return {time, pair_bit | static_cast<std::uint32_t>(std::min(i, j) << 15 | std::max(i, j))};
+    }
+    bool is_pair() const { return (order & pair_bit) != 0; }
+    std::size_t i() const { return (order >> 15) & 0x7fff; }
+    std::size_t j() const { return order & 0x7fff; }
+
+    friend bool operator<(const ScheduledEvent& a, const ScheduledEvent& b) {
+        return a.time < b.time || (a.time == b.time && a.order < b.order);
+    }
+    friend bool operator==(const ScheduledEvent&, const ScheduledEvent&) = default;
+};
+
+/// The table events and pair contacts of `size()` balls; times are absolute, +infinity for
+/// nothing (a NaN time counts as nothing too).
+class EventSchedule {
+public:
+    /// `balls` balls of diameter `diameter`, nothing scheduled, every box empty and every ball
+    /// at rest. At most ScheduledEvent::max_balls balls (std::length_error otherwise).
+    EventSchedule(std::size_t balls, double diameter);
+
+    /// Back to the state of a new schedule, keeping the memory.
+    void clear();
+
+    /// Sets ball i's next event on its own.
+    void set_table_time(std::size_t i, double time);
+
+    /// Sets the box ball i's centre stays in until its pairs are next searched, and the capsule
+    /// within it that holds the path.
+    void set_reach(std::size_t i, const Box& reach, const Capsule& path);
+    /// Whether set_reach's capsules are used (with many balls, where the search walks the grid
+    /// along long paths); otherwise any capsule will do.
+    bool searches_paths() const { return many_; }
+    /// The box set last for ball i.
+    const Box& reach(std::size_t i) const { return reach_[i]; }
+    /// Sets whether ball i moves.
+    void set_moving(std::size_t i, bool moving) { moving_[i] = moving; }
+
+    /// Searches ball i's pairs afresh at time `now`: `contact(k)` gives the ContactEstimate of
+    /// pair (i, k) in seconds from now, and is asked only for balls whose boxes come within a
+    /// diameter of i's (and that move when i does not). `done` is a ball that changed in the
+    /// same event and was refreshed just before: their pair is current.
+    template <class Contact>
+    void refresh(std::size_t i, std::size_t done, double now, Contact contact);
+
+    /// Whether pair (i, j) holds only a lower bound on its contact.
+    bool is_bound(std::size_t i, std::size_t j) const { return bound_[i * size() + j] != 0; }
+    /// Replaces the lower bound kept for pair (i, j) by its contact time.
+    void set_exact(std::size_t i, std::size_t j, double time);
+
+    /// The earliest event of all (time +infinity when there is none).
+    ScheduledEvent earliest();
+
+    /// How many balls.
+    std::size_t size() const { return reach_.size(); }
+
+private:
+    // Sets pair (i, k)'s time; row k's minimum follows, and row i's too unless `row_i_later`
+    // (a search of row i, which finds its minimum once at the end).
+    void set_time(std::size_t i, std::size_t k, double time, bool row_i_later = false);
+    void row_changed(std::size_t r, std::size_t partner, double time);
+    void rescan_row(std::size_t r);
+    void update_key(std::size_t i);
+    template <class Visit> void visit_finite(std::size_t i, Visit visit) const;
+
+    double diameter_;
+    bool touched_ = false; // anything set since construction or clear()
+    // Short arrays of their own, so that the search culls without touching the world's pieces.
+    // A pocketed ball's box is empty (min > max): every overlap test with it fails.
+    std::vector<Box> reach_;
+    std::vector<Capsule> paths_;
+    std::vector<std::uint8_t> moving_;
+    // Many balls: their pairs are searched through the grid, and the earliest event is kept by
+    // the tree. Few are faster without either: testing every box and scanning every leaf costs
+    // less than the bookkeeping.
+    bool many_;
+    std::optional<BallGrid> grid_; // only with many balls
+    // Kept in both orders ([i * n + j] == [j * n + i]) so that a ball's row holds all its pairs.
+    std::vector<double> time_;
+    // 1 where time_ holds only a lower bound on the contact (same layout): the search is put off
+    // until the bound is the earliest of all events, and most never get that far.
+    std::vector<std::uint8_t> bound_;
+    // A bit per pair (both orders, rows of words_ words), set where the time is finite: a search
+    // walks only these to clear the pairs it no longer reaches, and a row's minimum is found
+    // among them.
+    std::size_t words_;
+    std::vector<std::uint64_t> finite_;
+    // Per ball, the search that last gave its pair with the searched ball a time.
+    std::vector<std::uint32_t> searched_;
+    std::uint32_t search_ = 0;
+    std::vector<double> table_time_;
+    // Each row's earliest pair: its time and partner (the lowest partner on ties; size() when
+    // the row holds no contact).
+    std::vector<double> row_min_time_;
+    std::vector<std::size_t> row_min_partner_;
+    // Each ball's earliest event (its table event or its row's minimum) as a key, in blocks of
+    // `block` balls (the last one padded with nothing), and each block's earliest key: a change
+    // rescans one block, and the earliest event of all is found among the blocks' (one block at
+    // 16 balls, eight at 128).
+    // A key's time is the bits of the double: times are never negative (nor -0), and for those
+    // the bits order as the values do, so that picking the earlier of two is integer compares
+    // without a branch to mispredict.
+    struct Key {
+        std::uint64_t time_bits;
+        std::uint32_t order;
+    };
+    static constexpr std::size_t block = 16;
+    static constexpr std::uint64_t infinity_bits = 0x7ff0000000000000; // +infinity's bits
+    std::vector<Key> keys_;
+    std::vector<Key> block_first_;
+    std::vector<std::uint8_t> block_dirty_;
+    // Balls whose table event or row minimum changed since their keys were last brought up to
+    // date: an event changes a row several times, and the key is made once.
+    std::vector<std::size_t> dirty_keys_;
+    std::vector<std::uint8_t> key_dirty_;
+    void key_changed(std::size_t i) {
+        if (!key_dirty_[i]) {
+            key_dirty_[i] = 1;
+            dirty_keys_.push_back(i);
+        }
+    }
+};
+
+template <class Visit> void EventSchedule::visit_finite(std::size_t i, Visit visit) const {
+    const std::uint64_t* row_bits = finite_.data() + i * words_;
+    for (std::size_t w = 0; w < words_; ++w) {
+        // A copy of the word: `visit` may clear bits of it.
+        for (std::uint64_t bits = row_bits[w]; bits != 0; bits &= bits - 1)
+            visit(w * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
+    }
+}
+
+template <class Contact>
+void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact contact) {
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    const std::size_t n = size();
+    const Vec2 lo = reach_[i].min - Vec2{diameter_, diameter_};
+    const Vec2 hi = reach_[i].max + Vec2{diameter_, diameter_};
+    // A ball at rest can only be hit by a moving one.
+    const std::uint8_t needs_motion = moving_[i] ? 0 : 1;
+    const double* row = time_.data() + i * n;
+    if (++search_ == 0) { // after 2^32 searches the old marks could match again
+        std::fill(searched_.begin(), searched_.end(), 0);
+        search_ = 1;
+    }
+    // Whether pair (i, k) is searched: the boxes come within a diameter, and one of the balls
+    // moves. Bitwise & rather than &&: one branch per ball instead of five unpredictable ones.
+    auto in_reach = [&](std::size_t k) {
+        const Box& box = reach_[k];
+        return (moving_[k] >= needs_motion) & (lo.x <= box.max.x) & (box.min.x <= hi.x) &
+               (lo.y <= box.max.y) & (box.min.y <= hi.y);
+    };
+    auto search = [&](std::size_t k) __attribute__((always_inline)) {
+        searched_[k] = search_;
+        const ContactEstimate estimate = contact(k);
+        // (The flag of a pair out of reach does not matter: it is never chosen.)
+        bound_[i * n + k] = bound_[k * n + i] = estimate.exact ? 0 : 1;
+        const double time = now + estimate.time;
+        if (time != row[k])
+            set_time(i, k, time, true);
+    };
+    if (many_) {
+        grid_->near(i, reach_, paths_[i], [&](std::size_t k) {
+            if (k != i && k != done && in_reach(k))
+                search(k);
+        });
+    } else {
+        // The boxes are tested without a branch into masks of 64, and only the balls in reach
+        // (about one in five) are walked: a branch per ball would be mispredicted at every other.
+        for (std::size_t base = 0; base < n; base += 64) {
+            const std::size_t end = std::min(n, base + 64);
+            std::uint64_t reached = 0;
+            for (std::size_t k = base; k < end; ++k)
+                reached |= static_cast<std::uint64_t>(in_reach(k)) << (k - base);
+            if (i - base < 64)
+                reached &= ~(std::uint64_t{1} << (i - base));
+            if (done - base < 64)
+                reached &= ~(std::uint64_t{1} << (done - base));
+            for (; reached != 0; reached &= reached - 1)
+                search(base + static_cast<std::size_t>(std::countr_zero(reached)));
+        }
+    }
+    // The pairs that held a contact and are out of reach now (the pair with `done` excepted).
+    visit_finite(i, [&](std::size_t k) {
+        if (k != done && searched_[k] != search_)
+            set_time(i, k, infinity, true);
+    });
+    rescan_row(i);
+    key_changed(i);
+}
+
+namespace schedule_detail {
+
+// Whether b comes before a, without a branch.
+inline bool comes_first(std::uint64_t b_time, std::uint32_t b_order, std::uint64_t a_time,
+                        std::uint32_t a_order) {
+    return (b_time < a_time) | ((b_time == a_time) & (b_order < a_order));
+}
+
+// The earlier of two keys' indices in `keys`, without a branch.
+template <class Key> inline std::size_t earlier(const Key* keys, std::size_t a, std::size_t b) {
+    return comes_first(keys[b].time_bits, keys[b].order, keys[a].time_bits, keys[a].order) ? b : a;
+}
+
+} // namespace schedule_detail
+
+inline void EventSchedule::set_reach(std::size_t i, const Box& reach, const Capsule& path) {
+    touched_ = true;
+    reach_[i] = reach;
+    if (many_) {
+        paths_[i] = path;
+        grid_->moved(i);
+    }
+}
+
+inline void EventSchedule::set_table_time(std::size_t i, double time) {
+    touched_ = true;
+    table_time_[i] = time < std::numeric_limits<double>::infinity()
+                         ? time
+                         : std::numeric_limits<double>::infinity();
+    key_changed(i);
+}
+
+inline void EventSchedule::set_time(std::size_t i, std::size_t k, double time, bool row_i_later) {
+    if (!(time < std::numeric_limits<double>::infinity()))
+        time = std::numeric_limits<double>::infinity();
+    const std::size_t n = size();
+    time_[i * n + k] = time_[k * n + i] = time;
+    const std::uint64_t bit_k = std::uint64_t{1} << (k % 64), bit_i = std::uint64_t{1} << (i % 64);
+    std::uint64_t& word_ik = finite_[i * words_ + k / 64];
+    std::uint64_t& word_ki = finite_[k * words_ + i / 64];
+    if (time < std::numeric_limits<double>::infinity()) {
+        word_ik |= bit_k;
+        word_ki |= bit_i;
+    } else {
+        word_ik &= ~bit_k;
+        word_ki &= ~bit_i;
+    }
+    if (!row_i_later)
+        row_changed(i, k, time);
+    row_changed(k, i, time);
+}
+
+// Row r's pair with `partner` now has `time`: its minimum moves only when that pair comes
+// earlier than it, or was it.
+inline void EventSchedule::row_changed(std::size_t r, std::size_t partner, double time) {
+    double& min_time = row_min_time_[r];
+    std::size_t& min_partner = row_min_partner_[r];
+    if (time < min_time || (time == min_time && time < std::numeric_limits<double>::infinity() &&
+                            partner < min_partner)) {
+        min_time = time;
+        min_partner = partner;
+    } else if (partner == min_partner) {
+        rescan_row(r);
+    } else {
+        return;
+    }
+    key_changed(r);
+}
+
+inline ScheduledEvent EventSchedule::earliest() {
+    for (const std::size_t i : dirty_keys_)
+        update_key(i);
+    dirty_keys_.clear();
+    for (std::size_t b = 0; b < block_first_.size(); ++b) {
+        if (!block_dirty_[b])
+            continue;
+        block_dirty_[b] = 0;
+        const Key* keys = keys_.data() + b * block;
+        std::size_t first = 0;
+        for (std::size_t k = 1; k < block; ++k)
+            first = schedule_detail::earlier(keys, first, k);
+        block_first_[b] = keys[first];
+    }
+    std::size_t first = 0;
+    for (std::size_t b = 1; b < block_first_.size(); ++b)
+        first = schedule_detail::earlier(block_first_.data(), first, b);
+    const Key& key = block_first_[first];
+    return {std::bit_cast<double>(key.time_bits), key.order};
+}
+
+inline void EventSchedule::update_key(std::size_t i) {
+    key_dirty_[i] = 0;
+    ScheduledEvent leaf = ScheduledEvent::table(table_time_[i], i);
+    const double pair_time = row_min_time_[i];
+    if (pair_time < std::numeric_limits<double>::infinity()) {
+        const ScheduledEvent pair = ScheduledEvent::pair(pair_time, i, row_min_partner_[i]);
+        if (pair < leaf)
+            leaf = pair;
+    }
+    // + 0.0 turns a -0 into +0; nothing scheduled is +infinity with order 0.
+    keys_[i] = leaf.time < std::numeric_limits<double>::infinity()
+                   ? Key{std::bit_cast<std::uint64_t>(leaf.time + 0.0), leaf.order}
+                   : Key{EventSchedule::infinity_bits, 0};
+    block_dirty_[i / block] = 1;
+}
+
+} // namespace termpool::core

@@ -1,0 +1,233 @@
+// The event schedule against a plain model of it: every pair's time in a matrix, candidates by
+// testing every box, the earliest event by scanning everything. With few balls (every box
+// tested) and with many (the grid, and long paths walked along their capsules) it must choose the
+// same event after every change. And the simulator's cost per event through `termpool bench`
+// rows is covered by test_simulate_cli.cpp; here, the grid never loses a pair in reach.
+#include <catch2/catch.hpp>
+#include <limits>
+#include <map>
+#include <termpool/random.hpp>
+
+#include "core/ball_grid.hpp"
+#include "core/event_schedule.hpp"
+
+using namespace termpool;
+using termpool::core::Box;
+using termpool::core::Capsule;
+using termpool::core::EventSchedule;
+using termpool::core::ScheduledEvent;
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr double diameter = 0.05715;
+
+// A ball as the model sees it: its box, its path inside the box, and whether it moves.
+struct ModelBall {
+    Box box;
+    Capsule path;
+    bool moving = false;
+    int version = 0; // bumped at each change, so that the fake contact times change with it
+};
+
+// A made-up contact for pair (i, k): some none, some bounds, some exact, all a pure function of
+// the two balls' versions, so that the model and the schedule get the same answers.
+core::ContactEstimate fake_contact(std::size_t i, std::size_t k, int vi, int vk) {
+    const std::size_t lo = std::min(i, k), hi = std::max(i, k);
+    const int vlo = i < k ? vi : vk, vhi = i < k ? vk : vi;
+    std::uint64_t h = lo * 1000003u + hi * 10007u + static_cast<std::uint64_t>(vlo) * 131u +
+                      static_cast<std::uint64_t>(vhi) * 7u;
+    h = Random(h).next();
+    if (h % 4 == 0)
+        return {infinity, true};
+    // Coarse times, so that ties between events happen and their order is tested.
+    return {static_cast<double>((h >> 8) % 16) * 0.125, h % 3 != 0};
+}
+
+bool boxes_in_reach(const Box& a, const Box& b) {
+    return a.min.x - diameter <= b.max.x && b.min.x - diameter <= a.max.x &&
+           a.min.y - diameter <= b.max.y && b.min.y - diameter <= a.max.y;
+}
+
+// Whether pair (i, k) can touch: boxes in reach, one of them moving, and the paths within a
+// diameter (the capsules hold the paths; the model keeps them whole, as boxes' diagonals).
+bool in_reach(const ModelBall& a, const ModelBall& b) {
+    return (a.moving || b.moving) && boxes_in_reach(a.box, b.box);
+}
+
+struct Model {
+    std::vector<ModelBall> balls;
+    std::map<std::pair<std::size_t, std::size_t>, double> pair_time;
+    std::vector<double> table_time;
+
+    double time(std::size_t i, std::size_t k) const {
+        const auto it = pair_time.find({std::min(i, k), std::max(i, k)});
+        return it == pair_time.end() ? infinity : it->second;
+    }
+    void set(std::size_t i, std::size_t k, double t) {
+        pair_time[{std::min(i, k), std::max(i, k)}] = t;
+    }
+    void refresh(std::size_t i, std::size_t done, double now) {
+        for (std::size_t k = 0; k < balls.size(); ++k) {
+            if (k == i || k == done)
+                continue;
+            double t = infinity;
+            if (in_reach(balls[i], balls[k]))
+                t = now + fake_contact(i, k, balls[i].version, balls[k].version).time;
+            set(i, k, t);
+        }
+    }
+    ScheduledEvent earliest() const {
+        ScheduledEvent first{infinity, 0};
+        for (std::size_t i = 0; i < balls.size(); ++i) {
+            const ScheduledEvent e = ScheduledEvent::table(table_time[i], i);
+            if (e.time < infinity && e < first)
+                first = e;
+        }
+        for (const auto& [pair, t] : pair_time) {
+            const ScheduledEvent e = ScheduledEvent::pair(t, pair.first, pair.second);
+            if (t < infinity && e < first)
+                first = e;
+        }
+        return first;
+    }
+};
+
+// A box and a capsule along its diagonal covering it: at rest a point, moving a stretch of up to
+// `longest` metres (so that some boxes are long enough to be walked along their paths).
+void place(Random& rng, ModelBall& b, double table_size, double longest) {
+    const Vec2 from{rng.uniform(0, table_size), rng.uniform(0, table_size)};
+    Vec2 to = from;
+    if (b.moving) {
+        const double length =
+            rng.uniform(0, 1) < 0.3 ? rng.uniform(0, longest) : rng.uniform(0, 0.1);
+        const double angle = rng.uniform(0, 6.283185307179586);
+        to = from + Vec2{length * std::cos(angle), length * std::sin(angle)};
+    }
+    b.box = core::box_of(from, to);
+    // A bulge that covers the whole box: the model tests boxes only.
+    b.path = {from, to, std::max(b.box.max.x - b.box.min.x, b.box.max.y - b.box.min.y)};
+}
+
+void check_against_model(std::size_t count, double table_size, std::uint64_t seed) {
+    Random rng(seed);
+    EventSchedule schedule(count, diameter);
+    Model model;
+    model.balls.resize(count);
+    model.table_time.assign(count, infinity);
+    double now = 0;
+    auto contact_for = [&](std::size_t i) {
+        return [&, i](std::size_t k) {
+            return fake_contact(i, k, model.balls[i].version, model.balls[k].version);
+        };
+    };
+    for (std::size_t i = 0; i < count; ++i) {
+        model.balls[i].moving = rng.uniform(0, 1) < 0.5;
+        place(rng, model.balls[i], table_size, table_size);
+        schedule.set_reach(i, model.balls[i].box, model.balls[i].path);
+        schedule.set_moving(i, model.balls[i].moving);
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        if (model.balls[i].moving) {
+            schedule.refresh(i, i, now, contact_for(i));
+            model.refresh(i, i, now);
+        }
+    }
+    for (int step = 0; step < 1500; ++step) {
+        const ScheduledEvent got = schedule.earliest();
+        const ScheduledEvent want = model.earliest();
+        INFO("balls " << count << ", seed " << seed << ", step " << step);
+        REQUIRE(got.time == want.time);
+        REQUIRE(got.order == want.order);
+        // A change like the world's: one or two balls take new pieces (new boxes, a new table
+        // event) and their pairs are searched again; or a bound is made exact.
+        now += 0.01;
+        if (got.time < infinity && got.is_pair() && rng.uniform(0, 1) < 0.2) {
+            const double exact = got.time + rng.uniform(0, 0.5);
+            const double t = rng.uniform(0, 1) < 0.3 ? infinity : exact;
+            schedule.set_exact(got.i(), got.j(), t);
+            model.set(got.i(), got.j(), t);
+            continue;
+        }
+        const std::size_t a = rng.below(count);
+        const std::size_t b = rng.uniform(0, 1) < 0.5 ? a : rng.below(count);
+        for (const std::size_t i : {a, b}) {
+            ModelBall& ball = model.balls[i];
+            ++ball.version;
+            ball.moving = rng.uniform(0, 1) < 0.6;
+            if (rng.uniform(0, 1) < 0.05) {
+                ball.box = core::empty_box(); // pocketed
+                ball.moving = false;
+                ball.path = {};
+            } else {
+                place(rng, ball, table_size, table_size);
+            }
+            model.table_time[i] = rng.uniform(0, 1) < 0.3 ? infinity : now + rng.uniform(0, 2);
+            schedule.set_reach(i, ball.box, ball.path);
+            schedule.set_moving(i, ball.moving);
+            schedule.set_table_time(i, model.table_time[i]);
+        }
+        schedule.refresh(a, a, now, contact_for(a));
+        model.refresh(a, a, now);
+        if (b != a) {
+            schedule.refresh(b, a, now, contact_for(b));
+            model.refresh(b, a, now);
+        }
+    }
+}
+
+} // namespace
+
+TEST_CASE("event schedule: the earliest event as a plain scan finds it", "[core][schedule]") {
+    // 16 and 40 balls test every box; 100 and 200 go through the grid.
+    for (const std::size_t count :
+         {std::size_t{16}, std::size_t{40}, std::size_t{100}, std::size_t{200}}) {
+        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+            // Room per ball as on a pool table, so that boxes meet often but not always.
+            const double table_size = 0.45 * std::sqrt(static_cast<double>(count));
+            check_against_model(count, table_size, seed * 7919 + count);
+        }
+    }
+}
+
+TEST_CASE("ball grid: a long path's search finds every ball within reach of it",
+          "[core][schedule]") {
+    // Balls at rest scattered over 10 m; one long path across; every ball whose centre comes
+    // within a diameter of the path must be visited.
+    Random rng(17);
+    constexpr std::size_t count = 400;
+    const double margin = 0.5 * diameter * (1 + 1e-6) + 1e-9;
+    core::BallGrid grid(count + 1, 4 * diameter, margin);
+    std::vector<Box> boxes(count + 1);
+    for (std::size_t k = 0; k < count; ++k) {
+        const Vec2 p{rng.uniform(0, 10), rng.uniform(0, 10)};
+        boxes[k] = {p, p};
+        grid.moved(k);
+    }
+    for (int trial = 0; trial < 200; ++trial) {
+        const Vec2 from{rng.uniform(0, 10), rng.uniform(0, 10)};
+        const Vec2 to{rng.uniform(0, 10), rng.uniform(0, 10)};
+        const double bulge = rng.uniform(0, 1) < 0.5 ? 0 : rng.uniform(0, 0.2);
+        // The box of a parabola's chord with its bulge: it holds the path.
+        Box box = core::box_of(from, to);
+        box.min = box.min - Vec2{bulge, bulge};
+        box.max = box.max + Vec2{bulge, bulge};
+        boxes[count] = box;
+        grid.moved(count);
+        std::vector<char> visited(count + 1, 0);
+        grid.near(count, boxes, Capsule{from, to, bulge}, [&](std::size_t k) { visited[k] = 1; });
+        const Vec2 d = to - from;
+        for (std::size_t k = 0; k < count; ++k) {
+            const Vec2 p = boxes[k].min;
+            const double s = std::clamp(dot(p - from, d) / dot(d, d), 0.0, 1.0);
+            if (length(p - (from + d * s)) <= diameter + bulge) {
+                INFO("trial " << trial << ", ball " << k);
+                REQUIRE(visited[k]);
+            }
+        }
+    }
+}
+
+TEST_CASE("event schedule: more balls than its indices hold are refused", "[core][schedule]") {
+    CHECK_THROWS_AS(EventSchedule(ScheduledEvent::max_balls + 1, diameter), std::length_error);
+}
