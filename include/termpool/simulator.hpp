@@ -98,7 +98,7 @@ public:
     ~World();
     /// Worlds are values: copying one copies its state.
     World(const World& other);
-    /// Copy assignment.
+    /// Copy assignment, into this world's memory.
     World& operator=(const World& other);
     /// Move construction.
     World(World&&) noexcept;
@@ -136,10 +136,10 @@ private:
 ShotResult simulate_shot(const Table& table, const PhysicsParams& params, std::vector<Ball> balls,
                          const Strike& strike, Trajectory* trajectory = nullptr);
 
-/// The same on `world`, reset to `balls` first (World::reset); `result` is overwritten and keeps
-/// its memory. For searches that simulate many shots.
-void simulate_shot(World& world, const std::vector<Ball>& balls, const Strike& strike,
-                   ShotResult& result);
+/// The same on `world` as it stands (set out by its constructor, World::reset, or a copy of a
+/// world set out once): `result` is overwritten and keeps its memory, and so does the world. For
+/// searches that simulate many shots: nothing is allocated per shot once they are warm.
+void simulate_shot(World& world, const Strike& strike, ShotResult& result);
 
 /// Kinetic energy of a ball, translation plus rotation (solid sphere), J.
 double kinetic_energy(const Ball& ball, double radius);

@@ -117,9 +117,9 @@ double snooker_points_score(const Verdict& v, int shooter) {
 // side). Plays the strike once without noise up to the first contact and, when that is with
 // `object`, turns the ghost ball by the object ball's error: the aim that sends it at
 // `aim_point`, to first order. Otherwise the strike's own aim.
-double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue,
+double corrected_aim_deg(ShotTrial& trials, const Game& game, const Strike& strike, const Ball& cue,
                          const Ball& object, Vec2 aim_point) {
-    World world(game.table(), game.params(), game.balls());
+    World& world = trials.fresh_world();
     if (!world.strike(strike))
         return strike.angle_deg;
     // A direct shot's first contact comes within a few events (motion transitions, spin).
@@ -271,6 +271,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         double mean() const { return total / samples; }
     };
     std::vector<Candidate> candidates;
+    ShotTrial trials(game);
     auto add = [&](const Ball& object, Vec2 aim_point, int pocket, const std::vector<double>& at) {
         // Skip cuts thinner than about 80 degrees, and shots another ball is in the way of.
         const std::optional<Vec2> line =
@@ -283,7 +284,8 @@ ComputerShot ComputerPlayer::search(const Game& game) {
                 // The players who plan position allow for throw and squirt as well; pro stays
                 // above hard by its steadier stroke and its deeper search.
                 if (level_ == Level::pro || level_ == Level::hard)
-                    strike.angle_deg = corrected_aim_deg(game, strike, *cue, object, aim_point);
+                    strike.angle_deg =
+                        corrected_aim_deg(trials, game, strike, *cue, object, aim_point);
                 candidates.push_back({strike, {{object.id, pocket, false}}});
             }
     };
@@ -324,8 +326,8 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     rng_.next();
     const int shooter = game.shooter();
     auto sample = [&](Candidate& c) {
-        Game trial = game;
-        const Verdict v = trial.play(noisy(c.strike, game.params(), noise), c.call);
+        const Verdict v = trials.play(noisy(c.strike, game.params(), noise), c.call);
+        const Game& trial = trials.after();
         ++simulations_;
         if (snooker) {
             c.total += snooker_points_score(v, shooter);

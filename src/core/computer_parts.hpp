@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "shot_lines.hpp"
+#include "shot_trial.hpp"
 
 namespace termpool {
 
@@ -21,7 +22,8 @@ int samples_per_candidate(Level level);
 // The ghost-ball aim of `strike` at `object`, turned by the object ball's error (throw, and the
 // squirt of any side) so that it leaves towards `aim_point`, to first order; the strike's own
 // aim when its first contact is not with `object`.
-double corrected_aim_deg(const Game& game, const Strike& strike, const Ball& cue,
+// `trials` are of `game`: the strike is played on a fresh copy of its world.
+double corrected_aim_deg(ShotTrial& trials, const Game& game, const Strike& strike, const Ball& cue,
                          const Ball& object, Vec2 aim_point);
 
 // The best of `rate(target, cue, object, pocket)` over the balls on in `game` and the pockets,

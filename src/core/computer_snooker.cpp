@@ -39,14 +39,13 @@ constexpr double widest_window_deg = 1.28;
 // from `stroke`'s aim: how far they reach on the side of `sign` (+1 or -1), in degrees; 0
 // when the aim itself does not pot it. Doubling steps out to the first miss, then three
 // halvings of the last step.
-double window_edge(const Game& game, Strike stroke, const ShotCall& call, int target, int sign,
-                   std::uint64_t& simulations) {
+double window_edge(ShotTrial& trials, const Game& game, Strike stroke, const ShotCall& call,
+                   int target, int sign, std::uint64_t& simulations) {
     const int shooter = game.shooter();
     const double centre = stroke.angle_deg;
     auto pots = [&](double offset) {
-        Game trial = game;
         stroke.angle_deg = centre + sign * offset;
-        const Verdict v = trial.play(stroke, call);
+        const Verdict v = trials.play(stroke, call);
         ++simulations;
         return v.foul == Foul::none && v.next_shooter == shooter &&
                std::ranges::count(v.pocketed, target) > 0;
@@ -87,6 +86,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
     const std::vector<double> bank_speeds{2.5, 4.0};
     const std::vector<double> spins{-0.45, -0.2, 0.0, 0.2, 0.45};
     const std::size_t windows_per_pot = level_ == Level::pro ? 4 : 3;
+    ShotTrial trials(game);
 
     auto consider = [&](const Strike& strike, const ShotCall& call, double value) {
         if (value > best.score) {
@@ -96,8 +96,8 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
         }
     };
     auto outcome = [&](const Strike& strike, const ShotCall& call) {
-        Game trial = game;
-        const Verdict v = trial.play(strike, call);
+        const Verdict v = trials.play(strike, call);
+        const Game& trial = trials.after();
         ++simulations_;
         return snooker_shot_value(v, shooter, trial, sigma);
     };
@@ -124,9 +124,9 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
         for (const double speed : paces)
             for (const double follow : spins) {
                 Strike strike{speed, aim_degrees(*line), 0, follow};
-                strike.angle_deg = corrected_aim_deg(game, strike, *cue, object, aim_point);
-                Game trial = game;
-                const Verdict v = trial.play(strike, call);
+                strike.angle_deg = corrected_aim_deg(trials, game, strike, *cue, object, aim_point);
+                const Verdict v = trials.play(strike, call);
+                const Game& trial = trials.after();
                 ++simulations_;
                 if (v.foul == Foul::none && v.next_shooter == shooter &&
                     std::ranges::count(v.pocketed, object.id) > 0)
@@ -137,17 +137,18 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
         if (strokes.size() > windows_per_pot)
             strokes.resize(windows_per_pot);
         for (Stroke& stroke : strokes) {
-            const double above = window_edge(game, stroke.strike, call, object.id, 1, simulations_);
+            const double above =
+                window_edge(trials, game, stroke.strike, call, object.id, 1, simulations_);
             const double below =
-                window_edge(game, stroke.strike, call, object.id, -1, simulations_);
+                window_edge(trials, game, stroke.strike, call, object.id, -1, simulations_);
             const double middle = (above - below) / 2, half = (above + below) / 2;
             const double chance = chance_within(half, sigma);
             Strike strike = stroke.strike;
             double made = stroke.made;
             if (middle != 0) {
                 strike.angle_deg += middle;
-                Game trial = game;
-                const Verdict v = trial.play(strike, call);
+                const Verdict v = trials.play(strike, call);
+                const Game& trial = trials.after();
                 ++simulations_;
                 if (v.foul != Foul::none || v.next_shooter != shooter ||
                     std::ranges::count(v.pocketed, object.id) == 0) {
@@ -218,8 +219,8 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
     // there is a pot, which the pot search judges by its chance: dropped. The best third (at
     // most sampled_at_most) are then played under the noise, worth the mean of those plays.
     for (Sampled& c : sampled) {
-        Game trial = game;
-        const Verdict v = trial.play(c.strike, c.call);
+        const Verdict v = trials.play(c.strike, c.call);
+        const Game& trial = trials.after();
         ++simulations_;
         c.plain = snooker_shot_value(v, shooter, trial, sigma);
         c.pots = c.call.call.safety && v.foul == Foul::none && v.next_shooter == shooter;
@@ -235,8 +236,8 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
     auto mean_of = [&](const Sampled& c, int plays) {
         double total = 0;
         for (int k = 0; k < plays; ++k) {
-            Game trial = game;
-            const Verdict v = trial.play(noisy(c.strike, game.params(), noise), c.call);
+            const Verdict v = trials.play(noisy(c.strike, game.params(), noise), c.call);
+            const Game& trial = trials.after();
             ++simulations_;
             total += snooker_shot_value(v, shooter, trial, sigma);
         }

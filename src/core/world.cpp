@@ -322,8 +322,14 @@ World::World(const Table& table, const PhysicsParams& params, std::vector<Ball> 
 World::~World() = default;
 World::World(const World& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
 World& World::operator=(const World& other) {
-    if (this != &other)
-        impl_ = std::make_unique<Impl>(*other.impl_);
+    // Into the existing state, so that its vectors keep their memory: a search copies a world
+    // set out once into a scratch world before each of its shots.
+    if (this != &other) {
+        if (impl_ && other.impl_)
+            *impl_ = *other.impl_;
+        else
+            impl_ = other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr;
+    }
     return *this;
 }
 World::World(World&&) noexcept = default;
@@ -401,9 +407,7 @@ ShotResult simulate_shot(const Table& table, const PhysicsParams& params, std::v
     return result;
 }
 
-void simulate_shot(World& world, const std::vector<Ball>& balls, const Strike& strike,
-                   ShotResult& result) {
-    world.reset(balls);
+void simulate_shot(World& world, const Strike& strike, ShotResult& result) {
     world.strike(strike);
     result.events.clear();
     while (const auto event = world.step())

@@ -1,0 +1,20 @@
+#include "shot_trial.hpp"
+
+namespace termpool {
+
+ShotTrial::ShotTrial(const Game& game)
+    : game_(game), base_(game.table(), game.params(), game.balls()), scratch_(base_), after_(game) {
+}
+
+World& ShotTrial::fresh_world() {
+    scratch_ = base_;
+    return scratch_;
+}
+
+Verdict ShotTrial::play(const Strike& strike, const ShotCall& call) {
+    simulate_shot(fresh_world(), strike, result_);
+    after_ = game_;
+    return after_.apply(call, result_);
+}
+
+} // namespace termpool
