@@ -9,7 +9,9 @@
 // A change that moves a hash changes what saved games replay into: it must say so in its commit
 // message, raise `physics_version` (simulator.hpp) and update the hashes here on purpose. The
 // failing test prints the new ones. (A change of the inputs alone, such as the stress shots'
-// draws put in order, moves its hash without changing the physics.)
+// draws put in order, moves its hash without changing the physics; so does a change of how the
+// computer chooses its shots, in the seeded games: a record keeps the strikes, not the choices,
+// and replays the same. Issue 27's pro, which plays its leaves out, moved the pro game's.)
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <string>
@@ -57,7 +59,7 @@ constexpr Expected expected_hashes[] = {
     {"a break then 300 random shots on one table", 0x9bc7c460e8894dfc},
     {"2000 stress shots of every model", 0x67e5413d0d5483a0},
     {"a seeded 8-ball game, hard against easy", 0x4c86ee5880cfd9b6},
-    {"a seeded 9-ball game, pro against medium", 0x9dd1639b27436512},
+    {"a seeded 9-ball game, pro against medium", 0x7b587befaa15fb81},
 };
 
 void add(StateDigest& d, const ShotResult& r) {

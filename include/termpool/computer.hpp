@@ -53,10 +53,17 @@ private:
     Strike break_strike(const Game& game, const Ball& cue) const;
     Strike snooker_break_strike(const Game& game) const;
     Vec2 place_break(const Game& game);
+    // Pro's pool break: the pace and line that break best from where the cue ball is, and what
+    // that break is worth (`value`).
+    Strike searched_break(const Game& game, const Ball& cue, double& value);
 
     Level level_;
     Random rng_;
     std::uint64_t simulations_ = 0;
+    // Pro plays the leaves of its candidates out (two shots ahead) when it picks a shot, but not
+    // while it compares spots for the cue ball or the options of a choice, each a whole search:
+    // that keeps every decision within a second.
+    bool plays_leaves_out_ = true;
 };
 
 } // namespace termpool

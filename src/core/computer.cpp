@@ -11,6 +11,7 @@
 #include <termpool/snooker_layout.hpp>
 
 #include "computer_parts.hpp"
+#include "position_play.hpp"
 #include "shot_lines.hpp"
 #include "snooker_leave.hpp"
 
@@ -110,6 +111,19 @@ double snooker_points_score(const Verdict& v, int shooter) {
     return v.next_shooter == shooter ? s + 100 : s;
 }
 
+// Turns playing leaves out off for as long as it lives.
+class LeavesNotPlayedOut {
+public:
+    explicit LeavesNotPlayedOut(bool& flag) : flag_(flag), was_(flag) { flag_ = false; }
+    ~LeavesNotPlayedOut() { flag_ = was_; }
+    LeavesNotPlayedOut(const LeavesNotPlayedOut&) = delete;
+    LeavesNotPlayedOut& operator=(const LeavesNotPlayedOut&) = delete;
+
+private:
+    bool& flag_;
+    bool was_;
+};
+
 } // namespace
 
 // The ghost-ball aim sends the object ball along the line of centres, but it leaves a little
@@ -205,7 +219,7 @@ int samples_per_candidate(Level level) {
     case Level::hard:
         return 6;
     case Level::pro:
-        return 10;
+        return 16;
     }
     return 1;
 }
@@ -249,6 +263,10 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     if (!cue)
         return best;
     if (game.is_break()) {
+        if (level_ == Level::pro && game.type() != GameType::snooker) {
+            best.planned = searched_break(game, *cue, best.score);
+            return best;
+        }
         best.planned = break_strike(game, *cue);
         best.score = 0;
         return best;
@@ -272,6 +290,8 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     };
     std::vector<Candidate> candidates;
     ShotTrial trials(game);
+    ShotTrial ahead(game); // pro: the leaves' next shots
+    const double sigma = direction_sigma_deg(level_);
     auto add = [&](const Ball& object, Vec2 aim_point, int pocket, const std::vector<double>& at) {
         // Skip cuts thinner than about 80 degrees, and shots another ball is in the way of.
         const std::optional<Vec2> line =
@@ -337,7 +357,14 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         double s = score(v, shooter);
         // Position: a kept table is worth more with a good shot to follow, and a table handed
         // over is worth less the better the opponent's shot (ball in hand: as good as it gets).
-        if (v.winner == 0 && v.chooser == 0 && level_ != Level::easy) {
+        // Pro plays the leave's best next pots out (two shots ahead) and judges the opponent's
+        // chance by its spread; the others rate the leave by its best open pot's cut and length.
+        if (v.winner == 0 && v.chooser == 0 && level_ == Level::pro && plays_leaves_out_) {
+            if (v.next_shooter == shooter)
+                s += 60.0 * leave_value(trial, sigma, ahead, simulations_);
+            else
+                s -= 60.0 * best_pot_chance(trial, sigma);
+        } else if (v.winner == 0 && v.chooser == 0 && level_ != Level::easy) {
             if (v.next_shooter == shooter)
                 s += 60.0 * next_shot_quality(trial);
             else
@@ -360,8 +387,12 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     const std::size_t keep = std::max<std::size_t>(1, (candidates.size() + 2) / 3);
     if (candidates.size() > keep)
         candidates.resize(keep);
+    // A quick search (comparing spots or options) samples as hard does.
+    const int samples = plays_leaves_out_ ? samples_per_candidate(level_)
+                                          : std::min(samples_per_candidate(level_),
+                                                     samples_per_candidate(Level::hard));
     for (Candidate& c : candidates)
-        while (c.samples < samples_per_candidate(level_))
+        while (c.samples < samples)
             sample(c);
     if (!candidates.empty()) {
         const Candidate& chosen = *std::ranges::min_element(candidates, better);
@@ -428,6 +459,38 @@ Strike ComputerPlayer::snooker_break_strike(const Game& game) const {
     return {7.0, break_off_aim_deg(game.balls(), game.params().ball_radius, break_clip), 0, 0};
 }
 
+Strike ComputerPlayer::searched_break(const Game& game, const Ball& cue, double& value) {
+    // A few paces and lines into the apex ball, each broken several times under noise, worth
+    // the referee's view of it and, with the table kept, the best pot it leaves.
+    const Strike full = break_strike(game, cue);
+    const int shooter = game.shooter();
+    const double sigma = direction_sigma_deg(level_);
+    const int tries = samples_per_candidate(level_);
+    Random noise = rng_;
+    rng_.next();
+    ShotTrial trials(game);
+    Strike best = full;
+    value = -1e18;
+    for (const double pace : {9.0, 10.5, 12.0, 13.5})
+        for (const double turn_deg : {-0.6, 0.0, 0.6}) {
+            const Strike strike{pace, full.angle_deg + turn_deg, 0, 0};
+            double total = 0;
+            for (int t = 0; t < tries; ++t) {
+                const Verdict v = trials.play(noisy(strike, game.params(), noise), {});
+                ++simulations_;
+                double s = score(v, shooter);
+                if (v.winner == 0 && v.chooser == 0 && v.next_shooter == shooter)
+                    s += 60.0 * best_pot_chance(trials.after(), sigma);
+                total += s;
+            }
+            if (total / tries > value) {
+                value = total / tries;
+                best = strike;
+            }
+        }
+    return best;
+}
+
 Vec2 ComputerPlayer::place_break(const Game& game) {
     // Spots across the kitchen at the head string; each break tried a few times under noise,
     // scored by the referee (a ball down and the table kept is what a break is for).
@@ -450,6 +513,15 @@ Vec2 ComputerPlayer::place_break(const Game& game) {
             continue;
         Ball cue;
         cue.position = spot;
+        if (level_ == Level::pro && !in_d) {
+            double value = 0;
+            searched_break(trial, cue, value);
+            if (value > best) {
+                best = value;
+                best_spot = spot;
+            }
+            continue;
+        }
         const Strike strike = break_strike(trial, cue);
         double total = 0;
         for (int t = 0; t < tries; ++t) {
@@ -475,6 +547,7 @@ Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
         spots = snooker_spots_to_search(game, std::move(spots), direction_sigma_deg(level_));
     Vec2 best_spot = spots.empty() ? Vec2{} : spots.front();
     double best = -1e18;
+    const LeavesNotPlayedOut quick(plays_leaves_out_);
     for (const Vec2 spot : spots) {
         Game trial = game;
         if (!trial.place_cue_ball(spot))
@@ -499,6 +572,7 @@ Choice ComputerPlayer::choose(const Game& game) {
     const int me = game.chooser();
     Choice best = game.choices().front();
     double best_value = -1e18;
+    const LeavesNotPlayedOut quick(plays_leaves_out_);
     for (const Choice option : game.choices()) {
         Game after = game;
         if (!after.choose(option))

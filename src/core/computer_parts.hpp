@@ -16,7 +16,7 @@ namespace termpool {
 // noise of `level`, degrees: aim and squirt together.
 double direction_sigma_deg(Level level);
 
-// Noisy samples of each promising candidate at `level` (1, 3, 6, 10).
+// Noisy samples of each promising candidate at `level` (1, 3, 6, 16).
 int samples_per_candidate(Level level);
 
 // The ghost-ball aim of `strike` at `object`, turned by the object ball's error (throw, and the

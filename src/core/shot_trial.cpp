@@ -3,7 +3,12 @@
 namespace termpool {
 
 ShotTrial::ShotTrial(const Game& game)
-    : game_(game), base_(game.table(), game.params(), game.balls()), scratch_(base_), after_(game) {
+    : game_(&game), base_(game.table(), game.params(), game.balls()), scratch_(base_),
+      after_(game) {}
+
+void ShotTrial::rebase(const Game& game) {
+    game_ = &game;
+    base_.reset(game.balls());
 }
 
 World& ShotTrial::fresh_world() {
@@ -13,7 +18,7 @@ World& ShotTrial::fresh_world() {
 
 Verdict ShotTrial::play(const Strike& strike, const ShotCall& call) {
     simulate_shot(fresh_world(), strike, result_);
-    after_ = game_;
+    after_ = *game_;
     return after_.apply(call, result_);
 }
 

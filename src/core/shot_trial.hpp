@@ -13,6 +13,8 @@ class ShotTrial {
 public:
     /// Trials from `game` as it stands; `game` must outlive the trials and not change.
     explicit ShotTrial(const Game& game);
+    /// Trials from `game` from now on (on the same table, with the same physics).
+    void rebase(const Game& game);
 
     /// `strike` with `call` played from the game as it was given (Game::play, to the bit); the
     /// game after it is after().
@@ -23,7 +25,7 @@ public:
     World& fresh_world();
 
 private:
-    const Game& game_;
+    const Game* game_;
     World base_;
     World scratch_;
     ShotResult result_;
