@@ -308,7 +308,7 @@ TEST_CASE("simulate refuses unreadable files and extra arguments", "[cli]") {
 
 TEST_CASE("bench runs small workloads and refuses bad options", "[cli]") {
     TempDir dir;
-    const Run r = run(dir, "bench --breaks 3 --shots 10 --seed 5");
+    const Run r = run(dir, "bench --breaks 3 --shots 10 --seed 5 --ball-runs 2");
     INFO(r.err);
     CHECK(r.status == 0);
     CHECK(r.out.find("breaks") != std::string::npos);
@@ -319,13 +319,41 @@ TEST_CASE("bench runs small workloads and refuses bad options", "[cli]") {
     CHECK(std::regex_search(r.out,
                             std::regex(R"(breaks \(12 m/s\) +3 +[0-9.]+ +[0-9.]+ +[0-9.]+ )")));
 
-    for (const char* bad : {"--breaks", "--breaks 0", "--shots -1", "--seed x", "--fast"}) {
+    for (const char* bad :
+         {"--breaks", "--breaks 0", "--shots -1", "--seed x", "--fast", "--balls 1", "--balls 16,x",
+          "--balls 16,,32", "--balls 2000", "--balls", "--ball-runs -1"}) {
         const Run b = run(dir, std::string("bench ") + bad);
         INFO(bad);
         CHECK(b.status == 2);
         CHECK(b.out.empty());
         CHECK(b.err.find("usage:") != std::string::npos);
     }
+}
+
+TEST_CASE("bench times an event against the number of balls on a scaled table", "[cli]") {
+    TempDir dir;
+    const Run r = run(dir, "bench --breaks 1 --shots 1 --balls 16,40 --ball-runs 3");
+    INFO(r.out << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("cost per event against the number of balls") != std::string::npos);
+    // A row per count: events a run, ns an event of wall and CPU time, CPU median a run.
+    for (const char* balls : {"16", "40"})
+        CHECK(std::regex_search(r.out, std::regex(std::string("\n") + balls +
+                                                  R"( +[0-9.]+ +[0-9.]+ +[0-9.]+ +[0-9.]+\n)")));
+    CHECK(std::regex_search(r.out,
+                            std::regex(R"(40 balls: [0-9.]+ times the CPU cost per event of 16)")));
+    // The same runs give the same outcomes, whatever the clock says.
+    const Run again = run(dir, "bench --breaks 1 --shots 1 --balls 16,40 --ball-runs 3");
+    const auto hash_line = [](const std::string& out) {
+        const std::size_t at = out.find("hash of these outcomes:");
+        return at == std::string::npos ? std::string() : out.substr(at, out.find('\n', at) - at);
+    };
+    CHECK(!hash_line(r.out).empty());
+    CHECK(hash_line(r.out) == hash_line(again.out));
+    // No rows with --ball-runs 0.
+    const Run none = run(dir, "bench --breaks 1 --shots 1 --ball-runs 0");
+    CHECK(none.status == 0);
+    CHECK(none.out.find("cost per event") == std::string::npos);
 }
 
 TEST_CASE("simulate judges a break: well-formed referee lines after rest", "[cli]") {

@@ -26,21 +26,20 @@
 namespace termpool::cli {
 namespace {
 
-constexpr const char* usage =
-    "usage: termpool bench [--breaks N] [--shots N] [--seed S]\n"
-    "                      [--balls LIST] [--ball-runs N]\n"
-    "       termpool bench --render\n"
-    "  --breaks N  seeded 8-ball breaks to time, and as many snooker\n"
-    "              breaks (default 1000, N >= 1)\n"
-    "  --shots N   random shots on the break layouts of each (default\n"
-    "              10000)\n"
-    "  --seed S    seed of the break angles and the shots (default 1)\n"
-    "  --balls LIST  ball counts of the cost-per-event rows, each 2..1024\n"
-    "              (default 16,32,64,128)\n"
-    "  --ball-runs N  breaks per ball count (default 100; 0: no rows)\n"
-    "  --render    time the terminal front end instead: frame\n"
-    "              composition, and the bytes a terminal receives\n"
-    "              per frame of a break (through a pty)\n";
+constexpr const char* usage = "usage: termpool bench [--breaks N] [--shots N] [--seed S]\n"
+                              "                      [--balls LIST] [--ball-runs N]\n"
+                              "       termpool bench --render\n"
+                              "  --breaks N  seeded 8-ball breaks to time, and as many snooker\n"
+                              "              breaks (default 1000, N >= 1)\n"
+                              "  --shots N   random shots on the break layouts of each (default\n"
+                              "              10000)\n"
+                              "  --seed S    seed of the break angles and the shots (default 1)\n"
+                              "  --balls LIST  ball counts of the cost-per-event rows, up to 16,\n"
+                              "              each 2..1024 (default 16,32,64,128)\n"
+                              "  --ball-runs N  breaks per ball count (default 100; 0: no rows)\n"
+                              "  --render    time the terminal front end instead: frame\n"
+                              "              composition, and the bytes a terminal receives\n"
+                              "              per frame of a break (through a pty)\n";
 
 constexpr double break_speed = 12.0;        // m/s, a firm break
 constexpr double break_angle_jitter = 0.5;  // degrees either way, so that breaks differ
@@ -58,7 +57,8 @@ constexpr double snooker_break_angle_jitter = 0.1; // degrees either way
 // on the 9 ft table scaled by sqrt(N / 16) each way, so that 16 balls break on the 9 ft table
 // itself and the balls have the same room per ball at every N; the break as the 8-ball one.
 constexpr std::size_t most_balls = 1024;
-constexpr double rack_gap = 2e-4; // m between neighbours in the triangle
+constexpr std::size_t most_ball_counts = 16; // rows in one run
+constexpr double rack_gap = 2e-4;            // m between neighbours in the triangle
 
 struct Options {
     std::uint64_t breaks = 1000;
@@ -69,14 +69,15 @@ struct Options {
     bool render = false;
 };
 
-/// "16,32,64" as ball counts, each 2..most_balls; nothing for anything else.
+/// "16,32,64" as ball counts, each 2..most_balls, at most most_ball_counts of them; nothing for
+/// anything else.
 std::optional<std::vector<std::size_t>> parse_ball_counts(const std::string& text) {
     std::vector<std::size_t> counts;
     std::size_t start = 0;
     while (start <= text.size()) {
         const std::size_t comma = std::min(text.find(',', start), text.size());
         const std::optional<std::uint64_t> n = parse_uint64(text.substr(start, comma - start));
-        if (!n || *n < 2 || *n > most_balls)
+        if (!n || *n < 2 || *n > most_balls || counts.size() == most_ball_counts)
             return std::nullopt;
         counts.push_back(static_cast<std::size_t>(*n));
         start = comma + 1;
@@ -109,9 +110,9 @@ std::optional<Options> parse_options(const std::vector<std::string>& args, bool&
             const auto counts = value ? parse_ball_counts(*value) : std::nullopt;
             if (!counts) {
                 std::fprintf(stderr,
-                             "termpool bench: --balls needs ball counts 2..%zu, such as "
-                             "16,32,64,128\n",
-                             most_balls);
+                             "termpool bench: --balls needs up to %zu ball counts 2..%zu, "
+                             "such as 16,32,64,128\n",
+                             most_ball_counts, most_balls);
                 return std::nullopt;
             }
             options.balls = *counts;
