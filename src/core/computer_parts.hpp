@@ -26,29 +26,35 @@ int samples_per_candidate(Level level);
 double corrected_aim_deg(ShotTrial& trials, const Game& game, const Strike& strike, const Ball& cue,
                          const Ball& object, Vec2 aim_point);
 
+// Calls `visit(target, cue, object, pocket, at)` for every legal ball on the table in `game`
+// and every pocket (`at`: its position), the cue ball on the table; nothing without one.
+template <class Visit> void for_each_pot(const Game& game, Visit visit) {
+    const Ball* cue = ball_in_play(game.balls(), 0);
+    if (!cue)
+        return;
+    for (const int target : game.legal_targets()) {
+        const Ball* object = ball_in_play(game.balls(), target);
+        if (!object)
+            continue;
+        for (int pocket = 1; pocket <= 6; ++pocket)
+            visit(target, *cue, *object, pocket, game.table().pockets[pocket - 1].position);
+    }
+}
+
 // The best of `rate(target, cue, object, pocket)` over the balls on in `game` and the pockets,
 // counting only the pots whose ghost-ball line from the cue ball and whose line on to the
 // pocket are clear; 0 at worst, and with no cue ball on the table. `rate` returns 0 for a pot
 // not worth looking at.
 template <class Rate> double best_clear_pot(const Game& game, Rate rate) {
-    const Ball* cue = ball_in_play(game.balls(), 0);
-    if (!cue)
-        return 0;
     const double R = game.params().ball_radius;
     double best = 0;
-    for (const int target : game.legal_targets()) {
-        const Ball* object = ball_in_play(game.balls(), target);
-        if (!object)
-            continue;
-        for (int pocket = 1; pocket <= 6; ++pocket) {
-            const Vec2 at = game.table().pockets[pocket - 1].position;
-            const Vec2 ghost = object->position - normalized(at - object->position) * (2 * R);
-            const double value = rate(target, *cue, *object, pocket);
-            if (value > best && !path_blocked(game.balls(), cue->position, ghost, {0, target}, R) &&
-                !path_blocked(game.balls(), object->position, at, {0, target}, R))
-                best = value;
-        }
-    }
+    for_each_pot(game, [&](int target, const Ball& cue, const Ball& object, int pocket, Vec2 at) {
+        const Vec2 ghost = object.position - normalized(at - object.position) * (2 * R);
+        const double value = rate(target, cue, object, pocket);
+        if (value > best && !path_blocked(game.balls(), cue.position, ghost, {0, target}, R) &&
+            !path_blocked(game.balls(), object.position, at, {0, target}, R))
+            best = value;
+    });
     return best;
 }
 

@@ -43,26 +43,16 @@ struct PotOption {
 // The legal pots of `game` with nothing in the way, likeliest first.
 std::vector<PotOption> pot_options(const Game& game, double sigma_deg) {
     std::vector<PotOption> options;
-    const Ball* cue = ball_in_play(game.balls(), 0);
-    if (!cue)
-        return options;
     const double R = game.params().ball_radius;
-    for (const int target : game.legal_targets()) {
-        const Ball* object = ball_in_play(game.balls(), target);
-        if (!object)
-            continue;
-        for (int pocket = 1; pocket <= 6; ++pocket) {
-            const Vec2 at = game.table().pockets[pocket - 1].position;
-            const double chance =
-                pot_chance(game.table(), R, cue->position, *object, pocket, sigma_deg);
-            if (chance <= 0)
-                continue;
-            const std::optional<Vec2> line =
-                open_pot_line(game.balls(), cue->position, *object, at, thinnest_cut, R);
-            if (line)
-                options.push_back({target, pocket, chance, *line});
-        }
-    }
+    for_each_pot(game, [&](int target, const Ball& cue, const Ball& object, int pocket, Vec2 at) {
+        const double chance = pot_chance(game.table(), R, cue.position, object, pocket, sigma_deg);
+        if (chance <= 0)
+            return;
+        const std::optional<Vec2> line =
+            open_pot_line(game.balls(), cue.position, object, at, thinnest_cut, R);
+        if (line)
+            options.push_back({target, pocket, chance, *line});
+    });
     std::ranges::stable_sort(
         options, [](const PotOption& a, const PotOption& b) { return a.chance > b.chance; });
     return options;
