@@ -64,7 +64,9 @@ private:
     // while it compares spots for the cue ball or the options of a choice, each a whole search:
     // that keeps every decision within a second.
     bool plays_leaves_out_ = true;
-    // simulations_ at which the current decision's searches stop sampling (decision_budget).
+    // The work of this player's searches so far (ShotTrial::work), and the work at which the
+    // current decision's searches stop sampling (decision_budget).
+    std::uint64_t work_ = 0;
     std::uint64_t budget_end_ = UINT64_MAX;
 };
 

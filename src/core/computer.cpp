@@ -24,11 +24,12 @@ constexpr double sigma_aim_deg = 0.125;
 constexpr double sigma_speed = 0.075;
 constexpr double sigma_tip_m = 0.0005;
 constexpr double break_speed = 12.0;
-// Shots a decision may simulate before its searches stop sampling further (each candidate is
-// still tried once): about half a second on one core of the development machine, so that a
-// decision with many candidates and spots (the cue ball in hand) stays within a second. Few
-// decisions come near it.
-constexpr std::uint64_t decision_budget = 40000;
+// The work (ShotTrial::work: events simulated, and set-ups) a decision's searches may do before
+// they stop sampling further (each candidate is still tried once): about half a second on one
+// core of the development machine, so that a decision with many candidates, long shots and
+// spots to compare (the cue ball in hand after a break) stays within a second. Few decisions
+// come near it.
+constexpr std::uint64_t decision_budget = 700000;
 
 // The tip's noise as a fraction of R: 0.5 mm is a larger part of a snooker ball's radius.
 double sigma_tip(const PhysicsParams& params) {
@@ -397,7 +398,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
                                           : std::min(samples_per_candidate(level_),
                                                      samples_per_candidate(Level::hard));
     for (Candidate& c : candidates)
-        while (c.samples < samples && simulations_ < budget_end_)
+        while (c.samples < samples && work_ + trials.work() + ahead.work() < budget_end_)
             sample(c);
     if (!candidates.empty()) {
         const Candidate& chosen = *std::ranges::min_element(candidates, better);
@@ -412,6 +413,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             best.planned = {2.0, aim_degrees(object->position - cue->position), 0, 0};
         best.score = 0;
     }
+    work_ += trials.work() + ahead.work();
     return best;
 }
 
@@ -436,7 +438,7 @@ Strike ComputerPlayer::noisy(const Strike& planned, const PhysicsParams& params,
 }
 
 ComputerShot ComputerPlayer::shot(const Game& game) {
-    budget_end_ = simulations_ + decision_budget;
+    budget_end_ = work_ + decision_budget;
     ComputerShot s = search(game);
     s.strike = with_noise(s.planned, game.params());
     return s;
@@ -545,7 +547,7 @@ Vec2 ComputerPlayer::place_break(const Game& game) {
 }
 
 Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
-    budget_end_ = simulations_ + decision_budget;
+    budget_end_ = work_ + decision_budget;
     if (game.is_break())
         return place_break(game);
     // Try a spread of legal spots; keep the one whose best shot scores highest.
@@ -573,7 +575,7 @@ bool ComputerPlayer::concedes(const Game& game) const {
 }
 
 Choice ComputerPlayer::choose(const Game& game) {
-    budget_end_ = simulations_ + decision_budget;
+    budget_end_ = work_ + decision_budget;
     // Each option is judged by the table it leaves: the best shot there for whoever shoots
     // next, good for this player if it shoots, bad if the opponent does. Breaking is worth a
     // little to the breaker.

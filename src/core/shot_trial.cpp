@@ -18,6 +18,8 @@ World& ShotTrial::fresh_world() {
 
 Verdict ShotTrial::play(const Strike& strike, const ShotCall& call) {
     simulate_shot(fresh_world(), strike, result_);
+    // A shot's set-up (copying the world, judging it) costs about as much as eight events.
+    work_ += result_.events.size() + 8;
     after_ = *game_;
     return after_.apply(call, result_);
 }

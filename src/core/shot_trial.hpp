@@ -23,6 +23,9 @@ public:
     const Game& after() const { return after_; }
     /// A world at the game's layout, not yet struck: a copy, to strike and step at will.
     World& fresh_world();
+    /// The work of the shots played so far: their events, and a few for each shot's set-up (a
+    /// measure of CPU time that is the same on every machine, for a search's budget).
+    std::uint64_t work() const { return work_; }
 
 private:
     const Game* game_;
@@ -30,6 +33,7 @@ private:
     World scratch_;
     ShotResult result_;
     Game after_;
+    std::uint64_t work_ = 0;
 };
 
 } // namespace termpool
