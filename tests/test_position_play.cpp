@@ -1,0 +1,121 @@
+// Pro's position play (issue 27): a pot's chance falls with distance and cut and is nothing past
+// 80 degrees; a search's trials play to the bit what a game plays; a world reused for many shots
+// gives the bits of a fresh one; pro breaks and decides within its budget.
+#include <catch2/catch.hpp>
+#include <termpool/computer.hpp>
+#include <termpool/game_registry.hpp>
+#include <termpool/rack.hpp>
+#include <termpool/random.hpp>
+
+#include "core/position_play.hpp"
+#include "core/shot_trial.hpp"
+#include "rules_helpers.hpp"
+
+using namespace termpool;
+using namespace termpool::test;
+
+namespace {
+
+const Table table = make_table(TableSize::nine_foot);
+constexpr double R = 0.028575;
+constexpr double pro_sigma_deg = 0.0625;
+
+Ball object_at(Vec2 p) {
+    Ball b;
+    b.id = 3;
+    b.position = p;
+    return b;
+}
+
+// The cue ball `back` m behind the object ball on a line `cut_deg` off its line to pocket 3.
+Vec2 cue_for(const Ball& object, double back, double cut_deg) {
+    const Vec2 along = normalized(table.pockets[2].position - object.position);
+    const Vec2 ghost = object.position - along * (2 * R);
+    const double c = std::cos(cut_deg * 3.141592653589793 / 180);
+    const double s = std::sin(cut_deg * 3.141592653589793 / 180);
+    return ghost - Vec2{along.x * c - along.y * s, along.x * s + along.y * c} * back;
+}
+
+} // namespace
+
+TEST_CASE("a pot's chance falls with distance and cut, and is nothing past 80 degrees",
+          "[computer][position]") {
+    const Ball near_pocket = object_at({2.2, 0.3});
+    const Ball far_away = object_at({1.2, 0.9});
+    const double short_straight =
+        pot_chance(table, R, cue_for(near_pocket, 0.3, 0), near_pocket, 3, pro_sigma_deg);
+    const double long_straight =
+        pot_chance(table, R, cue_for(near_pocket, 1.2, 0), near_pocket, 3, pro_sigma_deg);
+    const double short_cut =
+        pot_chance(table, R, cue_for(near_pocket, 0.3, 50), near_pocket, 3, pro_sigma_deg);
+    const double far_straight =
+        pot_chance(table, R, cue_for(far_away, 0.3, 0), far_away, 3, pro_sigma_deg);
+    CHECK(short_straight > 0.99);
+    CHECK(long_straight < short_straight);
+    CHECK(short_cut < short_straight);
+    CHECK(far_straight < short_straight);
+    CHECK(pot_chance(table, R, cue_for(near_pocket, 0.3, 85), near_pocket, 3, pro_sigma_deg) == 0);
+    // A wider spread, a smaller chance.
+    CHECK(pot_chance(table, R, cue_for(far_away, 0.5, 20), far_away, 3, 4 * pro_sigma_deg) <
+          pot_chance(table, R, cue_for(far_away, 0.5, 20), far_away, 3, pro_sigma_deg));
+}
+
+TEST_CASE("a search's trials play what the game plays, to the bit", "[computer][position]") {
+    Game game =
+        position(GameType::eight_ball, spread({0, 1, 2, 3, 8, 9, 10, 11}), 1, Group::solids);
+    ShotTrial trials(game);
+    Random rng(5);
+    for (int k = 0; k < 40; ++k) {
+        const Strike strike{rng.uniform(0.5, 6), rng.uniform(0, 360), rng.uniform(-0.3, 0.3),
+                            rng.uniform(-0.3, 0.3)};
+        Game fresh = game;
+        ShotResult result;
+        const Verdict want = fresh.play(strike, {}, &result);
+        const Verdict got = trials.play(strike, {});
+        INFO("shot " << k);
+        CHECK(got.next_shooter == want.next_shooter);
+        CHECK(got.pocketed == want.pocketed);
+        CHECK(trials.after().balls() == fresh.balls());
+    }
+    CHECK(trials.work() > 40);
+}
+
+TEST_CASE("a world reused for many shots gives the bits of a fresh one", "[physics][position]") {
+    const PhysicsParams params;
+    Random rng(9);
+    World reused(table, params, make_rack(table, params, RackType::eight_ball, 1));
+    ShotResult result;
+    for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+        // Racks of 16 and, every third, of 10 balls: reset takes another count too.
+        std::vector<Ball> balls =
+            make_rack(table, params, seed % 3 ? RackType::eight_ball : RackType::nine_ball, seed);
+        const Strike strike{rng.uniform(4, 12), rng.uniform(-1, 1), 0, 0};
+        const ShotResult fresh = simulate_shot(table, params, balls, strike);
+        reused.reset(balls);
+        World copy = reused; // a copy into new memory, then into kept memory
+        copy = reused;
+        simulate_shot(copy, strike, result);
+        INFO("rack " << seed);
+        CHECK(result.events.size() == fresh.events.size());
+        CHECK(result.balls == fresh.balls);
+        CHECK(result.rest_time == fresh.rest_time);
+    }
+}
+
+TEST_CASE("pro's break is chosen by simulation and pots a ball more often than not",
+          "[computer][position]") {
+    int potted = 0;
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+        Game game(game_row(GameType::eight_ball), table, PhysicsParams{}, 1, seed);
+        ComputerPlayer pro(Level::pro, seed);
+        REQUIRE(game.is_break());
+        const Vec2 spot = pro.place_cue_ball(game);
+        REQUIRE(game.place_cue_ball(spot));
+        const ComputerShot shot = pro.shot(game);
+        CHECK(shot.planned.speed >= 9.0);
+        CHECK(shot.planned.speed <= 13.5);
+        const Verdict v = game.play(shot.strike, shot.call);
+        potted += v.pocketed.empty() ? 0 : 1;
+    }
+    CHECK(potted >= 4);
+}
