@@ -91,6 +91,10 @@ TEST_CASE("a world reused for many shots gives the bits of a fresh one", "[physi
             make_rack(table, params, seed % 3 ? RackType::eight_ball : RackType::nine_ball, seed);
         const Strike strike{rng.uniform(4, 12), rng.uniform(-1, 1), 0, 0};
         const ShotResult fresh = simulate_shot(table, params, balls, strike);
+        // Left in the middle of a shot, with contacts pending: reset forgets all of it.
+        reused.strike(strike);
+        for (int k = 0; k < 20; ++k)
+            reused.step();
         reused.reset(balls);
         World copy = reused; // a copy into new memory, then into kept memory
         copy = reused;
