@@ -94,6 +94,8 @@ public:
 
     /// A world at time 0. Ball ids must be unique; balls must be on the table
     /// (on_playing_surface, the rule every position the world reaches keeps) and not overlap.
+    /// At most 32768 balls (std::length_error beyond); its memory grows with the square of
+    /// their number (a pair's contact time each).
     World(const Table& table, const PhysicsParams& params, std::vector<Ball> balls);
     ~World();
     /// Worlds are values: copying one copies its state.
