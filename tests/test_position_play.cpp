@@ -7,6 +7,7 @@
 #include <termpool/rack.hpp>
 #include <termpool/random.hpp>
 
+#include "core/event_schedule.hpp"
 #include "core/position_play.hpp"
 #include "core/shot_trial.hpp"
 #include "rules_helpers.hpp"
@@ -125,4 +126,23 @@ TEST_CASE("pro's break is chosen by simulation and pots a ball more often than n
         potted += v.pocketed.empty() ? 0 : 1;
     }
     CHECK(potted >= 4);
+}
+
+TEST_CASE("a world reset to another number of balls records them all", "[physics][position]") {
+    const PhysicsParams params;
+    World world(table, params, make_rack(table, params, RackType::nine_ball, 1));
+    const std::vector<Ball> sixteen = make_rack(table, params, RackType::eight_ball, 2);
+    world.reset(sixteen);
+    world.record(true);
+    world.strike({6, 0, 0, 0});
+    while (world.step()) {
+    }
+    const Trajectory& path = world.trajectory();
+    for (std::size_t i = 0; i < sixteen.size(); ++i)
+        CHECK_FALSE(path.pieces(i).empty());
+    // Too many balls are refused and leave the world as it was.
+    const std::vector<Ball> too_many(core::ScheduledEvent::max_balls + 1, sixteen.front());
+    CHECK_THROWS_AS(world.reset(too_many), std::length_error);
+    world.reset(sixteen);
+    CHECK(world.balls() == sixteen);
 }

@@ -321,7 +321,7 @@ TEST_CASE("bench runs small workloads and refuses bad options", "[cli]") {
 
     for (const char* bad :
          {"--breaks", "--breaks 0", "--shots -1", "--seed x", "--fast", "--balls 1", "--balls 16,x",
-          "--balls 16,,32", "--balls 2000", "--balls", "--ball-runs -1"}) {
+          "--balls 16,,32", "--balls 2000", "--balls", "--ball-runs -1", "--ball-runs 100001"}) {
         const Run b = run(dir, std::string("bench ") + bad);
         INFO(bad);
         CHECK(b.status == 2);

@@ -36,7 +36,8 @@ constexpr const char* usage = "usage: termpool bench [--breaks N] [--shots N] [-
                               "  --seed S    seed of the break angles and the shots (default 1)\n"
                               "  --balls LIST  ball counts of the cost-per-event rows, up to 16,\n"
                               "              each 2..1024 (default 16,32,64,128)\n"
-                              "  --ball-runs N  breaks per ball count (default 100; 0: no rows)\n"
+                              "  --ball-runs N  breaks per ball count (default 100, at most\n"
+                              "              100000; 0: no rows)\n"
                               "  --render    time the terminal front end instead: frame\n"
                               "              composition, and the bytes a terminal receives\n"
                               "              per frame of a break (through a pty)\n";
@@ -57,8 +58,9 @@ constexpr double snooker_break_angle_jitter = 0.1; // degrees either way
 // on the 9 ft table scaled by sqrt(N / 16) each way, so that 16 balls break on the 9 ft table
 // itself and the balls have the same room per ball at every N; the break as the 8-ball one.
 constexpr std::size_t most_balls = 1024;
-constexpr std::size_t most_ball_counts = 16; // rows in one run
-constexpr double rack_gap = 2e-4;            // m between neighbours in the triangle
+constexpr std::size_t most_ball_counts = 16;     // rows in one run
+constexpr std::uint64_t most_ball_runs = 100000; // breaks a row
+constexpr double rack_gap = 2e-4;                // m between neighbours in the triangle
 
 struct Options {
     std::uint64_t breaks = 1000;
@@ -134,6 +136,11 @@ std::optional<Options> parse_options(const std::vector<std::string>& args, bool&
             return std::nullopt;
         }
         *target = *number;
+    }
+    if (options.ball_runs > most_ball_runs) {
+        std::fprintf(stderr, "termpool bench: --ball-runs is at most %llu\n",
+                     static_cast<unsigned long long>(most_ball_runs));
+        return std::nullopt;
     }
     if (options.breaks == 0) {
         std::fputs("termpool bench: --breaks must be at least 1\n", stderr);

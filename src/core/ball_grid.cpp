@@ -117,6 +117,10 @@ void BallGrid::flush(const std::vector<Box>& boxes) {
 
 void BallGrid::column_of(const Capsule& path, std::int64_t x, std::int64_t& y0,
                          std::int64_t& y1) const {
+    // A path that is not finite narrows nothing: every cell of the box.
+    if (!std::isfinite(path.from.x) || !std::isfinite(path.from.y) || !std::isfinite(path.to.x) ||
+        !std::isfinite(path.to.y) || !std::isfinite(path.bulge))
+        return;
     // Grown by the margins of both balls and the bulge, and a little more for the rounding of
     // what follows (micrometres against cells of centimetres).
     const double w = 2 * margin_ + path.bulge + 1e-6;
@@ -130,17 +134,14 @@ void BallGrid::column_of(const Capsule& path, std::int64_t x, std::int64_t& y0,
         s0 = std::max(0.0, std::min(a, b));
         s1 = std::min(1.0, std::max(a, b));
     } else if (path.from.x < x_lo || path.from.x > x_hi) {
+        s0 = 1;
+        s1 = 0;
+    }
+    if (s0 > s1) { // the path does not come near this column
         y0 = 1;
         y1 = 0;
         return;
     }
-    if (s0 > s1) {
-        y0 = 1;
-        y1 = 0;
-        return;
-    }
-    if (!(s0 <= s1))
-        return; // a NaN path: every cell of the box
     const double ya = path.from.y + s0 * d.y, yb = path.from.y + s1 * d.y;
     y0 = std::max(y0, cell_coordinate((std::min(ya, yb) - w) * inverse_cell_));
     y1 = std::min(y1, cell_coordinate((std::max(ya, yb) + w) * inverse_cell_));

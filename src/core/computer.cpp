@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <termpool/break_off.hpp>
 #include <termpool/computer.hpp>
 #include <termpool/game_registry.hpp>
@@ -296,7 +297,9 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     };
     std::vector<Candidate> candidates;
     ShotTrial trials(game);
-    ShotTrial ahead(game); // pro: the leaves' next shots
+    // Pro's trials of the leaves' next shots, made when a leave is first played out.
+    std::optional<ShotTrial> ahead;
+    const auto ahead_work = [&] { return ahead ? ahead->work() : 0; };
     const double sigma = direction_sigma_deg(level_);
     auto add = [&](const Ball& object, Vec2 aim_point, int pocket, const std::vector<double>& at) {
         // Skip cuts thinner than about 80 degrees, and shots another ball is in the way of.
@@ -367,7 +370,8 @@ ComputerShot ComputerPlayer::search(const Game& game) {
         // chance by its spread; the others rate the leave by its best open pot's cut and length.
         if (v.winner == 0 && v.chooser == 0 && level_ == Level::pro && plays_leaves_out_) {
             if (v.next_shooter == shooter)
-                s += 60.0 * leave_value(trial, sigma, ahead, simulations_);
+                s += 60.0 *
+                     leave_value(trial, sigma, ahead ? *ahead : ahead.emplace(game), simulations_);
             else
                 s -= 60.0 * best_pot_chance(trial, sigma);
         } else if (v.winner == 0 && v.chooser == 0 && level_ != Level::easy) {
@@ -398,8 +402,13 @@ ComputerShot ComputerPlayer::search(const Game& game) {
                                           : std::min(samples_per_candidate(level_),
                                                      samples_per_candidate(Level::hard));
     for (Candidate& c : candidates)
-        while (c.samples < samples && work_ + trials.work() + ahead.work() < budget_end_)
+        while (c.samples < samples && work_ + trials.work() + ahead_work() < budget_end_)
             sample(c);
+    // Out of budget, the last candidates keep their one sample, which may be a lucky one: the
+    // choice is made among those sampled in full (the best of the first round, as they were
+    // taken in its order), if any.
+    if (!candidates.empty() && candidates.front().samples == samples)
+        std::erase_if(candidates, [&](const Candidate& c) { return c.samples < samples; });
     if (!candidates.empty()) {
         const Candidate& chosen = *std::ranges::min_element(candidates, better);
         best.score = chosen.mean();
@@ -413,7 +422,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
             best.planned = {2.0, aim_degrees(object->position - cue->position), 0, 0};
         best.score = 0;
     }
-    work_ += trials.work() + ahead.work();
+    work_ += trials.work() + ahead_work();
     return best;
 }
 

@@ -4,9 +4,9 @@
 // hand. A ball's row of pair times keeps its minimum, and blocks of balls keep the earliest table
 // event or row minimum among them, so that finding the next event scans a few blocks and a change
 // rescans one. The pair search culls with the box each ball's centre stays in,
-// whether it moves, and (for many balls) a grid over the boxes; only the pairs holding a contact
-// are walked, by a bit per pair. Nothing in an event's work walks every ball, and the cost of an
-// event stays flat from 16 balls to 128.
+// whether it moves, and (above 64 balls) a grid over the boxes; only the pairs holding a contact
+// are walked, by a bit per pair. Above 64 balls nothing in an event's work walks every ball
+// (below, a branch-free test of every box is cheaper than the grid).
 
 #include <algorithm>
 #include <bit>
@@ -108,9 +108,8 @@ private:
     std::vector<Box> reach_;
     std::vector<Capsule> paths_;
     std::vector<std::uint8_t> moving_;
-    // Many balls: their pairs are searched through the grid, and the earliest event is kept by
-    // the tree. Few are faster without either: testing every box and scanning every leaf costs
-    // less than the bookkeeping.
+    // Many balls (above 64): their pairs are searched through the grid. Fewer are faster
+    // testing every box without a branch than through the grid's bookkeeping.
     bool many_;
     std::optional<BallGrid> grid_; // only with many balls
     // Kept in both orders ([i * n + j] == [j * n + i]) so that a ball's row holds all its pairs.

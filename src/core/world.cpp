@@ -1,5 +1,5 @@
 // The stepping: the world jumps from event to event, resolves each and searches again what it
-// changed. Where the next contacts are is kept by the pair cache and the table-contact search;
+// changed. The event schedule and the table-contact search keep where the next contacts are;
 // how balls move and where they meet is the cloth model's, chosen once per world.
 
 #include <algorithm>
@@ -50,14 +50,20 @@ struct World::Impl {
     // Puts `balls` on the table at time 0; the containers keep their memory.
     void place(const std::vector<Ball>& balls) {
         if (balls.size() != pieces.size()) {
+            // The schedule first: it refuses too many balls before anything has changed.
+            core::EventSchedule resized(balls.size(), 2 * params.ball_radius);
+            Trajectory empty(params, balls.size());
             pieces.resize(balls.size());
             table_events.resize(balls.size());
-            schedule = core::EventSchedule(balls.size(), 2 * params.ball_radius);
+            schedule = std::move(resized);
+            trajectory = std::move(empty);
+            recorded = false;
         }
         if (recorded) {
-            recording = recorded = false;
+            recorded = false;
             trajectory = Trajectory(params, balls.size());
         }
+        recording = false;
         now = 0;
         events = 0;
         pending.clear();
@@ -322,14 +328,20 @@ World::World(const Table& table, const PhysicsParams& params, std::vector<Ball> 
 World::~World() = default;
 World::World(const World& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
 World& World::operator=(const World& other) {
-    // Into the existing state, so that its vectors keep their memory: a search copies a world
-    // set out once into a scratch world before each of its shots.
-    if (this != &other) {
-        if (impl_ && other.impl_)
+    // Into the existing state when it has as many balls, so that its vectors keep their memory
+    // (a search copies a world set out once into a scratch world before each of its shots);
+    // otherwise, and if that copy fails halfway, a fresh copy.
+    if (this == &other)
+        return *this;
+    if (impl_ && other.impl_ && impl_->count() == other.impl_->count()) {
+        try {
             *impl_ = *other.impl_;
-        else
-            impl_ = other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr;
+            return *this;
+        } catch (...) {
+            // Half copied: replaced whole below, or left to the exception if that fails too.
+        }
     }
+    impl_ = other.impl_ ? std::make_unique<Impl>(*other.impl_) : nullptr;
     return *this;
 }
 World::World(World&&) noexcept = default;
