@@ -21,7 +21,8 @@ std::size_t checked(std::size_t balls) {
 } // namespace
 
 EventSchedule::EventSchedule(std::size_t balls, double diameter)
-    : diameter_(diameter), reach_(checked(balls), empty_box()), paths_(balls), moving_(balls),
+    : diameter_(diameter), reach_(checked(balls), empty_box()),
+      paths_(balls > most_without_grid ? balls : 0), moving_(balls),
       many_(balls > most_without_grid), time_(balls * balls, infinity), bound_(balls * balls, 0),
       words_((balls + 63) / 64), finite_(balls * words_, 0), searched_(balls, 0),
       table_time_(balls, infinity), row_min_time_(balls, infinity), row_min_partner_(balls, balls),

@@ -46,7 +46,6 @@ struct ScheduledEvent {
     friend bool operator<(const ScheduledEvent& a, const ScheduledEvent& b) {
         return a.time < b.time || (a.time == b.time && a.order < b.order);
     }
-    friend bool operator==(const ScheduledEvent&, const ScheduledEvent&) = default;
 };
 
 /// The table events and pair contacts of `size()` balls; times are absolute, +infinity for
@@ -106,7 +105,7 @@ private:
     // Short arrays of their own, so that the search culls without touching the world's pieces.
     // A pocketed ball's box is empty (min > max): every overlap test with it fails.
     std::vector<Box> reach_;
-    std::vector<Capsule> paths_;
+    std::vector<Capsule> paths_; // with many balls only: the grid walks long paths
     std::vector<std::uint8_t> moving_;
     // Many balls (above 64): their pairs are searched through the grid. Fewer are faster
     // testing every box without a branch than through the grid's bookkeeping.
