@@ -2,7 +2,7 @@
 // Small builders shared by the physics tests.
 
 #include <termpool/rack.hpp>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 #include <termpool/simulator.hpp>
 #include <vector>
 

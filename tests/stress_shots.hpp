@@ -10,11 +10,11 @@
 #include <numbers>
 #include <string>
 #include <termpool/rack.hpp>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 #include <termpool/simulator.hpp>
 #include <termpool/table.hpp>
 #include <termpool/table_physics.hpp>
-#include <termpool/text_numbers.hpp>
+#include "support/text_numbers.hpp"
 #include <thread>
 #include <vector>
 

@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 #include <termpool/rack.hpp>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 
 #include "cli/scenario.hpp"
 #include "core/classic_contacts.hpp"

@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 
 #include "core/collision.hpp"
 #include "core/physical_cloth.hpp"

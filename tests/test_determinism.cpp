@@ -16,11 +16,11 @@
 #include <cstdint>
 #include <string>
 #include <termpool/match.hpp>
-#include <termpool/portable_math.hpp>
+#include "support/portable_math.hpp"
 #include <termpool/rack.hpp>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 #include <termpool/simulator.hpp>
-#include <termpool/state_digest.hpp>
+#include "support/state_digest.hpp"
 #include <vector>
 
 #include "stress_shots.hpp"

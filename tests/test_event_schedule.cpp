@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 #include <limits>
 #include <map>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 
 #include "core/ball_grid.hpp"
 #include "core/event_schedule.hpp"

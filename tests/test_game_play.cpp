@@ -2,7 +2,7 @@
 // after every shot.
 #include <algorithm>
 #include <catch2/catch.hpp>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 
 #include "rules_helpers.hpp"
 

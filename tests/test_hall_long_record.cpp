@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 #include <sys/socket.h>
-#include <termpool/text_numbers.hpp>
+#include "support/text_numbers.hpp"
 
 #include "hall/client.hpp"
 #include "hall/connection.hpp"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <termpool/practice.hpp>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 #include <termpool/table.hpp>
 
 using namespace termpool;

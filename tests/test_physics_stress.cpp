@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
-#include <termpool/text_numbers.hpp>
+#include "support/text_numbers.hpp"
 
 #include "stress_shots.hpp"
 

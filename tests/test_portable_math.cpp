@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <termpool/portable_math.hpp>
-#include <termpool/random.hpp>
+#include "support/portable_math.hpp"
+#include "support/random.hpp"
 
 namespace portable = termpool::portable;
 

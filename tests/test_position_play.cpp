@@ -5,7 +5,7 @@
 #include <termpool/computer.hpp>
 #include <termpool/game_registry.hpp>
 #include <termpool/rack.hpp>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 
 #include "core/event_schedule.hpp"
 #include "core/position_play.hpp"

@@ -8,7 +8,7 @@
 #include <termpool/match.hpp>
 #include <termpool/record.hpp>
 #include <termpool/simulator.hpp>
-#include <termpool/state_digest.hpp>
+#include "support/state_digest.hpp"
 
 #include "match_helpers.hpp"
 

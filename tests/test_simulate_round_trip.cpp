@@ -5,8 +5,8 @@
 #include <catch2/catch.hpp>
 #include <sstream>
 #include <string>
-#include <termpool/random.hpp>
-#include <termpool/text_numbers.hpp>
+#include "support/random.hpp"
+#include "support/text_numbers.hpp"
 #include <variant>
 
 #include "cli/scenario.hpp"

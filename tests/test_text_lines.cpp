@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 #include <string>
-#include <termpool/text_lines.hpp>
+#include "support/text_lines.hpp"
 #include <vector>
 
 using termpool::split_fields;

@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
-#include <termpool/random.hpp>
-#include <termpool/text_numbers.hpp>
+#include "support/random.hpp"
+#include "support/text_numbers.hpp"
 
 using namespace termpool;
 

@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 
 #include "core/cloth_model.hpp"
 #include "physics_helpers.hpp"

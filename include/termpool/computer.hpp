@@ -6,10 +6,11 @@
 
 #include <cstdint>
 #include <termpool/level.hpp>
-#include <termpool/random.hpp>
 #include <termpool/rules.hpp>
 
 namespace termpool {
+
+class Random;
 
 /// A shot the computer decided on.
 struct ComputerShot {
@@ -58,7 +59,9 @@ private:
     Strike searched_break(const Game& game, const Ball& cue, double& value);
 
     Level level_;
-    Random rng_;
+    // The player's own random stream (a SplitMix64 state: support/random.hpp, not part of the
+    // library's interface), from its seed.
+    std::uint64_t stream_;
     std::uint64_t simulations_ = 0;
     // Pro plays the leaves of its candidates out (two shots ahead) when it picks a shot, but not
     // while it compares spots for the cue ball or the options of a choice, each a whole search:

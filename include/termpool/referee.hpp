@@ -9,10 +9,11 @@
 #include <memory>
 #include <termpool/rules.hpp>
 #include <termpool/shot_facts.hpp>
-#include <termpool/state_digest.hpp>
 #include <vector>
 
 namespace termpool {
+
+class StateDigest;
 
 /// The rules of one game type, and the state they keep. A Game owns one and copies it with
 /// `clone` (a Game is a value: the computer copies games to try shots), so a referee's state

@@ -8,7 +8,6 @@
 
 #include <cstdint>
 #include <termpool/computer.hpp>
-#include <termpool/random.hpp>
 #include <termpool/rules.hpp>
 
 namespace termpool {
@@ -35,7 +34,9 @@ public:
     static constexpr int easy_of_four = 3;
 
 private:
-    Random rng_;
+    // The player's own random stream (a SplitMix64 state: support/random.hpp, not part of the
+    // library's interface), from its seed.
+    std::uint64_t stream_;
 };
 
 } // namespace termpool

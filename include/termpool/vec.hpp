@@ -3,7 +3,6 @@
 /// Small value types for 2D and 3D vectors. All quantities are SI unless a name says otherwise.
 
 #include <cmath>
-#include <termpool/portable_math.hpp>
 
 namespace termpool {
 
@@ -60,15 +59,9 @@ inline Vec2 normalized(Vec2 v) {
     return len > 0 ? v / len : Vec2{};
 }
 /// Unit vector at angle `radians` counter-clockwise from +x (the same bits on every machine).
-inline Vec2 unit_from_angle(double radians) {
-    const portable::SinCos sc{portable::sin(radians), portable::cos(radians)};
-    return {sc.cos, sc.sin};
-}
+Vec2 unit_from_angle(double radians);
 /// Unit vector at angle `degrees` counter-clockwise from +x; exact along the axes.
-inline Vec2 unit_from_degrees(double degrees) {
-    const portable::SinCos sc = portable::sin_cos_degrees(degrees);
-    return {sc.cos, sc.sin};
-}
+Vec2 unit_from_degrees(double degrees);
 
 /// A vector in space: x and y in the table plane, z up. Used for angular velocity.
 struct Vec3 {

@@ -10,12 +10,12 @@
 #include <optional>
 #include <string>
 #include <termpool/game_registry.hpp>
-#include <termpool/portable_math.hpp>
+#include "support/portable_math.hpp"
 #include <termpool/rack.hpp>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 #include <termpool/simulator.hpp>
 #include <termpool/snooker_layout.hpp>
-#include <termpool/state_digest.hpp>
+#include "support/state_digest.hpp"
 #include <termpool/table.hpp>
 #include <termpool/table_physics.hpp>
 

@@ -10,9 +10,9 @@
 #include <optional>
 #include <set>
 #include <string>
-#include <termpool/portable_math.hpp>
+#include "support/portable_math.hpp"
 #include <termpool/rack.hpp>
-#include <termpool/random.hpp>
+#include "support/random.hpp"
 #include <termpool/simulator.hpp>
 #include <termpool/table_physics.hpp>
 #include <vector>

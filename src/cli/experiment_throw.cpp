@@ -7,7 +7,7 @@
 #include <langinfo.h>
 #include <numbers>
 #include <string>
-#include <termpool/portable_math.hpp>
+#include "support/portable_math.hpp"
 #include <termpool/simulator.hpp>
 #include <termpool/table.hpp>
 #include <vector>

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <termpool/text_numbers.hpp>
+#include "support/text_numbers.hpp"
 
 namespace termpool::cli {
 

@@ -1,6 +1,6 @@
 #include <cmath>
 #include <termpool/params.hpp>
-#include <termpool/portable_math.hpp>
+#include "../support/portable_math.hpp"
 
 namespace termpool {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <termpool/portable_math.hpp>
+#include "../support/portable_math.hpp"
 #include <termpool/rules.hpp>
 #include <termpool/snooker_layout.hpp>
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 #include <limits>
-#include <termpool/portable_math.hpp>
+#include "../support/portable_math.hpp"
 #include <termpool/simulator.hpp>
 
 #include "classic_motion.hpp"

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <termpool/portable_math.hpp>
+#include "../support/portable_math.hpp"
 
 #include "contact_time.hpp"
 #include "polynomial.hpp"

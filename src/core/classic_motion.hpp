@@ -6,7 +6,7 @@
 
 #include <cmath>
 #include <limits>
-#include <termpool/portable_math.hpp>
+#include "../support/portable_math.hpp"
 #include <termpool/vec.hpp>
 
 namespace termpool::core {

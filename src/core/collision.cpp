@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <termpool/portable_math.hpp>
+#include "../support/portable_math.hpp"
 
 #include "classic_motion.hpp"
 #include "physical_cloth.hpp"

@@ -7,7 +7,8 @@
 #include <termpool/break_off.hpp>
 #include <termpool/computer.hpp>
 #include <termpool/game_registry.hpp>
-#include <termpool/portable_math.hpp>
+#include "../support/random.hpp"
+#include "../support/portable_math.hpp"
 #include <termpool/simulator.hpp>
 #include <termpool/snooker_layout.hpp>
 
@@ -261,7 +262,7 @@ double pot_ease(const Game& game) {
     return game.type() == GameType::snooker ? snooker_next_quality(game) : next_shot_quality(game);
 }
 
-ComputerPlayer::ComputerPlayer(Level level, std::uint64_t seed) : level_(level), rng_(seed) {}
+ComputerPlayer::ComputerPlayer(Level level, std::uint64_t seed) : level_(level), stream_(seed) {}
 
 ComputerShot ComputerPlayer::search(const Game& game) {
     ComputerShot best;
@@ -351,8 +352,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
     }
     // Each candidate is played under this player's own noise: first once each, then the most
     // promising third again until each has its share of samples (successive halving, one round).
-    Random noise = rng_;
-    rng_.next();
+    Random noise = fork_stream(stream_);
     const int shooter = game.shooter();
     auto sample = [&](Candidate& c) {
         const Verdict v = trials.play(noisy(c.strike, game.params(), noise), c.call);
@@ -427,7 +427,7 @@ ComputerShot ComputerPlayer::search(const Game& game) {
 }
 
 Strike ComputerPlayer::with_noise(const Strike& planned, const PhysicsParams& params) {
-    return noisy(planned, params, rng_);
+    return with_stream(stream_, [&](Random& rng) { return noisy(planned, params, rng); });
 }
 
 Strike ComputerPlayer::noisy(const Strike& planned, const PhysicsParams& params,
@@ -483,8 +483,7 @@ Strike ComputerPlayer::searched_break(const Game& game, const Ball& cue, double&
     const int shooter = game.shooter();
     const double sigma = direction_sigma_deg(level_);
     const int tries = samples_per_candidate(level_);
-    Random noise = rng_;
-    rng_.next();
+    Random noise = fork_stream(stream_);
     ShotTrial trials(game);
     Strike best = full;
     value = -1e18;
@@ -512,8 +511,7 @@ Vec2 ComputerPlayer::place_break(const Game& game) {
     // Spots across the kitchen at the head string; each break tried a few times under noise,
     // scored by the referee (a ball down and the table kept is what a break is for).
     const Table& table = game.table();
-    Random noise = rng_;
-    rng_.next();
+    Random noise = fork_stream(stream_);
     // Snooker breaks from the D: spots along the baulk line inside it.
     const bool in_d = game.ball_in_hand() == BallInHand::d;
     const std::vector<Vec2> fallback = in_d ? game.legal_placements(6) : std::vector<Vec2>{};

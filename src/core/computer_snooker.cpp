@@ -10,7 +10,8 @@
 #include <numbers>
 #include <optional>
 #include <termpool/computer.hpp>
-#include <termpool/portable_math.hpp>
+#include "../support/random.hpp"
+#include "../support/portable_math.hpp"
 #include <termpool/snooker_layout.hpp>
 
 #include "computer_parts.hpp"
@@ -231,8 +232,7 @@ ComputerShot ComputerPlayer::snooker_search(const Game& game) {
     const std::size_t keep = std::min(sampled_at_most, (sampled.size() + 2) / 3);
     if (sampled.size() > keep)
         sampled.resize(keep);
-    Random noise = rng_;
-    rng_.next();
+    Random noise = fork_stream(stream_);
     auto mean_of = [&](const Sampled& c, int plays) {
         double total = 0;
         for (int k = 0; k < plays; ++k) {

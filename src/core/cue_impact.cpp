@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <termpool/portable_math.hpp>
+#include "../support/portable_math.hpp"
 
 namespace termpool::core {
 namespace {

@@ -5,7 +5,7 @@
 #include <termpool/game_registry.hpp>
 
 #include <termpool/break_off.hpp>
-#include <termpool/portable_math.hpp>
+#include "../support/portable_math.hpp"
 #include <termpool/referee.hpp>
 #include <termpool/snooker_layout.hpp>
 

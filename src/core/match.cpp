@@ -6,7 +6,7 @@
 #include <termpool/game_registry.hpp>
 #include <termpool/match.hpp>
 #include <termpool/referee.hpp>
-#include <termpool/state_digest.hpp>
+#include "../support/state_digest.hpp"
 
 namespace termpool {
 
@@ -188,6 +188,7 @@ std::variant<Match, RecordError> Match::replay_unchecked(const GameRecord& recor
 }
 
 void Match::stamp_check(bool replaced_last) {
+    static_assert(StateDigest().value() == empty_digest);
     if (!replaced_last)
         actions_digest_before_last_ = actions_digest_;
     // Each action's text and the state it led to, chained: a change anywhere moves every

@@ -2,7 +2,7 @@
 #include <cmath>
 #include <numbers>
 #include <termpool/rack.hpp>
-#include <termpool/random.hpp>
+#include "../support/random.hpp"
 #include <termpool/snooker_layout.hpp>
 #include <utility>
 

@@ -3,12 +3,12 @@
 #include <charconv>
 #include <cmath>
 #include <termpool/game_registry.hpp>
-#include <termpool/random.hpp>
+#include "../support/random.hpp"
 #include <termpool/record.hpp>
 #include <termpool/rules_names.hpp>
-#include <termpool/state_digest.hpp>
-#include <termpool/text_lines.hpp>
-#include <termpool/text_numbers.hpp>
+#include "../support/state_digest.hpp"
+#include "../support/text_lines.hpp"
+#include "../support/text_numbers.hpp"
 
 namespace termpool {
 namespace {

@@ -5,7 +5,8 @@
 #include <numbers>
 #include <termpool/break_off.hpp>
 #include <termpool/game_registry.hpp>
-#include <termpool/portable_math.hpp>
+#include "../support/random.hpp"
+#include "../support/portable_math.hpp"
 #include <termpool/safe_player.hpp>
 #include <termpool/snooker_layout.hpp>
 
@@ -164,23 +165,22 @@ Strike break_off(const Game& game) {
 
 } // namespace
 
-SafePlayer::SafePlayer(std::uint64_t seed) : rng_(seed) {}
+SafePlayer::SafePlayer(std::uint64_t seed) : stream_(seed) {}
 
 ComputerShot SafePlayer::shot(const Game& game) {
     ComputerShot chosen;
     if (game.is_break()) {
         chosen.planned = break_off(game);
-        chosen.strike = with_noise(chosen.planned, rng_);
+        chosen.strike = with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
         return chosen;
     }
-    Random noise = rng_;
-    rng_.next();
+    Random noise = fork_stream(stream_);
     const std::vector<Pot> found = pots(game, noise);
     if (const Pot* pot = easiest(found); pot && pot->made >= easy_of_four) {
         chosen.planned = pot->strike;
         chosen.call = pot->call;
         chosen.score = pot->made;
-        chosen.strike = with_noise(chosen.planned, rng_);
+        chosen.strike = with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
         return chosen;
     }
     // The safeties, judged without noise first; the best few again under it.
@@ -204,7 +204,7 @@ ComputerShot SafePlayer::shot(const Game& game) {
         if (cue && object)
             chosen.planned = {2.0, aim_degrees(object->position - cue->position), 0, 0};
         chosen.call = call_for(game, object ? object->id : 0, 0);
-        chosen.strike = with_noise(chosen.planned, rng_);
+        chosen.strike = with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
         return chosen;
     }
     std::ranges::stable_sort(judged,
@@ -225,7 +225,7 @@ ComputerShot SafePlayer::shot(const Game& game) {
     chosen.planned = best.strike;
     chosen.call = best.call;
     chosen.score = best.value;
-    chosen.strike = with_noise(chosen.planned, rng_);
+    chosen.strike = with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
     return chosen;
 }
 
@@ -244,8 +244,7 @@ Vec2 SafePlayer::place_cue_ball(const Game& game) {
     Vec2 best_spot = snooker_d_centre(t);
     int best_made = -1;
     double best_to_centre = 1e9;
-    Random noise = rng_;
-    rng_.next();
+    Random noise = fork_stream(stream_);
     for (const Vec2 spot : spots) {
         Game trial = game;
         if (!trial.place_cue_ball(spot))

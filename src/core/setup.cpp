@@ -2,7 +2,7 @@
 #include <cmath>
 #include <termpool/game_registry.hpp>
 #include <termpool/setup.hpp>
-#include <termpool/text_numbers.hpp>
+#include "../support/text_numbers.hpp"
 
 namespace termpool {
 namespace {

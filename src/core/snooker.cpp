@@ -3,7 +3,8 @@
 // by the simplest reading of the rule, as the README says.
 #include <algorithm>
 #include <cmath>
-#include <termpool/random.hpp>
+#include "../support/random.hpp"
+#include "../support/state_digest.hpp"
 #include <termpool/snooker_layout.hpp>
 #include <termpool/spots.hpp>
 

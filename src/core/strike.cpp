@@ -1,6 +1,6 @@
 #include <cmath>
 #include <numbers>
-#include <termpool/portable_math.hpp>
+#include "../support/portable_math.hpp"
 #include <termpool/simulator.hpp>
 
 #include "cloth_model.hpp"

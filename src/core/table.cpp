@@ -2,7 +2,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <termpool/portable_math.hpp>
+#include "../support/portable_math.hpp"
 #include <termpool/snooker_layout.hpp>
 #include <termpool/table.hpp>
 

@@ -21,7 +21,7 @@
 #include <sys/wait.h>
 #include <termpool/computer.hpp>
 #include <termpool/game_registry.hpp>
-#include <termpool/text_numbers.hpp>
+#include "support/text_numbers.hpp"
 #include <thread>
 #include <unistd.h>
 #include <vector>

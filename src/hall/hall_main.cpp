@@ -7,7 +7,7 @@
 #include <pthread.h>
 #include <signal.h>
 #include <sys/stat.h>
-#include <termpool/text_numbers.hpp>
+#include "support/text_numbers.hpp"
 #include <unistd.h>
 
 #include "files/atomic_file.hpp"

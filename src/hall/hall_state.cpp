@@ -17,7 +17,7 @@
 #include <sys/random.h>
 #include <sys/stat.h>
 #include <termpool/match.hpp>
-#include <termpool/text_lines.hpp>
+#include "support/text_lines.hpp"
 #include <unistd.h>
 #include <variant>
 

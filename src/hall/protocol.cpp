@@ -4,8 +4,8 @@
 #include <cmath>
 #include <termpool/match.hpp>
 #include <termpool/name_characters.hpp>
-#include <termpool/text_lines.hpp>
-#include <termpool/text_numbers.hpp>
+#include "support/text_lines.hpp"
+#include "support/text_numbers.hpp"
 #include <vector>
 
 namespace termpool::hall {

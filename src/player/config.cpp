@@ -1,6 +1,6 @@
 #include "player/config.hpp"
 
-#include <termpool/text_lines.hpp>
+#include "support/text_lines.hpp"
 
 #include "files/xdg_dir.hpp"
 #include "player/player_name.hpp"

@@ -7,7 +7,7 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <termpool/game_registry.hpp>
-#include <termpool/text_lines.hpp>
+#include "support/text_lines.hpp"
 #include <unistd.h>
 
 #include "files/atomic_file.hpp"

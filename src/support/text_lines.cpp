@@ -1,5 +1,5 @@
 #include <algorithm>
-#include <termpool/text_lines.hpp>
+#include "text_lines.hpp"
 
 namespace termpool {
 namespace {

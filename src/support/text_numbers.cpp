@@ -4,7 +4,7 @@
 #include <charconv>
 #include <limits>
 #include <system_error>
-#include <termpool/text_numbers.hpp>
+#include "text_numbers.hpp"
 
 namespace termpool {
 namespace {

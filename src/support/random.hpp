@@ -26,8 +26,29 @@ public:
     /// Uniform integer in [0, n), n > 0.
     std::uint64_t below(std::uint64_t n) { return next() % n; }
 
+    /// The state: `Random(state())` continues this stream.
+    std::uint64_t state() const { return state_; }
+
 private:
     std::uint64_t state_;
 };
+
+/// For a stream kept as its bare state (the players keep it so: their public headers do not
+/// show this class): a copy of the stream as it stands, and `state` moved on by one number.
+inline Random fork_stream(std::uint64_t& state) {
+    const Random fork(state);
+    Random moved(state);
+    moved.next();
+    state = moved.state();
+    return fork;
+}
+
+/// Calls `use` with the stream kept in `state` and keeps where it got to.
+template <class Use> auto with_stream(std::uint64_t& state, Use&& use) {
+    Random stream(state);
+    auto result = use(stream);
+    state = stream.state();
+    return result;
+}
 
 } // namespace termpool

@@ -58,7 +58,7 @@ public:
             add(b);
     }
     /// The digest so far.
-    std::uint64_t value() const { return hash_; }
+    constexpr std::uint64_t value() const { return hash_; }
 
 private:
     std::uint64_t hash_ = 0xcbf29ce484222325ULL;

@@ -5,7 +5,7 @@
 
 #include <cmath>
 #include <limits>
-#include <termpool/portable_math.hpp>
+#include "portable_math.hpp"
 
 namespace termpool::portable {
 namespace {
