@@ -70,13 +70,33 @@ public:
     /// The state of ball slot `index` at `time`; the slot must have a piece (balls with none
     /// are left out of the whole sample above).
     Ball sample(std::size_t index, double time) const;
+    /// The state of ball slot `index` just before `time`: its motion up to that instant, before
+    /// an event at `time` changed it (the same as `sample` where nothing happens at `time`).
+    Ball sample_before(std::size_t index, double time) const;
     /// The pieces of ball slot `index`.
     const std::vector<Piece>& pieces(std::size_t index) const { return pieces_[index]; }
+    /// The number of ball slots.
+    std::size_t size() const { return pieces_.size(); }
+    /// The slot of the ball with id `id`, or nothing when no slot has pieces of it.
+    std::optional<std::size_t> slot_of(int id) const;
 
 private:
     PhysicsParams params_;
     std::vector<std::vector<Piece>> pieces_;
 };
+
+/// The balls of one event at its instant: each one's state just before the event and just
+/// after it was resolved (position, velocity, spin and motion state).
+struct EventState {
+    Ball ball_before;                ///< Event::ball before the event
+    Ball ball_after;                 ///< Event::ball after it
+    std::optional<Ball> other_before; ///< for ball_ball: Event::other before the event
+    std::optional<Ball> other_after;  ///< for ball_ball: Event::other after it
+};
+
+/// The states of `event`'s balls, read from the shot's recorded `trajectory` without
+/// simulating again; nothing when the trajectory holds no pieces of the event's ball.
+std::optional<EventState> event_state(const Trajectory& trajectory, const Event& event);
 
 /// Everything a finished shot produced.
 struct ShotResult {
@@ -142,6 +162,25 @@ ShotResult simulate_shot(const Table& table, const PhysicsParams& params, std::v
 /// world set out once): `result` is overwritten and keeps its memory, and so does the world. For
 /// searches that simulate many shots: nothing is allocated per shot once they are warm.
 void simulate_shot(World& world, const Strike& strike, ShotResult& result);
+
+/// What keeps a list of balls from being set out on a table (World's precondition).
+struct LayoutProblem {
+    /// The kinds of problem.
+    enum class Kind {
+        off_table, ///< `ball` is not on the playing surface
+        overlap,   ///< `ball` overlaps the earlier `other` (by more than 1e-9 m)
+        same_id,   ///< `ball` has the id of the earlier `other`
+    };
+    Kind kind = Kind::off_table; ///< what is wrong
+    std::size_t ball = 0;        ///< index of the ball found wrong
+    std::size_t other = 0;       ///< index of the earlier ball it conflicts with (overlap, same_id)
+};
+
+/// The first problem of `balls` in their order (each ball checked against those before it; a
+/// pocketed ball is not on the table and is left out), or nothing when a World can hold them.
+/// Balls touching within 1e-9 m are allowed: a rack's balls are packed that close.
+std::optional<LayoutProblem> layout_problem(const Table& table, const std::vector<Ball>& balls,
+                                            double radius);
 
 /// Kinetic energy of a ball, translation plus rotation (solid sphere), J.
 double kinetic_energy(const Ball& ball, double radius);

@@ -9,7 +9,7 @@
 #include <termpool/rules_names.hpp>
 #include <termpool/snooker_layout.hpp>
 #include <termpool/table_physics.hpp>
-#include <termpool/text_lines.hpp>
+#include "support/text_lines.hpp"
 
 #include "cli/numbers.hpp"
 
@@ -570,28 +570,29 @@ std::variant<std::vector<Placed>, ScenarioError> gather_balls(const Draft& draft
     return placed;
 }
 
-/// Checks the positions in line order, so that an error names the later of two lines.
+/// Checks the positions in line order, so that an error names the later of two lines (the
+/// core's check, layout_problem, in the scenario's words).
 std::optional<ScenarioError> check_positions(std::vector<Placed>& placed,
                                              const Scenario& scenario) {
     std::stable_sort(placed.begin(), placed.end(),
                      [](const Placed& a, const Placed& b) { return a.line < b.line; });
-    const double R = scenario.setup.physics.ball_radius;
-    // Rack balls are packed with a gap that their jitter may close, so touching is allowed.
-    constexpr double tolerance = 1e-9;
-    for (std::size_t i = 0; i < placed.size(); ++i) {
-        const Placed& p = placed[i];
-        if (!on_playing_surface(scenario.table, p.ball.position, R))
-            return ScenarioError{p.line, describe(p) + " at " + position_text(p.ball.position) +
-                                             " is off the table"};
-        for (std::size_t j = 0; j < i; ++j) {
-            const Placed& q = placed[j];
-            if (length(p.ball.position - q.ball.position) >= 2 * R - tolerance)
-                continue;
-            const std::string where =
-                q.line == p.line ? "" : " (line " + std::to_string(q.line) + ")";
-            return ScenarioError{p.line, describe(p) + " at " + position_text(p.ball.position) +
-                                             " overlaps " + describe(q) + where};
-        }
+    std::vector<Ball> balls;
+    for (const Placed& p : placed)
+        balls.push_back(p.ball);
+    const auto problem = layout_problem(scenario.table, balls, scenario.setup.physics.ball_radius);
+    if (!problem)
+        return std::nullopt;
+    const Placed& p = placed[problem->ball];
+    const Placed& q = placed[problem->other];
+    const std::string at = describe(p) + " at " + position_text(p.ball.position);
+    const std::string where = q.line == p.line ? "" : " (line " + std::to_string(q.line) + ")";
+    switch (problem->kind) {
+    case LayoutProblem::Kind::off_table:
+        return ScenarioError{p.line, at + " is off the table"};
+    case LayoutProblem::Kind::overlap:
+        return ScenarioError{p.line, at + " overlaps " + describe(q) + where};
+    case LayoutProblem::Kind::same_id: // gather_balls reports these first
+        return ScenarioError{p.line, "duplicate ball " + std::to_string(p.ball.id) + where};
     }
     return std::nullopt;
 }

@@ -48,4 +48,38 @@ Ball Trajectory::sample(std::size_t index, double time) const {
     return state_at(pieces_[index], time, core::cloth_model(params_.friction), params_);
 }
 
+Ball Trajectory::sample_before(std::size_t index, double time) const {
+    const std::vector<Piece>& list = pieces_[index];
+    // The last piece that started before `time`: a piece starting at `time` is the event's.
+    auto it = std::lower_bound(list.begin(), list.end(), time,
+                               [](const Piece& p, double t) { return p.start < t; });
+    if (it == list.begin())
+        return list.front().ball;
+    const Piece& piece = *std::prev(it);
+    const core::ClothModel cloth = core::cloth_model(params_.friction);
+    const double limit = cloth.time_to_transition(piece.ball, params_);
+    return cloth.advance(piece.ball, std::clamp(time - piece.start, 0.0, limit), params_);
+}
+
+std::optional<std::size_t> Trajectory::slot_of(int id) const {
+    for (std::size_t i = 0; i < pieces_.size(); ++i)
+        if (!pieces_[i].empty() && pieces_[i].front().ball.id == id)
+            return i;
+    return std::nullopt;
+}
+
+std::optional<EventState> event_state(const Trajectory& trajectory, const Event& event) {
+    const auto slot = trajectory.slot_of(event.ball);
+    if (!slot)
+        return std::nullopt;
+    EventState out{trajectory.sample_before(*slot, event.time),
+                   trajectory.sample(*slot, event.time), std::nullopt, std::nullopt};
+    if (event.kind == EventKind::ball_ball)
+        if (const auto other = trajectory.slot_of(event.other)) {
+            out.other_before = trajectory.sample_before(*other, event.time);
+            out.other_after = trajectory.sample(*other, event.time);
+        }
+    return out;
+}
+
 } // namespace termpool
