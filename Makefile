@@ -74,7 +74,9 @@ LDLIBS       += -lncursesw $(ICU_LIBS)
 # keeps between games (src/player: options, config, names, saves, statistics) and the hall
 # (src/hall: its server, state and socket folders) are linked with it into the binary and the
 # test binary.
-CORE_SRCS := $(wildcard src/core/*.cpp)
+# src/support: the core's own helpers (text lines and numbers, portable sine and cosine, the
+# random stream, the state digest), in the library but not in its installed interface.
+CORE_SRCS := $(wildcard src/core/*.cpp) $(wildcard src/support/*.cpp)
 FILES_SRCS := $(wildcard src/files/*.cpp)
 PLAYER_SRCS := $(wildcard src/player/*.cpp)
 HALL_SRCS := $(wildcard src/hall/*.cpp)
@@ -90,6 +92,21 @@ TEST_OBJS := $(patsubst tests/%.cpp,$(BUILD)/tests/%.o,$(TEST_SRCS))
 ALL_OBJS  := $(CORE_OBJS) $(APP_OBJS) $(MAIN_OBJ) $(TEST_OBJS)
 
 CORE_LIB := $(BUILD)/libtermpool.a
+
+# The version, from its one home (include/termpool/version.hpp).
+version_part = $(shell sed -n 's/^\#define TERMPOOL_VERSION_$(1) \([0-9]*\)$$/\1/p' include/termpool/version.hpp)
+VERSION_MAJOR := $(call version_part,MAJOR)
+VERSION_MINOR := $(call version_part,MINOR)
+VERSION   := $(VERSION_MAJOR).$(VERSION_MINOR).$(call version_part,PATCH)
+# Below 1.0 a minor version may change the interface, so the soname carries it.
+SONAME    := libtermpool.so.$(if $(filter 0,$(VERSION_MAJOR)),$(VERSION_MAJOR).$(VERSION_MINOR),$(VERSION_MAJOR))
+# The shared library and the Python module are built from position-independent objects of
+# their own ($(BUILD)/pic), so that the program and the static library keep their code.
+PIC_OBJS  := $(patsubst src/%.cpp,$(BUILD)/pic/%.o,$(CORE_SRCS))
+SHARED_LIB := $(BUILD)/libtermpool.so.$(VERSION)
+PC_FILE   := $(BUILD)/termpool.pc
+LIBDIR    ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
 BIN      := $(BUILD)/termpool
 TEST_BIN := $(BUILD)/termpool_tests
 
@@ -142,8 +159,30 @@ $(BUILD)/tests/%.o: tests/%.cpp $(FLAGS_STAMP) | $(OBJ_DIRS) $(DEPS_GATE)
 $(BUILD)/core/%.o: src/core/%.cpp $(FLAGS_STAMP) | $(OBJ_DIRS) $(DEPS_GATE)
 	$(CXX) $(CORE_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
 
+$(BUILD)/support/%.o: src/support/%.cpp $(FLAGS_STAMP) | $(OBJ_DIRS) $(DEPS_GATE)
+	$(CXX) $(CORE_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
+
 $(BUILD)/%.o: src/%.cpp $(FLAGS_STAMP) | $(OBJ_DIRS) $(DEPS_GATE)
 	$(CXX) $(ALL_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
+
+$(BUILD)/pic/%.o: src/%.cpp $(FLAGS_STAMP) | $(DEPS_GATE)
+	@mkdir -p $(dir $@)
+	$(CXX) $(CORE_CPPFLAGS) $(ALL_CXXFLAGS) -fPIC $(DEPFLAGS) -c $< -o $@
+
+$(SHARED_LIB): $(PIC_OBJS)
+	$(CXX) $(ALL_CXXFLAGS) $(ALL_LDFLAGS) -shared -Wl,-soname,$(SONAME) $^ -o $@
+
+# termpool.pc for the prefix it is built for (`make install PREFIX=...` writes it afresh).
+$(PC_FILE): include/termpool/version.hpp FORCE | $(OBJ_DIRS)
+	@printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
+	  'Name: termpool' \
+	  'Description: event-based pool and snooker physics, referees and matches (C++20)' \
+	  'Version: $(VERSION)' \
+	  'Cflags: -I$${includedir}' 'Libs: -L$${libdir} -ltermpool' > $@.new
+	@if cmp -s $@.new $@; then rm $@.new; else mv $@.new $@; fi
+
+# The libraries and termpool.pc (what `make install` installs besides the program).
+lib: $(CORE_LIB) $(SHARED_LIB) $(PC_FILE)
 
 $(OBJ_DIRS):
 	mkdir -p $@
@@ -156,7 +195,7 @@ $(FLAGS_STAMP): FORCE | $(OBJ_DIRS)
 	@if [ "$$(cat $@ 2>/dev/null)" != '$(FLAGS_TEXT)' ]; then printf '%s\n' '$(FLAGS_TEXT)' > $@; fi
 FORCE:
 
--include $(ALL_OBJS:.o=.d)
+-include $(ALL_OBJS:.o=.d) $(PIC_OBJS:.o=.d)
 
 # ---------------------------------------------------------------------------
 
@@ -259,13 +298,29 @@ fuzz-run: fuzz
 
 -include $(FUZZ_CORE_OBJS:.o=.d) $(FUZZ_APP_OBJS:.o=.d)
 
-install: $(BIN)
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man6
+# The program and its man page; the library (static and shared, with its soname link and the
+# development link), its headers and termpool.pc; the Python module where pybind11 is present.
+install: $(BIN) lib $(if $(PYTHON_READY),python)
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man6 \
+	  $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR)/termpool
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/termpool
 	install -m 644 man/termpool.6 $(DESTDIR)$(PREFIX)/share/man/man6/termpool.6
+	install -m 644 $(CORE_LIB) $(DESTDIR)$(LIBDIR)/libtermpool.a
+	install -m 755 $(SHARED_LIB) $(DESTDIR)$(LIBDIR)/libtermpool.so.$(VERSION)
+	ln -sf libtermpool.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libtermpool.so
+	install -m 644 $(PC_FILE) $(DESTDIR)$(LIBDIR)/pkgconfig/termpool.pc
+	install -m 644 include/termpool/*.hpp $(DESTDIR)$(INCLUDEDIR)/termpool/
+	$(if $(PYTHON_READY),install -d $(DESTDIR)$(PYTHON_SITE) && \
+	  install -m 644 $(PYTHON_MODULE) $(DESTDIR)$(PYTHON_SITE)/)
 
 uninstall:
-	rm -f $(DESTDIR)$(PREFIX)/bin/termpool $(DESTDIR)$(PREFIX)/share/man/man6/termpool.6
+	rm -f $(DESTDIR)$(PREFIX)/bin/termpool $(DESTDIR)$(PREFIX)/share/man/man6/termpool.6 \
+	  $(DESTDIR)$(LIBDIR)/libtermpool.a $(DESTDIR)$(LIBDIR)/libtermpool.so.$(VERSION) \
+	  $(DESTDIR)$(LIBDIR)/$(SONAME) $(DESTDIR)$(LIBDIR)/libtermpool.so \
+	  $(DESTDIR)$(LIBDIR)/pkgconfig/termpool.pc \
+	  $(DESTDIR)$(PYTHON_SITE)/$(notdir $(PYTHON_MODULE))
+	rm -rf $(DESTDIR)$(INCLUDEDIR)/termpool
 
 clean:
 	rm -rf build

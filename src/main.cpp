@@ -1,6 +1,7 @@
 // termpool entry point: dispatches to the subcommands.
 
 #include "cli/commands.hpp"
+#include <termpool/version.hpp>
 #include "cli/saves_command.hpp"
 #include "cli/stats_command.hpp"
 #include "hall/hall_main.hpp"
@@ -14,8 +15,6 @@
 #include <vector>
 
 namespace {
-
-constexpr const char* kVersion = "0.1.0";
 
 void print_usage(std::ostream& out) {
     out << "usage: termpool [OPTIONS]            play pool in the terminal\n"
@@ -69,7 +68,7 @@ int main(int argc, char** argv) {
         return 0;
     }
     if (command == "--version") {
-        std::cout << "termpool " << kVersion << '\n';
+        std::cout << "termpool " << TERMPOOL_VERSION << '\n';
         return 0;
     }
 
