@@ -5,6 +5,10 @@
 
 #include <termpool/enum_names.hpp>
 
+#include <optional>
+#include <string>
+#include <string_view>
+
 namespace termpool {
 
 /// How two balls exchange momentum at contact.
@@ -131,5 +135,21 @@ struct PhysicsParams {
     CushionModel cushion = CushionModel::physical;       ///< ball-cushion and ball-jaw model
     FrictionModel friction;                              ///< cloth model
 };
+
+/// The constants of PhysicsParams that a scenario's `param NAME VALUE` line, the Python module
+/// and a researcher's script set by their short names: u_s, u_r, u_sp, e_b, u_b, e_c, f_c, g, R
+/// and m. (u_b sets the constant ball-ball friction and the constant law with it.)
+inline constexpr std::string_view physics_parameter_names[] = {"u_s", "u_r", "u_sp", "e_b", "u_b",
+                                                               "e_c", "f_c", "g",    "R",   "m"};
+
+/// Sets the constant named `name` (physics_parameter_names) of `params` to `value`, or says why
+/// not in the words of `termpool simulate` ("unknown parameter 'mu' (expected ...)", "e_b must
+/// be between 0 and 1 (got 1.5)"), leaving `params` as it was.
+std::optional<std::string> set_physics_parameter(PhysicsParams& params, std::string_view name,
+                                                 double value);
+
+/// The value of the constant named `name` in `params` (u_b: the constant law's u_b, or the fit's
+/// at zero sliding speed); nothing for an unknown name.
+std::optional<double> physics_parameter(const PhysicsParams& params, std::string_view name);
 
 } // namespace termpool

@@ -1,5 +1,6 @@
 #include "cli/scenario.hpp"
 
+#include "support/text_lines.hpp"
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -9,7 +10,6 @@
 #include <termpool/rules_names.hpp>
 #include <termpool/snooker_layout.hpp>
 #include <termpool/table_physics.hpp>
-#include "support/text_lines.hpp"
 
 #include "cli/numbers.hpp"
 
@@ -183,67 +183,26 @@ std::optional<int> line_of(const Draft& draft, std::string_view key) {
     return it->second;
 }
 
-/// What values of a parameter make physical sense.
-enum class Range { non_negative, unit_interval, positive };
-
-struct ParamSpec {
-    std::string_view name;
-    double PhysicsParams::*field; ///< null for u_b, which lives in PhysicsParams::ball_friction
-    Range range;
-};
-
-constexpr ParamSpec param_specs[] = {
-    {"u_s", &PhysicsParams::sliding_friction, Range::non_negative},
-    {"u_r", &PhysicsParams::rolling_friction, Range::non_negative},
-    {"u_sp", &PhysicsParams::spin_friction, Range::non_negative},
-    {"e_b", &PhysicsParams::ball_restitution, Range::unit_interval},
-    {"u_b", nullptr, Range::non_negative}, // the constant ball-ball friction: see parse_param
-    {"e_c", &PhysicsParams::cushion_restitution, Range::unit_interval},
-    {"f_c", &PhysicsParams::cushion_friction, Range::non_negative},
-    {"g", &PhysicsParams::gravity, Range::positive},
-    {"R", &PhysicsParams::ball_radius, Range::positive},
-    {"m", &PhysicsParams::ball_mass, Range::positive},
-};
-
 Problem parse_param(const Line& line, Draft& draft) {
     if (Problem p = arity(line, 2, 2, "param NAME VALUE"))
         return p;
     const std::string_view name = line.arg(0);
-    const auto spec = std::find_if(std::begin(param_specs), std::end(param_specs),
-                                   [&](const ParamSpec& s) { return s.name == name; });
-    if (spec == std::end(param_specs))
-        return "unknown parameter " + quoted(name) +
-               " (expected u_s, u_r, u_sp, e_b, u_b, e_c, f_c, g, R or m)";
-    if (Problem p = once(draft, "param " + std::string(name), line))
-        return p;
+    const bool known =
+        std::find(std::begin(physics_parameter_names), std::end(physics_parameter_names), name) !=
+        std::end(physics_parameter_names);
+    if (known)
+        if (Problem p = once(draft, "param " + std::string(name), line))
+            return p;
     double value = 0;
-    if (Problem p = number(line.arg(1), name, value))
-        return p;
-    const std::string got = " (got " + std::string(line.arg(1)) + ")";
-    switch (spec->range) {
-    case Range::non_negative:
-        if (value < 0)
-            return std::string(name) + " must be >= 0" + got;
-        break;
-    case Range::unit_interval:
-        if (value < 0 || value > 1)
-            return std::string(name) + " must be between 0 and 1" + got;
-        break;
-    case Range::positive:
-        if (value <= 0)
-            return std::string(name) + " must be > 0" + got;
-        break;
-    }
-    if (spec->field) {
-        draft.setup.physics.*spec->field = value;
-        return {};
-    }
-    if (const std::optional<int> throw_line = line_of(draft, "throw"))
-        return "'param u_b' cannot go with 'throw' (line " + std::to_string(*throw_line) +
-               "): both set the ball-ball friction";
-    draft.setup.physics.ball_friction.model = BallFrictionModel::constant;
-    draft.setup.physics.ball_friction.constant = value;
-    return {};
+    if (known)
+        if (Problem p = number(line.arg(1), name, value))
+            return p;
+    if (name == "u_b")
+        if (const std::optional<int> throw_line = line_of(draft, "throw"))
+            return "'param u_b' cannot go with 'throw' (line " + std::to_string(*throw_line) +
+                   "): both set the ball-ball friction";
+    // The core's check, so that a script and a scenario are told the same.
+    return set_physics_parameter(draft.setup.physics, name, value);
 }
 
 /// Reads a non-negative ball-friction constant of a `throw` line.
