@@ -1,13 +1,13 @@
 // termpool entry point: dispatches to the subcommands.
 
 #include "cli/commands.hpp"
-#include <termpool/version.hpp>
 #include "cli/saves_command.hpp"
 #include "cli/stats_command.hpp"
 #include "hall/hall_main.hpp"
 #include "tui/bench_render.hpp"
 #include "tui/game_main.hpp"
 #include "tui/hall_session.hpp"
+#include <termpool/version.hpp>
 
 #include <exception>
 #include <iostream>

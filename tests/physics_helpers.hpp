@@ -1,8 +1,8 @@
 #pragma once
 // Small builders shared by the physics tests.
 
-#include <termpool/rack.hpp>
 #include "support/random.hpp"
+#include <termpool/rack.hpp>
 #include <termpool/simulator.hpp>
 #include <vector>
 

@@ -3,6 +3,8 @@
 // and the longer `make soak` share them. Nothing here uses Catch2, so that shots can be run on
 // several threads and their failures counted.
 
+#include "support/random.hpp"
+#include "support/text_numbers.hpp"
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -10,11 +12,9 @@
 #include <numbers>
 #include <string>
 #include <termpool/rack.hpp>
-#include "support/random.hpp"
 #include <termpool/simulator.hpp>
 #include <termpool/table.hpp>
 #include <termpool/table_physics.hpp>
-#include "support/text_numbers.hpp"
 #include <thread>
 #include <vector>
 

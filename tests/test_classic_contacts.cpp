@@ -1,12 +1,12 @@
 // The classic cloth models' exact contact solves (src/core/classic_contacts.cpp), against
 // brute-force scans, and whole classic shots: the reproducers that used to end overlapped, inside
 // a rail or in an endless cluster, and random shots checked after every event.
+#include "support/random.hpp"
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <termpool/rack.hpp>
-#include "support/random.hpp"
 
 #include "cli/scenario.hpp"
 #include "core/classic_contacts.hpp"

@@ -1,8 +1,8 @@
 // Ball-ball and ball-cushion contacts, checked through the world as a shot would meet them.
+#include "support/random.hpp"
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
-#include "support/random.hpp"
 
 #include "core/collision.hpp"
 #include "core/physical_cloth.hpp"

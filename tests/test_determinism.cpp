@@ -12,15 +12,15 @@
 // draws put in order, moves its hash without changing the physics; so does a change of how the
 // computer chooses its shots, in the seeded games: a record keeps the strikes, not the choices,
 // and replays the same. Issue 27's pro, which plays its leaves out, moved the pro game's.)
+#include "support/portable_math.hpp"
+#include "support/random.hpp"
+#include "support/state_digest.hpp"
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <string>
 #include <termpool/match.hpp>
-#include "support/portable_math.hpp"
 #include <termpool/rack.hpp>
-#include "support/random.hpp"
 #include <termpool/simulator.hpp>
-#include "support/state_digest.hpp"
 #include <vector>
 
 #include "stress_shots.hpp"

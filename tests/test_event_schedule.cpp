@@ -3,10 +3,10 @@
 // tested) and with many (the grid, and long paths walked along their capsules) it must choose the
 // same event after every change. And the simulator's cost per event through `termpool bench`
 // rows is covered by test_simulate_cli.cpp; here, the grid never loses a pair in reach.
+#include "support/random.hpp"
 #include <catch2/catch.hpp>
 #include <limits>
 #include <map>
-#include "support/random.hpp"
 
 #include "core/ball_grid.hpp"
 #include "core/event_schedule.hpp"

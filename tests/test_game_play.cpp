@@ -1,8 +1,8 @@
 // Whole games played to the end by a simple shot picker, with the referee's invariants checked
 // after every shot.
+#include "support/random.hpp"
 #include <algorithm>
 #include <catch2/catch.hpp>
-#include "support/random.hpp"
 
 #include "rules_helpers.hpp"
 

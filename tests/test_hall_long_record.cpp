@@ -1,10 +1,10 @@
 // A table whose record is as long as the hall keeps is joined and watched again: its record,
 // far over the output queue's bound, reaches a client that reads at full speed. The
 // connection's bulk allowance that lets it, tested on its own.
+#include "support/text_numbers.hpp"
 #include <catch2/catch.hpp>
 #include <string>
 #include <sys/socket.h>
-#include "support/text_numbers.hpp"
 
 #include "hall/client.hpp"
 #include "hall/connection.hpp"

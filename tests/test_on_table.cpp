@@ -1,10 +1,10 @@
 // One definition of "on the table": out of the rubber, in front of every capture line, on the
 // cloth or in a pocket's mouth; and the cursor that steps over it.
+#include "support/random.hpp"
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <termpool/practice.hpp>
-#include "support/random.hpp"
 #include <termpool/table.hpp>
 
 using namespace termpool;

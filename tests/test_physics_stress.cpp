@@ -1,11 +1,11 @@
 // The stress test: random shots across every model, every event checked (stress_shots.hpp).
 // TERMPOOL_STRESS_SHOTS sets how many; `make soak` runs the hidden case over SOAK_SHOTS.
+#include "support/text_numbers.hpp"
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
-#include "support/text_numbers.hpp"
 
 #include "stress_shots.hpp"
 

@@ -1,13 +1,13 @@
 // The project's own transcendental functions (src/core/portable_math.cpp) against the C
 // library's, in units in the last place, over the ranges termpool uses and beyond; and the
 // values that must be exact.
+#include "support/portable_math.hpp"
+#include "support/random.hpp"
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include "support/portable_math.hpp"
-#include "support/random.hpp"
 
 namespace portable = termpool::portable;
 

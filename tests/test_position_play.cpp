@@ -1,11 +1,11 @@
 // Pro's position play (issue 27): a pot's chance falls with distance and cut and is nothing past
 // 80 degrees; a search's trials play to the bit what a game plays; a world reused for many shots
 // gives the bits of a fresh one; pro breaks and decides within its budget.
+#include "support/random.hpp"
 #include <catch2/catch.hpp>
 #include <termpool/computer.hpp>
 #include <termpool/game_registry.hpp>
 #include <termpool/rack.hpp>
-#include "support/random.hpp"
 
 #include "core/event_schedule.hpp"
 #include "core/position_play.hpp"

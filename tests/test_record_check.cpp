@@ -1,5 +1,6 @@
 // A record names the physics it was made with and the state its actions led to: a replay that
 // ends anywhere else is refused, with words that say why.
+#include "support/state_digest.hpp"
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <chrono>
@@ -8,7 +9,6 @@
 #include <termpool/match.hpp>
 #include <termpool/record.hpp>
 #include <termpool/simulator.hpp>
-#include "support/state_digest.hpp"
 
 #include "match_helpers.hpp"
 

@@ -1,12 +1,12 @@
 // A scenario built from any `simulate` output is accepted, and gives back the very doubles the
 // simulator ended with: one rule of "on the table", and numbers printed to read back exactly.
+#include "support/random.hpp"
+#include "support/text_numbers.hpp"
 #include <algorithm>
 #include <bit>
 #include <catch2/catch.hpp>
 #include <sstream>
 #include <string>
-#include "support/random.hpp"
-#include "support/text_numbers.hpp"
 #include <variant>
 
 #include "cli/scenario.hpp"

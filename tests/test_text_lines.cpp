@@ -1,6 +1,6 @@
+#include "support/text_lines.hpp"
 #include <catch2/catch.hpp>
 #include <string>
-#include "support/text_lines.hpp"
 #include <vector>
 
 using termpool::split_fields;

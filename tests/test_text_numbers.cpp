@@ -1,10 +1,10 @@
 // Numbers as state is written: the shortest text that reads back to the same double.
+#include "support/random.hpp"
+#include "support/text_numbers.hpp"
 #include <bit>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
-#include "support/random.hpp"
-#include "support/text_numbers.hpp"
 
 using namespace termpool;
 

@@ -1,8 +1,8 @@
 // Whole shots: no tunnelling, energy and momentum, determinism, and a large property test.
+#include "support/random.hpp"
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <numbers>
-#include "support/random.hpp"
 
 #include "core/cloth_model.hpp"
 #include "physics_helpers.hpp"

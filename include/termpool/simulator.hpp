@@ -88,8 +88,8 @@ private:
 /// The balls of one event at its instant: each one's state just before the event and just
 /// after it was resolved (position, velocity, spin and motion state).
 struct EventState {
-    Ball ball_before;                ///< Event::ball before the event
-    Ball ball_after;                 ///< Event::ball after it
+    Ball ball_before;                 ///< Event::ball before the event
+    Ball ball_after;                  ///< Event::ball after it
     std::optional<Ball> other_before; ///< for ball_ball: Event::other before the event
     std::optional<Ball> other_after;  ///< for ball_ball: Event::other after it
 };

@@ -13,9 +13,9 @@
 #define TERMPOOL_VERSION_PATCH 0
 
 /// The version as text, "MAJOR.MINOR.PATCH".
-#define TERMPOOL_VERSION                                                                         \
-    TERMPOOL_VERSION_TEXT_(TERMPOOL_VERSION_MAJOR)                                               \
-    "." TERMPOOL_VERSION_TEXT_(TERMPOOL_VERSION_MINOR) "." TERMPOOL_VERSION_TEXT_(                \
+#define TERMPOOL_VERSION                                                                           \
+    TERMPOOL_VERSION_TEXT_(TERMPOOL_VERSION_MAJOR)                                                 \
+    "." TERMPOOL_VERSION_TEXT_(TERMPOOL_VERSION_MINOR) "." TERMPOOL_VERSION_TEXT_(                 \
         TERMPOOL_VERSION_PATCH)
 /// One number as text (the two steps let a macro's value, not its name, be quoted).
 #define TERMPOOL_VERSION_TEXT_(number) TERMPOOL_VERSION_QUOTE_(number)

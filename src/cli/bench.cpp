@@ -1,5 +1,8 @@
 // `termpool bench`: times seeded breaks and random post-break shots on one core.
 
+#include "support/portable_math.hpp"
+#include "support/random.hpp"
+#include "support/state_digest.hpp"
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -10,12 +13,9 @@
 #include <optional>
 #include <string>
 #include <termpool/game_registry.hpp>
-#include "support/portable_math.hpp"
 #include <termpool/rack.hpp>
-#include "support/random.hpp"
 #include <termpool/simulator.hpp>
 #include <termpool/snooker_layout.hpp>
-#include "support/state_digest.hpp"
 #include <termpool/table.hpp>
 #include <termpool/table_physics.hpp>
 

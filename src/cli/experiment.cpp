@@ -1,5 +1,7 @@
 // `termpool experiment`: the seed report's simulation study (section 4), reproduced and
 // extended on the exact simulator: friction models, the masses of the balls, and throw.
+#include "support/portable_math.hpp"
+#include "support/random.hpp"
 #include <algorithm>
 #include <clocale>
 #include <cmath>
@@ -10,9 +12,7 @@
 #include <optional>
 #include <set>
 #include <string>
-#include "support/portable_math.hpp"
 #include <termpool/rack.hpp>
-#include "support/random.hpp"
 #include <termpool/simulator.hpp>
 #include <termpool/table_physics.hpp>
 #include <vector>

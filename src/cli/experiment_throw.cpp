@@ -1,5 +1,6 @@
 #include "cli/experiment_throw.hpp"
 
+#include "support/portable_math.hpp"
 #include <clocale>
 #include <cmath>
 #include <cstdio>
@@ -7,7 +8,6 @@
 #include <langinfo.h>
 #include <numbers>
 #include <string>
-#include "support/portable_math.hpp"
 #include <termpool/simulator.hpp>
 #include <termpool/table.hpp>
 #include <vector>

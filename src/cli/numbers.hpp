@@ -3,11 +3,11 @@
 /// Conversions between numbers and the text of the command-line tools, independent of the locale
 /// (the game sets one for curses, and "1,5" must never be read as a number here).
 
+#include "support/text_numbers.hpp"
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
-#include "support/text_numbers.hpp"
 
 namespace termpool::cli {
 

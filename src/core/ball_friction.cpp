@@ -1,6 +1,6 @@
+#include "../support/portable_math.hpp"
 #include <cmath>
 #include <termpool/params.hpp>
-#include "../support/portable_math.hpp"
 
 namespace termpool {
 

@@ -4,10 +4,10 @@
 
 #include <termpool/break_off.hpp>
 
+#include "../support/portable_math.hpp"
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include "../support/portable_math.hpp"
 #include <termpool/rules.hpp>
 #include <termpool/snooker_layout.hpp>
 

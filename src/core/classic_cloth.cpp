@@ -3,9 +3,9 @@
 // (Decay, Constant, Combined) that the model's functions are instantiated with, so the law is
 // chosen with the model, not looked up on every step.
 
+#include "../support/portable_math.hpp"
 #include <cmath>
 #include <limits>
-#include "../support/portable_math.hpp"
 #include <termpool/simulator.hpp>
 
 #include "classic_motion.hpp"

@@ -1,10 +1,10 @@
 #include "classic_contacts.hpp"
 
+#include "../support/portable_math.hpp"
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
-#include "../support/portable_math.hpp"
 
 #include "contact_time.hpp"
 #include "polynomial.hpp"

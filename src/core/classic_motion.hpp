@@ -4,9 +4,9 @@
 // constant law K = 0. The contact searches split a ball's motion into its phases, in each of which
 // the centre is a closed form the polynomial solvers handle.
 
+#include "../support/portable_math.hpp"
 #include <cmath>
 #include <limits>
-#include "../support/portable_math.hpp"
 #include <termpool/vec.hpp>
 
 namespace termpool::core {

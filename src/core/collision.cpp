@@ -1,8 +1,8 @@
 #include "collision.hpp"
 
+#include "../support/portable_math.hpp"
 #include <algorithm>
 #include <cmath>
-#include "../support/portable_math.hpp"
 
 #include "classic_motion.hpp"
 #include "physical_cloth.hpp"

@@ -1,5 +1,7 @@
 // The computer player's search: ghost-ball aims at every legal target and pocket, at a few
 // speeds and spins, each simulated on a copy of the game and scored by the referee.
+#include "../support/portable_math.hpp"
+#include "../support/random.hpp"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -7,8 +9,6 @@
 #include <termpool/break_off.hpp>
 #include <termpool/computer.hpp>
 #include <termpool/game_registry.hpp>
-#include "../support/random.hpp"
-#include "../support/portable_math.hpp"
 #include <termpool/simulator.hpp>
 #include <termpool/snooker_layout.hpp>
 

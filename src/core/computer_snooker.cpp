@@ -5,13 +5,13 @@
 // (points and position) plus the misses times the table they hand over. Safeties and
 // combinations are sampled under the noise, as in pool. Tables are valued by
 // snooker_leave.cpp.
+#include "../support/portable_math.hpp"
+#include "../support/random.hpp"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
 #include <termpool/computer.hpp>
-#include "../support/random.hpp"
-#include "../support/portable_math.hpp"
 #include <termpool/snooker_layout.hpp>
 
 #include "computer_parts.hpp"

@@ -1,9 +1,9 @@
 #include "cue_impact.hpp"
 
+#include "../support/portable_math.hpp"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include "../support/portable_math.hpp"
 
 namespace termpool::core {
 namespace {

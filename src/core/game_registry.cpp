@@ -4,8 +4,8 @@
 #include <numbers>
 #include <termpool/game_registry.hpp>
 
-#include <termpool/break_off.hpp>
 #include "../support/portable_math.hpp"
+#include <termpool/break_off.hpp>
 #include <termpool/referee.hpp>
 #include <termpool/snooker_layout.hpp>
 

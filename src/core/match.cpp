@@ -1,4 +1,5 @@
 // The flow of a match: who acts, what they may do, each action checked and recorded.
+#include "../support/state_digest.hpp"
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -6,7 +7,6 @@
 #include <termpool/game_registry.hpp>
 #include <termpool/match.hpp>
 #include <termpool/referee.hpp>
-#include "../support/state_digest.hpp"
 
 namespace termpool {
 

@@ -1,9 +1,9 @@
 #include "position_play.hpp"
 
+#include "../support/portable_math.hpp"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include "../support/portable_math.hpp"
 
 #include "computer_parts.hpp"
 #include "shot_lines.hpp"

@@ -1,8 +1,8 @@
+#include "../support/random.hpp"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <termpool/rack.hpp>
-#include "../support/random.hpp"
 #include <termpool/snooker_layout.hpp>
 #include <utility>
 

@@ -1,14 +1,14 @@
 // The text form of a game record, and its replay.
+#include "../support/random.hpp"
+#include "../support/state_digest.hpp"
+#include "../support/text_lines.hpp"
+#include "../support/text_numbers.hpp"
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <termpool/game_registry.hpp>
-#include "../support/random.hpp"
 #include <termpool/record.hpp>
 #include <termpool/rules_names.hpp>
-#include "../support/state_digest.hpp"
-#include "../support/text_lines.hpp"
-#include "../support/text_numbers.hpp"
 
 namespace termpool {
 namespace {

@@ -1,12 +1,12 @@
 // The scripted safe player: an easy pot or a safety, each found by simulating a few strokes
 // on a copy of the frame and asking the referee what they would mean.
+#include "../support/portable_math.hpp"
+#include "../support/random.hpp"
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <termpool/break_off.hpp>
 #include <termpool/game_registry.hpp>
-#include "../support/random.hpp"
-#include "../support/portable_math.hpp"
 #include <termpool/safe_player.hpp>
 #include <termpool/snooker_layout.hpp>
 
@@ -171,7 +171,8 @@ ComputerShot SafePlayer::shot(const Game& game) {
     ComputerShot chosen;
     if (game.is_break()) {
         chosen.planned = break_off(game);
-        chosen.strike = with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
+        chosen.strike =
+            with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
         return chosen;
     }
     Random noise = fork_stream(stream_);
@@ -180,7 +181,8 @@ ComputerShot SafePlayer::shot(const Game& game) {
         chosen.planned = pot->strike;
         chosen.call = pot->call;
         chosen.score = pot->made;
-        chosen.strike = with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
+        chosen.strike =
+            with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
         return chosen;
     }
     // The safeties, judged without noise first; the best few again under it.
@@ -204,7 +206,8 @@ ComputerShot SafePlayer::shot(const Game& game) {
         if (cue && object)
             chosen.planned = {2.0, aim_degrees(object->position - cue->position), 0, 0};
         chosen.call = call_for(game, object ? object->id : 0, 0);
-        chosen.strike = with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
+        chosen.strike =
+            with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
         return chosen;
     }
     std::ranges::stable_sort(judged,
@@ -225,7 +228,8 @@ ComputerShot SafePlayer::shot(const Game& game) {
     chosen.planned = best.strike;
     chosen.call = best.call;
     chosen.score = best.value;
-    chosen.strike = with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
+    chosen.strike =
+        with_stream(stream_, [&](Random& rng) { return with_noise(chosen.planned, rng); });
     return chosen;
 }
 

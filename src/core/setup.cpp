@@ -1,8 +1,8 @@
 // The game's setup and the one text form of the cloth model.
+#include "../support/text_numbers.hpp"
 #include <cmath>
 #include <termpool/game_registry.hpp>
 #include <termpool/setup.hpp>
-#include "../support/text_numbers.hpp"
 
 namespace termpool {
 namespace {

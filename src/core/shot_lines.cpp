@@ -1,9 +1,9 @@
 // Lines of play: what lies in a ball's way.
 #include "shot_lines.hpp"
 
+#include "../support/portable_math.hpp"
 #include <algorithm>
 #include <numbers>
-#include "../support/portable_math.hpp"
 
 namespace termpool {
 

@@ -1,10 +1,10 @@
 // Snooker: WPBSA rules, as far as a simulator can judge them. The referee keeps the score
 // sheet; what it cannot see (a push stroke, a jump shot, the intent behind a miss) it judges
 // by the simplest reading of the rule, as the README says.
-#include <algorithm>
-#include <cmath>
 #include "../support/random.hpp"
 #include "../support/state_digest.hpp"
+#include <algorithm>
+#include <cmath>
 #include <termpool/snooker_layout.hpp>
 #include <termpool/spots.hpp>
 

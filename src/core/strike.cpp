@@ -1,6 +1,6 @@
+#include "../support/portable_math.hpp"
 #include <cmath>
 #include <numbers>
-#include "../support/portable_math.hpp"
 #include <termpool/simulator.hpp>
 
 #include "cloth_model.hpp"

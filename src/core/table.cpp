@@ -1,8 +1,8 @@
+#include "../support/portable_math.hpp"
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include "../support/portable_math.hpp"
 #include <termpool/snooker_layout.hpp>
 #include <termpool/table.hpp>
 

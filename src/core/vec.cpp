@@ -1,5 +1,5 @@
-#include <termpool/vec.hpp>
 #include "../support/portable_math.hpp"
+#include <termpool/vec.hpp>
 
 // Out of line: the library's interface does not show the project's own sine and cosine.
 namespace termpool {

@@ -5,6 +5,7 @@
 
 #include "hall/hall_bench.hpp"
 
+#include "support/text_numbers.hpp"
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
@@ -21,7 +22,6 @@
 #include <sys/wait.h>
 #include <termpool/computer.hpp>
 #include <termpool/game_registry.hpp>
-#include "support/text_numbers.hpp"
 #include <thread>
 #include <unistd.h>
 #include <vector>

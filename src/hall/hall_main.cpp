@@ -1,5 +1,6 @@
 #include "hall/hall_main.hpp"
 
+#include "support/text_numbers.hpp"
 #include <atomic>
 #include <csignal>
 #include <cstdlib>
@@ -7,7 +8,6 @@
 #include <pthread.h>
 #include <signal.h>
 #include <sys/stat.h>
-#include "support/text_numbers.hpp"
 #include <unistd.h>
 
 #include "files/atomic_file.hpp"

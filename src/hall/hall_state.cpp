@@ -6,6 +6,7 @@
 #include "files/read_file.hpp"
 #include "hall/sha256.hpp"
 
+#include "support/text_lines.hpp"
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -17,7 +18,6 @@
 #include <sys/random.h>
 #include <sys/stat.h>
 #include <termpool/match.hpp>
-#include "support/text_lines.hpp"
 #include <unistd.h>
 #include <variant>
 

@@ -1,11 +1,11 @@
 #include "hall/protocol.hpp"
 
+#include "support/text_lines.hpp"
+#include "support/text_numbers.hpp"
 #include <charconv>
 #include <cmath>
 #include <termpool/match.hpp>
 #include <termpool/name_characters.hpp>
-#include "support/text_lines.hpp"
-#include "support/text_numbers.hpp"
 #include <vector>
 
 namespace termpool::hall {

@@ -1,5 +1,6 @@
 #include "player/stats_file.hpp"
 
+#include "support/text_lines.hpp"
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -7,7 +8,6 @@
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <termpool/game_registry.hpp>
-#include "support/text_lines.hpp"
 #include <unistd.h>
 
 #include "files/atomic_file.hpp"

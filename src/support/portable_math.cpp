@@ -3,9 +3,9 @@
 // anyone can check, at the cost of a few more terms. Every constant is a double literal or a
 // quotient of two that the compiler folds with correct rounding.
 
+#include "portable_math.hpp"
 #include <cmath>
 #include <limits>
-#include "portable_math.hpp"
 
 namespace termpool::portable {
 namespace {

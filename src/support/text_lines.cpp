@@ -1,5 +1,5 @@
-#include <algorithm>
 #include "text_lines.hpp"
+#include <algorithm>
 
 namespace termpool {
 namespace {

@@ -1,10 +1,10 @@
 // Numbers in the project's text formats, read the same way everywhere and independent of the
 // locale.
+#include "text_numbers.hpp"
 #include <algorithm>
 #include <charconv>
 #include <limits>
 #include <system_error>
-#include "text_numbers.hpp"
 
 namespace termpool {
 namespace {
