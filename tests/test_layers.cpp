@@ -150,6 +150,19 @@ TEST_CASE("the hall includes the public headers, its own files, the standard lib
     }
 }
 
+TEST_CASE("the Python module uses the installed interface only: what a researcher's own "
+          "program can use",
+          "[layers]") {
+    const std::vector<Include> all = includes("src/python");
+    REQUIRE(!all.empty());
+    for (const Include& inc : all) {
+        INFO(inc.file << ": " << inc.line);
+        CHECK_FALSE(contains(inc.target, "curses"));
+        if (!inc.angled)
+            CHECK(inc.target.starts_with("python/"));
+    }
+}
+
 TEST_CASE("the file helpers include only the public headers, each other and the system",
           "[layers]") {
     const std::vector<Include> all = includes("src/files");
@@ -242,7 +255,8 @@ TEST_CASE("outside the core no code names a game type but through the registry",
     // hall or player file has to learn of it. The public headers define the types.
     static const std::regex named(R"(\bGameType::[a-z]|\bis_rotation_game\b)");
     int files = 0;
-    for (const char* dir : {"src/tui", "src/cli", "src/hall", "src/player", "src/files"}) {
+    for (const char* dir :
+         {"src/tui", "src/cli", "src/hall", "src/player", "src/files", "src/python"}) {
         for (const fs::path& file : sources(dir)) {
             ++files;
             std::ifstream in(file);
