@@ -50,6 +50,9 @@ endif
 
 # ICU's normaliser compares the hall's names (src/hall/name_key.cpp); the core does without it.
 ICU_CFLAGS   := $(shell pkg-config --cflags icu-uc 2>/dev/null)
+# ncursesw as pkg-config describes it (its include folder and libraries, tinfo where split).
+CURSES_CFLAGS := $(shell pkg-config --cflags ncursesw 2>/dev/null)
+CURSES_LIBS   := $(shell pkg-config --libs ncursesw 2>/dev/null || echo -lncursesw)
 ICU_LIBS     := $(shell pkg-config --libs icu-uc 2>/dev/null || echo -licuuc -licudata)
 
 WARNFLAGS    := -Wall -Wextra -Wpedantic -Werror $(SAN_WARNFLAGS)
@@ -65,7 +68,7 @@ FP_FLAGS     := -ffp-contract=off -fno-tree-vectorize
 ALL_CXXFLAGS := -std=c++20 $(FP_FLAGS) $(OPTFLAGS) $(WARNFLAGS) $(CXXFLAGS)
 DEPFLAGS     := -MMD -MP
 ALL_LDFLAGS  := $(SAN_LDFLAGS) $(LDFLAGS)
-LDLIBS       += -lncursesw $(ICU_LIBS)
+LDLIBS       += $(CURSES_LIBS) $(ICU_LIBS)
 
 # ---------------------------------------------------------------------------
 # Sources and objects (out of tree, mirroring src/ under $(BUILD)/)
@@ -110,21 +113,41 @@ INCLUDEDIR ?= $(PREFIX)/include
 BIN      := $(BUILD)/termpool
 TEST_BIN := $(BUILD)/termpool_tests
 
+# The Python module (src/python, pybind11) is the core's PIC objects and its own, for the Python
+# that /usr/bin/python3 is (Debian's, with its python3-pybind11 and python3-numpy; PYTHON=...
+# picks another). It installs where that Python looks for a PREFIX: Debian's dist-packages for
+# /usr and /usr/local, PREFIX/lib/pythonX.Y/site-packages elsewhere; PYTHON_SITE overrides.
+PYTHON         ?= /usr/bin/python3
+PYTHON_CONFIG  ?= $(PYTHON)-config
+PYTHON_VERSION := $(shell $(PYTHON) -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null)
+PYTHON_SUFFIX  := $(shell $(PYTHON_CONFIG) --extension-suffix 2>/dev/null)
+PYTHON_CFLAGS  := $(shell $(PYTHON_CONFIG) --includes 2>/dev/null)
+PYTHON_READY   := $(and $(PYTHON_SUFFIX),$(wildcard /usr/include/pybind11/pybind11.h))
+PYTHON_SITE    ?= $(if $(filter /usr,$(PREFIX)),$(PYTHON_SITE_USR),$(if \
+                  $(filter /usr/local,$(PREFIX)),/usr/local/lib/python$(PYTHON_VERSION)/dist-packages,$(PREFIX)/lib/python$(PYTHON_VERSION)/site-packages))
+# Where the module goes for PREFIX /usr (the staged install that the tests use).
+PYTHON_SITE_USR := /usr/lib/python3/dist-packages
+PYTHON_SRCS    := $(wildcard src/python/*.cpp)
+PYTHON_OBJS    := $(patsubst src/%.cpp,$(BUILD)/pic/%.o,$(PYTHON_SRCS))
+PYTHON_MODULE  := $(BUILD)/python/termpool$(PYTHON_SUFFIX)
+
 FLAGS_STAMP := $(BUILD)/compile-flags
 OBJ_DIRS := $(sort $(patsubst %/,%,$(dir $(ALL_OBJS) $(BIN))))
 
 FORMAT_FILES := $(wildcard src/*.cpp src/*.hpp src/*/*.cpp src/*/*.hpp \
-                           include/*/*.hpp include/*/*/*.hpp tests/*.cpp tests/*.hpp)
+                           include/*/*.hpp include/*/*/*.hpp tests/*.cpp tests/*.hpp \
+                           doc/examples/*.cpp)
 
 # What the build needs, and what the tests need besides: tmux runs the end-to-end tests, groff
-# checks the man page. pkg-config finds ICU's libraries.
-DEB_PACKAGES := g++ make libncurses-dev libicu-dev pkg-config catch2 tmux groff
+# checks the man page, pytest and NumPy test the Python module, doxygen makes the API reference.
+# pkg-config finds ncursesw and ICU. tools/missing-deps names those this machine lacks.
+DEB_PACKAGES := g++ make pkg-config libncurses-dev libicu-dev catch2 tmux groff python3-dev \
+                pybind11-dev python3-pytest python3-numpy doxygen
 
 # run/test/check install missing dependencies first. The gate is an order-only prerequisite
 # of every object, so nothing compiles (even with -j) before `make deps` ends.
-DEPS_PRESENT := $(and $(wildcard /usr/include/catch2/catch.hpp),$(wildcard /usr/include/ncursesw/curses.h),$(wildcard /usr/include/unicode/unorm2.h),$(shell command -v pkg-config),$(shell command -v tmux),$(shell command -v groff))
-ifeq ($(DEPS_PRESENT),)
 ifneq ($(filter run test check,$(MAKECMDGOALS)),)
+ifneq ($(shell sh tools/missing-deps $(PYTHON)),)
 DEPS_GATE := ensure-deps
 endif
 endif
@@ -132,7 +155,7 @@ endif
 # ---------------------------------------------------------------------------
 
 .DEFAULT_GOAL := all
-.PHONY: all run test check bench soak deps ensure-deps install uninstall clean format format-check help \
+.PHONY: all run test check bench soak deps ensure-deps install uninstall clean format format-check help lib python docs \
         fuzz fuzz-deps fuzz-run layers FORCE
 .DELETE_ON_ERROR:
 
@@ -169,6 +192,27 @@ $(BUILD)/pic/%.o: src/%.cpp $(FLAGS_STAMP) | $(DEPS_GATE)
 	@mkdir -p $(dir $@)
 	$(CXX) $(CORE_CPPFLAGS) $(ALL_CXXFLAGS) -fPIC $(DEPFLAGS) -c $< -o $@
 
+# pybind11 wants its module's symbols hidden (and says so in a warning otherwise).
+$(BUILD)/pic/python/%.o: src/python/%.cpp $(FLAGS_STAMP) | $(DEPS_GATE)
+	@mkdir -p $(dir $@)
+	$(CXX) -Iinclude -Isrc $(PYTHON_CFLAGS) $(CPPFLAGS) $(ALL_CXXFLAGS) -fPIC -fvisibility=hidden \
+	  $(DEPFLAGS) -c $< -o $@
+
+$(PYTHON_MODULE): $(PYTHON_OBJS) $(PIC_OBJS)
+	@mkdir -p $(dir $@)
+	$(CXX) $(ALL_CXXFLAGS) $(ALL_LDFLAGS) -shared $^ -o $@
+
+# The API reference of the installed headers (doc/Doxyfile), with doc/api.md and doc/python.md:
+# build/docs/html/index.html. A public declaration without its /// comment fails it.
+docs:
+	@mkdir -p $(BUILD)/docs
+	TERMPOOL_VERSION=$(VERSION) TERMPOOL_DOCS_DIR=$(BUILD)/docs doxygen doc/Doxyfile
+	@if [ -s $(BUILD)/docs/warnings.txt ]; then cat $(BUILD)/docs/warnings.txt >&2; exit 1; fi
+	@echo "docs: $(BUILD)/docs/html/index.html"
+
+# The Python module: `make python`, then PYTHONPATH=build/python python3 -c 'import termpool'.
+python: $(PYTHON_MODULE)
+
 $(SHARED_LIB): $(PIC_OBJS)
 	$(CXX) $(ALL_CXXFLAGS) $(ALL_LDFLAGS) -shared -Wl,-soname,$(SONAME) $^ -o $@
 
@@ -184,6 +228,11 @@ $(PC_FILE): include/termpool/version.hpp FORCE | $(OBJ_DIRS)
 # The libraries and termpool.pc (what `make install` installs besides the program).
 lib: $(CORE_LIB) $(SHARED_LIB) $(PC_FILE)
 
+# Only the files that include curses see its flags (its -D_XOPEN_SOURCE would narrow the
+# POSIX of the others).
+$(patsubst src/%.cpp,$(BUILD)/%.o,$(shell grep -l 'curses.h>' src/tui/*.cpp)): \
+  ALL_CPPFLAGS += $(CURSES_CFLAGS)
+
 $(OBJ_DIRS):
 	mkdir -p $@
 
@@ -195,7 +244,7 @@ $(FLAGS_STAMP): FORCE | $(OBJ_DIRS)
 	@if [ "$$(cat $@ 2>/dev/null)" != '$(FLAGS_TEXT)' ]; then printf '%s\n' '$(FLAGS_TEXT)' > $@; fi
 FORCE:
 
--include $(ALL_OBJS:.o=.d) $(PIC_OBJS:.o=.d)
+-include $(ALL_OBJS:.o=.d) $(PIC_OBJS:.o=.d) $(PYTHON_OBJS:.o=.d)
 
 # ---------------------------------------------------------------------------
 
@@ -206,9 +255,21 @@ run: $(BIN)
 # tools/run-tests runs the unit tests and the end-to-end tests ([e2e]) as two processes at
 # once, and ends with `tests: N passed, M failed`; TEST_ARGS runs one process with them.
 # `set -f` keeps a Catch2 tag filter like [physics] from being glob-expanded.
-test: $(BIN) $(TEST_BIN)
+# Before them, `make install` puts everything into $(STAGE) (PREFIX /usr) as a packager would;
+# tests/test_install.cpp builds a program and runs a Python script against that copy, and
+# tests/test_python.cpp runs the module's own tests (tests/python) with pytest. A sanitized
+# module is loaded into an unsanitized Python with the sanitizer runtime preloaded.
+STAGE := $(BUILD)/stage
+TEST_ENV = TERMPOOL_BIN="$(abspath $(BIN))" TERMPOOL_STAGE="$(abspath $(STAGE))" \
+  TERMPOOL_PYTHON="$(PYTHON)" TERMPOOL_PYTHON_PATH="$(abspath $(dir $(PYTHON_MODULE)))" \
+  TERMPOOL_PYTHON_SITE="$(patsubst /usr/%,%,$(PYTHON_SITE_USR))" \
+  TERMPOOL_SANITIZE_FLAGS="$(SAN_LDFLAGS)" \
+  TERMPOOL_PRELOAD="$(if $(SAN_LDFLAGS),$(shell $(CXX) -print-file-name=libasan.so) $(shell $(CXX) -print-file-name=libubsan.so))"
+test: $(BIN) $(TEST_BIN) lib $(PYTHON_MODULE)
+	@rm -rf $(STAGE); echo "make install DESTDIR=$(STAGE) PREFIX=/usr"; \
+	$(MAKE) --no-print-directory -s -j1 install DESTDIR=$(abspath $(STAGE)) PREFIX=/usr >/dev/null
 	@set -f; echo "TERMPOOL_BIN=$(abspath $(BIN)) tools/run-tests $(TEST_BIN) $(TEST_ARGS)"; \
-	TERMPOOL_BIN="$(abspath $(BIN))" sh tools/run-tests ./$(TEST_BIN) $(TEST_ARGS)
+	$(TEST_ENV) sh tools/run-tests ./$(TEST_BIN) $(TEST_ARGS)
 
 # LeakSanitizer is told of the one block ncurses keeps by design (tools/lsan.supp).
 check:
@@ -231,15 +292,14 @@ ensure-deps:
 	@$(MAKE) --no-print-directory -f $(THIS_MAKEFILE) deps
 
 deps:
-	@if [ -f /usr/include/catch2/catch.hpp ] && [ -f /usr/include/ncursesw/curses.h ] \
-	    && [ -f /usr/include/unicode/unorm2.h ] && command -v pkg-config >/dev/null 2>&1 \
-	    && command -v g++ >/dev/null 2>&1 && command -v tmux >/dev/null 2>&1 \
-	    && command -v groff >/dev/null 2>&1; then \
-	  echo "deps: dependencies present (g++, ncursesw and ICU headers, Catch2 v2, tmux, groff)"; \
+	@missing=$$(sh tools/missing-deps $(PYTHON)); \
+	if [ -z "$$missing" ]; then \
+	  echo "deps: dependencies present ($(DEB_PACKAGES))"; \
 	else \
 	  if [ "$$(id -u)" -eq 0 ]; then SUDO=; \
 	  elif command -v sudo >/dev/null 2>&1; then SUDO="sudo "; \
-	  else echo "deps: need root or sudo to install: $(DEB_PACKAGES)" >&2; exit 1; fi; \
+	  else echo "deps: need root or sudo to install: $$missing" >&2; exit 1; fi; \
+	  echo "deps: missing $$missing"; \
 	  echo "$${SUDO}apt-get update" && $${SUDO}apt-get update && \
 	  echo "$${SUDO}apt-get install -y $(DEB_PACKAGES)" && \
 	  $${SUDO}apt-get install -y $(DEB_PACKAGES); \

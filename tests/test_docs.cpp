@@ -1,13 +1,14 @@
 // The documents say what the program does: the man page formats cleanly, every transcript in
 // the README (a ``` block of `$ ` commands and what they print) is what the program prints
-// today, and `make install` and `make uninstall` put the files where they say.
+// today, and the version is one (tests/test_install.cpp checks what `make install` installs).
 #include <catch2/catch.hpp>
+#include <termpool/version.hpp>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/stat.h>
 #include <vector>
 
 #include "temp_dir.hpp"
@@ -18,11 +19,6 @@ using tmux_session::shell_quote;
 using tmux_session::termpool_binary;
 
 namespace {
-
-bool exists(const std::string& path) {
-    struct stat st {};
-    return stat(path.c_str(), &st) == 0;
-}
 
 std::vector<std::string> lines_of(const std::string& text) {
     std::vector<std::string> lines;
@@ -103,29 +99,36 @@ TEST_CASE("the README's transcripts are what the program prints", "[docs]") {
     }
 }
 
-// The commands `make -n` lists for the targets, run without make: nothing is built (the
-// binary under test is installed as it is) and no make runs inside the tests.
-TEST_CASE("make install and make uninstall honour DESTDIR and PREFIX", "[docs]") {
-    termpool::test::TempDir dir("termpool-install");
-    const auto commands = [&](const std::string& target, const std::string& tool) {
-        const std::string planned =
-            run("make --no-print-directory -n -s " + target + " DESTDIR=" + dir.path() +
-                " PREFIX=/usr BIN=" + shell_quote(termpool_binary()) + " 2>&1");
-        std::string script;
-        for (const std::string& line : lines_of(planned))
-            if (line.starts_with(tool + " "))
-                script += line + "\n";
-        INFO(planned);
-        REQUIRE(!script.empty());
-        return script;
-    };
-    const std::string install = commands("install", "install");
-    CHECK(std::system(install.c_str()) == 0);
-    CHECK(exists(dir.path() + "/usr/bin/termpool"));
-    CHECK(exists(dir.path() + "/usr/share/man/man6/termpool.6"));
-    CHECK(run(dir.path() + "/usr/bin/termpool --version").starts_with("termpool "));
-    const std::string uninstall = commands("uninstall", "rm");
-    CHECK(std::system(uninstall.c_str()) == 0);
-    CHECK_FALSE(exists(dir.path() + "/usr/bin/termpool"));
-    CHECK_FALSE(exists(dir.path() + "/usr/share/man/man6/termpool.6"));
+TEST_CASE("the man page, --version and the library name one version", "[docs]") {
+    std::ifstream in("man/termpool.6");
+    std::string line;
+    while (std::getline(in, line) && !line.starts_with(".TH "))
+        ;
+    CHECK(line.find("\"termpool " TERMPOOL_VERSION "\"") != std::string::npos);
+    CHECK(run(termpool_binary() + " --version") == "termpool " TERMPOOL_VERSION "\n");
+}
+
+TEST_CASE("the umbrella header includes every public header", "[docs]") {
+    std::ifstream in("include/termpool/termpool.hpp");
+    std::stringstream text;
+    text << in.rdbuf();
+    for (const auto& entry : std::filesystem::directory_iterator("include/termpool")) {
+        const std::string name = entry.path().filename().string();
+        if (name != "termpool.hpp")
+            CHECK(text.str().find("#include <termpool/" + name + ">") != std::string::npos);
+    }
+}
+
+TEST_CASE("the API reference is made from the headers without a warning", "[docs][e2e]") {
+    tmux_session::require_tool("doxygen", "doxygen");
+    termpool::test::TempDir dir("termpool-docs");
+    const std::string made = run("TERMPOOL_VERSION=" TERMPOOL_VERSION " TERMPOOL_DOCS_DIR=" +
+                                 shell_quote(dir.path()) + " doxygen doc/Doxyfile 2>&1");
+    INFO(made);
+    std::ifstream warnings(dir.path() + "/warnings.txt");
+    std::stringstream text;
+    text << warnings.rdbuf();
+    CHECK(text.str() == "");
+    CHECK(std::filesystem::exists(dir.path() + "/html/index.html"));
+    CHECK(std::filesystem::exists(dir.path() + "/html/classtermpool_1_1World.html"));
 }

@@ -30,6 +30,7 @@ inline constexpr int record_version = 6;
 
 /// One thing a player did, or the start of a match's next rack.
 struct RecordedAction {
+    /// A placement of the cue ball, a choice, a shot, or a new rack.
     enum class Kind { place, choose, shot, rack };
     Kind kind = Kind::shot;          ///< which
     Vec2 place;                      ///< place: where the cue ball went

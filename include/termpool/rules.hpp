@@ -265,6 +265,7 @@ public:
     Game& operator=(const Game& other);
     /// A moved-from game has no referee: it may only be assigned to or destroyed.
     Game(Game&& other) noexcept;
+    /// As the move: `other` is left without a referee.
     Game& operator=(Game&& other) noexcept;
     ~Game();
 

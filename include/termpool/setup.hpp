@@ -44,6 +44,7 @@ Game make_game(const GameSetup& setup, int breaker, std::uint64_t seed);
 
 /// Why the words of a cloth model were refused; each reader words it its own way.
 struct FrictionProblem {
+    /// The kinds of problem.
     enum class Kind {
         unknown_model,    ///< the first word names no model
         missing_constant, ///< fewer constants than the model takes

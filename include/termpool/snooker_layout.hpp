@@ -17,7 +17,7 @@ namespace termpool {
 /// Ball ids in snooker: 0 the cue ball, 1..15 the reds, then the colours in the order they are
 /// taken at the end of a frame.
 inline constexpr int snooker_first_red = 1;
-inline constexpr int snooker_last_red = 15;
+inline constexpr int snooker_last_red = 15; ///< the last of the reds 1..15
 inline constexpr int snooker_yellow = 16; ///< worth 2
 inline constexpr int snooker_green = 17;  ///< worth 3
 inline constexpr int snooker_brown = 18;  ///< worth 4
