@@ -86,6 +86,11 @@ HALL_SRCS := $(wildcard src/hall/*.cpp)
 APP_SRCS  := $(wildcard src/cli/*.cpp) $(wildcard src/tui/*.cpp) $(PLAYER_SRCS) $(FILES_SRCS) \
              $(HALL_SRCS)
 MAIN_SRC  := src/main.cpp
+# The tests are written for Catch2 v2 (Debian 12's catch2). Where only v3 is installed,
+# tests/catch3 gives its header v2's name and Catch2's own main is linked.
+CATCH_V3       := $(if $(wildcard /usr/include/catch2/catch.hpp),,$(wildcard /usr/include/catch2/catch_all.hpp))
+CATCH_CPPFLAGS := $(if $(CATCH_V3),-Itests/catch3)
+CATCH_LIBS     := $(if $(CATCH_V3),$(shell pkg-config --libs catch2-with-main 2>/dev/null || echo -lCatch2Main -lCatch2))
 TEST_SRCS := $(wildcard tests/*.cpp)
 
 CORE_OBJS := $(patsubst src/%.cpp,$(BUILD)/%.o,$(CORE_SRCS))
@@ -107,7 +112,6 @@ SONAME    := libtermpool.so.$(if $(filter 0,$(VERSION_MAJOR)),$(VERSION_MAJOR).$
 # their own ($(BUILD)/pic), so that the program and the static library keep their code.
 PIC_OBJS  := $(patsubst src/%.cpp,$(BUILD)/pic/%.o,$(CORE_SRCS))
 SHARED_LIB := $(BUILD)/libtermpool.so.$(VERSION)
-PC_FILE   := $(BUILD)/termpool.pc
 LIBDIR    ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
 BIN      := $(BUILD)/termpool
@@ -136,7 +140,7 @@ OBJ_DIRS := $(sort $(patsubst %/,%,$(dir $(ALL_OBJS) $(BIN))))
 
 FORMAT_FILES := $(wildcard src/*.cpp src/*.hpp src/*/*.cpp src/*/*.hpp \
                            include/*/*.hpp include/*/*/*.hpp tests/*.cpp tests/*.hpp \
-                           doc/examples/*.cpp)
+                           tests/catch3/*/*.hpp doc/examples/*.cpp)
 
 # What the build needs, and what the tests need besides: tmux runs the end-to-end tests, groff
 # checks the man page, pytest and NumPy test the Python module, doxygen makes the API reference.
@@ -166,7 +170,7 @@ $(BIN): $(APP_OBJS) $(MAIN_OBJ) $(CORE_LIB) | $(OBJ_DIRS)
 	$(CXX) $(ALL_CXXFLAGS) $(ALL_LDFLAGS) $^ -o $@ $(LDLIBS)
 
 $(TEST_BIN): $(APP_OBJS) $(TEST_OBJS) $(CORE_LIB) | $(OBJ_DIRS)
-	$(CXX) $(ALL_CXXFLAGS) $(ALL_LDFLAGS) $^ -o $@ $(LDLIBS)
+	$(CXX) $(ALL_CXXFLAGS) $(ALL_LDFLAGS) $^ -o $@ $(LDLIBS) $(CATCH_LIBS)
 
 # Written afresh, so that the object of a removed source does not stay in the archive.
 $(CORE_LIB): $(CORE_OBJS) | $(OBJ_DIRS)
@@ -177,7 +181,7 @@ $(CORE_LIB): $(CORE_OBJS) | $(OBJ_DIRS)
 # $(BUILD)/tests/*.o and $(BUILD)/core/*.o. Tests may include the core's private headers
 # (core/polynomial.hpp), so they get -Isrc like the front ends.
 $(BUILD)/tests/%.o: tests/%.cpp $(FLAGS_STAMP) | $(OBJ_DIRS) $(DEPS_GATE)
-	$(CXX) $(ALL_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
+	$(CXX) $(ALL_CPPFLAGS) $(CATCH_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
 
 $(BUILD)/core/%.o: src/core/%.cpp $(FLAGS_STAMP) | $(OBJ_DIRS) $(DEPS_GATE)
 	$(CXX) $(CORE_CPPFLAGS) $(ALL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
@@ -216,17 +220,9 @@ python: $(PYTHON_MODULE)
 $(SHARED_LIB): $(PIC_OBJS)
 	$(CXX) $(ALL_CXXFLAGS) $(ALL_LDFLAGS) -shared -Wl,-soname,$(SONAME) $^ -o $@
 
-# termpool.pc for the prefix it is built for (`make install PREFIX=...` writes it afresh).
-$(PC_FILE): include/termpool/version.hpp FORCE | $(OBJ_DIRS)
-	@printf '%s\n' 'prefix=$(PREFIX)' 'libdir=$(LIBDIR)' 'includedir=$(INCLUDEDIR)' '' \
-	  'Name: termpool' \
-	  'Description: event-based pool and snooker physics, referees and matches (C++20)' \
-	  'Version: $(VERSION)' \
-	  'Cflags: -I$${includedir}' 'Libs: -L$${libdir} -ltermpool' > $@.new
-	@if cmp -s $@.new $@; then rm $@.new; else mv $@.new $@; fi
-
-# The libraries and termpool.pc (what `make install` installs besides the program).
-lib: $(CORE_LIB) $(SHARED_LIB) $(PC_FILE)
+# The libraries (what `make install` installs besides the program; it writes termpool.pc for
+# the prefix it installs to).
+lib: $(CORE_LIB) $(SHARED_LIB)
 
 # Only the files that include curses see its flags (its -D_XOPEN_SOURCE would narrow the
 # POSIX of the others).
@@ -266,8 +262,8 @@ TEST_ENV = TERMPOOL_BIN="$(abspath $(BIN))" TERMPOOL_STAGE="$(abspath $(STAGE))"
   TERMPOOL_SANITIZE_FLAGS="$(SAN_LDFLAGS)" \
   TERMPOOL_PRELOAD="$(if $(SAN_LDFLAGS),$(shell $(CXX) -print-file-name=libasan.so) $(shell $(CXX) -print-file-name=libubsan.so))"
 test: $(BIN) $(TEST_BIN) lib $(PYTHON_MODULE)
-	@rm -rf $(STAGE); echo "make install DESTDIR=$(STAGE) PREFIX=/usr"; \
-	$(MAKE) --no-print-directory -s -j1 install DESTDIR=$(abspath $(STAGE)) PREFIX=/usr >/dev/null
+	rm -rf $(STAGE)
+	$(call install_to,$(abspath $(STAGE)),/usr,/usr/lib,/usr/include,$(PYTHON_SITE_USR))
 	@set -f; echo "TERMPOOL_BIN=$(abspath $(BIN)) tools/run-tests $(TEST_BIN) $(TEST_ARGS)"; \
 	$(TEST_ENV) sh tools/run-tests ./$(TEST_BIN) $(TEST_ARGS)
 
@@ -359,20 +355,27 @@ fuzz-run: fuzz
 -include $(FUZZ_CORE_OBJS:.o=.d) $(FUZZ_APP_OBJS:.o=.d)
 
 # The program and its man page; the library (static and shared, with its soname link and the
-# development link), its headers and termpool.pc; the Python module where pybind11 is present.
+# development link), its headers and a termpool.pc for the prefix; the Python module where
+# pybind11 is present. One recipe, `install_to ROOT,PREFIX,LIBDIR,INCLUDEDIR,PYTHON_SITE`, for
+# `make install` and for the copy `make test` installs and tests.
+define install_to
+install -d $(1)$(2)/bin $(1)$(2)/share/man/man6 $(1)$(3)/pkgconfig $(1)$(4)/termpool
+install -m 755 $(BIN) $(1)$(2)/bin/termpool
+install -m 644 man/termpool.6 $(1)$(2)/share/man/man6/termpool.6
+install -m 644 $(CORE_LIB) $(1)$(3)/libtermpool.a
+install -m 755 $(SHARED_LIB) $(1)$(3)/libtermpool.so.$(VERSION)
+ln -sf libtermpool.so.$(VERSION) $(1)$(3)/$(SONAME)
+ln -sf $(SONAME) $(1)$(3)/libtermpool.so
+printf '%s\n' 'prefix=$(2)' 'libdir=$(3)' 'includedir=$(4)' '' 'Name: termpool' \
+  'Description: event-based pool and snooker physics, referees and matches (C++20)' \
+  'Version: $(VERSION)' 'Cflags: -I$${includedir}' 'Libs: -L$${libdir} -ltermpool' \
+  > $(1)$(3)/pkgconfig/termpool.pc
+install -m 644 include/termpool/*.hpp $(1)$(4)/termpool/
+$(if $(PYTHON_READY),install -d $(1)$(5) && install -m 644 $(PYTHON_MODULE) $(1)$(5)/)
+endef
+
 install: $(BIN) lib $(if $(PYTHON_READY),python)
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man6 \
-	  $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(INCLUDEDIR)/termpool
-	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/termpool
-	install -m 644 man/termpool.6 $(DESTDIR)$(PREFIX)/share/man/man6/termpool.6
-	install -m 644 $(CORE_LIB) $(DESTDIR)$(LIBDIR)/libtermpool.a
-	install -m 755 $(SHARED_LIB) $(DESTDIR)$(LIBDIR)/libtermpool.so.$(VERSION)
-	ln -sf libtermpool.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
-	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libtermpool.so
-	install -m 644 $(PC_FILE) $(DESTDIR)$(LIBDIR)/pkgconfig/termpool.pc
-	install -m 644 include/termpool/*.hpp $(DESTDIR)$(INCLUDEDIR)/termpool/
-	$(if $(PYTHON_READY),install -d $(DESTDIR)$(PYTHON_SITE) && \
-	  install -m 644 $(PYTHON_MODULE) $(DESTDIR)$(PYTHON_SITE)/)
+	$(call install_to,$(DESTDIR),$(PREFIX),$(LIBDIR),$(INCLUDEDIR),$(PYTHON_SITE))
 
 uninstall:
 	rm -f $(DESTDIR)$(PREFIX)/bin/termpool $(DESTDIR)$(PREFIX)/share/man/man6/termpool.6 \

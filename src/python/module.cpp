@@ -56,6 +56,12 @@ constexpr NameRow<Pending> pending_names[] = {
 };
 static_assert(names_in_order(pending_names));
 
+/// A World with the physics it was made with, against which its strikes are checked.
+struct SteppedWorld {
+    PhysicsParams physics;
+    World world;
+};
+
 /// The physics of `physics`, or the default pool physics.
 PhysicsParams physics_or_default(const std::optional<PhysicsParams>& physics) {
     return physics.value_or(PhysicsParams{});
@@ -117,7 +123,8 @@ Shot run_shot(const std::vector<Ball>& balls, const Strike& strike,
               const std::optional<PhysicsParams>& physics_given, bool trajectory) {
     const PhysicsParams physics = physics_or_default(physics_given);
     const Table table = table_or_default(table_given, physics);
-    python::check_shot(table, physics, balls, strike);
+    python::check_strike(physics, strike);
+    python::check_layout(table, physics, balls);
     Shot shot;
     if (trajectory)
         shot.trajectory.emplace(physics, balls.size());
@@ -212,9 +219,12 @@ std::vector<Shot> simulate_many(const py::object& balls, const std::vector<Strik
         throw py::value_error("give one layout of balls, or one per strike (" +
                               std::to_string(strikes.size()) + " strikes, " +
                               std::to_string(layouts.size()) + " layouts)");
+    // Each layout and each strike is checked once; an error names the shot it belongs to.
     for (std::size_t i = 0; i < strikes.size(); ++i) {
         try {
-            python::check_shot(table, physics, layouts[layouts.size() == 1 ? 0 : i], strikes[i]);
+            python::check_strike(physics, strikes[i]);
+            if (i < layouts.size())
+                python::check_layout(table, physics, layouts[i]);
         } catch (const py::value_error& e) {
             throw py::value_error("shot " + std::to_string(i) + ": " + e.what());
         }
@@ -563,31 +573,30 @@ void bind_simulation(py::module_& m) {
           "list of layouts), across `threads` threads (0: every core), without trajectories. "
           "The results are the same bits as one simulate() each.");
 
-    py::class_<World>(m, "World", "A table with balls, stepped event by event.")
+    py::class_<SteppedWorld>(m, "World", "A table with balls, stepped event by event.")
         .def(py::init([](const std::vector<Ball>& balls, const std::optional<Table>& table_given,
                          const std::optional<PhysicsParams>& physics_given) {
                  const PhysicsParams physics = physics_or_default(physics_given);
                  const Table table = table_or_default(table_given, physics);
                  if (const auto problem = python::layout_text(table, physics, balls))
                      throw py::value_error(*problem);
-                 return World(table, physics, balls);
+                 return SteppedWorld{physics, World(table, physics, balls)};
              }),
              py::arg("balls"), py::arg("table") = py::none(), py::arg("physics") = py::none())
         .def(
             "strike",
-            [](World& w, const Strike& strike) {
-                // The world's own parameters are not reachable; a strike is checked against the
-                // limits every model shares.
-                if (const auto problem = strike_problem(strike, PhysicsParams{}))
-                    throw py::value_error(*problem);
-                if (!w.strike(strike))
+            [](SteppedWorld& w, const Strike& strike) {
+                python::check_strike(w.physics, strike);
+                if (!w.world.strike(strike))
                     throw py::value_error("no cue ball (ball 0) on the table to strike");
             },
             py::arg("strike"))
-        .def("step", &World::step, "The next event, resolved; None once every ball is at rest.")
-        .def_property_readonly("time", &World::time)
-        .def_property_readonly("balls", py::overload_cast<>(&World::balls, py::const_))
-        .def_property_readonly("at_rest", &World::at_rest);
+        .def(
+            "step", [](SteppedWorld& w) { return w.world.step(); },
+            "The next event, resolved; None once every ball is at rest.")
+        .def_property_readonly("time", [](const SteppedWorld& w) { return w.world.time(); })
+        .def_property_readonly("balls", [](const SteppedWorld& w) { return w.world.balls(); })
+        .def_property_readonly("at_rest", [](const SteppedWorld& w) { return w.world.at_rest(); });
 }
 
 void bind_rules(py::module_& m) {

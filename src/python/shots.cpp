@@ -43,10 +43,13 @@ std::optional<std::string> layout_text(const Table& table, const PhysicsParams& 
     return std::nullopt;
 }
 
-void check_shot(const Table& table, const PhysicsParams& physics, const std::vector<Ball>& balls,
-                const Strike& strike) {
+void check_strike(const PhysicsParams& physics, const Strike& strike) {
     if (const auto problem = strike_problem(strike, physics))
         throw pybind11::value_error(*problem);
+}
+
+void check_layout(const Table& table, const PhysicsParams& physics,
+                  const std::vector<Ball>& balls) {
     if (const auto problem = layout_text(table, physics, balls))
         throw pybind11::value_error(*problem);
     const bool cue = std::any_of(balls.begin(), balls.end(), [](const Ball& b) {

@@ -22,10 +22,11 @@ struct Shot {
 std::optional<std::string> layout_text(const Table& table, const PhysicsParams& physics,
                                        const std::vector<Ball>& balls);
 
-/// Raises ValueError when `strike` cannot be played (strike_problem) or `balls` cannot be set
-/// out, or when there is no cue ball (id 0) on the table.
-void check_shot(const Table& table, const PhysicsParams& physics, const std::vector<Ball>& balls,
-                const Strike& strike);
+/// Raises ValueError when `balls` cannot be set out or hold no cue ball (id 0) on the table.
+void check_layout(const Table& table, const PhysicsParams& physics, const std::vector<Ball>& balls);
+
+/// Raises ValueError when `strike` cannot be played under `physics` (strike_problem).
+void check_strike(const PhysicsParams& physics, const Strike& strike);
 
 /// Simulates each strike from its layout (`layouts` holds one, shared by all, or one per
 /// strike) on up to `threads` threads (0: one per core), without recording trajectories.
