@@ -255,6 +255,27 @@ std::vector<std::string> choice_texts(const std::vector<Choice>& choices) {
     return out;
 }
 
+/// The cloth model a scenario's friction line gives in words ("physical", "decay K", ...).
+FrictionModel friction_of(const std::string& text) {
+    std::vector<std::string> words;
+    std::string word;
+    for (const char c : text + " ") {
+        if (c != ' ') {
+            word += c;
+        } else if (!word.empty()) {
+            words.push_back(word);
+            word.clear();
+        }
+    }
+    const std::vector<std::string_view> views(words.begin(), words.end());
+    const auto model = parse_friction(views);
+    if (!std::holds_alternative<FrictionModel>(model))
+        throw py::value_error("bad cloth model '" + text +
+                              "' (expected physical, decay K, constant A or combined K A, K and "
+                              "A > 0)");
+    return std::get<FrictionModel>(model);
+}
+
 /// A match made from its settings, as the game's menus and the hall make one.
 Match start_match(const std::string& game, const std::optional<std::string>& table,
                   std::pair<std::string, std::string> names,
@@ -264,25 +285,7 @@ Match start_match(const std::string& game, const std::optional<std::string>& tab
     header.setup.game = game_type_of(game);
     if (table)
         header.setup.table = table_size_of(*table);
-    const std::vector<std::string> words = [&] {
-        std::vector<std::string> w;
-        std::string word;
-        for (const char c : friction + " ") {
-            if (c != ' ') {
-                word += c;
-            } else if (!word.empty()) {
-                w.push_back(word);
-                word.clear();
-            }
-        }
-        return w;
-    }();
-    std::vector<std::string_view> views(words.begin(), words.end());
-    const auto model = parse_friction(views);
-    if (!std::holds_alternative<FrictionModel>(model))
-        throw py::value_error("bad cloth model '" + friction +
-                              "' (expected physical, decay K, constant A or combined K A)");
-    header.setup.physics.friction = std::get<FrictionModel>(model);
+    header.setup.physics.friction = friction_of(friction);
     header.seed = seed;
     header.breaker = breaker;
     header.names[0] = names.first;
@@ -376,25 +379,7 @@ void bind_physics(py::module_& m) {
             })
         .def_property(
             "friction", [](const PhysicsParams& p) { return format_friction(p.friction); },
-            [](PhysicsParams& p, const std::string& text) {
-                std::vector<std::string> words;
-                std::string word;
-                for (const char c : text + " ") {
-                    if (c != ' ') {
-                        word += c;
-                    } else if (!word.empty()) {
-                        words.push_back(word);
-                        word.clear();
-                    }
-                }
-                std::vector<std::string_view> views(words.begin(), words.end());
-                const auto model = parse_friction(views);
-                if (!std::holds_alternative<FrictionModel>(model))
-                    throw py::value_error("bad cloth model '" + text +
-                                          "' (expected physical, decay K, constant A or "
-                                          "combined K A, K and A > 0)");
-                p.friction = std::get<FrictionModel>(model);
-            },
+            [](PhysicsParams& p, const std::string& text) { p.friction = friction_of(text); },
             "The cloth model as a scenario's friction line gives it: 'physical', 'decay K', "
             "'constant A' or 'combined K A'.")
         .def_property(
