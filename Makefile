@@ -215,7 +215,11 @@ docs:
 	@echo "docs: $(BUILD)/docs/html/index.html"
 
 # The Python module: `make python`, then PYTHONPATH=build/python python3 -c 'import termpool'.
-python: $(PYTHON_MODULE)
+python: $(if $(PYTHON_READY),$(PYTHON_MODULE),python-missing)
+
+python-missing:
+	@echo "python: pybind11-dev and python3-dev are needed for $(PYTHON) (make deps installs them)" >&2
+	@exit 1
 
 $(SHARED_LIB): $(PIC_OBJS)
 	$(CXX) $(ALL_CXXFLAGS) $(ALL_LDFLAGS) -shared -Wl,-soname,$(SONAME) $^ -o $@
@@ -235,7 +239,7 @@ $(OBJ_DIRS):
 # The compile flags of this build folder, rewritten only when they change: every object
 # depends on it, so a folder built before a flag changed (FP_FLAGS above) is rebuilt, never
 # left with objects that play differently.
-FLAGS_TEXT := $(CXX) $(ALL_CPPFLAGS) $(ALL_CXXFLAGS)
+FLAGS_TEXT := $(CXX) $(ALL_CPPFLAGS) $(ALL_CXXFLAGS) $(PYTHON_CFLAGS)
 $(FLAGS_STAMP): FORCE | $(OBJ_DIRS)
 	@if [ "$$(cat $@ 2>/dev/null)" != '$(FLAGS_TEXT)' ]; then printf '%s\n' '$(FLAGS_TEXT)' > $@; fi
 FORCE:
@@ -357,7 +361,9 @@ fuzz-run: fuzz
 # The program and its man page; the library (static and shared, with its soname link and the
 # development link), its headers and a termpool.pc for the prefix; the Python module where
 # pybind11 is present. One recipe, `install_to ROOT,PREFIX,LIBDIR,INCLUDEDIR,PYTHON_SITE`, for
-# `make install` and for the copy `make test` installs and tests.
+# `make install` and for the copy `make test` installs and tests. Inline code of the headers
+# is compiled by the user's program, so termpool.pc asks for the same rounding as the library
+# (-ffp-contract=off). Installed without DESTDIR, ldconfig (as root) makes the new soname known.
 define install_to
 install -d $(1)$(2)/bin $(1)$(2)/share/man/man6 $(1)$(3)/pkgconfig $(1)$(4)/termpool
 install -m 755 $(BIN) $(1)$(2)/bin/termpool
@@ -368,10 +374,13 @@ ln -sf libtermpool.so.$(VERSION) $(1)$(3)/$(SONAME)
 ln -sf $(SONAME) $(1)$(3)/libtermpool.so
 printf '%s\n' 'prefix=$(2)' 'libdir=$(3)' 'includedir=$(4)' '' 'Name: termpool' \
   'Description: event-based pool and snooker physics, referees and matches (C++20)' \
-  'Version: $(VERSION)' 'Cflags: -I$${includedir}' 'Libs: -L$${libdir} -ltermpool' \
+  'Version: $(VERSION)' 'Cflags: -I$${includedir} -ffp-contract=off' \
+  'Libs: -L$${libdir} -ltermpool' \
   > $(1)$(3)/pkgconfig/termpool.pc
 install -m 644 include/termpool/*.hpp $(1)$(4)/termpool/
-$(if $(PYTHON_READY),install -d $(1)$(5) && install -m 644 $(PYTHON_MODULE) $(1)$(5)/)
+$(if $(PYTHON_READY),install -d $(1)$(5) && install -m 644 $(PYTHON_MODULE) $(1)$(5)/,@echo \
+  "install: no Python module (pybind11-dev or python3-dev missing; make deps installs them)")
+$(if $(1),,-ldconfig $(3) 2>/dev/null)
 endef
 
 install: $(BIN) lib $(if $(PYTHON_READY),python)

@@ -122,8 +122,9 @@ TEST_CASE("the umbrella header includes every public header", "[docs]") {
 TEST_CASE("the API reference is made from the headers without a warning", "[docs][e2e]") {
     tmux_session::require_tool("doxygen", "doxygen");
     termpool::test::TempDir dir("termpool-docs");
-    const std::string made = run("TERMPOOL_VERSION=" TERMPOOL_VERSION " TERMPOOL_DOCS_DIR=" +
-                                 shell_quote(dir.path()) + " doxygen doc/Doxyfile 2>&1");
+    const std::string made =
+        run("TERMPOOL_VERSION=" TERMPOOL_VERSION " TERMPOOL_DOCS_DIR=" + shell_quote(dir.path()) +
+            " doxygen doc/Doxyfile 2>&1");
     INFO(made);
     std::ifstream warnings(dir.path() + "/warnings.txt");
     std::stringstream text;

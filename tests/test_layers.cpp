@@ -160,6 +160,8 @@ TEST_CASE("the Python module uses the installed interface only: what a researche
         CHECK_FALSE(contains(inc.target, "curses"));
         if (!inc.angled)
             CHECK(inc.target.starts_with("python/"));
+        else if (contains(inc.target, "/")) // -Isrc would let <core/...> through
+            CHECK((inc.target.starts_with("termpool/") || inc.target.starts_with("pybind11/")));
     }
 }
 

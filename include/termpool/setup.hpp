@@ -72,6 +72,12 @@ const char* friction_constant_symbol(FrictionKind kind, std::size_t index);
 std::variant<FrictionModel, FrictionProblem>
 parse_friction(std::span<const std::string_view> words);
 
+/// `problem` in the words `termpool simulate` uses ("unknown friction model 'x' (expected
+/// ...)", "decay rate K must be > 0 (got 0)"), `words` being what was read and `usage` the form
+/// the reader shows for a missing or extra word.
+std::string friction_problem_text(const FrictionProblem& problem,
+                                  std::span<const std::string_view> words, std::string_view usage);
+
 /// The words `parse_friction` reads back to `model` (numbers as the shortest text that reads back
 /// bit for bit), separated by spaces.
 std::string format_friction(const FrictionModel& model);

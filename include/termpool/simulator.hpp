@@ -4,6 +4,7 @@
 /// event. Every event time is solved for exactly; there is no frame rate.
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -114,8 +115,8 @@ public:
 
     /// A world at time 0. Ball ids must be unique; balls must be on the table
     /// (on_playing_surface, the rule every position the world reaches keeps) and not overlap.
-    /// At most 32768 balls (std::length_error beyond); its memory grows with the square of
-    /// their number (a pair's contact time each).
+    /// At most max_world_balls balls (std::length_error beyond); its memory grows with the square
+    /// of their number (a pair's contact time each).
     World(const Table& table, const PhysicsParams& params, std::vector<Ball> balls);
     ~World();
     /// Worlds are values: copying one copies its state.
@@ -167,20 +168,46 @@ void simulate_shot(World& world, const Strike& strike, ShotResult& result);
 struct LayoutProblem {
     /// The kinds of problem.
     enum class Kind {
-        off_table, ///< `ball` is not on the playing surface
-        overlap,   ///< `ball` overlaps the earlier `other` (by more than 1e-9 m)
-        same_id,   ///< `ball` has the id of the earlier `other`
+        off_table,          ///< `ball` is not on the playing surface
+        overlap,            ///< `ball` overlaps the earlier `other` (by more than 1e-9 m)
+        same_id,            ///< `ball` has the id of the earlier `other`
+        not_finite,         ///< a coordinate of `ball`'s position, velocity or spin is not finite
+        bad_mass,           ///< `ball`'s mass is not a positive finite number
+        too_fast,           ///< `ball` moves faster than max_strike_speed, or spins faster than
+                            ///< max_ball_spin
+        at_rest_but_moving, ///< `ball` is stationary (or spinning) but has a velocity or spin
+                            ///< that state does not allow
+        too_many,           ///< more than max_world_balls balls
     };
     Kind kind = Kind::off_table; ///< what is wrong
     std::size_t ball = 0;        ///< index of the ball found wrong
     std::size_t other = 0;       ///< index of the earlier ball it conflicts with (overlap, same_id)
 };
 
+/// The most balls a World holds.
+inline constexpr std::size_t max_world_balls = 32768;
+
+/// The fastest a ball given to a World may spin, rad/s: a cue ball struck at the top speed with
+/// the tip at the edge of the ball spins at about 900 rad/s.
+inline constexpr double max_ball_spin = 2000.0;
+
 /// The first problem of `balls` in their order (each ball checked against those before it; a
-/// pocketed ball is not on the table and is left out), or nothing when a World can hold them.
-/// Balls touching within 1e-9 m are allowed: a rack's balls are packed that close.
+/// pocketed ball is not on the table and is left out of the position checks), or nothing when
+/// a World can hold them. Balls touching within 1e-9 m are allowed: a rack's balls are packed
+/// that close.
 std::optional<LayoutProblem> layout_problem(const Table& table, const std::vector<Ball>& balls,
                                             double radius);
+
+/// The problem in words, as `termpool simulate` says it: "ball 3 at (0.1, 0.2) is off the
+/// table", "... overlaps ball 1", "duplicate ball 3", .... `name(index, other)` names the ball
+/// at `index` of `balls` ("ball 3"; `other` is true for the earlier ball an overlap or a
+/// duplicate names, where a caller may add where it came from).
+std::string
+layout_problem_text(const LayoutProblem& problem, const std::vector<Ball>& balls,
+                    const std::function<std::string(std::size_t index, bool other)>& name);
+
+/// What a caller says when there is no cue ball (id 0) on the table to strike.
+inline constexpr const char* no_cue_ball_text = "no cue ball (ball 0) on the table to strike";
 
 /// Kinetic energy of a ball, translation plus rotation (solid sphere), J.
 double kinetic_energy(const Ball& ball, double radius);

@@ -18,12 +18,12 @@ namespace termpool {
 /// taken at the end of a frame.
 inline constexpr int snooker_first_red = 1;
 inline constexpr int snooker_last_red = 15; ///< the last of the reds 1..15
-inline constexpr int snooker_yellow = 16; ///< worth 2
-inline constexpr int snooker_green = 17;  ///< worth 3
-inline constexpr int snooker_brown = 18;  ///< worth 4
-inline constexpr int snooker_blue = 19;   ///< worth 5
-inline constexpr int snooker_pink = 20;   ///< worth 6
-inline constexpr int snooker_black = 21;  ///< worth 7
+inline constexpr int snooker_yellow = 16;   ///< worth 2
+inline constexpr int snooker_green = 17;    ///< worth 3
+inline constexpr int snooker_brown = 18;    ///< worth 4
+inline constexpr int snooker_blue = 19;     ///< worth 5
+inline constexpr int snooker_pink = 20;     ///< worth 6
+inline constexpr int snooker_black = 21;    ///< worth 7
 /// Number of balls in a snooker set, the cue ball included.
 inline constexpr int snooker_ball_count = 22;
 

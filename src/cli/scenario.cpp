@@ -154,25 +154,8 @@ Problem parse_friction(const Line& line, Draft& draft) {
         draft.setup.physics.friction = *friction;
         return {};
     }
-    const FrictionProblem& problem = std::get<FrictionProblem>(model);
-    using Kind = FrictionProblem::Kind;
-    if (problem.kind == Kind::unknown_model)
-        return "unknown friction model " + quoted(line.arg(0)) +
-               " (expected physical, decay, constant or combined)";
-    if (problem.kind == Kind::missing_constant)
-        return "missing field (usage: " + std::string(usage) + ")";
-    const std::string_view text = line.arg(problem.word);
-    if (problem.kind == Kind::extra_word)
-        return "extra field " + quoted(text) + " (usage: " + std::string(usage) + ")";
-    const FrictionKind kind = *parse_friction_kind(line.arg(0));
-    const std::string what = friction_constant_symbol(kind, problem.word - 1)[0] == 'K'
-                                 ? "decay rate K"
-                                 : "deceleration A";
-    if (problem.kind == Kind::not_a_number)
-        return what + " " + quoted(text) + " is not a number";
-    if (problem.kind == Kind::not_finite)
-        return what + " " + quoted(text) + " is not finite";
-    return what + " must be > 0 (got " + std::string(text) + ")";
+    return friction_problem_text(std::get<FrictionProblem>(model),
+                                 std::span(line.fields).subspan(1), usage);
 }
 
 /// The line of a directive that may appear once, if it was given.
@@ -476,10 +459,6 @@ std::string describe(const Placed& p) {
     return (p.from_rack ? "rack ball " : "ball ") + std::to_string(p.ball.id);
 }
 
-std::string position_text(Vec2 p) {
-    return "(" + format_number(p.x) + ", " + format_number(p.y) + ")";
-}
-
 /// Every ball of the ball lines and the rack, or the first duplicate between the two.
 std::variant<std::vector<Placed>, ScenarioError> gather_balls(const Draft& draft,
                                                               const Scenario& scenario) {
@@ -527,19 +506,13 @@ std::optional<ScenarioError> check_positions(std::vector<Placed>& placed,
     const auto problem = layout_problem(scenario.table, balls, scenario.setup.physics.ball_radius);
     if (!problem)
         return std::nullopt;
-    const Placed& p = placed[problem->ball];
-    const Placed& q = placed[problem->other];
-    const std::string at = describe(p) + " at " + position_text(p.ball.position);
-    const std::string where = q.line == p.line ? "" : " (line " + std::to_string(q.line) + ")";
-    switch (problem->kind) {
-    case LayoutProblem::Kind::off_table:
-        return ScenarioError{p.line, at + " is off the table"};
-    case LayoutProblem::Kind::overlap:
-        return ScenarioError{p.line, at + " overlaps " + describe(q) + where};
-    case LayoutProblem::Kind::same_id: // gather_balls reports these first
-        return ScenarioError{p.line, "duplicate ball " + std::to_string(p.ball.id) + where};
-    }
-    return std::nullopt;
+    // The core's words; a ball is named as its line gave it, and an earlier one by its line.
+    const auto name = [&](std::size_t index, bool other) {
+        const Placed& q = placed[index];
+        const bool elsewhere = other && q.line != placed[problem->ball].line;
+        return describe(q) + (elsewhere ? " (line " + std::to_string(q.line) + ")" : "");
+    };
+    return ScenarioError{placed[problem->ball].line, layout_problem_text(*problem, balls, name)};
 }
 
 /// One side of a conflict between two directives: how to quote it and where it is.

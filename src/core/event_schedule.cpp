@@ -1,6 +1,7 @@
 #include "event_schedule.hpp"
 
 #include <stdexcept>
+#include <termpool/simulator.hpp>
 
 namespace termpool::core {
 namespace {
@@ -10,6 +11,8 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 // Up to this many balls (a bit each in one word) a search tests every box: on the 16-ball break
 // and the 22-ball snooker break the grid's bookkeeping costs more than it saves.
 constexpr std::size_t most_without_grid = 64;
+
+static_assert(ScheduledEvent::max_balls == max_world_balls, "the limit World's callers are told");
 
 // `balls`, refused before anything is allocated for them when their indices do not fit.
 std::size_t checked(std::size_t balls) {

@@ -89,6 +89,32 @@ parse_friction(std::span<const std::string_view> words) {
     return model;
 }
 
+std::string friction_problem_text(const FrictionProblem& problem,
+                                  std::span<const std::string_view> words, std::string_view usage) {
+    using Kind = FrictionProblem::Kind;
+    const auto word = [&](std::size_t i) {
+        return i < words.size() ? std::string(words[i]) : std::string();
+    };
+    if (problem.kind == Kind::unknown_model)
+        return "unknown friction model '" + word(0) +
+               "' (expected physical, decay, constant or combined)";
+    if (problem.kind == Kind::missing_constant)
+        return "missing field (usage: " + std::string(usage) + ")";
+    const std::string text = word(problem.word);
+    if (problem.kind == Kind::extra_word)
+        return "extra field '" + text + "' (usage: " + std::string(usage) + ")";
+    const std::optional<FrictionKind> kind =
+        words.empty() ? std::nullopt : parse_friction_kind(words[0]);
+    const bool rate =
+        kind && problem.word >= 1 && friction_constant_symbol(*kind, problem.word - 1)[0] == 'K';
+    const std::string what = rate ? "decay rate K" : "deceleration A";
+    if (problem.kind == Kind::not_a_number)
+        return what + " '" + text + "' is not a number";
+    if (problem.kind == Kind::not_finite)
+        return what + " '" + text + "' is not finite";
+    return what + " must be > 0 (got " + text + ")";
+}
+
 std::string format_friction(const FrictionModel& model) {
     std::string text = name_of(friction_kind_names, model.kind);
     for (std::size_t i = 0; i < friction_constant_count(model.kind); ++i)

@@ -41,8 +41,11 @@ TableSize table_size_of(const std::string& name) {
 GameType game_type_of(const std::string& name) {
     if (const auto type = parse_game_type(name))
         return *type;
-    throw py::value_error("unknown game '" + name +
-                          "' (expected 8ball, 8ball-bar, 9ball, 10ball or snooker)");
+    std::string expected;
+    const auto& rows = game_registry().rows();
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        expected += std::string(i == 0 ? "" : i + 1 == rows.size() ? " or " : ", ") + rows[i].name;
+    throw py::value_error("unknown game '" + name + "' (expected " + expected + ")");
 }
 
 Level level_of(const std::string& name) {
@@ -62,6 +65,27 @@ struct SteppedWorld {
     World world;
 };
 
+/// Reads a constant of PhysicsParams that has no scenario name.
+template <double PhysicsParams::*field> auto checked_field() {
+    return [](const PhysicsParams& p) { return p.*field; };
+}
+
+/// Sets it when `value` lies in [low, high] (the low end itself only when `low_allowed`), or
+/// raises ValueError as set_physics_parameter words it.
+template <double PhysicsParams::*field>
+auto checked_setter(const char* name, double low, double high, bool low_allowed) {
+    return [=](PhysicsParams& p, double value) {
+        const bool above = low_allowed ? value >= low : value > low;
+        if (!above || !(value <= high))
+            throw py::value_error(std::string(name) + " must be " +
+                                  (low_allowed ? "from " : "above ") +
+                                  py::repr(py::float_(low)).cast<std::string>() + " to " +
+                                  py::repr(py::float_(high)).cast<std::string>() + " (got " +
+                                  py::repr(py::float_(value)).cast<std::string>() + ")");
+        p.*field = value;
+    };
+}
+
 /// The physics of `physics`, or the default pool physics.
 PhysicsParams physics_or_default(const std::optional<PhysicsParams>& physics) {
     return physics.value_or(PhysicsParams{});
@@ -72,8 +96,11 @@ Table table_or_default(const std::optional<Table>& table, const PhysicsParams& p
     return table ? *table : make_table(TableSize::nine_foot, physics.ball_radius);
 }
 
+/// A ball as given; without a state, the one its motion implies (sliding when it moves or
+/// turns about a horizontal axis, spinning when it only turns about the vertical). The
+/// simulator checks the rest (layout_problem) when the ball is used.
 Ball make_ball(int id, double x, double y, double vx, double vy, double wx, double wy, double wz,
-               std::optional<double> mass, const std::string& state) {
+               std::optional<double> mass, const std::optional<std::string>& state) {
     Ball ball;
     ball.id = id;
     ball.position = {x, y};
@@ -81,9 +108,12 @@ Ball make_ball(int id, double x, double y, double vx, double vy, double wx, doub
     ball.angular_velocity = {wx, wy, wz};
     if (mass)
         ball.mass = *mass;
-    ball.state = parse_or_raise(motion_state_names, state, "motion state");
-    if (!(ball.mass > 0) || !std::isfinite(ball.mass))
-        throw py::value_error("mass must be > 0");
+    if (state)
+        ball.state = parse_or_raise(motion_state_names, *state, "motion state");
+    else if (vx != 0 || vy != 0 || wx != 0 || wy != 0)
+        ball.state = MotionState::sliding;
+    else if (wz != 0)
+        ball.state = MotionState::spinning;
     return ball;
 }
 
@@ -94,13 +124,12 @@ std::string ball_repr(const Ball& b) {
            motion_state_name(b.state) + "')";
 }
 
-/// The states of `balls` as arrays: ids (N), position (N, 2), velocity (N, 2), angular
-/// velocity (N, 3), state codes (N; MotionState's order) and pocket (N).
-py::dict ball_arrays(const std::vector<Ball>& balls) {
-    const std::size_t n = balls.size();
+/// Balls' states as columns, one ball after another: what ball_arrays and sample_shot hand
+/// over as arrays.
+struct BallColumns {
     std::vector<long long> ids, states, pockets;
     std::vector<double> position, velocity, spin;
-    for (const Ball& b : balls) {
+    void add(const Ball& b) {
         ids.push_back(b.id);
         states.push_back(static_cast<long long>(b.state));
         pockets.push_back(b.pocket);
@@ -108,13 +137,32 @@ py::dict ball_arrays(const std::vector<Ball>& balls) {
         velocity.insert(velocity.end(), {b.velocity.x, b.velocity.y});
         spin.insert(spin.end(), {b.angular_velocity.x, b.angular_velocity.y, b.angular_velocity.z});
     }
+    /// The motion as arrays of shape `lead` followed by 2 or 3 (position, velocity,
+    /// angular_velocity), and the state codes of shape `lead`, into `out`.
+    void put_motion(py::dict& out, const std::vector<std::size_t>& lead) const {
+        const auto with = [&](std::size_t last) {
+            std::vector<std::size_t> shape = lead;
+            shape.push_back(last);
+            return shape;
+        };
+        out["position"] = python::double_array(position, with(2));
+        out["velocity"] = python::double_array(velocity, with(2));
+        out["angular_velocity"] = python::double_array(spin, with(3));
+        out["state"] = python::int_array(states, lead);
+    }
+};
+
+/// The states of `balls` as arrays: ids (N), position (N, 2), velocity (N, 2), angular
+/// velocity (N, 3), state codes (N; MotionState's order) and pocket (N).
+py::dict ball_arrays(const std::vector<Ball>& balls) {
+    const std::size_t n = balls.size();
+    BallColumns columns;
+    for (const Ball& b : balls)
+        columns.add(b);
     py::dict out;
-    out["id"] = python::int_array(ids, {n});
-    out["position"] = python::double_array(position, {n, 2});
-    out["velocity"] = python::double_array(velocity, {n, 2});
-    out["angular_velocity"] = python::double_array(spin, {n, 3});
-    out["state"] = python::int_array(states, {n});
-    out["pocket"] = python::int_array(pockets, {n});
+    out["id"] = python::int_array(columns.ids, {n});
+    columns.put_motion(out, {n});
+    out["pocket"] = python::int_array(columns.pockets, {n});
     return out;
 }
 
@@ -152,29 +200,20 @@ py::dict sample_shot(const Shot& shot, const std::vector<double>& times) {
         if (!trajectory.pieces(i).empty())
             slots.push_back(i);
     const std::size_t t_count = times.size(), n = slots.size();
-    std::vector<long long> ids, states;
-    std::vector<double> position, velocity, spin;
+    std::vector<long long> ids;
     for (const std::size_t slot : slots)
         ids.push_back(trajectory.pieces(slot).front().ball.id);
+    BallColumns columns;
     for (const double t : times) {
-        if (!std::isfinite(t))
-            throw py::value_error("sample times must be finite");
-        for (const std::size_t slot : slots) {
-            const Ball b = trajectory.sample(slot, std::max(t, 0.0));
-            states.push_back(static_cast<long long>(b.state));
-            position.insert(position.end(), {b.position.x, b.position.y});
-            velocity.insert(velocity.end(), {b.velocity.x, b.velocity.y});
-            spin.insert(spin.end(),
-                        {b.angular_velocity.x, b.angular_velocity.y, b.angular_velocity.z});
-        }
+        if (!(t >= 0) || !std::isfinite(t))
+            throw py::value_error("sample times are seconds since the strike: finite and >= 0");
+        for (const std::size_t slot : slots)
+            columns.add(trajectory.sample(slot, t));
     }
     py::dict out;
     out["time"] = python::double_array(times, {t_count});
     out["id"] = python::int_array(ids, {n});
-    out["position"] = python::double_array(position, {t_count, n, 2});
-    out["velocity"] = python::double_array(velocity, {t_count, n, 2});
-    out["angular_velocity"] = python::double_array(spin, {t_count, n, 3});
-    out["state"] = python::int_array(states, {t_count, n});
+    columns.put_motion(out, {t_count, n});
     return out;
 }
 
@@ -201,10 +240,15 @@ py::dict event_columns(const std::vector<Event>& events) {
 std::vector<std::vector<Ball>> layouts_of(const py::object& balls) {
     std::vector<std::vector<Ball>> layouts;
     const py::list list = py::list(balls);
-    if (list.empty() || py::isinstance<Ball>(list[0]))
-        layouts.push_back(list.cast<std::vector<Ball>>());
-    else
-        layouts = list.cast<std::vector<std::vector<Ball>>>();
+    try {
+        if (list.empty() || py::isinstance<Ball>(list[0]))
+            layouts.push_back(list.cast<std::vector<Ball>>());
+        else
+            layouts = list.cast<std::vector<std::vector<Ball>>>();
+    } catch (const py::cast_error&) {
+        throw py::type_error("balls must be a list of Balls (one layout for every strike) or a "
+                             "list of such lists (one per strike)");
+    }
     return layouts;
 }
 
@@ -255,7 +299,8 @@ std::vector<std::string> choice_texts(const std::vector<Choice>& choices) {
     return out;
 }
 
-/// The cloth model a scenario's friction line gives in words ("physical", "decay K", ...).
+/// The cloth model a scenario's friction line gives in words ("physical", "decay K", ...),
+/// refused in the words simulate uses.
 FrictionModel friction_of(const std::string& text) {
     std::vector<std::string> words;
     std::string word;
@@ -269,10 +314,9 @@ FrictionModel friction_of(const std::string& text) {
     }
     const std::vector<std::string_view> views(words.begin(), words.end());
     const auto model = parse_friction(views);
-    if (!std::holds_alternative<FrictionModel>(model))
-        throw py::value_error("bad cloth model '" + text +
-                              "' (expected physical, decay K, constant A or combined K A, K and "
-                              "A > 0)");
+    if (const auto* problem = std::get_if<FrictionProblem>(&model))
+        throw py::value_error(friction_problem_text(
+            *problem, views, "physical | decay K | constant A | combined K A"));
     return std::get<FrictionModel>(model);
 }
 
@@ -287,6 +331,8 @@ Match start_match(const std::string& game, const std::optional<std::string>& tab
         header.setup.table = table_size_of(*table);
     header.setup.physics.friction = friction_of(friction);
     header.seed = seed;
+    if (breaker != 1 && breaker != 2)
+        throw py::value_error("breaker must be 1 or 2");
     header.breaker = breaker;
     header.names[0] = names.first;
     header.names[1] = names.second;
@@ -394,10 +440,21 @@ void bind_physics(py::module_& m) {
                 p.ball_friction = {BallFrictionModel::fit, a, b, c, p.ball_friction.constant};
             },
             "Ball-ball friction u_b = a + b exp(-c v_rel) (setting it selects the fit law).")
-        .def_readwrite("cushion_height_ratio", &PhysicsParams::cushion_height_ratio)
-        .def_readwrite("cue_end_mass", &PhysicsParams::cue_end_mass)
-        .def_readwrite("cue_ball_mass", &PhysicsParams::cue_ball_mass)
-        .def_readwrite("elastic_below_speed", &PhysicsParams::elastic_below_speed)
+        .def_property("cushion_height_ratio", checked_field<&PhysicsParams::cushion_height_ratio>(),
+                      checked_setter<&PhysicsParams::cushion_height_ratio>("cushion_height_ratio",
+                                                                           0.5, 1, false),
+                      "The cushion nose's height as a fraction of 2R (above the centre, 0.5 to "
+                      "1).")
+        .def_property("cue_end_mass", checked_field<&PhysicsParams::cue_end_mass>(),
+                      checked_setter<&PhysicsParams::cue_end_mass>("cue_end_mass", 0, 1, true),
+                      "The cue's effective end mass, kg (0: no squirt).")
+        .def_property("cue_ball_mass", checked_field<&PhysicsParams::cue_ball_mass>(),
+                      checked_setter<&PhysicsParams::cue_ball_mass>("cue_ball_mass", 0, 1, true),
+                      "The mass a rack gives the cue ball, kg (0: as the others).")
+        .def_property(
+            "elastic_below_speed", checked_field<&PhysicsParams::elastic_below_speed>(),
+            checked_setter<&PhysicsParams::elastic_below_speed>("elastic_below_speed", 0, 1, true),
+            "Below this approach speed (m/s) collisions are elastic.")
         .def("__repr__", [](const PhysicsParams& p) {
             std::string out = "Physics(";
             for (const std::string_view name : physics_parameter_names)
@@ -413,7 +470,7 @@ void bind_physics(py::module_& m) {
                      "angular velocity (rad/s), mass (kg), motion state.")
         .def(py::init(&make_ball), py::arg("id"), py::arg("x"), py::arg("y"), py::arg("vx") = 0.0,
              py::arg("vy") = 0.0, py::arg("wx") = 0.0, py::arg("wy") = 0.0, py::arg("wz") = 0.0,
-             py::arg("mass") = py::none(), py::arg("state") = "stationary")
+             py::arg("mass") = py::none(), py::arg("state") = py::none())
         .def_readwrite("id", &Ball::id)
         .def_property(
             "position", [](const Ball& b) { return std::pair(b.position.x, b.position.y); },
@@ -528,18 +585,16 @@ void bind_simulation(py::module_& m) {
         "rack",
         [](const std::string& game, const std::optional<Table>& table_given,
            const std::optional<PhysicsParams>& physics_given, std::optional<std::uint64_t> seed) {
-            const RackType type = parse_name(rack_type_names, game)
-                                      ? *parse_name(rack_type_names, game)
-                                      : game_rack(game_type_of(game));
-            const PhysicsParams physics =
-                physics_given ? *physics_given
-                              : physics_for_table(type == RackType::snooker ? TableSize::snooker
-                                                                            : TableSize::nine_foot);
-            const Table table = table_given
-                                    ? *table_given
-                                    : make_table(type == RackType::snooker ? TableSize::snooker
-                                                                           : TableSize::nine_foot,
-                                                 physics.ball_radius);
+            const RackType type =
+                parse_name(rack_type_names, game)
+                    ? *parse_name(rack_type_names, game)
+                    : game_rack(game_type_of(game)); // Without a table, snooker's rack goes on the
+                                                     // snooker table and the others on the 9 ft
+            // one, each with its own balls.
+            const TableSize size =
+                type == RackType::snooker ? TableSize::snooker : TableSize::nine_foot;
+            const PhysicsParams physics = physics_given ? *physics_given : physics_for_table(size);
+            const Table table = table_given ? *table_given : make_table(size, physics.ball_radius);
             return make_rack(table, physics, type, seed);
         },
         py::arg("game") = "8ball", py::arg("table") = py::none(), py::arg("physics") = py::none(),
@@ -573,7 +628,7 @@ void bind_simulation(py::module_& m) {
             [](SteppedWorld& w, const Strike& strike) {
                 python::check_strike(w.physics, strike);
                 if (!w.world.strike(strike))
-                    throw py::value_error("no cue ball (ball 0) on the table to strike");
+                    throw py::value_error(no_cue_ball_text);
             },
             py::arg("strike"))
         .def(
@@ -627,13 +682,21 @@ void bind_rules(py::module_& m) {
                      setup.table = table_size_of(*table);
                  if (physics)
                      setup.physics = *physics;
-                 return make_game(setup, breaker, seed);
+                 Game made = make_game(setup, breaker, seed);
+                 if (const auto problem =
+                         python::layout_text(made.table(), made.params(), made.balls()))
+                     throw py::value_error("the rack does not fit this physics: " + *problem);
+                 return made;
              }),
              py::arg("game") = "8ball", py::arg("table") = py::none(),
              py::arg("physics") = py::none(), py::arg("breaker") = 1, py::arg("seed") = 1)
-        .def_property_readonly("type", [](const Game& g) { return game_type_name(g.type()); })
-        .def_property_readonly("table", &Game::table)
-        .def_property_readonly("physics", &Game::params)
+        .def_property_readonly(
+            "type",
+            [](const Game& g) {
+                return game_type_name(g.type());
+            }) // Copies: a game's table and physics are not Python's to change under it.
+        .def_property_readonly("table", [](const Game& g) { return g.table(); })
+        .def_property_readonly("physics", [](const Game& g) { return g.params(); })
         .def_property_readonly("balls", &Game::balls)
         .def_property_readonly("shooter", &Game::shooter)
         .def_property_readonly("is_break", &Game::is_break)
@@ -694,7 +757,7 @@ void bind_rules(py::module_& m) {
                 Shot shot;
                 Verdict verdict;
                 {
-                    py::gil_scoped_release free;
+                    // The GIL is kept while this object changes: another thread may be reading it.
                     verdict =
                         g.play(strike, make_call(ball, pocket, safety, push_out), &shot.result);
                 }
@@ -738,8 +801,8 @@ void bind_rules(py::module_& m) {
             },
             py::arg("text"),
             "The match a record (`record()`, a saved game) plays into, checked as the game "
-            "checks it.")
-        .def_property_readonly("game", &Match::game)
+            "checks it.") // A copy: the match's game moves on only through the match's actions.
+        .def_property_readonly("game", [](const Match& match) { return match.game(); })
         .def_property_readonly("rack", &Match::rack)
         .def_property_readonly("state_hash", &Match::state_hash)
         .def(
@@ -770,7 +833,7 @@ void bind_rules(py::module_& m) {
                     throw py::value_error(*problem);
                 std::variant<PlayedShot, MatchError> played = MatchError::none;
                 {
-                    py::gil_scoped_release free;
+                    // The GIL is kept while this object changes: another thread may be reading it.
                     played = match.shoot(player, strike, make_call(ball, pocket, safety, push_out));
                 }
                 if (const auto* error = std::get_if<MatchError>(&played))
@@ -795,7 +858,7 @@ void bind_rules(py::module_& m) {
                     throw py::value_error("no computer is to act");
                 std::optional<ComputerMove> move;
                 {
-                    py::gil_scoped_release free;
+                    // The GIL is kept while this object changes: another thread may be reading it.
                     move = match.computer_move();
                 }
                 if (!move)
@@ -811,7 +874,8 @@ void bind_rules(py::module_& m) {
                 default: {
                     std::variant<PlayedShot, MatchError> played = MatchError::none;
                     {
-                        py::gil_scoped_release free;
+                        // The GIL is kept while this object changes: another thread may be reading
+                        // it.
                         played = match.shoot(player, move->shot.strike, move->shot.call);
                     }
                     if (const auto* error = std::get_if<MatchError>(&played))

@@ -3,44 +3,19 @@
 #include <pybind11/pybind11.h>
 
 #include <algorithm>
-#include <charconv>
+#include <exception>
 #include <thread>
 
 namespace termpool::python {
-
-namespace {
-
-/// The shortest text that reads back as `v`, as simulate writes numbers (-0 as 0).
-std::string number_text(double v) {
-    char buffer[32];
-    const auto end = std::to_chars(buffer, buffer + sizeof buffer, v == 0 ? 0.0 : v).ptr;
-    return std::string(buffer, end);
-}
-
-std::string position_text(Vec2 p) {
-    return "(" + number_text(p.x) + ", " + number_text(p.y) + ")";
-}
-
-} // namespace
 
 std::optional<std::string> layout_text(const Table& table, const PhysicsParams& physics,
                                        const std::vector<Ball>& balls) {
     const auto problem = layout_problem(table, balls, physics.ball_radius);
     if (!problem)
         return std::nullopt;
-    const Ball& ball = balls[problem->ball];
-    const std::string at =
-        "ball " + std::to_string(ball.id) + " at " + position_text(ball.position);
-    const std::string other = "ball " + std::to_string(balls[problem->other].id);
-    switch (problem->kind) {
-    case LayoutProblem::Kind::off_table:
-        return at + " is off the table";
-    case LayoutProblem::Kind::overlap:
-        return at + " overlaps " + other;
-    case LayoutProblem::Kind::same_id:
-        return "duplicate ball " + std::to_string(ball.id);
-    }
-    return std::nullopt;
+    return layout_problem_text(*problem, balls, [&](std::size_t index, bool) {
+        return "ball " + std::to_string(balls[index].id);
+    });
 }
 
 void check_strike(const PhysicsParams& physics, const Strike& strike) {
@@ -56,7 +31,7 @@ void check_layout(const Table& table, const PhysicsParams& physics,
         return b.id == 0 && b.state != MotionState::pocketed;
     });
     if (!cue)
-        throw pybind11::value_error("no cue ball (ball 0) on the table to strike");
+        throw pybind11::value_error(no_cue_ball_text);
 }
 
 std::vector<Shot> simulate_batch(const Table& table, const PhysicsParams& physics,
@@ -70,21 +45,33 @@ std::vector<Shot> simulate_batch(const Table& table, const PhysicsParams& physic
     threads = static_cast<unsigned>(std::min<std::size_t>(threads, strikes.size()));
     // Each thread takes every threads-th strike and keeps one World: a reset puts a layout out
     // in the world's own memory, so that a long batch allocates only for its results.
+    // An exception (memory running out) is kept and thrown once every thread has ended: one
+    // escaping a thread would end the interpreter.
+    std::vector<std::exception_ptr> failures(threads);
     const auto work = [&](std::size_t first) {
-        std::optional<World> world;
-        for (std::size_t i = first; i < strikes.size(); i += threads) {
-            const std::vector<Ball>& layout = layouts[layouts.size() == 1 ? 0 : i];
-            if (world)
-                world->reset(layout);
-            else
-                world.emplace(table, physics, layout);
-            simulate_shot(*world, strikes[i], shots[i].result);
+        try {
+            std::optional<World> world;
+            for (std::size_t i = first; i < strikes.size(); i += threads) {
+                const std::vector<Ball>& layout = layouts[layouts.size() == 1 ? 0 : i];
+                if (world)
+                    world->reset(layout);
+                else
+                    world.emplace(table, physics, layout);
+                simulate_shot(*world, strikes[i], shots[i].result);
+            }
+        } catch (...) {
+            failures[first] = std::current_exception();
         }
     };
-    std::vector<std::jthread> pool;
-    for (unsigned t = 1; t < threads; ++t)
-        pool.emplace_back(work, t);
-    work(0);
+    {
+        std::vector<std::jthread> pool;
+        for (unsigned t = 1; t < threads; ++t)
+            pool.emplace_back(work, t);
+        work(0);
+    }
+    for (const std::exception_ptr& failure : failures)
+        if (failure)
+            std::rethrow_exception(failure);
     return shots;
 }
 

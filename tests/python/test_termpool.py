@@ -152,22 +152,65 @@ def test_a_game_of_nine_ball_follows_the_rules():
     game = tp.Game("9ball", seed=3)
     assert game.legal_targets() == [1]
     assert game.ball_in_hand == "kitchen"
-    verdict, shot = game.play(tp.Strike(9, 0))
-    assert verdict.first_contact == 1
-    assert game.shooter in (1, 2)
-    # A miss: the cue ball sent away from every ball.
-    while game.winner == 0 and game.choices:
-        game.choose(game.choices[0])
-    if game.ball_in_hand != "none":
-        x, y = game.legal_placements(4)[0]
-        game.place_cue_ball(x, y)
-    shooter = game.shooter
-    verdict, _ = game.play(tp.Strike(0.3, 180 if game.balls[0].position[0] > 1.3 else 0))
-    if verdict.first_contact == -1:
-        assert verdict.foul == "no-contact" and game.shooter == 3 - shooter
-        assert game.ball_in_hand == "anywhere"
+    # A break that goes away from the rack and touches nothing: the cue ball hits no ball.
+    verdict, shot = game.play(tp.Strike(0.3, 180))
+    assert verdict.foul == "no-contact" and verdict.first_contact == -1
+    assert "bad-break" in verdict.fouls
+    assert game.shooter == 2 and game.ball_in_hand == "anywhere"
+    assert game.legal_targets() == [1]
     with pytest.raises(ValueError):
         game.place_cue_ball(-5, -5)
+    x, y = game.legal_placements(4)[0]
+    game.place_cue_ball(x, y)
+    assert game.balls[0].position == (x, y)
+    # The game's physics and table are copies: changing them changes nothing.
+    physics = game.physics
+    physics["u_s"] = 0.9
+    assert game.physics["u_s"] == 0.2
+
+
+def test_bad_input_is_refused_in_words():
+    with pytest.raises(ValueError, match="must be finite"):
+        tp.simulate([tp.Ball(0, 1, 0.6, vx=float("nan"))], tp.Strike(1))
+    with pytest.raises(ValueError, match="faster than 20"):
+        tp.simulate([tp.Ball(0, 1, 0.6), tp.Ball(1, 2, 0.6, vx=1e300)], tp.Strike(1))
+    with pytest.raises(ValueError, match="mass must be > 0"):
+        tp.simulate([tp.Ball(0, 1, 0.6, mass=-1)], tp.Strike(1))
+    with pytest.raises(ValueError, match="stationary but has a velocity"):
+        tp.simulate([tp.Ball(0, 1, 0.6), tp.Ball(1, 2, 0.6, vx=1, state="stationary")],
+                    tp.Strike(1))
+    with pytest.raises(ValueError, match="no cue ball"):
+        tp.simulate([tp.Ball(1, 1, 0.6)], tp.Strike(1))
+    with pytest.raises(ValueError, match="decay rate K must be > 0"):
+        tp.Physics().friction = "decay 0"
+    with pytest.raises(ValueError, match="cushion_height_ratio"):
+        tp.Physics().cushion_height_ratio = float("nan")
+    with pytest.raises(ValueError, match=">= 0"):
+        tp.simulate(tp.rack("8ball"), tp.Strike(1)).sample([-1])
+    with pytest.raises(TypeError, match="list of Balls"):
+        tp.simulate_many([tp.Ball(0, 1, 0.6), [tp.Ball(0, 1, 0.6)]], [tp.Strike(1)] * 2)
+    with pytest.raises(ValueError, match="breaker"):
+        tp.Match("9ball", breaker=3)
+    physics = tp.Physics()
+    physics["R"] = 0.5
+    with pytest.raises(ValueError, match="rack does not fit"):
+        tp.Game("8ball", physics=physics)
+    # A ball given its motion without a state is sliding; one turning on the spot spins.
+    assert tp.Ball(1, 1, 0.6, vx=1).state == "sliding"
+    assert tp.Ball(1, 1, 0.6, wz=5).state == "spinning"
+    moving = tp.simulate([tp.Ball(0, 1, 0.6), tp.Ball(1, 2, 0.6, vx=1)], tp.Strike(0))
+    # Sent at 1 m/s towards the foot rail 0.51 m away: it reaches it and comes back.
+    assert any(e.kind == "cushion" and e.ball == 1 for e in moving.events)
+
+
+def test_too_many_balls_for_threads_is_an_error_not_a_crash():
+    # One more ball than a table holds: refused before any thread starts.
+    balls = [tp.Ball(0, 0.05, 0.05)] + [tp.Ball(i, 0.1 + (i % 1000) * 0.06,
+                                                 0.1 + (i // 1000) * 0.06)
+                                        for i in range(1, 32770)]
+    table = tp.Table.custom(70, 70)
+    with pytest.raises(ValueError, match="more than the 32768"):
+        tp.simulate_many(balls, [tp.Strike(1)] * 2, table, threads=2)
 
 
 def test_computer_plays_a_whole_match_and_the_record_replays(tmp_path):
@@ -187,13 +230,19 @@ def test_computer_plays_a_whole_match_and_the_record_replays(tmp_path):
 def test_a_match_refuses_what_is_not_its_turn():
     match = tp.Match("9ball")
     assert match.pending() == {"kind": "place", "player": 1, "ball_in_hand": "kitchen",
-                               "choices": []} or match.pending()["kind"] == "shoot"
+                               "choices": []}
     with pytest.raises(ValueError):
         match.shoot(2, tp.Strike(5))
     with pytest.raises(ValueError, match="outside"):
         match.shoot(1, tp.Strike(50))
     played = match.shoot(1, tp.Strike(8))
     assert played.was_break and played.shooter == 1
+    # The match's game is a copy: playing it does not move the match.
+    before = match.state_hash
+    copy = match.game
+    if copy.ready_to_shoot():
+        copy.play(tp.Strike(3))
+    assert match.state_hash == before
 
 
 def test_without_numpy_arrays_are_lists():
