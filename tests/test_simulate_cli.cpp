@@ -310,6 +310,22 @@ TEST_CASE("simulate turns any finite strike angle by its exact remainder modulo 
     check_refused(cases);
 }
 
+TEST_CASE("simulate reports the stop of a ball a cushion leaves at rest", "[cli]") {
+    // Issue 28's shot: on a classic cloth the cushion takes the last of the ball's speed, and
+    // the ball's stop is its own event at the same instant.
+    TempDir dir;
+    const Run r = run(dir, "simulate " + dir.write("stop.txt", "friction constant 0.001\n"
+                                                               "ball 0 2.5 0.6\n"
+                                                               "strike 0.0072 0\n"));
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.out == "event 0 rolling 0\n"
+                   "event 1.815763749611285 cushion 0\n"
+                   "event 1.815763749611285 stopped 0\n"
+                   "ball 0 2.511425 0.6 table\n"
+                   "rest 1.815763749611285\n");
+}
+
 TEST_CASE("simulate refuses unreadable files and extra arguments", "[cli]") {
     TempDir dir;
     const Run missing = run(dir, "simulate " + dir.path() + "/nope.txt");
