@@ -222,10 +222,10 @@ struct World::Impl {
     }
 
     // A contact that leaves a ball at rest (a classic cloth stops a ball slower than its rest
-    // speed at once; the physical one one with no speed or spin left) is where it stops: the
-    // ball gets its stopped event at this instant, after the contact's own events, as a ball
-    // that stops on the cloth gets one from its transition. Balls held in a wedge were at rest
-    // before and are not reported.
+    // speed at once; the physical cloth stops one left with no speed and no spin) is where it
+    // stops: the ball gets its stopped event at this instant, after the contact's own events,
+    // as a ball that stops on the cloth gets one from its transition (issue 28). Balls held in
+    // a wedge were at rest before and are not reported.
     void report_stop(std::size_t i, bool was_active) {
         const Ball& b = pieces[i].ball;
         if (was_active && b.state == MotionState::stationary)
