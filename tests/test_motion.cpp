@@ -2,6 +2,7 @@
 // seed report's).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <optional>
 
 #include "physics_helpers.hpp"
 
@@ -118,6 +119,41 @@ TEST_CASE("the classic friction models follow their closed forms", "[physics][mo
         CHECK(b.angular_velocity == Vec3{});
         CHECK(b.state == MotionState::rolling);
     }
+}
+
+TEST_CASE("a classic ball that a contact leaves at rest is reported stopped at the contact",
+          "[physics][motion][classic]") {
+    // Issue 28: the stop came with no event when the contact, not the cloth, took the last of
+    // the ball's speed. A stop shot: the cue ball gives all its speed to the object ball.
+    for (const FrictionKind kind :
+         {FrictionKind::decay, FrictionKind::constant, FrictionKind::combined}) {
+        INFO(static_cast<int>(kind));
+        PhysicsParams p;
+        p.friction = {kind, 1.0, 0.3, 0.005};
+        p.collision = CollisionModel::ideal;
+        World world(table, p, {ball_at(0, 1.0, 0.6), ball_at(1, 1.3, 0.6)});
+        world.strike({1.0, 0, 0, 0});
+        const Event hit = step_until(world, EventKind::ball_ball);
+        REQUIRE(find_ball(world.balls(), 0).state == MotionState::stationary);
+        const std::optional<Event> next = world.step();
+        REQUIRE(next);
+        CHECK(*next == Event{hit.time, EventKind::stopped, 0, 0});
+        const Event later = step_until(world, EventKind::stopped);
+        CHECK(later.ball == 1);
+        CHECK(later.time > hit.time);
+        CHECK_FALSE(world.step());
+    }
+    // The issue's shot: a ball that a cushion leaves slower than the rest speed.
+    PhysicsParams p;
+    p.friction = {FrictionKind::constant, 0, 0.001, 0.005};
+    World world(table, p, {ball_at(0, 2.5, 0.6)});
+    world.strike({0.0072, 0, 0, 0});
+    const Event cushion = step_until(world, EventKind::cushion);
+    const std::optional<Event> next = world.step();
+    REQUIRE(next);
+    CHECK(*next == Event{cushion.time, EventKind::stopped, 0, 0});
+    CHECK(find_ball(world.balls(), 0).state == MotionState::stationary);
+    CHECK_FALSE(world.step());
 }
 
 TEST_CASE("a trajectory samples the same states the world stepped through",

@@ -3,6 +3,7 @@
 // values that must be exact.
 #include "support/portable_math.hpp"
 #include "support/random.hpp"
+#include "support/state_digest.hpp"
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -132,4 +133,73 @@ TEST_CASE("sin_cos_degrees agrees with sin and cos of the angle in radians", "[p
             std::max({worst, std::fabs(sc.sin - std::sin(rad)), std::fabs(sc.cos - std::cos(rad))});
     }
     CHECK(worst < 1e-15);
+}
+
+namespace {
+
+// The digest of sin_cos_degrees over angles within +-10^6 degrees, quarter-turn boundaries and
+// their neighbours included: what issue 28's whole-turn reduction must leave alone.
+std::uint64_t digest_of_moderate_angles() {
+    termpool::StateDigest d;
+    const auto add = [&](double deg) {
+        const portable::SinCos sc = portable::sin_cos_degrees(deg);
+        d.add(sc.sin);
+        d.add(sc.cos);
+    };
+    termpool::Random rng(28);
+    for (int i = 0; i < 200000; ++i)
+        add(rng.uniform(-720, 720));
+    for (int i = 0; i < 200000; ++i)
+        add(rng.uniform(-1e6, 1e6));
+    for (int eighth = -20000; eighth <= 20000; ++eighth) {
+        double up = 45.0 * eighth, down = up;
+        for (int step = 0; step < 4; ++step) {
+            add(up);
+            add(down);
+            up = std::nextafter(up, HUGE_VAL);
+            down = std::nextafter(down, -HUGE_VAL);
+        }
+    }
+    return d.value();
+}
+
+} // namespace
+
+TEST_CASE("sin_cos_degrees gives moderate angles the bits it gave before issue 28",
+          "[portable-math]") {
+    CHECK(termpool::digest_hex(digest_of_moderate_angles()) == "32ac89a0f925e0e2");
+}
+
+TEST_CASE("sin_cos_degrees of any finite angle is that of its exact remainder modulo 360",
+          "[portable-math]") {
+    // Issue 28: 1e20 degrees gave 0 degrees; it is 360 k + 280 exactly.
+    const auto same = [](double a, double b) {
+        const portable::SinCos x = portable::sin_cos_degrees(a), y = portable::sin_cos_degrees(b);
+        return std::memcmp(&x.sin, &y.sin, sizeof x.sin) == 0 &&
+               std::memcmp(&x.cos, &y.cos, sizeof x.cos) == 0;
+    };
+    CHECK(same(1e20, 280));
+    CHECK(same(-1e20, -280));
+    CHECK(same(1e300, std::fmod(1e300, 360.0)));
+    CHECK(same(std::numeric_limits<double>::max(),
+               std::fmod(std::numeric_limits<double>::max(), 360.0)));
+    const portable::SinCos huge = portable::sin_cos_degrees(1e20);
+    CHECK(std::fabs(huge.cos - std::cos(280 * M_PI / 180)) < 1e-15);
+    CHECK(std::fabs(huge.sin - std::sin(280 * M_PI / 180)) < 1e-15);
+    // 360 k + a is a double exactly for these k and a (a has two bits after the point, and
+    // 360 k + a stays below 2^51).
+    for (const double k : {1.0, 7.0, 1024.0, 1e6, 0x1p30, 0x1p42})
+        for (const double a : {0.0, 0.25, 37.25, 45.0, 89.75, 90.0, 135.5, 280.0, 359.75}) {
+            INFO(k << " turns and " << a);
+            CHECK(same(360 * k + a, a));
+            CHECK(same(-(360 * k + a), -a));
+        }
+    // A negative angle points where the positive remainder does.
+    const portable::SinCos minus = portable::sin_cos_degrees(-80),
+                           plus = portable::sin_cos_degrees(280);
+    CHECK(std::fabs(minus.sin - plus.sin) < 1e-16);
+    CHECK(std::fabs(minus.cos - plus.cos) < 1e-16);
+    CHECK(std::isnan(portable::sin_cos_degrees(std::numeric_limits<double>::infinity()).sin));
+    CHECK(std::isnan(portable::sin_cos_degrees(-std::numeric_limits<double>::infinity()).cos));
+    CHECK(std::isnan(portable::sin_cos_degrees(std::numeric_limits<double>::quiet_NaN()).sin));
 }

@@ -283,6 +283,49 @@ TEST_CASE("simulate refuses bad input with FILE:LINE: and nothing on stdout", "[
     check_refused(cases);
 }
 
+TEST_CASE("simulate turns any finite strike angle by its exact remainder modulo 360", "[cli]") {
+    // Issue 28: 1e20 degrees went along +x, but 1e20 = 360 k + 280 exactly.
+    TempDir dir;
+    const auto output = [&](const std::string& angle) {
+        const Run r = run(dir, "simulate " + dir.write("angle.txt", "ball 0 1.27 0.635\n"
+                                                                    "ball 1 2.2 0.3\n"
+                                                                    "strike 0.3 " +
+                                                                        angle + " 0.2 0\n"));
+        INFO(angle << ": " << r.err);
+        REQUIRE(r.status == 0);
+        return r.out;
+    };
+    CHECK(output("1e20") == output("280"));
+    CHECK(output("-1e20") == output("-280"));
+    CHECK(output("-280") == output("80"));
+    CHECK(output("1e20") != output("0"));
+    // 360 k + 37.25 for k = 2^42, a double exactly.
+    CHECK(output("1583296743997477.25") == output("37.25"));
+    const std::vector<Case> cases = {
+        {"ball 0 1 1\nstrike 0.3 inf\n", 2, "angle 'inf' is not finite"},
+        {"ball 0 1 1\n\nstrike 0.3 -inf\n", 3, "angle '-inf' is not finite"},
+        {"ball 0 1 1\nstrike 0.3 nan\n", 2, "angle 'nan' is not finite"},
+        {"ball 0 1 1\nstrike 0.3 1e400\n", 2, "angle '1e400' is not finite"},
+    };
+    check_refused(cases);
+}
+
+TEST_CASE("simulate reports the stop of a ball a cushion leaves at rest", "[cli]") {
+    // Issue 28's shot: on a classic cloth the cushion takes the last of the ball's speed, and
+    // the ball's stop is its own event at the same instant.
+    TempDir dir;
+    const Run r = run(dir, "simulate " + dir.write("stop.txt", "friction constant 0.001\n"
+                                                               "ball 0 2.5 0.6\n"
+                                                               "strike 0.0072 0\n"));
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.out == "event 0 rolling 0\n"
+                   "event 1.815763749611285 cushion 0\n"
+                   "event 1.815763749611285 stopped 0\n"
+                   "ball 0 2.511425 0.6 table\n"
+                   "rest 1.815763749611285\n");
+}
+
 TEST_CASE("simulate refuses unreadable files and extra arguments", "[cli]") {
     TempDir dir;
     const Run missing = run(dir, "simulate " + dir.path() + "/nope.txt");

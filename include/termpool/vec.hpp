@@ -60,7 +60,9 @@ inline Vec2 normalized(Vec2 v) {
 }
 /// Unit vector at angle `radians` counter-clockwise from +x (the same bits on every machine).
 Vec2 unit_from_angle(double radians);
-/// Unit vector at angle `degrees` counter-clockwise from +x; exact along the axes.
+/// Unit vector at angle `degrees` counter-clockwise from +x; exact along the axes. Any finite
+/// angle points where its exact remainder modulo 360 does (1e20 degrees is 280 degrees); a
+/// non-finite one gives NaN components.
 Vec2 unit_from_degrees(double degrees);
 
 /// A vector in space: x and y in the table plane, z up. Used for angular velocity.

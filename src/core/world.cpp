@@ -201,6 +201,8 @@ struct World::Impl {
     }
 
     Event resolve_pair(std::size_t i, std::size_t j) {
+        const bool i_was_active = in_motion(pieces[i].ball),
+                   j_was_active = in_motion(pieces[j].ball);
         Ball a = state_now(i), b = state_now(j);
         core::resolve_ball_ball(a, b, params, cloth);
         set_piece(i, a);
@@ -209,7 +211,25 @@ struct World::Impl {
         escape_wedge(i, j, changed);
         escape_wedge(j, i, changed);
         refresh_changed();
+        report_stop(i, i_was_active);
+        report_stop(j, j_was_active);
         return {now, EventKind::ball_ball, std::min(a.id, b.id), std::max(a.id, b.id)};
+    }
+
+    // Whether a ball is not at rest: it moves, or it spins in place (and stops later).
+    static bool in_motion(const Ball& b) {
+        return b.state != MotionState::stationary && b.state != MotionState::pocketed;
+    }
+
+    // A contact that leaves a ball at rest (a classic cloth stops a ball slower than its rest
+    // speed at once; the physical cloth stops one left with no speed and no spin) is where it
+    // stops: the ball gets its stopped event at this instant, after the contact's own events,
+    // as a ball that stops on the cloth gets one from its transition (issue 28). Balls held in
+    // a wedge were at rest before and are not reported.
+    void report_stop(std::size_t i, bool was_active) {
+        const Ball& b = pieces[i].ball;
+        if (was_active && b.state == MotionState::stationary)
+            pending.push_back({now, EventKind::stopped, b.id, 0});
     }
 
     // Table events first, then pairs, so that each pair search sees both balls' horizons.
@@ -304,10 +324,14 @@ struct World::Impl {
         }
         set_piece(i, b);
         changed.assign({i});
-        if (te.kind == TableEventKind::rail || te.kind == TableEventKind::jaw_line ||
-            te.kind == TableEventKind::jaw_point)
+        const bool contact = te.kind == TableEventKind::rail ||
+                             te.kind == TableEventKind::jaw_line ||
+                             te.kind == TableEventKind::jaw_point;
+        if (contact)
             escape_wedge(i, i, changed);
         refresh_changed();
+        if (contact)
+            report_stop(i, true); // it had a table event: it was moving
         return event;
     }
 

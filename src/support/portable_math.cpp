@@ -217,8 +217,14 @@ double cos(double x) {
 SinCos sin_cos_degrees(double degrees) {
     if (!std::isfinite(degrees))
         return {nan, nan};
-    const double k = nearest_integer(degrees / 90);
-    const double r = (degrees - 90 * k) * pi_over_180;
+    // Whole turns first, by fmod, which is exact: any finite angle, 1e20 degrees too, points
+    // where its exact remainder does (the quarter turns alone lose it once 90 k rounds, past
+    // about 10^16 degrees). Below a turn fmod returns the angle itself, and up to 10^15 degrees
+    // the quarter turns alone were exact already: those angles keep their bits (issue 28,
+    // tests/test_portable_math.cpp).
+    const double turn = std::fmod(degrees, 360.0);
+    const double k = nearest_integer(turn / 90);
+    const double r = (turn - 90 * k) * pi_over_180;
     return by_quadrant(r, static_cast<long long>(std::fmod(k, 4.0)));
 }
 

@@ -31,8 +31,10 @@ double sin(double x);
 /// Cosine of `x` radians (the same reduction as `sin`).
 double cos(double x);
 
-/// Sine and cosine of `degrees`, reduced by quarter turns in degrees first, so that multiples
-/// of 90 degrees give exactly 0 and +-1.
+/// Sine and cosine of `degrees`, reduced exactly by whole turns (fmod) and then by quarter
+/// turns in degrees, so that multiples of 90 degrees give exactly 0 and +-1 and any finite
+/// angle, however large, gives the sine and cosine of its exact remainder modulo 360. NaN for
+/// a non-finite angle.
 struct SinCos {
     double sin; ///< sine
     double cos; ///< cosine
