@@ -58,13 +58,20 @@ double ball_friction_at(const BallFriction& friction, double sliding_speed);
 /// How a ball leaves a cushion or a pocket jaw.
 enum class CushionModel {
     physical, ///< impulse at the cushion nose with restitution e_c and friction f_c, spin-aware
-    ideal,    ///< the seed report's mirror reflection: normal velocity flips, the rest is kept
+    /// the seed report's reflection of the velocity alone: the normal velocity flips, the spin is
+    /// kept, so a rolling ball curls off the mirror line as the cloth turns its old spin
+    ideal,
+    /// a true mirror image of the ball's motion: the velocity reflected and the spin with it (an
+    /// axial vector: its part along the rail's normal kept, the rest reversed), so a rolling ball
+    /// leaves rolling along the mirror line and stays on it
+    mirror,
 };
 
 /// The cushion models' names, as a scenario's `cushion` line gives them.
 inline constexpr NameRow<CushionModel> cushion_model_names[] = {
     {CushionModel::physical, "physical"},
     {CushionModel::ideal, "ideal"},
+    {CushionModel::mirror, "mirror"},
 };
 static_assert(names_in_order(cushion_model_names));
 

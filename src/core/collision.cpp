@@ -136,6 +136,16 @@ void part_pushed_balls(Ball& a, Ball& b, Vec2 n) {
     turn_towards(a, n, dot(a.velocity, n) - share_a);
 }
 
+// The mirror image of the ball's motion in the cushion's plane (normal n): the velocity, a
+// polar vector, loses twice its part along n; the spin, an axial vector, keeps its part along n
+// and reverses the rest. A rolling ball stays rolling, along the mirror line, and side spin
+// turns the other way, as in a mirror.
+void mirror_in_cushion(Ball& ball, Vec2 n, double approach) {
+    ball.velocity -= n * (2 * approach);
+    const Vec3 axis = lift(n);
+    ball.angular_velocity = axis * (2 * dot(ball.angular_velocity, axis)) - ball.angular_velocity;
+}
+
 bool pressed_together(const Ball& a, const Ball& b, Vec2 n, const PhysicsParams& p) {
     return dot(physical_acceleration(a, p) - physical_acceleration(b, p), n) > 0;
 }
@@ -179,7 +189,9 @@ void resolve_cushion(Ball& ball, Vec2 towards, const PhysicsParams& p, const Clo
     const double approach = dot(ball.velocity, towards);
     const bool slow = approach < p.elastic_below_speed;
 
-    if (approach > 0 && (p.cushion == CushionModel::ideal || slow)) {
+    if (approach > 0 && p.cushion == CushionModel::mirror) {
+        mirror_in_cushion(ball, towards, approach);
+    } else if (approach > 0 && (p.cushion == CushionModel::ideal || slow)) {
         ball.velocity -= towards * (2 * approach);
     } else if (approach > 0) {
         // The cushion nose touches the ball above its equator, at angle theta.
