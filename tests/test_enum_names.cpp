@@ -202,7 +202,8 @@ TEST_CASE("the names the old switches wrote are the tables' names", "[names]") {
                     {{CollisionModel::physical, "physical"}, {CollisionModel::ideal, "ideal"}});
     check_old_names(cushion_model_names, {{CushionModel::physical, "physical"},
                                           {CushionModel::ideal, "ideal"},
-                                          {CushionModel::mirror, "mirror"}});
+                                          {CushionModel::mirror, "mirror"},
+                                          {CushionModel::stronge, "stronge"}});
     check_old_names(ball_friction_model_names,
                     {{BallFrictionModel::fit, "fit"}, {BallFrictionModel::constant, "constant"}});
     check_old_names(friction_kind_names, {{FrictionKind::physical, "physical"},

@@ -149,7 +149,7 @@ Problem parse_collision(const Line& line, Draft& draft) {
 
 Problem parse_cushion(const Line& line, Draft& draft) {
     return parse_model(line, draft, draft.setup.physics.cushion, cushion_model_names,
-                       "cushion physical|ideal|mirror");
+                       "cushion physical|ideal|mirror|stronge");
 }
 
 Problem parse_friction(const Line& line, Draft& draft) {
