@@ -1,6 +1,7 @@
 #pragma once
 // Stronge's compliant frictional impact of a sphere on a rigid surface (W. J. Stronge, "Impact
-// Mechanics", Cambridge University Press, 2000, ch. 5; 2nd ed. 2018): the stronge cushion.
+// Mechanics", Cambridge University Press, 2000: impact with discrete normal and tangential
+// compliance): the stronge cushion.
 
 namespace termpool::core {
 
