@@ -200,8 +200,10 @@ TEST_CASE("the names the old switches wrote are the tables' names", "[names]") {
         {{BallOn::red, "red"}, {BallOn::colour, "colour"}, {BallOn::in_order, "in-order"}});
     check_old_names(collision_model_names,
                     {{CollisionModel::physical, "physical"}, {CollisionModel::ideal, "ideal"}});
-    check_old_names(cushion_model_names,
-                    {{CushionModel::physical, "physical"}, {CushionModel::ideal, "ideal"}});
+    check_old_names(cushion_model_names, {{CushionModel::physical, "physical"},
+                                          {CushionModel::ideal, "ideal"},
+                                          {CushionModel::mirror, "mirror"},
+                                          {CushionModel::stronge, "stronge"}});
     check_old_names(ball_friction_model_names,
                     {{BallFrictionModel::fit, "fit"}, {BallFrictionModel::constant, "constant"}});
     check_old_names(friction_kind_names, {{FrictionKind::physical, "physical"},

@@ -176,7 +176,7 @@ TEST_CASE("physics constants by name are refused in the words of a scenario",
     CHECK(set_physics_parameter(params, "mu", 1)
               ->starts_with("unknown parameter 'mu' (expected "
                             "u_s, u_r, u_sp, e_b, u_b, e_c, "
-                            "f_c, g, R or m)"));
+                            "f_c, w_c, g, R or m)"));
     CHECK_FALSE(set_physics_parameter(params, "u_b", 0.06));
     CHECK(params.ball_friction.model == BallFrictionModel::constant);
     CHECK(*physics_parameter(params, "u_b") == 0.06);

@@ -58,13 +58,24 @@ double ball_friction_at(const BallFriction& friction, double sliding_speed);
 /// How a ball leaves a cushion or a pocket jaw.
 enum class CushionModel {
     physical, ///< impulse at the cushion nose with restitution e_c and friction f_c, spin-aware
-    ideal,    ///< the seed report's mirror reflection: normal velocity flips, the rest is kept
+    /// the seed report's reflection of the velocity alone: the normal velocity flips, the spin is
+    /// kept, so a rolling ball curls off the mirror line as the cloth turns its old spin
+    ideal,
+    /// a true mirror image of the ball's motion: the velocity reflected and the spin with it (an
+    /// axial vector: its part along the rail's normal kept, the rest reversed), so a rolling ball
+    /// leaves rolling along the mirror line and stays on it
+    mirror,
+    /// Stronge's compliant frictional impact at the cushion nose: normal and tangential springs
+    /// (frequency ratio w_c), restitution e_c, Coulomb friction f_c, with stick and slip
+    stronge,
 };
 
 /// The cushion models' names, as a scenario's `cushion` line gives them.
 inline constexpr NameRow<CushionModel> cushion_model_names[] = {
     {CushionModel::physical, "physical"},
     {CushionModel::ideal, "ideal"},
+    {CushionModel::mirror, "mirror"},
+    {CushionModel::stronge, "stronge"},
 };
 static_assert(names_in_order(cushion_model_names));
 
@@ -126,6 +137,10 @@ struct PhysicsParams {
     double cushion_friction = 0.2;       ///< f_c
     double cushion_height_ratio = 0.635; ///< cushion nose height as a fraction of 2R
     double gravity = 9.81;               ///< g
+    /// w_c of the stronge cushion: the ratio w_t / w_n of the tangential and normal vibration
+    /// frequencies of the ball on the cushion's springs, between 1 and 2 (both excluded). 1.7
+    /// is pooltool's value; a sphere of Poisson's ratio 0 to 0.5 gives 1.87 to 1.53.
+    double cushion_frequency_ratio = 1.7;
     /// The cue's effective end mass, kg: the lighter, the less squirt; 0 turns squirt off.
     double cue_end_mass = standard_shaft_end_mass;
     /// Below this approach speed (m/s) collisions are elastic. Real restitution tends to 1 at low
@@ -137,10 +152,10 @@ struct PhysicsParams {
 };
 
 /// The constants of PhysicsParams that a scenario's `param NAME VALUE` line, the Python module
-/// and a researcher's script set by their short names: u_s, u_r, u_sp, e_b, u_b, e_c, f_c, g, R
-/// and m. (u_b sets the constant ball-ball friction and the constant law with it.)
-inline constexpr std::string_view physics_parameter_names[] = {"u_s", "u_r", "u_sp", "e_b", "u_b",
-                                                               "e_c", "f_c", "g",    "R",   "m"};
+/// and a researcher's script set by their short names: u_s, u_r, u_sp, e_b, u_b, e_c, f_c, w_c,
+/// g, R and m. (u_b sets the constant ball-ball friction and the constant law with it.)
+inline constexpr std::string_view physics_parameter_names[] = {
+    "u_s", "u_r", "u_sp", "e_b", "u_b", "e_c", "f_c", "w_c", "g", "R", "m"};
 
 /// Sets the constant named `name` (physics_parameter_names) of `params` to `value`, or says why
 /// not in the words of `termpool simulate` ("unknown parameter 'mu' (expected ...)", "e_b must

@@ -117,7 +117,15 @@ Problem parse_table(const Line& line, Draft& draft) {
     return {};
 }
 
-/// `collision` and `cushion` both choose between a physical and an ideal model.
+/// The names of `names` as a list: "a, b or c".
+template <class Model, std::size_t N> std::string name_list(const NameRow<Model> (&names)[N]) {
+    std::string list;
+    for (std::size_t i = 0; i < N; ++i)
+        list += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + std::string(names[i].name);
+    return list;
+}
+
+/// `collision` and `cushion` both choose a model by its name in `names`.
 template <class Model, std::size_t N>
 Problem parse_model(const Line& line, Draft& draft, Model& out, const NameRow<Model> (&names)[N],
                     const char* usage) {
@@ -128,7 +136,8 @@ Problem parse_model(const Line& line, Draft& draft, Model& out, const NameRow<Mo
         return p;
     const std::optional<Model> model = parse_name(names, line.arg(0));
     if (!model)
-        return "unknown " + key + " model " + quoted(line.arg(0)) + " (expected physical or ideal)";
+        return "unknown " + key + " model " + quoted(line.arg(0)) + " (expected " +
+               name_list(names) + ")";
     out = *model;
     return {};
 }
@@ -140,7 +149,7 @@ Problem parse_collision(const Line& line, Draft& draft) {
 
 Problem parse_cushion(const Line& line, Draft& draft) {
     return parse_model(line, draft, draft.setup.physics.cushion, cushion_model_names,
-                       "cushion physical|ideal");
+                       "cushion physical|ideal|mirror|stronge");
 }
 
 Problem parse_friction(const Line& line, Draft& draft) {

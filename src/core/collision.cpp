@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "classic_motion.hpp"
+#include "compliant_impact.hpp"
 #include "physical_cloth.hpp"
 
 namespace termpool::core {
@@ -136,6 +137,52 @@ void part_pushed_balls(Ball& a, Ball& b, Vec2 n) {
     turn_towards(a, n, dot(a.velocity, n) - share_a);
 }
 
+// The mirror image of the ball's motion in the cushion's plane (normal n): the velocity, a
+// polar vector, loses twice its part along n; the spin, an axial vector, keeps its part along n
+// and reverses the rest. A rolling ball stays rolling, along the mirror line, and side spin
+// turns the other way, as in a mirror.
+void mirror_in_cushion(Ball& ball, Vec2 n, double approach) {
+    ball.velocity -= n * (2 * approach);
+    const Vec3 axis = lift(n);
+    ball.angular_velocity = axis * (2 * dot(ball.angular_velocity, axis)) - ball.angular_velocity;
+}
+
+// Stronge's compliant impact (compliant_impact.hpp) at the cushion nose, where the physical
+// model puts its impulse: the contact point's velocity splits into the closing speed along the
+// line to the centre and a slip across it, whose direction the impact keeps (the springs and
+// friction all act along it); the impulses that give the contact point its velocity at
+// separation are applied to the ball, the vertical part of the velocity change taken by the
+// cloth as in the physical model. A nose that meets no closing speed (one at the very top of
+// the ball) reflects the velocity, as the ideal model does.
+void resolve_stronge_cushion(Ball& ball, Vec2 towards, double approach, const PhysicsParams& p) {
+    const double R = p.ball_radius;
+    const double m = ball.mass;
+    const double sin_theta = std::clamp(2 * p.cushion_height_ratio - 1, -1.0, 1.0);
+    const double cos_theta = std::sqrt(1 - sin_theta * sin_theta);
+    const Vec3 arm = lift(towards * (R * cos_theta), R * sin_theta); // centre to contact
+    const Vec3 push = arm * (-1.0 / R); // the cushion's normal, into the ball
+    const Vec3 contact_velocity = lift(ball.velocity) + cross(ball.angular_velocity, arm);
+    const double closing = -dot(contact_velocity, push);
+    if (!(closing > 0)) {
+        ball.velocity -= towards * (2 * approach);
+        return;
+    }
+    const Vec3 slip = contact_velocity + push * closing; // the part across the normal
+    const double slip_speed = std::sqrt(dot(slip, slip));
+    // A solid ball's contact point moves by P / m under a normal impulse P and by 3.5 P / m
+    // under a tangential one.
+    constexpr double inertia_ratio = 3.5;
+    const CompliantImpact end =
+        compliant_impact(slip_speed / closing, p.cushion_friction, p.cushion_restitution,
+                         p.cushion_frequency_ratio, inertia_ratio);
+    Vec3 impulse = push * (m * (1 + end.normal) * closing);
+    if (slip_speed > 0)
+        impulse +=
+            slip * (m / inertia_ratio * (end.tangential * closing - slip_speed) / slip_speed);
+    ball.velocity += planar(impulse) * (1.0 / m);
+    ball.angular_velocity += cross(arm, impulse) * (1.0 / moment_of_inertia(m, R));
+}
+
 bool pressed_together(const Ball& a, const Ball& b, Vec2 n, const PhysicsParams& p) {
     return dot(physical_acceleration(a, p) - physical_acceleration(b, p), n) > 0;
 }
@@ -179,7 +226,11 @@ void resolve_cushion(Ball& ball, Vec2 towards, const PhysicsParams& p, const Clo
     const double approach = dot(ball.velocity, towards);
     const bool slow = approach < p.elastic_below_speed;
 
-    if (approach > 0 && (p.cushion == CushionModel::ideal || slow)) {
+    if (approach > 0 && p.cushion == CushionModel::mirror) {
+        mirror_in_cushion(ball, towards, approach);
+    } else if (approach > 0 && p.cushion == CushionModel::stronge && !slow) {
+        resolve_stronge_cushion(ball, towards, approach, p);
+    } else if (approach > 0 && (p.cushion == CushionModel::ideal || slow)) {
         ball.velocity -= towards * (2 * approach);
     } else if (approach > 0) {
         // The cushion nose touches the ball above its equator, at angle theta.

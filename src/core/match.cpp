@@ -69,7 +69,8 @@ bool recordable(const PhysicsParams& p) {
            p.ball_restitution == d.ball_restitution && p.ball_friction == d.ball_friction &&
            p.cushion_restitution == d.cushion_restitution &&
            p.cushion_friction == d.cushion_friction &&
-           p.cushion_height_ratio == d.cushion_height_ratio && p.gravity == d.gravity &&
+           p.cushion_height_ratio == d.cushion_height_ratio &&
+           p.cushion_frequency_ratio == d.cushion_frequency_ratio && p.gravity == d.gravity &&
            p.elastic_below_speed == d.elastic_below_speed && p.collision == d.collision &&
            p.cushion == d.cushion;
 }

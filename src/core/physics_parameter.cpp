@@ -11,7 +11,12 @@ namespace termpool {
 namespace {
 
 /// What values of a parameter make physical sense.
-enum class Range { non_negative, unit_interval, positive };
+enum class Range {
+    non_negative,
+    unit_interval,
+    positive,
+    one_to_two, ///< between 1 and 2, both excluded (the stronge cushion's w_c)
+};
 
 struct ParameterSpec {
     std::string_view name;
@@ -28,6 +33,7 @@ constexpr ParameterSpec parameter_specs[] = {
     {"u_b", nullptr, Range::non_negative},
     {"e_c", &PhysicsParams::cushion_restitution, Range::unit_interval},
     {"f_c", &PhysicsParams::cushion_friction, Range::non_negative},
+    {"w_c", &PhysicsParams::cushion_frequency_ratio, Range::one_to_two},
     {"g", &PhysicsParams::gravity, Range::positive},
     {"R", &PhysicsParams::ball_radius, Range::positive},
     {"m", &PhysicsParams::ball_mass, Range::positive},
@@ -78,6 +84,10 @@ std::optional<std::string> set_physics_parameter(PhysicsParams& params, std::str
     case Range::positive:
         if (value <= 0)
             return std::string(name) + " must be > 0" + got;
+        break;
+    case Range::one_to_two:
+        if (!(value > 1 && value < 2))
+            return std::string(name) + " must be between 1 and 2, both excluded" + got;
         break;
     }
     if (spec->field) {

@@ -394,7 +394,8 @@ void bind_physics(py::module_& m) {
 
     py::class_<PhysicsParams>(m, "Physics",
                               "The simulator's constants and models (SI units). Constants by "
-                              "their scenario names: u_s, u_r, u_sp, e_b, u_b, e_c, f_c, g, R, m.")
+                              "their scenario names: u_s, u_r, u_sp, e_b, u_b, e_c, f_c, w_c, g, "
+                              "R, m.")
         .def(py::init([](std::optional<std::string> table) {
                  return table ? physics_for_table(table_size_of(*table)) : PhysicsParams{};
              }),

@@ -64,7 +64,7 @@ def test_errors_have_the_words_of_simulate(scenario, call, tmp_path):
 
 def test_parameters_refused_as_a_scenario_refuses_them(tmp_path):
     physics = tp.Physics()
-    for name, value in [("e_b", 1.5), ("u_s", -1), ("mu", 0.2), ("g", 0)]:
+    for name, value in [("e_b", 1.5), ("u_s", -1), ("mu", 0.2), ("g", 0), ("w_c", 2)]:
         run = simulate_cli(f"param {name} {value}\nball 0 1 0.5\nstrike 1 0\n", tmp_path)
         with pytest.raises(ValueError) as error:
             physics[name] = value
@@ -73,6 +73,11 @@ def test_parameters_refused_as_a_scenario_refuses_them(tmp_path):
     assert physics["u_s"] == 0.25
     with pytest.raises(ValueError, match="unknown cushion model"):
         physics.cushion = "rubber"
+    for cushion in ["physical", "ideal", "mirror", "stronge"]:
+        physics.cushion = cushion
+        assert physics.cushion == cushion
+    physics["w_c"] = 1.53
+    assert physics["w_c"] == 1.53
     physics.friction = "decay 0.5"
     assert physics.friction == "decay 0.5"
     with pytest.raises(ValueError):
