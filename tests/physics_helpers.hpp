@@ -2,11 +2,17 @@
 // Small builders shared by the physics tests.
 
 #include "support/random.hpp"
+#include <numbers>
 #include <termpool/rack.hpp>
 #include <termpool/simulator.hpp>
 #include <vector>
 
 namespace termpool::test {
+
+/// A sliding ball at (1, 1) driven into a rail whose normal is +x: any direction into it, up to
+/// 20 m/s, and any spin up to what the hardest strike at the edge of the ball gives; the
+/// cushion models' energy tests draw their cases from it.
+inline Ball random_cushion_approach(Random& rng, double radius);
 
 inline Ball ball_at(int id, double x, double y, double mass = 0.170) {
     Ball b;
@@ -50,6 +56,17 @@ inline FrictionModel random_classic_friction(Random& rng, std::uint64_t kind) {
     default:
         return {FrictionKind::combined, rng.uniform(0.3, 3), rng.uniform(0.1, 2), 0.005};
     }
+}
+
+inline Ball random_cushion_approach(Random& rng, double radius) {
+    Ball b = ball_at(0, 1, 1);
+    b.velocity = unit_from_angle(rng.uniform(-std::numbers::pi / 2, std::numbers::pi / 2)) *
+                 rng.uniform(0, 20);
+    const double spin = 5 * 20 / (2 * radius);
+    b.angular_velocity = {rng.uniform(-spin, spin), rng.uniform(-spin, spin),
+                          rng.uniform(-spin, spin)};
+    b.state = MotionState::sliding;
+    return b;
 }
 
 } // namespace termpool::test

@@ -148,13 +148,7 @@ TEST_CASE("physical cushion never adds energy", "[physics][cushion][property]") 
     Random rng(42);
     int rebounds = 0;
     for (int i = 0; i < 100000; ++i) {
-        Ball b = ball_at(0, 1, 1);
-        b.velocity = unit_from_angle(rng.uniform(-std::numbers::pi / 2, std::numbers::pi / 2)) *
-                     rng.uniform(0, 20);
-        const double spin = 5 * 20 / (2 * R);
-        b.angular_velocity = {rng.uniform(-spin, spin), rng.uniform(-spin, spin),
-                              rng.uniform(-spin, spin)};
-        b.state = MotionState::sliding;
+        Ball b = test::random_cushion_approach(rng, R);
         const double before = kinetic_energy(b, R);
         core::resolve_cushion(b, {1, 0}, p, core::cloth_model(p.friction));
         CHECK(kinetic_energy(b, R) <= before + 1e-12);
