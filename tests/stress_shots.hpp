@@ -194,7 +194,9 @@ inline std::string stress_scenario(const StressShot& shot) {
         break;
     }
     text += p.collision == CollisionModel::ideal ? "collision ideal\n" : "collision physical\n";
-    text += p.cushion == CushionModel::ideal ? "cushion ideal\n" : "cushion physical\n";
+    text += std::string("cushion ") + name_of(cushion_model_names, p.cushion) + "\n";
+    if (p.cushion_frequency_ratio != PhysicsParams{}.cushion_frequency_ratio)
+        text += "param w_c " + number(p.cushion_frequency_ratio) + "\n";
     for (const Ball& b : shot.balls)
         text += "ball " + std::to_string(b.id) + " " + number(b.position.x) + " " +
                 number(b.position.y) + " mass=" + number(b.mass) + "\n";

@@ -153,7 +153,8 @@ void mirror_in_cushion(Ball& ball, Vec2 n, double approach) {
 // friction all act along it); the impulses that give the contact point its velocity at
 // separation are applied to the ball, the vertical part of the velocity change taken by the
 // cloth as in the physical model. A nose that meets no closing speed (one at the very top of
-// the ball) reflects the velocity, as the ideal model does.
+// the ball, or one closing too slowly to divide by) reflects the velocity, as the ideal model
+// does.
 void resolve_stronge_cushion(Ball& ball, Vec2 towards, double approach, const PhysicsParams& p) {
     const double R = p.ball_radius;
     const double m = ball.mass;
@@ -163,12 +164,14 @@ void resolve_stronge_cushion(Ball& ball, Vec2 towards, double approach, const Ph
     const Vec3 push = arm * (-1.0 / R); // the cushion's normal, into the ball
     const Vec3 contact_velocity = lift(ball.velocity) + cross(ball.angular_velocity, arm);
     const double closing = -dot(contact_velocity, push);
-    if (!(closing > 0)) {
+    const Vec3 slip = contact_velocity + push * closing; // the part across the normal
+    const double slip_speed = std::sqrt(dot(slip, slip));
+    // So slow a closing that the slip over it is no number (a grazing touch at a subnormal
+    // speed) reflects as well.
+    if (!(closing > 0) || !std::isfinite(slip_speed / closing)) {
         ball.velocity -= towards * (2 * approach);
         return;
     }
-    const Vec3 slip = contact_velocity + push * closing; // the part across the normal
-    const double slip_speed = std::sqrt(dot(slip, slip));
     // A solid ball's contact point moves by P / m under a normal impulse P and by 3.5 P / m
     // under a tangential one.
     constexpr double inertia_ratio = 3.5;
