@@ -159,7 +159,7 @@ endif
 # ---------------------------------------------------------------------------
 
 .DEFAULT_GOAL := all
-.PHONY: all run test check bench soak deps ensure-deps install uninstall clean format format-check help lib python docs \
+.PHONY: all run test check bench soak deps ensure-deps install uninstall clean format format-check help lib python python-missing docs \
         fuzz fuzz-deps fuzz-run layers FORCE
 .DELETE_ON_ERROR:
 
@@ -407,7 +407,8 @@ help:
 	@echo "targets:"
 	@echo "  all           build $(BIN) (default)"
 	@echo "  run           build, then start build/termpool (ARGS=... its arguments)"
-	@echo "  test          build binary and tests, run the unit and end-to-end tests side by side"
+	@echo "  test          build everything, install it into $(BUILD)/stage, run the unit and"
+	@echo "                end-to-end tests side by side (the installed copy and Python's too)"
 	@echo "                (TEST_ARGS='[tag]' to filter; TERMPOOL_SKIP_E2E=1 skips [e2e])"
 	@echo "  check         like test, in build/san with ASan+UBSan"
 	@echo "  bench         build, then run 'build/termpool bench' (BENCH_ARGS=...)"
@@ -415,7 +416,11 @@ help:
 	@echo "                then 100,000 more random shots ([.soak] tests)"
 	@echo "  layers        print the include graph: which folder includes which, how often"
 	@echo "  deps          install $(DEB_PACKAGES) with apt-get if missing"
-	@echo "  install       install binary and man page under \$$(DESTDIR)\$$(PREFIX) ($(PREFIX))"
+	@echo "  lib           build $(CORE_LIB) and $(SHARED_LIB) (soname $(SONAME))"
+	@echo "  python        build the Python module $(PYTHON_MODULE) (pybind11)"
+	@echo "  docs          the API reference from the headers: $(BUILD)/docs/html/index.html"
+	@echo "  install       install the binary, man page, libraries, headers, termpool.pc and the"
+	@echo "                Python module under \$$(DESTDIR)\$$(PREFIX) ($(PREFIX))"
 	@echo "  uninstall     remove them again"
 	@echo "  clean         remove build/"
 	@echo "  format        clang-format -i all sources"
