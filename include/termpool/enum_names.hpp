@@ -7,6 +7,8 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <span>
+#include <string>
 #include <string_view>
 
 namespace termpool {
@@ -51,6 +53,25 @@ template <class T, std::size_t N> constexpr bool names_in_order(const NameRow<T>
         if (static_cast<std::size_t>(table[i].value) != i)
             return false;
     return true;
+}
+
+/// `words` as a message lists them: "a", "a or b", "a, b or c".
+inline std::string or_list(std::span<const std::string_view> words) {
+    std::string list;
+    for (std::size_t i = 0; i < words.size(); ++i)
+        list += std::string(i == 0                  ? ""
+                            : i + 1 == words.size() ? " or "
+                                                    : ", ") +
+                std::string(words[i]);
+    return list;
+}
+
+/// The names of `table`'s rows as a message lists them: "physical, ideal or mirror".
+template <class T, std::size_t N> std::string names_or_list(const NameRow<T> (&table)[N]) {
+    std::array<std::string_view, N> names;
+    for (std::size_t i = 0; i < N; ++i)
+        names[i] = table[i].name;
+    return or_list(names);
 }
 
 } // namespace termpool

@@ -117,14 +117,6 @@ Problem parse_table(const Line& line, Draft& draft) {
     return {};
 }
 
-/// The names of `names` as a list: "a, b or c".
-template <class Model, std::size_t N> std::string name_list(const NameRow<Model> (&names)[N]) {
-    std::string list;
-    for (std::size_t i = 0; i < N; ++i)
-        list += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + std::string(names[i].name);
-    return list;
-}
-
 /// `collision` and `cushion` both choose a model by its name in `names`.
 template <class Model, std::size_t N>
 Problem parse_model(const Line& line, Draft& draft, Model& out, const NameRow<Model> (&names)[N],
@@ -137,7 +129,7 @@ Problem parse_model(const Line& line, Draft& draft, Model& out, const NameRow<Mo
     const std::optional<Model> model = parse_name(names, line.arg(0));
     if (!model)
         return "unknown " + key + " model " + quoted(line.arg(0)) + " (expected " +
-               name_list(names) + ")";
+               names_or_list(names) + ")";
     out = *model;
     return {};
 }

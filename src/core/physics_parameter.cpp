@@ -61,13 +61,8 @@ std::optional<std::string> set_physics_parameter(PhysicsParams& params, std::str
                                                  double value) {
     const ParameterSpec* spec = find_spec(name);
     if (!spec) {
-        std::string expected;
-        for (std::size_t i = 0; i < std::size(physics_parameter_names); ++i)
-            expected += std::string(i == 0                                        ? ""
-                                    : i + 1 == std::size(physics_parameter_names) ? " or "
-                                                                                  : ", ") +
-                        std::string(physics_parameter_names[i]);
-        return "unknown parameter '" + std::string(name) + "' (expected " + expected + ")";
+        return "unknown parameter '" + std::string(name) + "' (expected " +
+               or_list(physics_parameter_names) + ")";
     }
     const std::string got = " (got " + format_double(value) + ")";
     if (!std::isfinite(value))

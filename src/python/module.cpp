@@ -27,11 +27,8 @@ template <class T, std::size_t N>
 T parse_or_raise(const NameRow<T> (&table)[N], const std::string& text, const char* what) {
     if (const auto value = parse_name(table, text))
         return *value;
-    std::string expected;
-    for (std::size_t i = 0; i < N; ++i)
-        expected += std::string(i == 0 ? "" : i + 1 == N ? " or " : ", ") + table[i].name;
-    throw py::value_error("unknown " + std::string(what) + " '" + text + "' (expected " + expected +
-                          ")");
+    throw py::value_error("unknown " + std::string(what) + " '" + text + "' (expected " +
+                          names_or_list(table) + ")");
 }
 
 TableSize table_size_of(const std::string& name) {
@@ -41,11 +38,10 @@ TableSize table_size_of(const std::string& name) {
 GameType game_type_of(const std::string& name) {
     if (const auto type = parse_game_type(name))
         return *type;
-    std::string expected;
-    const auto& rows = game_registry().rows();
-    for (std::size_t i = 0; i < rows.size(); ++i)
-        expected += std::string(i == 0 ? "" : i + 1 == rows.size() ? " or " : ", ") + rows[i].name;
-    throw py::value_error("unknown game '" + name + "' (expected " + expected + ")");
+    std::vector<std::string_view> names;
+    for (const GameRow& row : game_registry().rows())
+        names.push_back(row.name);
+    throw py::value_error("unknown game '" + name + "' (expected " + or_list(names) + ")");
 }
 
 Level level_of(const std::string& name) {
