@@ -214,8 +214,11 @@ TEST_CASE("ball grid: a long path's search finds every ball within reach of it",
         box.max = box.max + Vec2{bulge, bulge};
         boxes[count] = box;
         grid.moved(count);
-        std::vector<char> visited(count + 1, 0);
-        grid.near(count, boxes, Capsule{from, to, bulge}, [&](std::size_t k) { visited[k] = 1; });
+        std::vector<int> visited(count + 1, 0);
+        for (const std::size_t k : grid.near(count, boxes, Capsule{from, to, bulge}))
+            ++visited[k];
+        REQUIRE(visited[count] == 0);                                    // never the ball itself
+        REQUIRE(*std::max_element(visited.begin(), visited.end()) <= 1); // each ball once
         const Vec2 d = to - from;
         for (std::size_t k = 0; k < count; ++k) {
             const Vec2 p = boxes[k].min;

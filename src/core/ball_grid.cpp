@@ -29,6 +29,7 @@ BallGrid::BallGrid(std::size_t balls, double cell, double margin)
     mask_ = buckets - 1;
     buckets_.resize(buckets);
     dirty_.reserve(balls);
+    near_.reserve(balls);
 }
 
 void BallGrid::clear() {
@@ -113,6 +114,41 @@ void BallGrid::flush(const std::vector<Box>& boxes) {
         enter(i, c);
     }
     dirty_.clear();
+}
+
+const std::vector<std::uint16_t>& BallGrid::near(std::size_t i, const std::vector<Box>& boxes,
+                                                 const Capsule& path) {
+    flush(boxes);
+    near_.clear();
+    const Cells c = cells_[i];
+    if (c.empty)
+        return near_;
+    if (++search_ == 0) { // after 2^32 searches the old marks could match again
+        std::fill(seen_.begin(), seen_.end(), 0);
+        search_ = 1;
+    }
+    seen_[i] = search_;
+    // Raw pointers: the stores to the marks must not make the compiler reload the vectors'.
+    std::uint32_t* const seen = seen_.data();
+    const std::uint32_t search = search_;
+    auto gather = [&](const std::vector<std::uint16_t>& balls) {
+        for (const std::uint16_t k : balls) {
+            if (seen[k] != search) {
+                seen[k] = search;
+                near_.push_back(k);
+            }
+        }
+    };
+    gather(wide_);
+    for (std::int64_t x = c.x0; x <= c.x1; ++x) {
+        std::int64_t y0 = c.y0, y1 = c.y1;
+        // A long path: only the cells along it, not the whole of its box.
+        if (c.wide)
+            column_of(path, x, y0, y1);
+        for (std::int64_t y = y0; y <= y1; ++y)
+            gather(buckets_[bucket(x, y)]);
+    }
+    return near_;
 }
 
 void BallGrid::column_of(const Capsule& path, std::int64_t x, std::int64_t& y0,

@@ -32,13 +32,14 @@ public:
         }
     }
 
-    /// Calls `visit(k)` once for every ball k != i whose box (in `boxes`) grown by `margin` may
-    /// overlap ball i's grown by `margin`, and perhaps for a few more; where ball i's box covers
-    /// many cells, only for those that may come within 2 `margin` of its `path` (which must hold
-    /// its centre's path). `boxes` holds every ball's current box; an empty box (min > max) is in
-    /// no cell.
-    template <class Visit>
-    void near(std::size_t i, const std::vector<Box>& boxes, const Capsule& path, Visit visit);
+    /// The balls k != i whose box (in `boxes`) grown by `margin` may overlap ball i's grown by
+    /// `margin`, each once, and perhaps a few more; where ball i's box covers many cells, only
+    /// those that may come within 2 `margin` of its `path` (which must hold its centre's path).
+    /// `boxes` holds every ball's current box; an empty box (min > max) is in no cell. The list
+    /// is the grid's own, valid until its next call: gathered first so that the caller tests
+    /// the boxes in a tight loop of its own rather than between the grid's loads.
+    const std::vector<std::uint16_t>& near(std::size_t i, const std::vector<Box>& boxes,
+                                           const Capsule& path);
 
 private:
     struct Cells {
@@ -67,39 +68,9 @@ private:
     std::vector<std::uint8_t> is_wide_;
     std::vector<std::uint16_t> dirty_; // balls whose box changed since they were entered
     std::vector<std::uint8_t> is_dirty_;
-    std::vector<std::uint32_t> seen_; // per ball, the search that last visited it
+    std::vector<std::uint32_t> seen_; // per ball, the search that last gathered it
     std::uint32_t search_ = 0;
+    std::vector<std::uint16_t> near_; // the last search's balls
 };
-
-template <class Visit>
-void BallGrid::near(std::size_t i, const std::vector<Box>& boxes, const Capsule& path,
-                    Visit visit) {
-    flush(boxes);
-    const Cells c = cells_[i];
-    if (c.empty)
-        return;
-    if (++search_ == 0) { // after 2^32 searches the old marks could match again
-        std::fill(seen_.begin(), seen_.end(), 0);
-        search_ = 1;
-    }
-    seen_[i] = search_;
-    auto visit_once = [&](std::uint16_t k) {
-        if (seen_[k] != search_) {
-            seen_[k] = search_;
-            visit(k);
-        }
-    };
-    for (const std::uint16_t k : wide_)
-        visit_once(k);
-    for (std::int64_t x = c.x0; x <= c.x1; ++x) {
-        std::int64_t y0 = c.y0, y1 = c.y1;
-        // A long path: only the cells along it, not the whole of its box.
-        if (c.wide)
-            column_of(path, x, y0, y1);
-        for (std::int64_t y = y0; y <= y1; ++y)
-            for (const std::uint16_t k : buckets_[bucket(x, y)])
-                visit_once(k);
-    }
-}
 
 } // namespace termpool::core

@@ -48,6 +48,49 @@ struct ScheduledEvent {
     }
 };
 
+namespace schedule_detail {
+
+#ifdef __SIZEOF_INT128__
+// An event as one number: its time's bits above its order, so that the earlier of two keys is
+// the smaller number, picked by a compare and two conditional moves. The time's bits are below
+// 2^63 and the order below 2^32: the key fits in 95 bits.
+__extension__ using EventKey = unsigned __int128;
+inline EventKey event_key(std::uint64_t time_bits, std::uint32_t order) {
+    return static_cast<EventKey>(time_bits) << 32 | order;
+}
+inline std::uint64_t time_bits_of(EventKey key) {
+    return static_cast<std::uint64_t>(key >> 32);
+}
+inline std::uint32_t order_of(EventKey key) {
+    return static_cast<std::uint32_t>(key);
+}
+inline EventKey earlier(EventKey a, EventKey b) {
+    return b < a ? b : a;
+}
+#else
+// Without 128-bit integers: the same order from two compares.
+struct EventKey {
+    std::uint64_t time_bits;
+    std::uint32_t order;
+};
+inline EventKey event_key(std::uint64_t time_bits, std::uint32_t order) {
+    return {time_bits, order};
+}
+inline std::uint64_t time_bits_of(EventKey key) {
+    return key.time_bits;
+}
+inline std::uint32_t order_of(EventKey key) {
+    return key.order;
+}
+inline EventKey earlier(EventKey a, EventKey b) {
+    const bool b_first =
+        (b.time_bits < a.time_bits) | ((b.time_bits == a.time_bits) & (b.order < a.order));
+    return b_first ? b : a;
+}
+#endif
+
+} // namespace schedule_detail
+
 /// The table events and pair contacts of `size()` balls; times are absolute, +infinity for
 /// nothing (a NaN time counts as nothing too).
 class EventSchedule {
@@ -135,11 +178,8 @@ private:
     // 16 balls, eight at 128).
     // A key's time is the bits of the double: times are never negative (nor -0), and for those
     // the bits order as the values do, so that picking the earlier of two is integer compares
-    // without a branch to mispredict.
-    struct Key {
-        std::uint64_t time_bits;
-        std::uint32_t order;
-    };
+    // without a branch to mispredict (schedule_detail::EventKey).
+    using Key = schedule_detail::EventKey;
     static constexpr std::size_t block = 16;
     static constexpr std::uint64_t infinity_bits = 0x7ff0000000000000; // +infinity's bits
     std::vector<Key> keys_;
@@ -195,26 +235,27 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
         if (time != row[k])
             set_time(i, k, time, true);
     };
-    if (many_) {
-        grid_->near(i, reach_, paths_[i], [&](std::size_t k) {
-            if (k != i && k != done && in_reach(k))
-                search(k);
-        });
-    } else {
-        // The boxes are tested without a branch into masks of 64, and only the balls in reach
-        // (about one in five) are walked: a branch per ball would be mispredicted at every other.
-        for (std::size_t base = 0; base < n; base += 64) {
-            const std::size_t end = std::min(n, base + 64);
+    // The boxes are tested without a branch into masks of 64, and only the balls in reach
+    // (about one in five) are walked: a branch per ball would be mispredicted at every other.
+    // `ball(c)` is the c-th of `candidates` balls to test.
+    auto test = [&](std::size_t candidates, auto ball) __attribute__((always_inline)) {
+        for (std::size_t base = 0; base < candidates; base += 64) {
+            const std::size_t end = std::min(candidates, base + 64);
             std::uint64_t reached = 0;
-            for (std::size_t k = base; k < end; ++k)
-                reached |= static_cast<std::uint64_t>(in_reach(k)) << (k - base);
-            if (i - base < 64)
-                reached &= ~(std::uint64_t{1} << (i - base));
-            if (done - base < 64)
-                reached &= ~(std::uint64_t{1} << (done - base));
+            for (std::size_t c = base; c < end; ++c) {
+                const std::size_t k = ball(c);
+                reached |= static_cast<std::uint64_t>(in_reach(k) & (k != i) & (k != done))
+                           << (c - base);
+            }
             for (; reached != 0; reached &= reached - 1)
-                search(base + static_cast<std::size_t>(std::countr_zero(reached)));
+                search(ball(base + static_cast<std::size_t>(std::countr_zero(reached))));
         }
+    };
+    if (many_) { // the few balls the grid gathers
+        const std::vector<std::uint16_t>& near = grid_->near(i, reach_, paths_[i]);
+        test(near.size(), [&](std::size_t c) { return static_cast<std::size_t>(near[c]); });
+    } else { // every ball
+        test(n, [](std::size_t c) { return c; });
     }
     // The pairs that held a contact and are out of reach now (the pair with `done` excepted).
     visit_finite(i, [&](std::size_t k) {
@@ -224,21 +265,6 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
     rescan_row(i);
     key_changed(i);
 }
-
-namespace schedule_detail {
-
-// Whether b comes before a, without a branch.
-inline bool comes_first(std::uint64_t b_time, std::uint32_t b_order, std::uint64_t a_time,
-                        std::uint32_t a_order) {
-    return (b_time < a_time) | ((b_time == a_time) & (b_order < a_order));
-}
-
-// The earlier of two keys' indices in `keys`, without a branch.
-template <class Key> inline std::size_t earlier(const Key* keys, std::size_t a, std::size_t b) {
-    return comes_first(keys[b].time_bits, keys[b].order, keys[a].time_bits, keys[a].order) ? b : a;
-}
-
-} // namespace schedule_detail
 
 inline void EventSchedule::set_reach(std::size_t i, const Box& reach, const Capsule& path) {
     touched_ = true;
@@ -302,17 +328,20 @@ inline ScheduledEvent EventSchedule::earliest() {
         if (!block_dirty_[b])
             continue;
         block_dirty_[b] = 0;
+        // In two halves, so that the chain of compares is half as long.
         const Key* keys = keys_.data() + b * block;
-        std::size_t first = 0;
-        for (std::size_t k = 1; k < block; ++k)
-            first = schedule_detail::earlier(keys, first, k);
-        block_first_[b] = keys[first];
+        Key first = keys[0], second = keys[block / 2];
+        for (std::size_t k = 1; k < block / 2; ++k) {
+            first = schedule_detail::earlier(first, keys[k]);
+            second = schedule_detail::earlier(second, keys[block / 2 + k]);
+        }
+        block_first_[b] = schedule_detail::earlier(first, second);
     }
-    std::size_t first = 0;
+    Key first = block_first_[0];
     for (std::size_t b = 1; b < block_first_.size(); ++b)
-        first = schedule_detail::earlier(block_first_.data(), first, b);
-    const Key& key = block_first_[first];
-    return {std::bit_cast<double>(key.time_bits), key.order};
+        first = schedule_detail::earlier(first, block_first_[b]);
+    return {std::bit_cast<double>(schedule_detail::time_bits_of(first)),
+            schedule_detail::order_of(first)};
 }
 
 inline void EventSchedule::update_key(std::size_t i) {
@@ -325,9 +354,10 @@ inline void EventSchedule::update_key(std::size_t i) {
             leaf = pair;
     }
     // + 0.0 turns a -0 into +0; nothing scheduled is +infinity with order 0.
-    keys_[i] = leaf.time < std::numeric_limits<double>::infinity()
-                   ? Key{std::bit_cast<std::uint64_t>(leaf.time + 0.0), leaf.order}
-                   : Key{EventSchedule::infinity_bits, 0};
+    keys_[i] =
+        leaf.time < std::numeric_limits<double>::infinity()
+            ? schedule_detail::event_key(std::bit_cast<std::uint64_t>(leaf.time + 0.0), leaf.order)
+            : schedule_detail::event_key(infinity_bits, 0);
     block_dirty_[i / block] = 1;
 }
 
