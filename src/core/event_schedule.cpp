@@ -8,9 +8,9 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// Up to this many balls (a bit each in one word) a search tests every box: on the 16-ball break
-// and the 22-ball snooker break the grid's bookkeeping costs more than it saves.
-constexpr std::size_t most_without_grid = 64;
+// Up to this many balls a search tests every box, two at a time (box_lanes.hpp): measured on
+// the bench's ball rows, that is cheaper than the grid's bookkeeping up to about 150 balls.
+constexpr std::size_t most_without_grid = 128;
 
 static_assert(ScheduledEvent::max_balls == max_world_balls, "the limit World's callers are told");
 
@@ -25,7 +25,7 @@ std::size_t checked(std::size_t balls) {
 
 EventSchedule::EventSchedule(std::size_t balls, double diameter)
     : diameter_(diameter), reach_(checked(balls), empty_box()),
-      paths_(balls > most_without_grid ? balls : 0), moving_(balls),
+      paths_(balls > most_without_grid ? balls : 0), moving_(balls), lanes_(balls),
       many_(balls > most_without_grid), time_(balls * balls, infinity), bound_(balls * balls, 0),
       words_((balls + 63) / 64), finite_(balls * words_, 0), searched_(balls, 0),
       table_time_(balls, infinity), row_min_time_(balls, infinity), row_min_partner_(balls, balls),
@@ -54,6 +54,7 @@ void EventSchedule::clear() {
     }
     std::fill(reach_.begin(), reach_.end(), empty_box());
     std::fill(moving_.begin(), moving_.end(), 0);
+    lanes_.clear();
     if (many_)
         grid_->clear();
     std::fill(table_time_.begin(), table_time_.end(), infinity);

@@ -4,9 +4,9 @@
 // hand. A ball's row of pair times keeps its minimum, and blocks of balls keep the earliest table
 // event or row minimum among them, so that finding the next event scans a few blocks and a change
 // rescans one. The pair search culls with the box each ball's centre stays in,
-// whether it moves, and (above 64 balls) a grid over the boxes; only the pairs holding a contact
-// are walked, by a bit per pair. Above 64 balls nothing in an event's work walks every ball
-// (below, a branch-free test of every box is cheaper than the grid).
+// whether it moves, and (above 128 balls) a grid over the boxes; only the pairs holding a contact
+// are walked, by a bit per pair. Above 128 balls nothing in an event's work walks every ball
+// (up to 128, testing every box two at a time without a branch is cheaper than the grid).
 
 #include <algorithm>
 #include <bit>
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "ball_grid.hpp"
+#include "box_lanes.hpp"
 #include "polynomial.hpp"
 #include "reach_box.hpp"
 
@@ -114,7 +115,10 @@ public:
     /// The box set last for ball i.
     const Box& reach(std::size_t i) const { return reach_[i]; }
     /// Sets whether ball i moves.
-    void set_moving(std::size_t i, bool moving) { moving_[i] = moving; }
+    void set_moving(std::size_t i, bool moving) {
+        moving_[i] = moving;
+        lanes_.set_moving(i, moving);
+    }
 
     /// Searches ball i's pairs afresh at time `now`: `contact(k)` gives the ContactEstimate of
     /// pair (i, k) in seconds from now, and is asked only for balls whose boxes come within a
@@ -150,7 +154,8 @@ private:
     std::vector<Box> reach_;
     std::vector<Capsule> paths_; // with many balls only: the grid walks long paths
     std::vector<std::uint8_t> moving_;
-    // Many balls (above 64): their pairs are searched through the grid. Fewer are faster
+    BoxLanes lanes_; // the boxes and motions again, for testing every ball at once
+    // Many balls (above 128): their pairs are searched through the grid. Fewer are faster
     // testing every box without a branch than through the grid's bookkeeping.
     bool many_;
     std::optional<BallGrid> grid_; // only with many balls
@@ -237,25 +242,30 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
     };
     // The boxes are tested without a branch into masks of 64, and only the balls in reach
     // (about one in five) are walked: a branch per ball would be mispredicted at every other.
-    // `ball(c)` is the c-th of `candidates` balls to test.
-    auto test = [&](std::size_t candidates, auto ball) __attribute__((always_inline)) {
-        for (std::size_t base = 0; base < candidates; base += 64) {
-            const std::size_t end = std::min(candidates, base + 64);
-            std::uint64_t reached = 0;
-            for (std::size_t c = base; c < end; ++c) {
-                const std::size_t k = ball(c);
-                reached |= static_cast<std::uint64_t>(in_reach(k) & (k != i) & (k != done))
-                           << (c - base);
-            }
-            for (; reached != 0; reached &= reached - 1)
-                search(ball(base + static_cast<std::size_t>(std::countr_zero(reached))));
-        }
+    auto walk = [&](std::uint64_t reached, auto ball) __attribute__((always_inline)) {
+        for (; reached != 0; reached &= reached - 1)
+            search(ball(static_cast<std::size_t>(std::countr_zero(reached))));
     };
     if (many_) { // the few balls the grid gathers
         const std::vector<std::uint16_t>& near = grid_->near(i, reach_, paths_[i]);
-        test(near.size(), [&](std::size_t c) { return static_cast<std::size_t>(near[c]); });
-    } else { // every ball
-        test(n, [](std::size_t c) { return c; });
+        for (std::size_t base = 0; base < near.size(); base += 64) {
+            const std::size_t end = std::min(near.size(), base + 64);
+            std::uint64_t reached = 0;
+            for (std::size_t c = base; c < end; ++c) {
+                const std::size_t k = near[c];
+                reached |= static_cast<std::uint64_t>(in_reach(k) & (k != done)) << (c - base);
+            }
+            walk(reached, [&](std::size_t c) { return static_cast<std::size_t>(near[base + c]); });
+        }
+    } else { // every ball, four boxes at a time
+        for (std::size_t base = 0; base < n; base += 64) {
+            std::uint64_t reached = lanes_.overlapping(base, lo, hi, needs_motion != 0);
+            if (i - base < 64)
+                reached &= ~(std::uint64_t{1} << (i - base));
+            if (done - base < 64)
+                reached &= ~(std::uint64_t{1} << (done - base));
+            walk(reached, [&](std::size_t c) { return base + c; });
+        }
     }
     // The pairs that held a contact and are out of reach now (the pair with `done` excepted).
     visit_finite(i, [&](std::size_t k) {
@@ -269,6 +279,7 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
 inline void EventSchedule::set_reach(std::size_t i, const Box& reach, const Capsule& path) {
     touched_ = true;
     reach_[i] = reach;
+    lanes_.set_box(i, reach);
     if (many_) {
         paths_[i] = path;
         grid_->moved(i);
