@@ -417,3 +417,31 @@ TEST_CASE("a stalemate re-racks after three more turns each", "[rules][stalemate
     CHECK(game.shooter() == game.breaker());
     CHECK(game.balls().size() == 16);
 }
+
+TEST_CASE("8-ball groups: in_group agrees with group_balls for every ball", "[rules]") {
+    for (const Group group : {Group::open, Group::solids, Group::stripes}) {
+        const std::vector<int> balls = group_balls(group);
+        for (int id = -1; id <= 16; ++id) {
+            INFO("group " << static_cast<int>(group) << ", ball " << id);
+            CHECK(in_group(group, id) == (std::ranges::count(balls, id) > 0));
+        }
+    }
+}
+
+TEST_CASE("8-ball legal targets: the shooter's group in order, else the 8", "[rules]") {
+    const auto targets = [](std::vector<int> ids, Group group, int shooter = 1) {
+        return position(GameType::eight_ball, with_extra(straight_in(3, 4), ids), shooter, group)
+            .legal_targets();
+    };
+    // Open table: every ball on it but the 8, in ascending order whatever the order of balls.
+    CHECK(targets({12, 1, 8, 9}, Group::open) == std::vector<int>{1, 3, 9, 12});
+    // A group: its own balls only; player 2 has the other group.
+    CHECK(targets({12, 1, 8, 9}, Group::solids) == std::vector<int>{1, 3});
+    CHECK(targets({12, 1, 8, 9}, Group::solids, 2) == std::vector<int>{9, 12});
+    // The shooter's group cleared: the 8 (ball 3 is always on: the straight-in pot's).
+    CHECK(targets({8, 9}, Group::stripes) == std::vector<int>{9});
+    CHECK(targets({8}, Group::solids, 2) == std::vector<int>{8});
+    CHECK(targets({8, 12}, Group::stripes, 2) == std::vector<int>{3});
+    // Only the 8 left on an open table: the 8.
+    CHECK(position(GameType::eight_ball, straight_in(8, 4)).legal_targets() == std::vector<int>{8});
+}

@@ -175,6 +175,11 @@ const char* ball_on_name(BallOn on);
 
 /// The balls of a group (1-7 or 9-15); empty for `open`.
 std::vector<int> group_balls(Group group);
+/// Whether ball `id` is one of group_balls(group), without making the list.
+constexpr bool in_group(Group group, int id) {
+    return (group == Group::solids && id >= 1 && id <= 7) ||
+           (group == Group::stripes && id >= 9 && id <= 15);
+}
 
 /// Snooker: true when the cue ball at `cue` cannot hit both extreme edges of any ball of
 /// `on` in a straight line, each edge's line being blocked by a ball not in `on` (the WPBSA

@@ -36,9 +36,9 @@ public:
     }
     void before_shot(const GameState& s) override {
         const Group group = group_of(s.shooter);
-        group_cleared_ =
-            group != Group::open &&
-            std::ranges::none_of(group_balls(group), [&](int id) { return s.on_table(id); });
+        group_cleared_ = group != Group::open && std::ranges::none_of(s.balls, [&](const Ball& b) {
+                             return in_group(group, b.id) && b.state != MotionState::pocketed;
+                         });
     }
     void choose(GameState& s, int who, Choice choice) override;
     ScoreSheet score_sheet(const GameState&) const override {
@@ -64,25 +64,24 @@ private:
 };
 
 std::vector<int> EightBallReferee::legal_targets(const GameState& s) const {
-    std::vector<int> on_table;
-    for (const Ball& b : s.balls)
-        if (b.id != 0 && b.state != MotionState::pocketed)
-            on_table.push_back(b.id);
-    std::ranges::sort(on_table);
-    if (on_table.empty())
-        return on_table;
+    // One pass and one vector: the computer asks this of every table it weighs.
     const Group group = group_of(s.shooter);
     std::vector<int> targets;
-    for (const int id : on_table) {
-        const bool own =
-            group == Group::open ? id != 8 : std::ranges::count(group_balls(group), id) > 0;
-        if (own)
-            targets.push_back(id);
+    bool any_on_table = false;
+    for (const Ball& b : s.balls) {
+        if (b.id == 0 || b.state == MotionState::pocketed)
+            continue;
+        any_on_table = true;
+        if (group == Group::open ? b.id != 8 : in_group(group, b.id))
+            targets.push_back(b.id);
     }
-    if (targets.empty() && group != Group::open)
-        targets.push_back(8);
+    if (!any_on_table)
+        return targets;
+    // None of the shooter's own: the 8, whether the group is cleared or only the 8 is left on
+    // an open table.
     if (targets.empty())
-        targets = on_table; // only the 8 left on an open table
+        targets.push_back(8);
+    std::ranges::sort(targets);
     return targets;
 }
 
