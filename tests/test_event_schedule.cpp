@@ -215,8 +215,12 @@ TEST_CASE("ball grid: a long path's search finds every ball within reach of it",
         boxes[count] = box;
         grid.moved(count);
         std::vector<int> visited(count + 1, 0);
-        for (const std::size_t k : grid.near(count, boxes, Capsule{from, to, bulge}))
+        const Vec2 lo = box.min - Vec2{diameter, diameter}, hi = box.max + Vec2{diameter, diameter};
+        for (const std::size_t k : grid.near(count, boxes, Capsule{from, to, bulge}, lo, hi)) {
             ++visited[k];
+            // Only boxes that overlap the searched one.
+            REQUIRE(core::boxes_within(boxes[k], Box{lo, hi}, 0));
+        }
         REQUIRE(visited[count] == 0);                                    // never the ball itself
         REQUIRE(*std::max_element(visited.begin(), visited.end()) <= 1); // each ball once
         const Vec2 d = to - from;
@@ -233,4 +237,55 @@ TEST_CASE("ball grid: a long path's search finds every ball within reach of it",
 
 TEST_CASE("event schedule: more balls than its indices hold are refused", "[core][schedule]") {
     CHECK_THROWS_AS(EventSchedule(ScheduledEvent::max_balls + 1, diameter), std::length_error);
+}
+
+TEST_CASE("ball grid: a search finds exactly the boxes in reach as boxes move, grow and go",
+          "[core][schedule]") {
+    // Boxes of every size (a ball at rest, a rolling one, a long path on the wide list, a
+    // pocketed one) moved at random; after each change a ball's search is checked against every
+    // box, for a ball whose box is short (its cells are walked whole).
+    Random rng(29);
+    constexpr std::size_t count = 300;
+    const double margin = 0.5 * diameter * (1 + 1e-6) + 1e-9;
+    core::BallGrid grid(count, 4 * diameter, margin);
+    std::vector<Box> boxes(count, core::empty_box());
+    auto random_box = [&] {
+        const double kind = rng.uniform(0, 1);
+        if (kind < 0.05)
+            return core::empty_box();
+        const Vec2 p{rng.uniform(0, 3), rng.uniform(0, 1.5)};
+        const double size = kind < 0.6 ? 0 : kind < 0.95 ? rng.uniform(0, 0.3) : rng.uniform(0, 2);
+        return core::box_of(p, p + Vec2{rng.uniform(-size, size), rng.uniform(-size, size)});
+    };
+    for (std::size_t k = 0; k < count; ++k) {
+        boxes[k] = random_box();
+        grid.moved(k);
+    }
+    int checked = 0;
+    for (int change = 0; change < 3000; ++change) {
+        const auto k = static_cast<std::size_t>(rng.uniform(0, count - 1e-9));
+        // Often a small move that keeps the cells (the copies in the buckets change in place).
+        if (rng.uniform(0, 1) < 0.5 && boxes[k].min.x <= boxes[k].max.x) {
+            const Vec2 step{rng.uniform(-1e-3, 1e-3), rng.uniform(-1e-3, 1e-3)};
+            boxes[k] = {boxes[k].min + step, boxes[k].max + step};
+        } else {
+            boxes[k] = random_box();
+        }
+        grid.moved(k);
+        const auto i = static_cast<std::size_t>(rng.uniform(0, count - 1e-9));
+        const Box& box = boxes[i];
+        if (!(box.min.x <= box.max.x) || box.max.x - box.min.x > 0.3 || box.max.y - box.min.y > 0.3)
+            continue;
+        const Vec2 lo = box.min - Vec2{diameter, diameter}, hi = box.max + Vec2{diameter, diameter};
+        std::vector<int> found(count, 0);
+        for (const std::size_t near : grid.near(i, boxes, Capsule{}, lo, hi))
+            ++found[near];
+        for (std::size_t other = 0; other < count; ++other) {
+            const bool in_reach = other != i && core::boxes_within(boxes[other], Box{lo, hi}, 0);
+            INFO("change " << change << ", ball " << i << " and " << other);
+            REQUIRE(found[other] == (in_reach ? 1 : 0));
+        }
+        ++checked;
+    }
+    CHECK(checked > 1000);
 }

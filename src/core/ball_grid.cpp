@@ -1,6 +1,7 @@
 #include "ball_grid.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace termpool::core {
@@ -21,7 +22,7 @@ std::int64_t cell_coordinate(double x) {
 const BallGrid::Cells BallGrid::empty_cells{0, 0, 0, 0, false, true};
 
 BallGrid::BallGrid(std::size_t balls, double cell, double margin)
-    : cell_(cell), inverse_cell_(1 / cell), margin_(margin), buckets_of_(balls),
+    : cell_(cell), inverse_cell_(1 / cell), margin_(margin), entries_(balls),
       cells_(balls, empty_cells), is_wide_(balls), is_dirty_(balls), seen_(balls) {
     std::size_t buckets = 64;
     while (buckets < 4 * balls)
@@ -33,10 +34,12 @@ BallGrid::BallGrid(std::size_t balls, double cell, double margin)
 }
 
 void BallGrid::clear() {
-    for (auto& b : buckets_)
-        b.clear();
-    for (auto& b : buckets_of_)
-        b.clear();
+    for (Bucket& b : buckets_) {
+        b.balls.clear();
+        b.boxes.clear();
+    }
+    for (auto& e : entries_)
+        e.clear();
     wide_.clear();
     dirty_.clear();
     std::fill(cells_.begin(), cells_.end(), empty_cells);
@@ -71,16 +74,24 @@ void BallGrid::leave(std::size_t i) {
         wide_.erase(std::find(wide_.begin(), wide_.end(), k));
         is_wide_[i] = 0;
     }
-    for (const std::uint32_t b : buckets_of_[i]) {
-        std::vector<std::uint16_t>& in = buckets_[b];
-        *std::find(in.begin(), in.end(), k) = in.back();
-        in.pop_back();
+    for (const Entry& e : entries_[i]) {
+        // The bucket's last ball takes this one's place; its entry follows it there.
+        Bucket& bucket = buckets_[e.bucket];
+        const std::uint16_t last = bucket.balls.back();
+        if (last != k) {
+            bucket.balls[e.slot] = last;
+            for (Entry& moved : entries_[last])
+                if (moved.bucket == e.bucket)
+                    moved.slot = e.slot;
+        }
+        bucket.balls.pop_back();
+        bucket.boxes.move_last_to(e.slot);
     }
-    buckets_of_[i].clear();
+    entries_[i].clear();
     cells_[i] = empty_cells;
 }
 
-void BallGrid::enter(std::size_t i, const Cells& c) {
+void BallGrid::enter(std::size_t i, const Cells& c, const Box& box) {
     cells_[i] = c;
     if (c.empty)
         return;
@@ -90,14 +101,17 @@ void BallGrid::enter(std::size_t i, const Cells& c) {
         is_wide_[i] = 1;
         return;
     }
-    std::vector<std::uint32_t>& mine = buckets_of_[i];
+    std::vector<Entry>& mine = entries_[i];
     for (std::int64_t y = c.y0; y <= c.y1; ++y) {
         for (std::int64_t x = c.x0; x <= c.x1; ++x) {
             const auto b = static_cast<std::uint32_t>(bucket(x, y));
             // Two cells may share a bucket: a ball is entered in each bucket once.
-            if (std::find(mine.begin(), mine.end(), b) == mine.end()) {
-                mine.push_back(b);
-                buckets_[b].push_back(k);
+            if (std::none_of(mine.begin(), mine.end(),
+                             [b](const Entry& e) { return e.bucket == b; })) {
+                Bucket& in = buckets_[b];
+                mine.push_back({b, static_cast<std::uint32_t>(in.balls.size())});
+                in.balls.push_back(k);
+                in.boxes.push_back(box);
             }
         }
     }
@@ -107,17 +121,21 @@ void BallGrid::flush(const std::vector<Box>& boxes) {
     for (const std::uint16_t i : dirty_) {
         is_dirty_[i] = 0;
         const Cells c = cells_of(boxes[i]);
-        // Most changes (a ball stopping, a slow ball's next piece) keep the cells.
-        if (c == cells_[i])
+        // Most changes (a ball stopping, a slow ball's next piece) keep the cells: only the
+        // copies of the box change.
+        if (c == cells_[i]) {
+            for (const Entry& e : entries_[i])
+                buckets_[e.bucket].boxes.set(e.slot, boxes[i]);
             continue;
+        }
         leave(i);
-        enter(i, c);
+        enter(i, c, boxes[i]);
     }
     dirty_.clear();
 }
 
 const std::vector<std::uint16_t>& BallGrid::near(std::size_t i, const std::vector<Box>& boxes,
-                                                 const Capsule& path) {
+                                                 const Capsule& path, Vec2 lo, Vec2 hi) {
     flush(boxes);
     near_.clear();
     const Cells c = cells_[i];
@@ -128,25 +146,29 @@ const std::vector<std::uint16_t>& BallGrid::near(std::size_t i, const std::vecto
         search_ = 1;
     }
     seen_[i] = search_;
-    // Raw pointers: the stores to the marks must not make the compiler reload the vectors'.
-    std::uint32_t* const seen = seen_.data();
-    const std::uint32_t search = search_;
-    auto gather = [&](const std::vector<std::uint16_t>& balls) {
-        for (const std::uint16_t k : balls) {
-            if (seen[k] != search) {
-                seen[k] = search;
-                near_.push_back(k);
-            }
+    auto found = [&](std::uint16_t k) {
+        if (seen_[k] != search_) {
+            seen_[k] = search_;
+            near_.push_back(k);
         }
     };
-    gather(wide_);
+    for (const std::uint16_t k : wide_) {
+        const Box& box = boxes[k];
+        if ((lo.x <= box.max.x) & (box.min.x <= hi.x) & (lo.y <= box.max.y) & (box.min.y <= hi.y))
+            found(k);
+    }
     for (std::int64_t x = c.x0; x <= c.x1; ++x) {
         std::int64_t y0 = c.y0, y1 = c.y1;
         // A long path: only the cells along it, not the whole of its box.
         if (c.wide)
             column_of(path, x, y0, y1);
-        for (std::int64_t y = y0; y <= y1; ++y)
-            gather(buckets_[bucket(x, y)]);
+        for (std::int64_t y = y0; y <= y1; ++y) {
+            const Bucket& bucket = buckets_[this->bucket(x, y)];
+            for (std::size_t base = 0; base < bucket.balls.size(); base += 64)
+                for (std::uint64_t hits = bucket.boxes.overlapping(base, lo, hi); hits != 0;
+                     hits &= hits - 1)
+                    found(bucket.balls[base + static_cast<std::size_t>(std::countr_zero(hits))]);
+        }
     }
     return near_;
 }

@@ -1,16 +1,18 @@
 #pragma once
-// Which balls' boxes may come near a ball's box, without looking at every ball: a uniform grid
+// Which balls' boxes come near a ball's box, without looking at every ball: a uniform grid
 // hashed into buckets, so that the pair search does not test every box when there are many balls.
-// It only culls: every ball it leaves out is out of reach, and the caller still tests the boxes.
 //
-// A ball is entered in every cell its box (grown by a margin) covers. A box that covers more
-// cells than a search should walk (a fast ball's long path) is on a short wide list instead,
-// which every search looks at; its own search walks only the cells along its path.
+// A ball is entered in every cell its box (grown by a margin) covers; each bucket keeps a copy of
+// its balls' boxes side by side, so that a search tests a cell's boxes two at a time
+// (box_lanes.hpp). A box that covers more cells than a search should walk (a fast ball's long
+// path) is on a short wide list instead, which every search looks at; its own search walks only
+// the cells along its path.
 
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "box_lanes.hpp"
 #include "reach_box.hpp"
 
 namespace termpool::core {
@@ -32,14 +34,14 @@ public:
         }
     }
 
-    /// The balls k != i whose box (in `boxes`) grown by `margin` may overlap ball i's grown by
-    /// `margin`, each once, and perhaps a few more; where ball i's box covers many cells, only
-    /// those that may come within 2 `margin` of its `path` (which must hold its centre's path).
-    /// `boxes` holds every ball's current box; an empty box (min > max) is in no cell. The list
-    /// is the grid's own, valid until its next call: gathered first so that the caller tests
-    /// the boxes in a tight loop of its own rather than between the grid's loads.
+    /// The balls k != i whose box (in `boxes`) overlaps [lo, hi], each once. [lo, hi] must lie
+    /// within ball i's box grown by 2 `margin`, so that every such ball shares a cell with it.
+    /// Where ball i's box covers many cells, only the cells that may come within 2 `margin` of
+    /// its `path` (which must hold its centre's path) are looked at: a ball further from the
+    /// path cannot touch it. `boxes` holds every ball's current box; an empty box (min > max)
+    /// is in no cell. The list is the grid's own, valid until its next call.
     const std::vector<std::uint16_t>& near(std::size_t i, const std::vector<Box>& boxes,
-                                           const Capsule& path);
+                                           const Capsule& path, Vec2 lo, Vec2 hi);
 
 private:
     struct Cells {
@@ -51,7 +53,7 @@ private:
     static const Cells empty_cells;
     Cells cells_of(const Box& box) const;
     std::size_t bucket(std::int64_t x, std::int64_t y) const;
-    void enter(std::size_t i, const Cells& cells);
+    void enter(std::size_t i, const Cells& cells, const Box& box);
     void leave(std::size_t i);
     void flush(const std::vector<Box>& boxes);
     /// Narrows the rows [y0, y1] of column x to those within reach of `path`.
@@ -61,14 +63,24 @@ private:
     double inverse_cell_;
     double margin_;
     std::size_t mask_; // buckets - 1, a power of two less one
-    std::vector<std::vector<std::uint16_t>> buckets_;
-    std::vector<std::vector<std::uint32_t>> buckets_of_; // per ball, the buckets it is in
-    std::vector<Cells> cells_;                           // per ball, the cells it is entered in
-    std::vector<std::uint16_t> wide_;                    // balls on the wide list
+    // The balls entered in a bucket and their boxes, at the same index.
+    struct Bucket {
+        std::vector<std::uint16_t> balls;
+        BoxColumns boxes;
+    };
+    // Where a ball is entered: a bucket and its index there.
+    struct Entry {
+        std::uint32_t bucket;
+        std::uint32_t slot;
+    };
+    std::vector<Bucket> buckets_;
+    std::vector<std::vector<Entry>> entries_; // per ball, where it is entered
+    std::vector<Cells> cells_;                // per ball, the cells it is entered in
+    std::vector<std::uint16_t> wide_;         // balls on the wide list
     std::vector<std::uint8_t> is_wide_;
     std::vector<std::uint16_t> dirty_; // balls whose box changed since they were entered
     std::vector<std::uint8_t> is_dirty_;
-    std::vector<std::uint32_t> seen_; // per ball, the search that last gathered it
+    std::vector<std::uint32_t> seen_; // per ball, the search that last found it
     std::uint32_t search_ = 0;
     std::vector<std::uint16_t> near_; // the last search's balls
 };

@@ -1,8 +1,10 @@
 #pragma once
-// The boxes of every ball side by side, two at a time (a 128-bit register's worth): which come
-// near one box is a few vector compares rather than a loop over balls. A lane's compare is the
-// scalar compare, so the answer is the same on any target, with vector registers or without.
+// Boxes kept as separate coordinate arrays and tested against one box two at a time (a 128-bit
+// register's worth): which come near a ball's box is a few vector compares rather than a loop
+// over balls. A lane's compare is the scalar compare, so the answer is the same on any target,
+// with vector registers or without.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -13,8 +15,93 @@
 
 namespace termpool::core {
 
-/// The boxes of `balls` balls as separate coordinate arrays, padded to a multiple of eight with
-/// empty boxes, and a bit per ball that moves.
+/// Boxes by coordinate: box c is [min_x[c], max_x[c]] x [min_y[c], max_y[c]].
+struct BoxColumns {
+    std::vector<double> min_x, min_y, max_x, max_y;
+
+    std::size_t size() const { return min_x.size(); }
+    void assign(std::size_t count, const Box& box) {
+        min_x.assign(count, box.min.x);
+        min_y.assign(count, box.min.y);
+        max_x.assign(count, box.max.x);
+        max_y.assign(count, box.max.y);
+    }
+    void set(std::size_t c, const Box& box) {
+        min_x[c] = box.min.x;
+        min_y[c] = box.min.y;
+        max_x[c] = box.max.x;
+        max_y[c] = box.max.y;
+    }
+    void push_back(const Box& box) {
+        min_x.push_back(box.min.x);
+        min_y.push_back(box.min.y);
+        max_x.push_back(box.max.x);
+        max_y.push_back(box.max.y);
+    }
+    /// Box `from` moved to `to`, and the last box dropped (from == size() - 1 drops it).
+    void move_last_to(std::size_t to) {
+        const std::size_t last = size() - 1;
+        min_x[to] = min_x[last];
+        min_y[to] = min_y[last];
+        max_x[to] = max_x[last];
+        max_y[to] = max_y[last];
+        min_x.pop_back();
+        min_y.pop_back();
+        max_x.pop_back();
+        max_y.pop_back();
+    }
+    void clear() {
+        min_x.clear();
+        min_y.clear();
+        max_x.clear();
+        max_y.clear();
+    }
+
+    /// Bit c - `first` for each box c in [first, first + 64) and below size() that overlaps
+    /// [lo, hi] (shares a point with it).
+    std::uint64_t overlapping(std::size_t first, Vec2 lo, Vec2 hi) const {
+        using Lanes = double __attribute__((vector_size(16)));
+        using Mask = std::int64_t __attribute__((vector_size(16)));
+        const auto load = [](const double* p) {
+            Lanes v;
+            std::memcpy(&v, p, sizeof v);
+            return v;
+        };
+        // The two lanes of a mask (each all ones or zero) as bits 0 and 1: one instruction
+        // where there is one for it.
+        const auto two_bits = [](Mask m) {
+#if defined(__SSE2__)
+            return static_cast<std::uint64_t>(__builtin_ia32_movmskpd(reinterpret_cast<Lanes>(m)));
+#else
+            return static_cast<std::uint64_t>((m[0] & 1) | (m[1] & 2));
+#endif
+        };
+        const Lanes lo_x = {lo.x, lo.x}, lo_y = {lo.y, lo.y};
+        const Lanes hi_x = {hi.x, hi.x}, hi_y = {hi.y, hi.y};
+        const auto two = [&](std::size_t c) {
+            const Mask m = (lo_x <= load(&max_x[c])) & (load(&min_x[c]) <= hi_x) &
+                           (lo_y <= load(&max_y[c])) & (load(&min_y[c]) <= hi_y);
+            return two_bits(m);
+        };
+        const std::size_t end = std::min(size(), first + 64);
+        std::uint64_t bits = 0;
+        std::size_t c = first;
+        // Eight boxes a step: four independent pairs, then one shift into the word.
+        for (; c + 8 <= end; c += 8)
+            bits |= (two(c) | two(c + 2) << 2 | two(c + 4) << 4 | two(c + 6) << 6) << (c - first);
+        for (; c + 2 <= end; c += 2)
+            bits |= two(c) << (c - first);
+        if (c < end) {
+            const bool one =
+                (lo.x <= max_x[c]) & (min_x[c] <= hi.x) & (lo.y <= max_y[c]) & (min_y[c] <= hi.y);
+            bits |= static_cast<std::uint64_t>(one) << (c - first);
+        }
+        return bits;
+    }
+};
+
+/// The boxes of `balls` balls, padded to a multiple of eight with empty boxes, and a bit per
+/// ball that moves: every ball tested at once.
 class BoxLanes {
 public:
     explicit BoxLanes(std::size_t balls)
@@ -24,66 +111,25 @@ public:
 
     /// Every box empty, every ball at rest.
     void clear() {
-        constexpr double infinity = std::numeric_limits<double>::infinity();
-        min_x_.assign(padded_, infinity);
-        min_y_.assign(padded_, infinity);
-        max_x_.assign(padded_, -infinity);
-        max_y_.assign(padded_, -infinity);
+        boxes_.assign(padded_, empty_box());
         std::fill(moving_.begin(), moving_.end(), 0);
     }
-    void set_box(std::size_t i, const Box& box) {
-        min_x_[i] = box.min.x;
-        min_y_[i] = box.min.y;
-        max_x_[i] = box.max.x;
-        max_y_[i] = box.max.y;
-    }
+    void set_box(std::size_t i, const Box& box) { boxes_.set(i, box); }
     void set_moving(std::size_t i, bool moving) {
         const std::uint64_t bit = std::uint64_t{1} << (i % 64);
         moving_[i / 64] = moving ? moving_[i / 64] | bit : moving_[i / 64] & ~bit;
     }
 
-    /// Bit c - `first` for each ball c in [first, first + 64) (fewer at the end) whose box may
-    /// overlap [lo, hi] and that moves if `needs_motion`. `first` is a multiple of 64.
+    /// Bit c - `first` for each ball c in [first, first + 64) (fewer at the end) whose box
+    /// overlaps [lo, hi] and that moves if `needs_motion`. `first` is a multiple of 64.
     std::uint64_t overlapping(std::size_t first, Vec2 lo, Vec2 hi, bool needs_motion) const {
-        const auto load = [](const double* p) {
-            Lanes v;
-            std::memcpy(&v, p, sizeof v);
-            return v;
-        };
-        const Lanes lo_x = {lo.x, lo.x}, lo_y = {lo.y, lo.y};
-        const Lanes hi_x = {hi.x, hi.x}, hi_y = {hi.y, hi.y};
-        const std::size_t end = first + 64 < padded_ ? first + 64 : padded_;
-        const auto two = [&](std::size_t c) {
-            const Mask m = (lo_x <= load(&max_x_[c])) & (load(&min_x_[c]) <= hi_x) &
-                           (lo_y <= load(&max_y_[c])) & (load(&min_y_[c]) <= hi_y);
-            return two_bits(m);
-        };
-        // Eight balls a step: four independent pairs, then one shift into the word.
-        std::uint64_t bits = 0;
-        for (std::size_t c = first; c < end; c += 8) {
-            const std::uint64_t eight =
-                two(c) | two(c + 2) << 2 | two(c + 4) << 4 | two(c + 6) << 6;
-            bits |= eight << (c - first);
-        }
+        const std::uint64_t bits = boxes_.overlapping(first, lo, hi);
         return needs_motion ? bits & moving_[first / 64] : bits;
     }
 
 private:
-    using Lanes = double __attribute__((vector_size(16)));
-    using Mask = std::int64_t __attribute__((vector_size(16)));
-
-    // The two lanes of a mask (each all ones or zero) as bits 0 and 1: one instruction where
-    // there is one for it.
-    static std::uint64_t two_bits(Mask m) {
-#if defined(__SSE2__)
-        return static_cast<std::uint64_t>(__builtin_ia32_movmskpd(reinterpret_cast<Lanes>(m)));
-#else
-        return static_cast<std::uint64_t>((m[0] & 1) | (m[1] & 2));
-#endif
-    }
-
     std::size_t padded_;
-    std::vector<double> min_x_, min_y_, max_x_, max_y_;
+    BoxColumns boxes_;
     std::vector<std::uint64_t> moving_;
 };
 

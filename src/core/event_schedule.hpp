@@ -224,13 +224,6 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
         std::fill(searched_.begin(), searched_.end(), 0);
         search_ = 1;
     }
-    // Whether pair (i, k) is searched: the boxes come within a diameter, and one of the balls
-    // moves. Bitwise & rather than &&: one branch per ball instead of five unpredictable ones.
-    auto in_reach = [&](std::size_t k) {
-        const Box& box = reach_[k];
-        return (moving_[k] >= needs_motion) & (lo.x <= box.max.x) & (box.min.x <= hi.x) &
-               (lo.y <= box.max.y) & (box.min.y <= hi.y);
-    };
     auto search = [&](std::size_t k) __attribute__((always_inline)) {
         searched_[k] = search_;
         const ContactEstimate estimate = contact(k);
@@ -240,31 +233,23 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
         if (time != row[k])
             set_time(i, k, time, true);
     };
-    // The boxes are tested without a branch into masks of 64, and only the balls in reach
-    // (about one in five) are walked: a branch per ball would be mispredicted at every other.
-    auto walk = [&](std::uint64_t reached, auto ball) __attribute__((always_inline)) {
-        for (; reached != 0; reached &= reached - 1)
-            search(ball(static_cast<std::size_t>(std::countr_zero(reached))));
-    };
-    if (many_) { // the few balls the grid gathers
-        const std::vector<std::uint16_t>& near = grid_->near(i, reach_, paths_[i]);
-        for (std::size_t base = 0; base < near.size(); base += 64) {
-            const std::size_t end = std::min(near.size(), base + 64);
-            std::uint64_t reached = 0;
-            for (std::size_t c = base; c < end; ++c) {
-                const std::size_t k = near[c];
-                reached |= static_cast<std::uint64_t>(in_reach(k) & (k != done)) << (c - base);
-            }
-            walk(reached, [&](std::size_t c) { return static_cast<std::size_t>(near[base + c]); });
-        }
-    } else { // every ball, four boxes at a time
+    // Pair (i, k) is searched where the boxes come within a diameter and one of the balls
+    // moves.
+    if (many_) { // the few balls the grid finds in reach
+        for (const std::size_t k : grid_->near(i, reach_, paths_[i], lo, hi))
+            if (k != done && moving_[k] >= needs_motion)
+                search(k);
+    } else {
+        // Every box, two at a time without a branch into masks of 64; only the balls in reach
+        // (about one in five) are walked: a branch per ball would be mispredicted at every other.
         for (std::size_t base = 0; base < n; base += 64) {
             std::uint64_t reached = lanes_.overlapping(base, lo, hi, needs_motion != 0);
             if (i - base < 64)
                 reached &= ~(std::uint64_t{1} << (i - base));
             if (done - base < 64)
                 reached &= ~(std::uint64_t{1} << (done - base));
-            walk(reached, [&](std::size_t c) { return base + c; });
+            for (; reached != 0; reached &= reached - 1)
+                search(base + static_cast<std::size_t>(std::countr_zero(reached)));
         }
     }
     // The pairs that held a contact and are out of reach now (the pair with `done` excepted).
