@@ -38,7 +38,7 @@ struct BoxColumns {
         max_x.push_back(box.max.x);
         max_y.push_back(box.max.y);
     }
-    /// Box `from` moved to `to`, and the last box dropped (from == size() - 1 drops it).
+    /// The last box moved to index `to`, its old place dropped (to == size() - 1 drops it).
     void move_last_to(std::size_t to) {
         const std::size_t last = size() - 1;
         min_x[to] = min_x[last];
