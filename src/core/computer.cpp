@@ -84,17 +84,22 @@ double score(const Verdict& v, int shooter) {
 // ball is worth (`weight`).
 template <class Weight> double weighted_next_quality(const Game& game, Weight weight) {
     const double R = game.params().ball_radius;
-    return best_clear_pot(game, [&](int target, const Ball& cue, const Ball& object, int pocket) {
-        const Vec2 to_pocket = game.table().pockets[pocket - 1].position - object.position;
-        const Vec2 ghost = object.position - normalized(to_pocket) * (2 * R);
-        const Vec2 line = ghost - cue.position;
-        const double cut = dot(normalized(line), normalized(to_pocket));
-        if (cut < 0.34)
-            return 0.0;
-        // A weight of 1 leaves the product's bits as they were without it.
-        return weight(target) * cut * cut *
-               portable::exp(-(length(line) + length(to_pocket)) / 2.5);
-    });
+    return best_clear_pot(
+        game, [&](int target, const Ball& cue, const Ball& object, int pocket, double best) {
+            const Vec2 to_pocket = game.table().pockets[pocket - 1].position - object.position;
+            const Vec2 ghost = object.position - normalized(to_pocket) * (2 * R);
+            const Vec2 line = ghost - cue.position;
+            const double cut = dot(normalized(line), normalized(to_pocket));
+            if (cut < 0.34)
+                return 0.0;
+            // A weight of 1 leaves the product's bits as they were without it.
+            const double most = weight(target) * cut * cut;
+            // The distance factor is at most 1: a pot that cannot beat the best so far skips the
+            // exponential, the dearest part (the margin covers its rounding).
+            if (most * (1 + 1e-9) <= best)
+                return 0.0;
+            return most * portable::exp(-(length(line) + length(to_pocket)) / 2.5);
+        });
 }
 
 // Pool: every legal ball is worth the same.

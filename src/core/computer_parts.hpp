@@ -41,16 +41,17 @@ template <class Visit> void for_each_pot(const Game& game, Visit visit) {
     }
 }
 
-// The best of `rate(target, cue, object, pocket)` over the balls on in `game` and the pockets,
-// counting only the pots whose ghost-ball line from the cue ball and whose line on to the
-// pocket are clear; 0 at worst, and with no cue ball on the table. `rate` returns 0 for a pot
-// not worth looking at.
+// The best of `rate(target, cue, object, pocket, best)` over the balls on in `game` and the
+// pockets, counting only the pots whose ghost-ball line from the cue ball and whose line on to
+// the pocket are clear; 0 at worst, and with no cue ball on the table. `rate` returns 0 for a
+// pot not worth looking at, and may return 0 for one it can tell at once is worth no more than
+// `best`, the best so far (the lines are looked at only for a better one).
 template <class Rate> double best_clear_pot(const Game& game, Rate rate) {
     const double R = game.params().ball_radius;
     double best = 0;
     for_each_pot(game, [&](int target, const Ball& cue, const Ball& object, int pocket, Vec2 at) {
         const Vec2 ghost = object.position - normalized(at - object.position) * (2 * R);
-        const double value = rate(target, cue, object, pocket);
+        const double value = rate(target, cue, object, pocket, best);
         if (value > best && !path_blocked(game.balls(), cue.position, ghost, {0, target}, R) &&
             !path_blocked(game.balls(), object.position, at, {0, target}, R))
             best = value;

@@ -60,7 +60,8 @@ double snooker_pot_chance(const Table& table, double R, Vec2 cue, Vec2 object, i
 
 double snooker_best_chance(const Game& game, double sigma_deg) {
     const double R = game.params().ball_radius;
-    return best_clear_pot(game, [&](int target, const Ball& cue, const Ball& object, int pocket) {
+    return best_clear_pot(game, [&](int target, const Ball& cue, const Ball& object, int pocket,
+                                    double) {
         return snooker_ball_weight(target) * snooker_pot_chance(game.table(), R, cue.position,
                                                                 object.position, pocket, sigma_deg);
     });
