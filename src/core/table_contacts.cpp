@@ -1,6 +1,7 @@
 #include "table_contacts.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "classic_contacts.hpp"
 #include "contact_time.hpp"
@@ -29,6 +30,12 @@ struct ParabolaMotion {
         return path.position + path.velocity * dt + path.acceleration * (0.5 * dt * dt);
     }
     Box box(double duration) const { return path_box(path, duration); }
+    // The chord of the parabola and its greatest distance from it (capsule_of).
+    Capsule capsule(double duration) const {
+        const Vec2 a = path.acceleration;
+        return {path.position, position_at(duration),
+                (std::abs(a.x) + std::abs(a.y)) * duration * duration / 8};
+    }
     double line(Vec2 point, Vec2 normal, double offset, double horizon) const {
         return path_line_contact_time(path, point, normal, offset, horizon);
     }
@@ -44,6 +51,7 @@ struct StraightMotion {
     Vec2 position_at(double dt) const { return motion.advance(ball, dt, *motion.params).position; }
     // The centre moves along its line and never back, so its ends bound it.
     Box box(double duration) const { return box_of(ball.position, position_at(duration)); }
+    Capsule capsule(double duration) const { return {ball.position, position_at(duration), 0}; }
     double line(Vec2 point, Vec2 normal, double offset, double horizon) const {
         return classic_line_contact_time(ball, point, normal, offset, horizon, motion);
     }
@@ -51,6 +59,17 @@ struct StraightMotion {
         return classic_point_contact_time(ball, point, radius, horizon, motion);
     }
 };
+
+// Whether a point further than `radius` from the capsule could still be within `radius` of the
+// path it holds: no. A micrometre of slack covers the rounding of the capsule's own arithmetic,
+// so that a point the contact search would find is never left out.
+bool capsule_misses(const Capsule& capsule, Vec2 point, double radius) {
+    const Vec2 d = capsule.to - capsule.from;
+    const double len2 = length_squared(d);
+    const double s = len2 > 0 ? std::clamp(dot(point - capsule.from, d) / len2, 0.0, 1.0) : 0.0;
+    const double reach = radius + capsule.bulge + 1e-6;
+    return length_squared(point - (capsule.from + d * s)) > reach * reach;
+}
 
 // Whether the contact with the segment's line `dt` from now falls on the segment itself.
 template <class Motion>
@@ -97,6 +116,7 @@ TableEvent table_event_search(const MotionPiece& piece, const Motion& motion, co
     // to it: for a fast ball that path's box is far smaller than the whole slide's.
     const double until_rail = std::min(horizon, found.best.time - now);
     const Box to_rail = motion.box(until_rail);
+    const Capsule to_rail_path = motion.capsule(until_rail);
     for (int p = 0; p < 6; ++p) {
         if (!near_pocket(table, to_rail, p, R))
             continue;
@@ -112,7 +132,9 @@ TableEvent table_event_search(const MotionPiece& piece, const Motion& motion, co
             }
             const int point = 2 * p + side;
             const Vec2 jaw = table.jaw_points[point];
-            if (boxes_within(to_rail, {jaw, jaw}, R))
+            // The box of a long diagonal path holds points far from it: the capsule culls
+            // those before the quartic.
+            if (boxes_within(to_rail, {jaw, jaw}, R) && !capsule_misses(to_rail_path, jaw, R))
                 found.consider(motion.point(jaw, R, until_rail), TableEventKind::jaw_point, point);
         }
         const Pocket& pocket = table.pockets[p];
