@@ -93,7 +93,7 @@ struct BoxColumns {
             bits |= two(c) << (c - first);
         if (c < end) {
             const bool one =
-                (lo.x <= max_x[c]) & (min_x[c] <= hi.x) & (lo.y <= max_y[c]) & (min_y[c] <= hi.y);
+                lo.x <= max_x[c] && min_x[c] <= hi.x && lo.y <= max_y[c] && min_y[c] <= hi.y;
             bits |= static_cast<std::uint64_t>(one) << (c - first);
         }
         return bits;
