@@ -4,11 +4,14 @@
 // same event after every change. And the simulator's cost per event through `termpool bench`
 // rows is covered by test_simulate_cli.cpp; here, the grid never loses a pair in reach.
 #include "support/random.hpp"
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <limits>
 #include <map>
 
 #include "core/ball_grid.hpp"
+#include "core/box_lanes.hpp"
 #include "core/event_schedule.hpp"
 
 using namespace termpool;
@@ -288,4 +291,46 @@ TEST_CASE("ball grid: a search finds exactly the boxes in reach as boxes move, g
         ++checked;
     }
     CHECK(checked > 1000);
+}
+
+TEST_CASE("box lanes: two at a time, the same answer as one box at a time", "[core][schedule]") {
+    // Every count from 0 to 140 (odd tails, more than a word), boxes that touch the searched one
+    // exactly at an edge, empty ones, infinite and NaN coordinates.
+    Random rng(31);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    auto coordinate = [&] {
+        const double kind = rng.uniform(0, 1);
+        return kind < 0.02   ? nan
+               : kind < 0.04 ? infinity
+               : kind < 0.06 ? -infinity
+               : kind < 0.2  ? std::round(rng.uniform(-2, 2)) // whole numbers: edges meet exactly
+                             : rng.uniform(-2, 2);
+    };
+    for (std::size_t count = 0; count <= 140; ++count) {
+        core::BoxColumns columns;
+        std::vector<Box> boxes;
+        for (std::size_t c = 0; c < count; ++c) {
+            const Box box = rng.uniform(0, 1) < 0.1
+                                ? core::empty_box()
+                                : Box{{coordinate(), coordinate()}, {coordinate(), coordinate()}};
+            columns.push_back(box);
+            boxes.push_back(box);
+        }
+        for (int query = 0; query < 20; ++query) {
+            const Vec2 lo{std::round(rng.uniform(-2, 1)), rng.uniform(-2, 1)};
+            const Vec2 hi = lo + Vec2{std::round(rng.uniform(0, 2)), rng.uniform(0, 2)};
+            for (std::size_t first = 0; first < count; first += 64) {
+                const std::uint64_t bits = columns.overlapping(first, lo, hi);
+                for (std::size_t c = first; c < std::min(count, first + 64); ++c) {
+                    const Box& b = boxes[c];
+                    const bool one =
+                        lo.x <= b.max.x && b.min.x <= hi.x && lo.y <= b.max.y && b.min.y <= hi.y;
+                    INFO("count " << count << ", box " << c);
+                    REQUIRE(((bits >> (c - first)) & 1) == (one ? 1u : 0u));
+                }
+                if (std::min(count, first + 64) - first < 64)
+                    REQUIRE(bits >> (std::min(count, first + 64) - first) == 0); // nothing beyond
+            }
+        }
+    }
 }
