@@ -87,9 +87,10 @@ template <class Weight> double weighted_next_quality(const Game& game, Weight we
     return best_clear_pot(
         game, [&](int target, const Ball& cue, const Ball& object, int pocket, double best) {
             const Vec2 to_pocket = game.table().pockets[pocket - 1].position - object.position;
-            const Vec2 ghost = object.position - normalized(to_pocket) * (2 * R);
+            const Vec2 towards_pocket = normalized(to_pocket);
+            const Vec2 ghost = object.position - towards_pocket * (2 * R);
             const Vec2 line = ghost - cue.position;
-            const double cut = dot(normalized(line), normalized(to_pocket));
+            const double cut = dot(normalized(line), towards_pocket);
             if (cut < 0.34)
                 return 0.0;
             // A weight of 1 leaves the product's bits as they were without it.

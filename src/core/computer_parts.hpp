@@ -50,9 +50,11 @@ template <class Rate> double best_clear_pot(const Game& game, Rate rate) {
     const double R = game.params().ball_radius;
     double best = 0;
     for_each_pot(game, [&](int target, const Ball& cue, const Ball& object, int pocket, Vec2 at) {
-        const Vec2 ghost = object.position - normalized(at - object.position) * (2 * R);
         const double value = rate(target, cue, object, pocket, best);
-        if (value > best && !path_blocked(game.balls(), cue.position, ghost, {0, target}, R) &&
+        if (!(value > best))
+            return; // the lines are looked at only for a better pot
+        const Vec2 ghost = object.position - normalized(at - object.position) * (2 * R);
+        if (!path_blocked(game.balls(), cue.position, ghost, {0, target}, R) &&
             !path_blocked(game.balls(), object.position, at, {0, target}, R))
             best = value;
     });
