@@ -182,7 +182,7 @@ void check_against_model(std::size_t count, double table_size, std::uint64_t see
 } // namespace
 
 TEST_CASE("event schedule: the earliest event as a plain scan finds it", "[core][schedule]") {
-    // 16 and 40 balls test every box; 100 and 200 go through the grid.
+    // 16, 40 and 100 balls test every box; 200 go through the grid.
     for (const std::size_t count :
          {std::size_t{16}, std::size_t{40}, std::size_t{100}, std::size_t{200}}) {
         for (std::uint64_t seed = 1; seed <= 3; ++seed) {
@@ -331,6 +331,28 @@ TEST_CASE("box lanes: two at a time, the same answer as one box at a time", "[co
                 if (std::min(count, first + 64) - first < 64)
                     REQUIRE(bits >> (std::min(count, first + 64) - first) == 0); // nothing beyond
             }
+        }
+    }
+}
+
+TEST_CASE("box lanes: the padding beyond the last ball is never in reach", "[core][schedule]") {
+    // Even for a search box that reaches everywhere: the padding's empty boxes are (+inf, -inf),
+    // which an infinite search box would take in.
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    for (const std::size_t balls : {1, 7, 63, 64, 65, 70, 128}) {
+        core::BoxLanes lanes(balls);
+        for (std::size_t k = 0; k < balls; ++k) {
+            lanes.set_box(k, Box{{0, 0}, {1, 1}});
+            lanes.set_moving(k, k % 2 == 0);
+        }
+        for (std::size_t first = 0; first < balls; first += 64) {
+            const std::size_t in_word = std::min<std::size_t>(64, balls - first);
+            const std::uint64_t all =
+                in_word == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << in_word) - 1;
+            INFO(balls << " balls, word from " << first);
+            CHECK(lanes.overlapping(first, {-inf, -inf}, {inf, inf}, false) == all);
+            CHECK(lanes.overlapping(first, {-inf, -inf}, {inf, inf}, true) ==
+                  (all & 0x5555555555555555));
         }
     }
 }

@@ -438,10 +438,14 @@ TEST_CASE("8-ball legal targets: the shooter's group in order, else the 8", "[ru
     // A group: its own balls only; player 2 has the other group.
     CHECK(targets({12, 1, 8, 9}, Group::solids) == std::vector<int>{1, 3});
     CHECK(targets({12, 1, 8, 9}, Group::solids, 2) == std::vector<int>{9, 12});
-    // The shooter's group cleared: the 8 (ball 3 is always on: the straight-in pot's).
+    // Ball 3 (the straight-in pot's) is always on. Stripes with one left, then cleared: the 8.
     CHECK(targets({8, 9}, Group::stripes) == std::vector<int>{9});
     CHECK(targets({8}, Group::solids, 2) == std::vector<int>{8});
     CHECK(targets({8, 12}, Group::stripes, 2) == std::vector<int>{3});
     // Only the 8 left on an open table: the 8.
     CHECK(position(GameType::eight_ball, straight_in(8, 4)).legal_targets() == std::vector<int>{8});
+    // No object ball on the table: none.
+    std::vector<Ball> cue_only = straight_in(3, 4);
+    std::erase_if(cue_only, [](const Ball& b) { return b.id != 0; });
+    CHECK(position(GameType::eight_ball, cue_only).legal_targets().empty());
 }

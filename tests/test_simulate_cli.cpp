@@ -393,6 +393,10 @@ TEST_CASE("bench times an event against the number of balls on a scaled table", 
     };
     CHECK(!hash_line(r.out).empty());
     CHECK(hash_line(r.out) == hash_line(again.out));
+    // The outcomes are pinned, through every box tested (16, 40 and 100 balls) and through the
+    // grid (200): a faster search must not move a bit (as tests/test_determinism.cpp).
+    const Run pinned = run(dir, "bench --breaks 1 --shots 1 --balls 16,40,100,200 --ball-runs 3");
+    CHECK(hash_line(pinned.out) == "hash of these outcomes: ceba3c74c4983fd3");
     // No rows with --ball-runs 0.
     const Run none = run(dir, "bench --breaks 1 --shots 1 --ball-runs 0");
     CHECK(none.status == 0);

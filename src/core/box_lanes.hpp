@@ -105,7 +105,7 @@ struct BoxColumns {
 class BoxLanes {
 public:
     explicit BoxLanes(std::size_t balls)
-        : padded_((balls + 7) / 8 * 8), moving_((balls + 63) / 64) {
+        : balls_(balls), padded_((balls + 7) / 8 * 8), moving_((balls + 63) / 64) {
         clear();
     }
 
@@ -123,11 +123,16 @@ public:
     /// Bit c - `first` for each ball c in [first, first + 64) (fewer at the end) whose box
     /// overlaps [lo, hi] and that moves if `needs_motion`. `first` is a multiple of 64.
     std::uint64_t overlapping(std::size_t first, Vec2 lo, Vec2 hi, bool needs_motion) const {
-        const std::uint64_t bits = boxes_.overlapping(first, lo, hi);
+        std::uint64_t bits = boxes_.overlapping(first, lo, hi);
+        // The padding's empty boxes are (+inf, -inf): a search box infinite on every side would
+        // take them in.
+        if (balls_ - first < 64)
+            bits &= (std::uint64_t{1} << (balls_ - first)) - 1;
         return needs_motion ? bits & moving_[first / 64] : bits;
     }
 
 private:
+    std::size_t balls_;
     std::size_t padded_;
     BoxColumns boxes_;
     std::vector<std::uint64_t> moving_;
