@@ -25,11 +25,11 @@ std::size_t checked(std::size_t balls) {
 
 EventSchedule::EventSchedule(std::size_t balls, double diameter)
     : diameter_(diameter), reach_(checked(balls), empty_box()),
-      paths_(balls > most_without_grid ? balls : 0), moving_(balls), lanes_(balls),
-      many_(balls > most_without_grid), time_(balls * balls, infinity), bound_(balls * balls, 0),
-      words_((balls + 63) / 64), finite_(balls * words_, 0), searched_(balls, 0),
-      table_time_(balls, infinity), row_min_time_(balls, infinity), row_min_partner_(balls, balls),
-      key_dirty_(balls, 0) {
+      paths_(balls > most_without_grid ? balls : 0), moving_(balls),
+      lanes_(balls > most_without_grid ? 0 : balls), many_(balls > most_without_grid),
+      time_(balls * balls, infinity), bound_(balls * balls, 0), words_((balls + 63) / 64),
+      finite_(balls * words_, 0), searched_(balls, 0), table_time_(balls, infinity),
+      row_min_time_(balls, infinity), row_min_partner_(balls, balls), key_dirty_(balls, 0) {
     dirty_keys_.reserve(balls);
     // Boxes grown by a little more than a radius each overlap whenever they come within a
     // diameter, whatever the rounding. Cells of four diameters: a ball at rest covers one to

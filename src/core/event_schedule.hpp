@@ -117,7 +117,8 @@ public:
     /// Sets whether ball i moves.
     void set_moving(std::size_t i, bool moving) {
         moving_[i] = moving;
-        lanes_.set_moving(i, moving);
+        if (!many_)
+            lanes_.set_moving(i, moving);
     }
 
     /// Searches ball i's pairs afresh at time `now`: `contact(k)` gives the ContactEstimate of
@@ -154,7 +155,7 @@ private:
     std::vector<Box> reach_;
     std::vector<Capsule> paths_; // with many balls only: the grid walks long paths
     std::vector<std::uint8_t> moving_;
-    BoxLanes lanes_; // the boxes and motions again, for testing every ball at once
+    BoxLanes lanes_; // without many balls, the boxes and motions again, to test every ball at once
     // Many balls (above 128): their pairs are searched through the grid. Fewer are faster
     // testing every box without a branch than through the grid's bookkeeping.
     bool many_;
@@ -264,10 +265,11 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
 inline void EventSchedule::set_reach(std::size_t i, const Box& reach, const Capsule& path) {
     touched_ = true;
     reach_[i] = reach;
-    lanes_.set_box(i, reach);
     if (many_) {
         paths_[i] = path;
         grid_->moved(i);
+    } else {
+        lanes_.set_box(i, reach);
     }
 }
 
