@@ -152,11 +152,9 @@ const std::vector<std::uint16_t>& BallGrid::near(std::size_t i, const std::vecto
             near_.push_back(k);
         }
     };
-    for (const std::uint16_t k : wide_) {
-        const Box& box = boxes[k];
-        if ((lo.x <= box.max.x) & (box.min.x <= hi.x) & (lo.y <= box.max.y) & (box.min.y <= hi.y))
+    for (const std::uint16_t k : wide_)
+        if (boxes_within(boxes[k], {lo, hi}, 0))
             found(k);
-    }
     for (std::int64_t x = c.x0; x <= c.x1; ++x) {
         std::int64_t y0 = c.y0, y1 = c.y1;
         // A long path: only the cells along it, not the whole of its box.

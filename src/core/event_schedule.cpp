@@ -37,8 +37,8 @@ EventSchedule::EventSchedule(std::size_t balls, double diameter)
     if (many_)
         grid_.emplace(balls, 4 * diameter, 0.5 * diameter * (1 + 1e-6) + 1e-9);
     const std::size_t blocks = std::max<std::size_t>(1, (balls + block - 1) / block);
-    keys_.assign(blocks * block, schedule_detail::event_key(infinity_bits, 0));
-    block_first_.assign(blocks, schedule_detail::event_key(infinity_bits, 0));
+    keys_.assign(blocks * block, no_event());
+    block_first_.assign(blocks, no_event());
     block_dirty_.assign(blocks, 0);
 }
 
@@ -60,9 +60,8 @@ void EventSchedule::clear() {
     std::fill(table_time_.begin(), table_time_.end(), infinity);
     std::fill(row_min_time_.begin(), row_min_time_.end(), infinity);
     std::fill(row_min_partner_.begin(), row_min_partner_.end(), n);
-    std::fill(keys_.begin(), keys_.end(), schedule_detail::event_key(infinity_bits, 0));
-    std::fill(block_first_.begin(), block_first_.end(),
-              schedule_detail::event_key(infinity_bits, 0));
+    std::fill(keys_.begin(), keys_.end(), no_event());
+    std::fill(block_first_.begin(), block_first_.end(), no_event());
     std::fill(block_dirty_.begin(), block_dirty_.end(), 0);
     dirty_keys_.clear();
     std::fill(key_dirty_.begin(), key_dirty_.end(), 0);

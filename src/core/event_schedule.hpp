@@ -188,6 +188,8 @@ private:
     using Key = schedule_detail::EventKey;
     static constexpr std::size_t block = 16;
     static constexpr std::uint64_t infinity_bits = 0x7ff0000000000000; // +infinity's bits
+    // Nothing scheduled: +infinity with order 0.
+    static Key no_event() { return schedule_detail::event_key(infinity_bits, 0); }
     std::vector<Key> keys_;
     std::vector<Key> block_first_;
     std::vector<std::uint8_t> block_dirty_;
@@ -355,7 +357,7 @@ inline void EventSchedule::update_key(std::size_t i) {
     keys_[i] =
         leaf.time < std::numeric_limits<double>::infinity()
             ? schedule_detail::event_key(std::bit_cast<std::uint64_t>(leaf.time + 0.0), leaf.order)
-            : schedule_detail::event_key(infinity_bits, 0);
+            : no_event();
     block_dirty_[i / block] = 1;
 }
 
