@@ -24,16 +24,20 @@ struct Capsule {
     double bulge = 0; ///< m
 };
 
-/// The capsule of a piece's centre over its first `duration` seconds: the chord of its parabola
+/// The capsule of a centre on `path` over its first `duration` seconds: the chord of its parabola
 /// and the parabola's greatest distance from it, |a| T^2 / 8. A classic ball moves on a straight
 /// line no further than v T: the chord to where v T would take it holds its path.
 /// (|a| is bounded by |a_x| + |a_y|, which needs no square root.)
+inline Capsule capsule_of(const Path& path, double duration) {
+    const double T = duration;
+    const Vec2 a = path.acceleration;
+    return {path.position, path.position + path.velocity * T + a * (0.5 * T * T),
+            (std::abs(a.x) + std::abs(a.y)) * T * T / 8};
+}
+/// The capsule of a piece's centre over the first `duration` seconds of the piece.
 inline Capsule capsule_of(const MotionPiece& piece, double duration) {
     const Ball& b = piece.ball;
-    const double T = duration;
-    const Vec2 a = piece.acceleration;
-    return {b.position, b.position + b.velocity * T + a * (0.5 * T * T),
-            (std::abs(a.x) + std::abs(a.y)) * T * T / 8};
+    return capsule_of(Path{b.position, b.velocity, piece.acceleration, duration}, duration);
 }
 
 /// A box no overlap test reaches (min > max), a pocketed ball's.

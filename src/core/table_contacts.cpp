@@ -1,7 +1,6 @@
 #include "table_contacts.hpp"
 
 #include <algorithm>
-#include <cmath>
 
 #include "classic_contacts.hpp"
 #include "contact_time.hpp"
@@ -30,12 +29,7 @@ struct ParabolaMotion {
         return path.position + path.velocity * dt + path.acceleration * (0.5 * dt * dt);
     }
     Box box(double duration) const { return path_box(path, duration); }
-    // The chord of the parabola and its greatest distance from it (capsule_of).
-    Capsule capsule(double duration) const {
-        const Vec2 a = path.acceleration;
-        return {path.position, position_at(duration),
-                (std::abs(a.x) + std::abs(a.y)) * duration * duration / 8};
-    }
+    Capsule capsule(double duration) const { return capsule_of(path, duration); }
     double line(Vec2 point, Vec2 normal, double offset, double horizon) const {
         return path_line_contact_time(path, point, normal, offset, horizon);
     }
