@@ -335,12 +335,77 @@ TEST_CASE("box lanes: two at a time, the same answer as one box at a time", "[co
     }
 }
 
+TEST_CASE("box lanes: picked by strips, the same balls as every box tested", "[core][schedule]") {
+    // Above BoxLanes::strips_above balls the strips pick the boxes to test: as boxes move, grow,
+    // go and come back, a search finds exactly the boxes that overlap it, whether its box is in
+    // order, reversed, far beyond 64 strips, infinite or NaN. Boxes come in every kind, with
+    // whole-number corners so that edges meet exactly on strip boundaries.
+    Random rng(47);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    auto coordinate = [&] {
+        const double kind = rng.uniform(0, 1);
+        return kind < 0.01   ? nan
+               : kind < 0.02 ? infinity
+               : kind < 0.03 ? -infinity
+               : kind < 0.06 ? rng.uniform(-1e12, 1e12) // beyond the strips' clamp
+               : kind < 0.3  ? std::round(rng.uniform(-3, 3)) * 0.25
+                             : rng.uniform(-3, 3);
+    };
+    auto some_box = [&] {
+        const double kind = rng.uniform(0, 1);
+        if (kind < 0.1)
+            return core::empty_box();
+        if (kind < 0.4) { // a ball at rest: a point
+            const Vec2 at{coordinate(), coordinate()};
+            return Box{at, at};
+        }
+        Vec2 lo{coordinate(), coordinate()};
+        Vec2 hi{coordinate(), coordinate()};
+        if (rng.uniform(0, 1) < 0.9) // mostly in order, sometimes reversed
+            lo = {std::min(lo.x, hi.x), std::min(lo.y, hi.y)},
+            hi = {std::max(lo.x, hi.x), std::max(lo.y, hi.y)};
+        return Box{lo, hi};
+    };
+    std::size_t found = 0;
+    for (const std::size_t balls : {33, 64, 65, 100, 128}) {
+        REQUIRE(balls > core::BoxLanes::strips_above);
+        core::BoxLanes lanes(balls, 0.25);
+        std::vector<Box> boxes(balls, core::empty_box());
+        std::vector<bool> moving(balls, false);
+        for (int round = 0; round < 200; ++round) {
+            for (int change = 0; change < 10; ++change) {
+                const auto k = static_cast<std::size_t>(rng.uniform(0, 1) * balls) % balls;
+                boxes[k] = some_box();
+                lanes.set_box(k, boxes[k]);
+                moving[k] = rng.uniform(0, 1) < 0.5;
+                lanes.set_moving(k, moving[k]);
+            }
+            const Box query = some_box();
+            const core::BoxLanes::Search search = lanes.search(query.min, query.max);
+            const bool needs_motion = rng.uniform(0, 1) < 0.3;
+            for (std::size_t first = 0; first < balls; first += 64) {
+                const std::uint64_t bits = lanes.overlapping(first, search, needs_motion);
+                for (std::size_t c = first; c < std::min(balls, first + 64); ++c) {
+                    const Box& b = boxes[c];
+                    const bool one = query.min.x <= b.max.x && b.min.x <= query.max.x &&
+                                     query.min.y <= b.max.y && b.min.y <= query.max.y &&
+                                     (!needs_motion || moving[c]);
+                    INFO(balls << " balls, round " << round << ", box " << c);
+                    REQUIRE(((bits >> (c - first)) & 1) == (one ? 1u : 0u));
+                    found += one ? 1 : 0;
+                }
+            }
+        }
+    }
+    CHECK(found > 1000); // the searches found boxes, not only nothing
+}
+
 TEST_CASE("box lanes: the padding beyond the last ball is never in reach", "[core][schedule]") {
     // Even for a search box that reaches everywhere: the padding's empty boxes are (+inf, -inf),
     // which an infinite search box would take in.
     constexpr double inf = std::numeric_limits<double>::infinity();
     for (const std::size_t balls : {1, 7, 63, 64, 65, 70, 128}) {
-        core::BoxLanes lanes(balls);
+        core::BoxLanes lanes(balls, 0.1);
         for (std::size_t k = 0; k < balls; ++k) {
             lanes.set_box(k, Box{{0, 0}, {1, 1}});
             lanes.set_moving(k, k % 2 == 0);
@@ -350,9 +415,9 @@ TEST_CASE("box lanes: the padding beyond the last ball is never in reach", "[cor
             const std::uint64_t all =
                 in_word == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << in_word) - 1;
             INFO(balls << " balls, word from " << first);
-            CHECK(lanes.overlapping(first, {-inf, -inf}, {inf, inf}, false) == all);
-            CHECK(lanes.overlapping(first, {-inf, -inf}, {inf, inf}, true) ==
-                  (all & 0x5555555555555555));
+            const core::BoxLanes::Search everywhere = lanes.search({-inf, -inf}, {inf, inf});
+            CHECK(lanes.overlapping(first, everywhere, false) == all);
+            CHECK(lanes.overlapping(first, everywhere, true) == (all & 0x5555555555555555));
         }
     }
 }

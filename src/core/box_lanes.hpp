@@ -5,12 +5,15 @@
 // with vector registers or without.
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <vector>
 
+#include "box_strips.hpp"
 #include "reach_box.hpp"
 
 namespace termpool::core {
@@ -101,41 +104,81 @@ struct BoxColumns {
 };
 
 /// The boxes of `balls` balls, padded to a multiple of eight with empty boxes, and a bit per
-/// ball that moves: every ball tested at once.
+/// ball that moves: every ball tested at once. With more than `strips_above` balls, the strips
+/// their boxes cover (box_strips.hpp) pick the few to test.
 class BoxLanes {
 public:
-    explicit BoxLanes(std::size_t balls)
-        : balls_(balls), padded_((balls + 7) / 8 * 8), moving_((balls + 63) / 64) {
+    /// `strip_width`, m: a strip's width, with many balls.
+    BoxLanes(std::size_t balls, double strip_width)
+        : balls_(balls), padded_((balls + 7) / 8 * 8), moving_((balls + 63) / 64),
+          strips_(balls > strips_above ? balls : 0, strip_width) {
         clear();
     }
+
+    /// Up to this many balls, testing every box is cheaper than picking them by strips.
+    static constexpr std::size_t strips_above = 32;
 
     /// Every box empty, every ball at rest.
     void clear() {
         boxes_.assign(padded_, empty_box());
         std::fill(moving_.begin(), moving_.end(), 0);
+        strips_.clear();
     }
-    void set_box(std::size_t i, const Box& box) { boxes_.set(i, box); }
+    void set_box(std::size_t i, const Box& box) {
+        boxes_.set(i, box);
+        if (balls_ > strips_above)
+            strips_.set_box(i, box);
+    }
     void set_moving(std::size_t i, bool moving) {
         const std::uint64_t bit = std::uint64_t{1} << (i % 64);
         moving_[i / 64] = moving ? moving_[i / 64] | bit : moving_[i / 64] & ~bit;
     }
 
+    /// A search box [lo, hi], prepared once for every word of overlapping().
+    struct Search {
+        Vec2 lo, hi;
+        bool by_strips; // finite, with many balls: the strips pick the boxes to test
+        BoxStrips::Query strips;
+    };
+    Search search(Vec2 lo, Vec2 hi) const {
+        const bool by_strips = balls_ > strips_above && std::isfinite(lo.x) &&
+                               std::isfinite(lo.y) && std::isfinite(hi.x) && std::isfinite(hi.y);
+        return {lo, hi, by_strips, by_strips ? strips_.query(lo, hi) : BoxStrips::Query{}};
+    }
+
     /// Bit c - `first` for each ball c in [first, first + 64) (fewer at the end) whose box
-    /// overlaps [lo, hi] and that moves if `needs_motion`. `first` is a multiple of 64.
-    std::uint64_t overlapping(std::size_t first, Vec2 lo, Vec2 hi, bool needs_motion) const {
-        std::uint64_t bits = boxes_.overlapping(first, lo, hi);
+    /// overlaps the search box and that moves if `needs_motion`. `first` is a multiple of 64.
+    std::uint64_t overlapping(std::size_t first, const Search& s, bool needs_motion) const {
+        const std::uint64_t in_word =
+            balls_ - first < 64 ? (std::uint64_t{1} << (balls_ - first)) - 1 : ~std::uint64_t{0};
+        const std::uint64_t allowed = needs_motion ? in_word & moving_[first / 64] : in_word;
+        if (s.by_strips)
+            return exactly(strips_.candidates(first, s.strips) & allowed, first, s.lo, s.hi);
         // The padding's empty boxes are (+inf, -inf): a search box infinite on every side would
         // take them in.
-        if (balls_ - first < 64)
-            bits &= (std::uint64_t{1} << (balls_ - first)) - 1;
-        return needs_motion ? bits & moving_[first / 64] : bits;
+        return boxes_.overlapping(first, s.lo, s.hi) & allowed;
     }
 
 private:
+    // Those of `candidates` (bits from `first`) whose boxes overlap [lo, hi]: the lanes' test,
+    // one box at a time.
+    std::uint64_t exactly(std::uint64_t candidates, std::size_t first, Vec2 lo, Vec2 hi) const {
+        std::uint64_t bits = 0;
+        for (; candidates != 0; candidates &= candidates - 1) {
+            const int b = std::countr_zero(candidates);
+            const std::size_t c = first + static_cast<std::size_t>(b);
+            const bool one = (lo.x <= boxes_.max_x[c]) & (boxes_.min_x[c] <= hi.x) &
+                             (lo.y <= boxes_.max_y[c]) & (boxes_.min_y[c] <= hi.y);
+            bits |= static_cast<std::uint64_t>(one) << b;
+        }
+        return bits;
+    }
+
     std::size_t balls_;
     std::size_t padded_;
     BoxColumns boxes_;
     std::vector<std::uint64_t> moving_;
+    BoxStrips strips_; // with more than strips_above balls
 };
 
 } // namespace termpool::core

@@ -8,9 +8,15 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// Up to this many balls a search tests every box, two at a time (box_lanes.hpp): measured on
-// the bench's ball rows, that is cheaper than the grid's bookkeeping up to about 150 balls.
+// Up to this many balls a search goes through the box lanes (box_lanes.hpp: every box, or the
+// strips above 32 balls); above, through the grid. On the bench's ball rows the lanes were the
+// cheaper up to about 150 balls, and with the strips the grid was as fast or faster at 256 and
+// 512.
 constexpr std::size_t most_without_grid = 128;
+// The width of the strips that pick the boxes to test (box_strips.hpp), in ball diameters: a
+// ball at rest is in one strip or two on each axis. Measured with the bench's 128-ball row,
+// one diameter to six, two ran the fewest instructions with the fewest mispredicted branches.
+constexpr double strip_diameters = 2;
 
 static_assert(ScheduledEvent::max_balls == max_world_balls, "the limit World's callers are told");
 
@@ -26,20 +32,18 @@ std::size_t checked(std::size_t balls) {
 EventSchedule::EventSchedule(std::size_t balls, double diameter)
     : diameter_(diameter), reach_(checked(balls), empty_box()),
       paths_(balls > most_without_grid ? balls : 0), moving_(balls),
-      lanes_(balls > most_without_grid ? 0 : balls), many_(balls > most_without_grid),
-      time_(balls * balls, infinity), bound_(balls * balls, 0), words_((balls + 63) / 64),
-      finite_(balls * words_, 0), searched_(balls, 0), table_time_(balls, infinity),
-      row_min_time_(balls, infinity), row_min_partner_(balls, balls), key_dirty_(balls, 0) {
+      lanes_(balls > most_without_grid ? 0 : balls, strip_diameters * diameter),
+      many_(balls > most_without_grid), time_(balls * balls, infinity), bound_(balls * balls, 0),
+      words_((balls + 63) / 64), finite_(balls * words_, 0), searched_(balls, 0),
+      table_time_(balls, infinity), row_min_time_(balls, infinity), row_min_partner_(balls, balls),
+      leaves_(std::bit_ceil(std::max<std::size_t>(balls, 1))), key_dirty_(balls, 0) {
     dirty_keys_.reserve(balls);
     // Boxes grown by a little more than a radius each overlap whenever they come within a
     // diameter, whatever the rounding. Cells of four diameters: a ball at rest covers one to
     // four, a rolling ball a handful.
     if (many_)
         grid_.emplace(balls, 4 * diameter, 0.5 * diameter * (1 + 1e-6) + 1e-9);
-    const std::size_t blocks = std::max<std::size_t>(1, (balls + block - 1) / block);
-    keys_.assign(blocks * block, no_event());
-    block_first_.assign(blocks, no_event());
-    block_dirty_.assign(blocks, 0);
+    tree_.assign(2 * leaves_, no_event());
 }
 
 void EventSchedule::clear() {
@@ -60,9 +64,7 @@ void EventSchedule::clear() {
     std::fill(table_time_.begin(), table_time_.end(), infinity);
     std::fill(row_min_time_.begin(), row_min_time_.end(), infinity);
     std::fill(row_min_partner_.begin(), row_min_partner_.end(), n);
-    std::fill(keys_.begin(), keys_.end(), no_event());
-    std::fill(block_first_.begin(), block_first_.end(), no_event());
-    std::fill(block_dirty_.begin(), block_dirty_.end(), 0);
+    std::fill(tree_.begin(), tree_.end(), no_event());
     dirty_keys_.clear();
     std::fill(key_dirty_.begin(), key_dirty_.end(), 0);
 }

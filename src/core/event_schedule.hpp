@@ -1,12 +1,13 @@
 #pragma once
 // What the world does next: each ball's next event on its own (its table event) and the contact
 // time of every pair of balls, kept current as balls change, with the earliest of them all at
-// hand. A ball's row of pair times keeps its minimum, and blocks of balls keep the earliest table
-// event or row minimum among them, so that finding the next event scans a few blocks and a change
-// rescans one. The pair search culls with the box each ball's centre stays in,
-// whether it moves, and (above 128 balls) a grid over the boxes; only the pairs holding a contact
-// are walked, by a bit per pair. Above 128 balls nothing in an event's work walks every ball
-// (up to 128, testing every box two at a time without a branch is cheaper than the grid).
+// hand. A ball's row of pair times keeps its minimum, and a tournament over the balls keeps the
+// earliest table event or row minimum of all, so that a change replays a few matches on its way
+// to the root. The pair search culls with the box each ball's centre stays in and whether it
+// moves; only the pairs holding a contact are walked, by a bit per pair. Which boxes a search
+// tests: up to 32 balls every box, two at a time without a branch; up to 128 the balls whose boxes
+// share a strip of the table across x and one across y with its box (box_strips.hpp); above, a
+// grid over the boxes, so that nothing in an event's work walks every ball.
 
 #include <algorithm>
 #include <bit>
@@ -155,9 +156,9 @@ private:
     std::vector<Box> reach_;
     std::vector<Capsule> paths_; // with many balls only: the grid walks long paths
     std::vector<std::uint8_t> moving_;
-    BoxLanes lanes_; // without many balls, the boxes and motions again, to test every ball at once
+    BoxLanes lanes_; // without many balls, the boxes and motions again, to test them at once
     // Many balls (above 128): their pairs are searched through the grid. Fewer are faster
-    // testing every box without a branch than through the grid's bookkeeping.
+    // through the lanes than through the grid's bookkeeping.
     bool many_;
     std::optional<BallGrid> grid_; // only with many balls
     // Kept in both orders ([i * n + j] == [j * n + i]) so that a ball's row holds all its pairs.
@@ -178,21 +179,21 @@ private:
     // the row holds no contact).
     std::vector<double> row_min_time_;
     std::vector<std::size_t> row_min_partner_;
-    // Each ball's earliest event (its table event or its row's minimum) as a key, in blocks of
-    // `block` balls (the last one padded with nothing), and each block's earliest key: a change
-    // rescans one block, and the earliest event of all is found among the blocks' (one block at
-    // 16 balls, eight at 128).
+    // Each ball's earliest event (its table event or its row's minimum) as a key, at the leaves
+    // of a tournament: each node above holds the earlier of its two children, so that the root
+    // is the earliest event of all, and a changed key replays only the matches on its way up
+    // (four at 16 balls, seven at 128), rather than a rescan of its neighbours' keys.
     // A key's time is the bits of the double: times are never negative (nor -0), and for those
     // the bits order as the values do, so that picking the earlier of two is integer compares
     // without a branch to mispredict (schedule_detail::EventKey).
     using Key = schedule_detail::EventKey;
-    static constexpr std::size_t block = 16;
     static constexpr std::uint64_t infinity_bits = 0x7ff0000000000000; // +infinity's bits
     // Nothing scheduled: +infinity with order 0.
     static Key no_event() { return schedule_detail::event_key(infinity_bits, 0); }
-    std::vector<Key> keys_;
-    std::vector<Key> block_first_;
-    std::vector<std::uint8_t> block_dirty_;
+    // Leaves: the balls, then padding with nothing up to a power of two. tree_[1] is the root,
+    // node p's children are 2p and 2p + 1, and ball i's leaf is tree_[leaves_ + i].
+    std::size_t leaves_;
+    std::vector<Key> tree_;
     // Balls whose table event or row minimum changed since their keys were last brought up to
     // date: an event changes a row several times, and the key is made once.
     std::vector<std::size_t> dirty_keys_;
@@ -245,8 +246,9 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
     } else {
         // Every box, two at a time without a branch into masks of 64; only the balls in reach
         // (about one in five) are walked: a branch per ball would be mispredicted at every other.
+        const BoxLanes::Search box = lanes_.search(lo, hi);
         for (std::size_t base = 0; base < n; base += 64) {
-            std::uint64_t reached = lanes_.overlapping(base, lo, hi, needs_motion != 0);
+            std::uint64_t reached = lanes_.overlapping(base, box, needs_motion != 0);
             if (i - base < 64)
                 reached &= ~(std::uint64_t{1} << (i - base));
             if (done - base < 64)
@@ -324,22 +326,7 @@ inline ScheduledEvent EventSchedule::earliest() {
     for (const std::size_t i : dirty_keys_)
         update_key(i);
     dirty_keys_.clear();
-    for (std::size_t b = 0; b < block_first_.size(); ++b) {
-        if (!block_dirty_[b])
-            continue;
-        block_dirty_[b] = 0;
-        // In two halves, so that the chain of compares is half as long.
-        const Key* keys = keys_.data() + b * block;
-        Key first = keys[0], second = keys[block / 2];
-        for (std::size_t k = 1; k < block / 2; ++k) {
-            first = schedule_detail::earlier(first, keys[k]);
-            second = schedule_detail::earlier(second, keys[block / 2 + k]);
-        }
-        block_first_[b] = schedule_detail::earlier(first, second);
-    }
-    Key first = block_first_[0];
-    for (std::size_t b = 1; b < block_first_.size(); ++b)
-        first = schedule_detail::earlier(first, block_first_[b]);
+    const Key first = tree_[1];
     return {std::bit_cast<double>(schedule_detail::time_bits_of(first)),
             schedule_detail::order_of(first)};
 }
@@ -354,11 +341,18 @@ inline void EventSchedule::update_key(std::size_t i) {
             leaf = pair;
     }
     // + 0.0 turns a -0 into +0; nothing scheduled is +infinity with order 0.
-    keys_[i] =
+    Key key =
         leaf.time < std::numeric_limits<double>::infinity()
             ? schedule_detail::event_key(std::bit_cast<std::uint64_t>(leaf.time + 0.0), leaf.order)
             : no_event();
-    block_dirty_[i / block] = 1;
+    // Up to the root, each match replayed with the winner so far kept in registers: reading it
+    // back from the node just written would wait on that store at every level.
+    std::size_t node = leaves_ + i;
+    tree_[node] = key;
+    for (; node > 1; node /= 2) {
+        key = schedule_detail::earlier(key, tree_[node ^ 1]);
+        tree_[node / 2] = key;
+    }
 }
 
 } // namespace termpool::core
