@@ -63,6 +63,24 @@ struct BoxColumns {
     /// Bit c - `first` for each box c in [first, first + 64) and below size() that overlaps
     /// [lo, hi] (shares a point with it).
     std::uint64_t overlapping(std::size_t first, Vec2 lo, Vec2 hi) const {
+#if defined(__x86_64__) && defined(__GNUC__)
+        if (four_lanes_)
+            return overlapping_four_lanes(first, lo, hi);
+#endif
+        return overlapping_two_lanes(first, lo, hi);
+    }
+
+    /// Whether overlapping() tests four boxes at a time (the processor has AVX2).
+    bool has_four_lanes() const {
+#if defined(__x86_64__) && defined(__GNUC__)
+        return four_lanes_;
+#else
+        return false;
+#endif
+    }
+
+    /// overlapping() two boxes at a time, whatever the processor.
+    std::uint64_t overlapping_two_lanes(std::size_t first, Vec2 lo, Vec2 hi) const {
         using Lanes = double __attribute__((vector_size(16)));
         using Mask = std::int64_t __attribute__((vector_size(16)));
         const auto load = [](const double* p) {
@@ -101,7 +119,58 @@ struct BoxColumns {
         }
         return bits;
     }
+
+#if defined(__x86_64__) && defined(__GNUC__)
+    /// overlapping() four boxes at a time; only where has_four_lanes().
+    __attribute__((target("avx2"))) std::uint64_t overlapping_four_lanes(std::size_t first, Vec2 lo,
+                                                                         Vec2 hi) const;
+#endif
+
+private:
+#if defined(__x86_64__) && defined(__GNUC__)
+    // Where the processor has AVX2 (asked once per set of columns, not per search), four boxes
+    // at a time in a 256-bit register: the same compares, half the instructions. The build
+    // targets x86-64's baseline, so this one function is compiled for AVX2 on its own.
+    bool four_lanes_ = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") != 0;
+    }();
+
+#endif
 };
+
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target("avx2"))) inline std::uint64_t
+BoxColumns::overlapping_four_lanes(std::size_t first, Vec2 lo, Vec2 hi) const {
+    using Lanes = double __attribute__((vector_size(32)));
+    using Mask = std::int64_t __attribute__((vector_size(32)));
+    const Lanes lo_x = {lo.x, lo.x, lo.x, lo.x}, lo_y = {lo.y, lo.y, lo.y, lo.y};
+    const Lanes hi_x = {hi.x, hi.x, hi.x, hi.x}, hi_y = {hi.y, hi.y, hi.y, hi.y};
+    // (No helper returns a vector: outside this function that would be another ABI.)
+    const auto four = [&](std::size_t c) __attribute__((target("avx2"))) {
+        Lanes min_xs, min_ys, max_xs, max_ys;
+        std::memcpy(&min_xs, &min_x[c], sizeof min_xs);
+        std::memcpy(&min_ys, &min_y[c], sizeof min_ys);
+        std::memcpy(&max_xs, &max_x[c], sizeof max_xs);
+        std::memcpy(&max_ys, &max_y[c], sizeof max_ys);
+        const Mask m = (lo_x <= max_xs) & (min_xs <= hi_x) & (lo_y <= max_ys) & (min_ys <= hi_y);
+        return static_cast<std::uint64_t>(__builtin_ia32_movmskpd256(reinterpret_cast<Lanes>(m)));
+    };
+    const std::size_t end = std::min(size(), first + 64);
+    std::uint64_t bits = 0;
+    std::size_t c = first;
+    for (; c + 8 <= end; c += 8)
+        bits |= (four(c) | four(c + 4) << 4) << (c - first);
+    for (; c + 4 <= end; c += 4)
+        bits |= four(c) << (c - first);
+    for (; c < end; ++c) {
+        const bool one =
+            lo.x <= max_x[c] && min_x[c] <= hi.x && lo.y <= max_y[c] && min_y[c] <= hi.y;
+        bits |= static_cast<std::uint64_t>(one) << (c - first);
+    }
+    return bits;
+}
+#endif
 
 /// The boxes of `balls` balls, padded to a multiple of eight with empty boxes, and a bit per
 /// ball that moves: every ball tested at once. With more than `strips_above` balls, the strips
