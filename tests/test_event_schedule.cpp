@@ -179,6 +179,19 @@ void check_against_model(std::size_t count, double table_size, std::uint64_t see
     }
 }
 
+// A coordinate of a box corner for the box tests: mostly anywhere in [-spread, spread], some on
+// a grid of `step` (so that edges meet exactly, and on the strips' boundaries), some NaN,
+// infinite, or far beyond any table.
+double box_coordinate(Random& rng, double spread, double step) {
+    const double kind = rng.uniform(0, 1);
+    return kind < 0.02   ? std::numeric_limits<double>::quiet_NaN()
+           : kind < 0.04 ? infinity
+           : kind < 0.06 ? -infinity
+           : kind < 0.08 ? rng.uniform(-1e12, 1e12)
+           : kind < 0.25 ? std::round(rng.uniform(-spread, spread) / step) * step
+                         : rng.uniform(-spread, spread);
+}
+
 } // namespace
 
 TEST_CASE("event schedule: the earliest event as a plain scan finds it", "[core][schedule]") {
@@ -301,15 +314,7 @@ TEST_CASE("box lanes: two or four at a time, the same answer as one box at a tim
     Random rng(31);
     if (!core::BoxColumns{}.has_four_lanes())
         WARN("this processor has no AVX2: only the two-lane test is checked (the one it uses)");
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    auto coordinate = [&] {
-        const double kind = rng.uniform(0, 1);
-        return kind < 0.02   ? nan
-               : kind < 0.04 ? infinity
-               : kind < 0.06 ? -infinity
-               : kind < 0.2  ? std::round(rng.uniform(-2, 2)) // whole numbers: edges meet exactly
-                             : rng.uniform(-2, 2);
-    };
+    auto coordinate = [&] { return box_coordinate(rng, 2, 1); };
     for (std::size_t count = 0; count <= 140; ++count) {
         core::BoxColumns columns;
         std::vector<Box> boxes;
@@ -352,16 +357,7 @@ TEST_CASE("box lanes: picked by strips, the same balls as every box tested", "[c
     // order, reversed, far beyond 64 strips, infinite or NaN. Boxes come in every kind, with
     // whole-number corners so that edges meet exactly on strip boundaries.
     Random rng(47);
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    auto coordinate = [&] {
-        const double kind = rng.uniform(0, 1);
-        return kind < 0.01   ? nan
-               : kind < 0.02 ? infinity
-               : kind < 0.03 ? -infinity
-               : kind < 0.06 ? rng.uniform(-1e12, 1e12) // beyond the strips' clamp
-               : kind < 0.3  ? std::round(rng.uniform(-3, 3)) * 0.25
-                             : rng.uniform(-3, 3);
-    };
+    auto coordinate = [&] { return box_coordinate(rng, 3, 0.25); };
     auto some_box = [&] {
         const double kind = rng.uniform(0, 1);
         if (kind < 0.1)
