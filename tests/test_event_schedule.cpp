@@ -195,7 +195,7 @@ double box_coordinate(Random& rng, double spread, double step) {
 } // namespace
 
 TEST_CASE("event schedule: the earliest event as a plain scan finds it", "[core][schedule]") {
-    // 16, 40 and 100 balls test every box; 200 go through the grid.
+    // 16 balls test every box, 40 and 100 go through the strips, 200 through the grid.
     for (const std::size_t count :
          {std::size_t{16}, std::size_t{40}, std::size_t{100}, std::size_t{200}}) {
         for (std::uint64_t seed = 1; seed <= 3; ++seed) {
