@@ -115,6 +115,10 @@ void place(Random& rng, ModelBall& b, double table_size, double longest) {
 void check_against_model(std::size_t count, double table_size, std::uint64_t seed) {
     Random rng(seed);
     EventSchedule schedule(count, diameter);
+    if (count == 0) { // nothing to change: nothing is ever scheduled
+        CHECK_FALSE(schedule.earliest().time < infinity);
+        return;
+    }
     Model model;
     model.balls.resize(count);
     model.table_time.assign(count, infinity);
@@ -195,9 +199,9 @@ double box_coordinate(Random& rng, double spread, double step) {
 } // namespace
 
 TEST_CASE("event schedule: the earliest event as a plain scan finds it", "[core][schedule]") {
-    // 16 balls test every box, 40 and 100 go through the strips, 200 through the grid.
-    for (const std::size_t count :
-         {std::size_t{16}, std::size_t{40}, std::size_t{100}, std::size_t{200}}) {
+    // Up to 32 balls test every box, 33 to 128 go through the strips, more through the grid;
+    // the tournament's leaves are a power of two (0 and 1 ball, 32, 64 and 128 fill them).
+    for (const std::size_t count : {0, 1, 2, 16, 32, 33, 40, 64, 65, 100, 128, 129, 200}) {
         for (std::uint64_t seed = 1; seed <= 3; ++seed) {
             // Room per ball as on a pool table, so that boxes meet often but not always.
             const double table_size = 0.45 * std::sqrt(static_cast<double>(count));
@@ -247,6 +251,38 @@ TEST_CASE("ball grid: a long path's search finds every ball within reach of it",
                 INFO("trial " << trial << ", ball " << k);
                 REQUIRE(visited[k]);
             }
+        }
+    }
+}
+
+TEST_CASE("event schedule: a ball size no strip or cell can be sized by tests every box",
+          "[core][schedule]") {
+    // A zero, negative, subnormal or NaN diameter (World does not refuse one) would make strip
+    // and cell indices NaN or run backwards: the schedule tests every box instead, and a search
+    // asks for exactly the pairs whose boxes come within a diameter, at every ball count.
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    for (const double size : {0.0, -0.05, 1e-320, nan}) {
+        for (const std::size_t count : {40, 200}) {
+            EventSchedule schedule(count, size);
+            Random rng(count);
+            std::vector<Box> boxes(count);
+            for (std::size_t k = 0; k < count; ++k) {
+                const Vec2 at{rng.uniform(0, 2), rng.uniform(0, 1)};
+                boxes[k] = Box{at, at + Vec2{rng.uniform(0, 0.3), rng.uniform(0, 0.3)}};
+                schedule.set_reach(k, boxes[k], Capsule{boxes[k].min, boxes[k].max, 0});
+                schedule.set_moving(k, true);
+            }
+            std::vector<std::size_t> asked;
+            schedule.refresh(0, 0, 0, [&](std::size_t k) {
+                asked.push_back(k);
+                return core::ContactEstimate{infinity, true};
+            });
+            std::vector<std::size_t> want;
+            for (std::size_t k = 1; k < count; ++k)
+                if (core::boxes_within(boxes[0], boxes[k], size))
+                    want.push_back(k);
+            INFO("diameter " << size << ", " << count << " balls");
+            CHECK(asked == want);
         }
     }
 }
@@ -353,11 +389,13 @@ TEST_CASE("box lanes: two or four at a time, the same answer as one box at a tim
 
 TEST_CASE("box lanes: picked by strips, the same balls as every box tested", "[core][schedule]") {
     // Above BoxLanes::strips_above balls the strips pick the boxes to test: as boxes move, grow,
-    // go and come back, a search finds exactly the boxes that overlap it, whether its box is in
-    // order, reversed, far beyond 64 strips, infinite or NaN. Boxes come in every kind, with
-    // whole-number corners so that edges meet exactly on strip boundaries.
+    // go and come back, and after the lanes are cleared and the same boxes entered again, a
+    // search finds exactly the boxes that overlap it, whether its box is in order, reversed,
+    // far beyond 64 strips, infinite or NaN. Strips are 0.25 wide: corners on a grid of 0.25
+    // meet exactly on strip boundaries, and a spread of 3 or 20 gives spans of a few strips to
+    // more than 64 (which wrap).
     Random rng(47);
-    auto coordinate = [&] { return box_coordinate(rng, 3, 0.25); };
+    auto coordinate = [&] { return box_coordinate(rng, rng.uniform(0, 1) < 0.7 ? 3 : 20, 0.25); };
     auto some_box = [&] {
         const double kind = rng.uniform(0, 1);
         if (kind < 0.1)
@@ -387,8 +425,18 @@ TEST_CASE("box lanes: picked by strips, the same balls as every box tested", "[c
                 moving[k] = rng.uniform(0, 1) < 0.5;
                 lanes.set_moving(k, moving[k]);
             }
+            if (round == 100) { // cleared, then every box entered again
+                lanes.clear();
+                for (std::size_t k = 0; k < balls; ++k) {
+                    lanes.set_box(k, boxes[k]);
+                    lanes.set_moving(k, moving[k]);
+                }
+            }
             const Box query = some_box();
             const core::BoxLanes::Search search = lanes.search(query.min, query.max);
+            // The strips pick the boxes exactly when the search box is finite.
+            CHECK(search.by_strips == (std::isfinite(query.min.x) && std::isfinite(query.min.y) &&
+                                       std::isfinite(query.max.x) && std::isfinite(query.max.y)));
             const bool needs_motion = rng.uniform(0, 1) < 0.3;
             for (std::size_t first = 0; first < balls; first += 64) {
                 const std::uint64_t bits = lanes.overlapping(first, search, needs_motion);

@@ -10,12 +10,6 @@ namespace {
 // A box that covers more cells than this is on the wide list: walking its cells would cost more
 // than every search looking at it.
 constexpr std::int64_t max_cells = 24;
-// Cell coordinates are clamped here, far beyond any table, so that a wild box cannot overflow.
-constexpr double cell_limit = 1e9;
-
-std::int64_t cell_coordinate(double x) {
-    return static_cast<std::int64_t>(std::floor(std::clamp(x, -cell_limit, cell_limit)));
-}
 
 } // namespace
 
@@ -52,10 +46,10 @@ BallGrid::Cells BallGrid::cells_of(const Box& box) const {
     if (!(box.min.x <= box.max.x && box.min.y <= box.max.y))
         return empty_cells;
     Cells c{};
-    c.x0 = cell_coordinate((box.min.x - margin_) * inverse_cell_);
-    c.y0 = cell_coordinate((box.min.y - margin_) * inverse_cell_);
-    c.x1 = cell_coordinate((box.max.x + margin_) * inverse_cell_);
-    c.y1 = cell_coordinate((box.max.y + margin_) * inverse_cell_);
+    c.x0 = floor_clamped((box.min.x - margin_) * inverse_cell_);
+    c.y0 = floor_clamped((box.min.y - margin_) * inverse_cell_);
+    c.x1 = floor_clamped((box.max.x + margin_) * inverse_cell_);
+    c.y1 = floor_clamped((box.max.y + margin_) * inverse_cell_);
     c.wide = (c.x1 - c.x0 + 1) * (c.y1 - c.y0 + 1) > max_cells;
     return c;
 }
@@ -199,8 +193,8 @@ void BallGrid::column_of(const Capsule& path, std::int64_t x, std::int64_t& y0,
         return;
     }
     const double ya = path.from.y + s0 * d.y, yb = path.from.y + s1 * d.y;
-    y0 = std::max(y0, cell_coordinate((std::min(ya, yb) - w) * inverse_cell_));
-    y1 = std::min(y1, cell_coordinate((std::max(ya, yb) + w) * inverse_cell_));
+    y0 = std::max(y0, floor_clamped((std::min(ya, yb) - w) * inverse_cell_));
+    y1 = std::min(y1, floor_clamped((std::max(ya, yb) + w) * inverse_cell_));
 }
 
 } // namespace termpool::core

@@ -1,8 +1,9 @@
 #pragma once
 // Boxes kept as separate coordinate arrays and tested against one box two at a time (a 128-bit
-// register's worth): which come near a ball's box is a few vector compares rather than a loop
-// over balls. A lane's compare is the scalar compare, so the answer is the same on any target,
-// with vector registers or without.
+// register's worth), or four where the processor has AVX2: which come near a ball's box is a few
+// vector compares rather than a loop over balls. With many balls the strips their boxes cover
+// (box_strips.hpp) pick the few to test. A lane's compare is the scalar compare, so the answer is
+// the same on any target, with vector registers or without.
 
 #include <algorithm>
 #include <bit>
@@ -60,8 +61,14 @@ struct BoxColumns {
         max_y.clear();
     }
 
+    /// Whether box c overlaps [lo, hi] (shares a point with it): the test every lane makes,
+    /// here without a branch.
+    bool overlaps(std::size_t c, Vec2 lo, Vec2 hi) const {
+        return (lo.x <= max_x[c]) & (min_x[c] <= hi.x) & (lo.y <= max_y[c]) & (min_y[c] <= hi.y);
+    }
+
     /// Bit c - `first` for each box c in [first, first + 64) and below size() that overlaps
-    /// [lo, hi] (shares a point with it).
+    /// [lo, hi].
     std::uint64_t overlapping(std::size_t first, Vec2 lo, Vec2 hi) const {
 #if defined(__x86_64__) && defined(__GNUC__)
         if (four_lanes_)
@@ -112,11 +119,8 @@ struct BoxColumns {
             bits |= (two(c) | two(c + 2) << 2 | two(c + 4) << 4 | two(c + 6) << 6) << (c - first);
         for (; c + 2 <= end; c += 2)
             bits |= two(c) << (c - first);
-        if (c < end) {
-            const bool one =
-                lo.x <= max_x[c] && min_x[c] <= hi.x && lo.y <= max_y[c] && min_y[c] <= hi.y;
-            bits |= static_cast<std::uint64_t>(one) << (c - first);
-        }
+        if (c < end)
+            bits |= static_cast<std::uint64_t>(overlaps(c, lo, hi)) << (c - first);
         return bits;
     }
 
@@ -163,11 +167,8 @@ BoxColumns::overlapping_four_lanes(std::size_t first, Vec2 lo, Vec2 hi) const {
         bits |= (four(c) | four(c + 4) << 4) << (c - first);
     for (; c + 4 <= end; c += 4)
         bits |= four(c) << (c - first);
-    for (; c < end; ++c) {
-        const bool one =
-            lo.x <= max_x[c] && min_x[c] <= hi.x && lo.y <= max_y[c] && min_y[c] <= hi.y;
-        bits |= static_cast<std::uint64_t>(one) << (c - first);
-    }
+    for (; c < end; ++c)
+        bits |= static_cast<std::uint64_t>(overlaps(c, lo, hi)) << (c - first);
     return bits;
 }
 #endif
@@ -177,10 +178,11 @@ BoxColumns::overlapping_four_lanes(std::size_t first, Vec2 lo, Vec2 hi) const {
 /// their boxes cover (box_strips.hpp) pick the few to test.
 class BoxLanes {
 public:
-    /// `strip_width`, m: a strip's width, with many balls.
+    /// `strip_width`, m: a strip's width, with many balls (0: no strips, every box tested).
     BoxLanes(std::size_t balls, double strip_width)
         : balls_(balls), padded_((balls + 7) / 8 * 8), moving_((balls + 63) / 64),
-          strips_(balls > strips_above ? balls : 0, strip_width) {
+          by_strips_(balls > strips_above && strip_width > 0),
+          strips_(by_strips_ ? balls : 0, by_strips_ ? strip_width : 1) {
         clear();
     }
 
@@ -195,7 +197,7 @@ public:
     }
     void set_box(std::size_t i, const Box& box) {
         boxes_.set(i, box);
-        if (balls_ > strips_above)
+        if (by_strips_)
             strips_.set_box(i, box);
     }
     void set_moving(std::size_t i, bool moving) {
@@ -207,12 +209,12 @@ public:
     struct Search {
         Vec2 lo, hi;
         bool by_strips; // finite, with many balls: the strips pick the boxes to test
-        BoxStrips::Query strips;
+        BoxStrips::Spans strips;
     };
     Search search(Vec2 lo, Vec2 hi) const {
-        const bool by_strips = balls_ > strips_above && std::isfinite(lo.x) &&
-                               std::isfinite(lo.y) && std::isfinite(hi.x) && std::isfinite(hi.y);
-        return {lo, hi, by_strips, by_strips ? strips_.query(lo, hi) : BoxStrips::Query{}};
+        const bool by_strips = by_strips_ && std::isfinite(lo.x) && std::isfinite(lo.y) &&
+                               std::isfinite(hi.x) && std::isfinite(hi.y);
+        return {lo, hi, by_strips, by_strips ? strips_.query(lo, hi) : BoxStrips::Spans{}};
     }
 
     /// Bit c - `first` for each ball c in [first, first + 64) (fewer at the end) whose box
@@ -236,9 +238,7 @@ private:
         for (; candidates != 0; candidates &= candidates - 1) {
             const int b = std::countr_zero(candidates);
             const std::size_t c = first + static_cast<std::size_t>(b);
-            const bool one = (lo.x <= boxes_.max_x[c]) & (boxes_.min_x[c] <= hi.x) &
-                             (lo.y <= boxes_.max_y[c]) & (boxes_.min_y[c] <= hi.y);
-            bits |= static_cast<std::uint64_t>(one) << b;
+            bits |= static_cast<std::uint64_t>(boxes_.overlaps(c, lo, hi)) << b;
         }
         return bits;
     }
@@ -247,7 +247,8 @@ private:
     std::size_t padded_;
     BoxColumns boxes_;
     std::vector<std::uint64_t> moving_;
-    BoxStrips strips_; // with more than strips_above balls
+    bool by_strips_;   // more than strips_above balls, and strips to pick them by
+    BoxStrips strips_; // only then
 };
 
 } // namespace termpool::core

@@ -9,7 +9,6 @@
 // on each axis, not per cell.
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -25,7 +24,15 @@ public:
     /// Strips per axis (a power of two: indices wrap by a mask).
     static constexpr std::int64_t strips = 64;
 
-    /// `balls` balls, none entered; `width` is a strip's width, m.
+    /// The strips a box covers, [x0, x1] by [y0, y1], wrapped: fewer than 64 on each axis, or
+    /// [0, 63]; x0 > x1 for none.
+    struct Spans {
+        std::int64_t x0, x1, y0, y1;
+        bool operator==(const Spans&) const = default;
+    };
+
+    /// `balls` balls, none entered; `width` is a strip's width, m (positive, and its inverse
+    /// finite).
     BoxStrips(std::size_t balls, double width)
         : words_((balls + 63) / 64), inverse_width_(1 / width), spans_(balls, nowhere()),
           x_(strips * words_, 0), y_(strips * words_, 0) {}
@@ -52,42 +59,37 @@ public:
         was = now;
     }
 
-    /// The strips a search box covers, found once for every word of candidates.
-    struct Query {
-        std::int64_t x0, x1, y0, y1;
-    };
-    /// The query of the finite search box [lo, hi]; out of order, every strip between its
-    /// corners (a box that overlaps it holds that stretch).
-    Query query(Vec2 lo, Vec2 hi) const {
-        return {strip_of(std::min(lo.x, hi.x)), strip_of(std::max(lo.x, hi.x)),
-                strip_of(std::min(lo.y, hi.y)), strip_of(std::max(lo.y, hi.y))};
+    /// The strips of the finite search box [lo, hi], found once for every word of candidates;
+    /// out of order, every strip between its corners (a box that overlaps it holds that
+    /// stretch).
+    Spans query(Vec2 lo, Vec2 hi) const {
+        return wrapped({strip_of(std::min(lo.x, hi.x)), strip_of(std::max(lo.x, hi.x)),
+                        strip_of(std::min(lo.y, hi.y)), strip_of(std::max(lo.y, hi.y))});
     }
     /// Bits of the balls in [first, first + 64) whose boxes share an x strip and a y strip with
     /// the query's box: every ball whose box overlaps it (shares a point with it), and a few
     /// more. `first` is a multiple of 64.
-    std::uint64_t candidates(std::size_t first, const Query& q) const {
+    std::uint64_t candidates(std::size_t first, const Spans& query) const {
         const std::size_t word = first / 64;
-        return gather(x_, q.x0, q.x1, word) & gather(y_, q.y0, q.y1, word);
+        return gather(x_, query.x0, query.x1, word) & gather(y_, query.y0, query.y1, word);
     }
 
 private:
-    // The strips a box covers, [x0, x1] by [y0, y1] before wrapping; x0 > x1 for none.
-    struct Spans {
-        std::int64_t x0, x1, y0, y1;
-        bool operator==(const Spans&) const = default;
-    };
     static Spans nowhere() { return {1, 0, 1, 0}; }
     static Spans everywhere() { return {0, strips - 1, 0, strips - 1}; }
-
-    // Strip indices are clamped far beyond any table, so that a wild box cannot overflow; such
-    // a box covers every strip. The floor by truncation and a correction: std::floor is a call
-    // into libm on x86-64's baseline, and the search asks for four of these. `x` is not NaN.
-    std::int64_t strip_of(double x) const {
-        constexpr double limit = 1e9;
-        const double t = std::clamp(x * inverse_width_, -limit, limit);
-        const auto toward_zero = static_cast<std::int64_t>(t);
-        return toward_zero - (static_cast<double>(toward_zero) > t ? 1 : 0);
+    // Every strip once where a span covers 64 or more.
+    static Spans wrapped(Spans s) {
+        if (s.x1 - s.x0 >= strips)
+            s.x0 = 0, s.x1 = strips - 1;
+        if (s.y1 - s.y0 >= strips)
+            s.y0 = 0, s.y1 = strips - 1;
+        return s;
     }
+
+    // A coordinate's strip before wrapping (clamped a billion strips out, which keeps every
+    // overlap: the clamp is monotonic as the floor is). `x` is not NaN.
+    std::int64_t strip_of(double x) const { return floor_clamped(x * inverse_width_); }
+
     // The strips of an entered box. A box no finite search box reaches (a pocketed ball's empty
     // box, +infinity to -infinity) is in none; one whose corners are out of order or NaN in
     // every one, for the exact test to decide.
@@ -98,23 +100,21 @@ private:
             return nowhere();
         if (!(box.min.x <= box.max.x && box.min.y <= box.max.y))
             return everywhere();
-        return {strip_of(box.min.x), strip_of(box.max.x), strip_of(box.min.y), strip_of(box.max.y)};
+        return wrapped(
+            {strip_of(box.min.x), strip_of(box.max.x), strip_of(box.min.y), strip_of(box.max.y)});
     }
-    // Sets or clears `bit` of `word` in the strips [s0, s1] (every strip if it covers them all).
+
+    // Sets or clears `bit` of `word` in the wrapped strips [s0, s1].
     void mark(std::vector<std::uint64_t>& masks, std::int64_t s0, std::int64_t s1, std::size_t word,
               std::uint64_t bit, bool on) const {
-        if (s1 - s0 >= strips)
-            s0 = 0, s1 = strips - 1;
         for (std::int64_t s = s0; s <= s1; ++s) {
             std::uint64_t& m = masks[static_cast<std::size_t>(s & (strips - 1)) * words_ + word];
             m = on ? m | bit : m & ~bit;
         }
     }
-    // The union of `word` over the strips [s0, s1].
+    // The union of `word` over the wrapped strips [s0, s1].
     std::uint64_t gather(const std::vector<std::uint64_t>& masks, std::int64_t s0, std::int64_t s1,
                          std::size_t word) const {
-        if (s1 - s0 >= strips)
-            s0 = 0, s1 = strips - 1;
         std::uint64_t any = 0;
         for (std::int64_t s = s0; s <= s1; ++s)
             any |= masks[static_cast<std::size_t>(s & (strips - 1)) * words_ + word];

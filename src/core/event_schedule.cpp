@@ -1,5 +1,6 @@
 #include "event_schedule.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <termpool/simulator.hpp>
 
@@ -20,6 +21,14 @@ constexpr double strip_diameters = 2;
 
 static_assert(ScheduledEvent::max_balls == max_world_balls, "the limit World's callers are told");
 
+// Whether strips or grid cells can be sized from `diameter`: a diameter that is zero, negative,
+// subnormal or not finite (a caller's nonsense; World does not refuse it) would make their
+// indices NaN or run backwards, so every box is tested instead, which is right for any boxes.
+bool cells_from(double diameter) {
+    const double inverse = 1 / (4 * diameter);
+    return diameter > 0 && std::isfinite(diameter) && std::isfinite(inverse) && inverse > 0;
+}
+
 // `balls`, refused before anything is allocated for them when their indices do not fit.
 std::size_t checked(std::size_t balls) {
     if (balls > ScheduledEvent::max_balls)
@@ -31,12 +40,14 @@ std::size_t checked(std::size_t balls) {
 
 EventSchedule::EventSchedule(std::size_t balls, double diameter)
     : diameter_(diameter), reach_(checked(balls), empty_box()),
-      paths_(balls > most_without_grid ? balls : 0), moving_(balls),
-      lanes_(balls > most_without_grid ? 0 : balls, strip_diameters * diameter),
-      many_(balls > most_without_grid), time_(balls * balls, infinity), bound_(balls * balls, 0),
-      words_((balls + 63) / 64), finite_(balls * words_, 0), searched_(balls, 0),
-      table_time_(balls, infinity), row_min_time_(balls, infinity), row_min_partner_(balls, balls),
-      leaves_(std::bit_ceil(std::max<std::size_t>(balls, 1))), key_dirty_(balls, 0) {
+      paths_(balls > most_without_grid && cells_from(diameter) ? balls : 0), moving_(balls),
+      lanes_(balls > most_without_grid && cells_from(diameter) ? 0 : balls,
+             cells_from(diameter) ? strip_diameters * diameter : 0),
+      many_(balls > most_without_grid && cells_from(diameter)), time_(balls * balls, infinity),
+      bound_(balls * balls, 0), words_((balls + 63) / 64), finite_(balls * words_, 0),
+      searched_(balls, 0), table_time_(balls, infinity), row_min_time_(balls, infinity),
+      row_min_partner_(balls, balls), leaves_(std::bit_ceil(std::max<std::size_t>(balls, 1))),
+      key_dirty_(balls, 0) {
     dirty_keys_.reserve(balls);
     // Boxes grown by a little more than a radius each overlap whenever they come within a
     // diameter, whatever the rounding. Cells of four diameters: a ball at rest covers one to

@@ -244,8 +244,9 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
             if (k != done && moving_[k] >= needs_motion)
                 search(k);
     } else {
-        // Every box, two at a time without a branch into masks of 64; only the balls in reach
-        // (about one in five) are walked: a branch per ball would be mispredicted at every other.
+        // The boxes in reach as masks of 64 (every box tested without a branch, or those the
+        // strips pick); only the balls in reach (about one in five) are walked: a branch per
+        // ball would be mispredicted at every other.
         const BoxLanes::Search box = lanes_.search(lo, hi);
         for (std::size_t base = 0; base < n; base += 64) {
             std::uint64_t reached = lanes_.overlapping(base, box, needs_motion != 0);

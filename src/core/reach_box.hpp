@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <termpool/vec.hpp>
 
@@ -11,6 +12,16 @@
 #include "motion_piece.hpp"
 
 namespace termpool::core {
+
+/// floor(x) as an integer, x clamped to +-1e9 first so that a wild coordinate cannot overflow:
+/// the index of a grid cell or a strip, x in cells. By truncation and a correction: std::floor
+/// is a call into libm on x86-64's baseline, and a search asks for several. `x` is not NaN.
+inline std::int64_t floor_clamped(double x) {
+    constexpr double limit = 1e9;
+    const double t = std::clamp(x, -limit, limit);
+    const auto toward_zero = static_cast<std::int64_t>(t);
+    return toward_zero - (static_cast<double>(toward_zero) > t ? 1 : 0);
+}
 
 /// An axis-aligned box in the table plane.
 struct Box {
