@@ -39,15 +39,13 @@ std::size_t checked(std::size_t balls) {
 } // namespace
 
 EventSchedule::EventSchedule(std::size_t balls, double diameter)
-    : diameter_(diameter), reach_(checked(balls), empty_box()),
-      paths_(balls > most_without_grid && cells_from(diameter) ? balls : 0), moving_(balls),
-      lanes_(balls > most_without_grid && cells_from(diameter) ? 0 : balls,
-             cells_from(diameter) ? strip_diameters * diameter : 0),
-      many_(balls > most_without_grid && cells_from(diameter)), time_(balls * balls, infinity),
-      bound_(balls * balls, 0), words_((balls + 63) / 64), finite_(balls * words_, 0),
-      searched_(balls, 0), table_time_(balls, infinity), row_min_time_(balls, infinity),
-      row_min_partner_(balls, balls), leaves_(std::bit_ceil(std::max<std::size_t>(balls, 1))),
-      key_dirty_(balls, 0) {
+    : diameter_(diameter), many_(balls > most_without_grid && cells_from(diameter)),
+      reach_(checked(balls), empty_box()), paths_(many_ ? balls : 0), moving_(balls),
+      lanes_(many_ ? 0 : balls, cells_from(diameter) ? strip_diameters * diameter : 0),
+      time_(balls * balls, infinity), bound_(balls * balls, 0), words_((balls + 63) / 64),
+      finite_(balls * words_, 0), searched_(balls, 0), table_time_(balls, infinity),
+      row_min_time_(balls, infinity), row_min_partner_(balls, balls),
+      leaves_(std::bit_ceil(std::max<std::size_t>(balls, 1))), key_dirty_(balls, 0) {
     dirty_keys_.reserve(balls);
     // Boxes grown by a little more than a radius each overlap whenever they come within a
     // diameter, whatever the rounding. Cells of four diameters: a ball at rest covers one to

@@ -151,15 +151,15 @@ private:
 
     double diameter_;
     bool touched_ = false; // anything set since construction or clear()
+    // Many balls (above 128, of a size grid cells can be sized by): their pairs are searched
+    // through the grid. Fewer are faster through the lanes than through the grid's bookkeeping.
+    bool many_;
     // Short arrays of their own, so that the search culls without touching the world's pieces.
     // A pocketed ball's box is empty (min > max): every overlap test with it fails.
     std::vector<Box> reach_;
     std::vector<Capsule> paths_; // with many balls only: the grid walks long paths
     std::vector<std::uint8_t> moving_;
     BoxLanes lanes_; // without many balls, the boxes and motions again, to test them at once
-    // Many balls (above 128): their pairs are searched through the grid. Fewer are faster
-    // through the lanes than through the grid's bookkeeping.
-    bool many_;
     std::optional<BallGrid> grid_; // only with many balls
     // Kept in both orders ([i * n + j] == [j * n + i]) so that a ball's row holds all its pairs.
     std::vector<double> time_;
