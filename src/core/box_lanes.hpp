@@ -139,7 +139,6 @@ private:
         __builtin_cpu_init();
         return __builtin_cpu_supports("avx2") != 0;
     }();
-
 #endif
 };
 
