@@ -13,6 +13,7 @@
 #include "core/ball_grid.hpp"
 #include "core/box_lanes.hpp"
 #include "core/event_schedule.hpp"
+#include "core/pair_times.hpp"
 
 using namespace termpool;
 using termpool::core::Box;
@@ -473,6 +474,45 @@ TEST_CASE("box lanes: the padding beyond the last ball is never in reach", "[cor
             const core::BoxLanes::Search everywhere = lanes.search({-inf, -inf}, {inf, inf});
             CHECK(lanes.overlapping(first, everywhere, false) == all);
             CHECK(lanes.overlapping(first, everywhere, true) == (all & 0x5555555555555555));
+        }
+    }
+}
+
+TEST_CASE("pair times: a copy holds exactly the other's pairs, whatever it held before",
+          "[core][schedule]") {
+    Random rng(31);
+    for (const std::size_t n : {1u, 16u, 65u}) {
+        // Random finite and infinite times, some bounds, in a source and in the target it is
+        // copied into (of the same size: the sparse copy; and of another size).
+        auto fill = [&](core::PairTimes& pairs, std::size_t size) {
+            for (int k = 0; k < 200; ++k) {
+                const std::size_t i = rng.below(size), j = rng.below(size);
+                const double roll = rng.uniform();
+                pairs.set(i, j, roll < 0.3 ? infinity : roll < 0.35 ? std::nan("") : roll);
+                pairs.set_bound(i, j, rng.uniform() < 0.5);
+            }
+        };
+        core::PairTimes source(n);
+        fill(source, n);
+        for (const std::size_t target_size : {n, n + 3}) {
+            core::PairTimes target(target_size);
+            fill(target, target_size);
+            target = source;
+            INFO(n << " balls into " << target_size);
+            for (std::size_t i = 0; i < n; ++i) {
+                std::vector<std::size_t> want, got;
+                source.visit_finite(i, [&](std::size_t k) { want.push_back(k); });
+                target.visit_finite(i, [&](std::size_t k) { got.push_back(k); });
+                CHECK(got == want);
+                for (std::size_t k = 0; k < n; ++k) {
+                    CHECK(target.row(i)[k] == source.row(i)[k]);
+                    CHECK(target.row(i)[k] == target.row(k)[i]);
+                    if (source.row(i)[k] < infinity)
+                        CHECK(target.is_bound(i, k) == source.is_bound(i, k));
+                    else
+                        CHECK(source.row(i)[k] == infinity); // NaN is kept as nothing
+                }
+            }
         }
     }
 }

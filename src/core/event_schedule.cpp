@@ -42,8 +42,7 @@ EventSchedule::EventSchedule(std::size_t balls, double diameter)
     : diameter_(diameter), many_(balls > most_without_grid && cells_from(diameter)),
       reach_(checked(balls), empty_box()), paths_(many_ ? balls : 0), moving_(balls),
       lanes_(many_ ? 0 : balls, cells_from(diameter) ? strip_diameters * diameter : 0),
-      time_(balls * balls, infinity), bound_(balls * balls, 0), words_((balls + 63) / 64),
-      finite_(balls * words_, 0), searched_(balls, 0), table_time_(balls, infinity),
+      pairs_(balls), searched_(balls, 0), table_time_(balls, infinity),
       row_min_time_(balls, infinity), row_min_partner_(balls, balls),
       leaves_(std::bit_ceil(std::max<std::size_t>(balls, 1))), key_dirty_(balls, 0) {
     dirty_keys_.reserve(balls);
@@ -60,11 +59,7 @@ void EventSchedule::clear() {
         return; // as new
     touched_ = false;
     const std::size_t n = size();
-    for (std::size_t i = 0; i < n; ++i) {
-        visit_finite(i, [&](std::size_t k) { time_[i * n + k] = infinity; });
-        std::fill(finite_.begin() + static_cast<std::ptrdiff_t>(i * words_),
-                  finite_.begin() + static_cast<std::ptrdiff_t>((i + 1) * words_), 0);
-    }
+    pairs_.clear();
     std::fill(reach_.begin(), reach_.end(), empty_box());
     std::fill(moving_.begin(), moving_.end(), 0);
     lanes_.clear();
@@ -79,17 +74,16 @@ void EventSchedule::clear() {
 }
 
 void EventSchedule::set_exact(std::size_t i, std::size_t j, double time) {
-    const std::size_t n = size();
-    bound_[i * n + j] = bound_[j * n + i] = 0;
+    pairs_.set_bound(i, j, false);
     set_time(i, j, time);
 }
 
 void EventSchedule::rescan_row(std::size_t r) {
-    const double* row = time_.data() + r * size();
+    const double* row = pairs_.row(r);
     double min_time = infinity;
     std::size_t min_partner = size();
     // In ascending order, and only a strictly earlier time replaces: the lowest partner on ties.
-    visit_finite(r, [&](std::size_t k) {
+    pairs_.visit_finite(r, [&](std::size_t k) {
         if (row[k] < min_time) {
             min_time = row[k];
             min_partner = k;

@@ -19,6 +19,7 @@
 
 #include "ball_grid.hpp"
 #include "box_lanes.hpp"
+#include "pair_times.hpp"
 #include "polynomial.hpp"
 #include "reach_box.hpp"
 
@@ -130,7 +131,7 @@ public:
     void refresh(std::size_t i, std::size_t done, double now, Contact contact);
 
     /// Whether pair (i, j) holds only a lower bound on its contact.
-    bool is_bound(std::size_t i, std::size_t j) const { return bound_[i * size() + j] != 0; }
+    bool is_bound(std::size_t i, std::size_t j) const { return pairs_.is_bound(i, j); }
     /// Replaces the lower bound kept for pair (i, j) by its contact time.
     void set_exact(std::size_t i, std::size_t j, double time);
 
@@ -147,7 +148,6 @@ private:
     void row_changed(std::size_t r, std::size_t partner, double time);
     void rescan_row(std::size_t r);
     void update_key(std::size_t i);
-    template <class Visit> void visit_finite(std::size_t i, Visit visit) const;
 
     double diameter_;
     bool touched_ = false; // anything set since construction or clear()
@@ -161,16 +161,9 @@ private:
     std::vector<std::uint8_t> moving_;
     BoxLanes lanes_; // without many balls, the boxes and motions again, to test them at once
     std::optional<BallGrid> grid_; // only with many balls
-    // Kept in both orders ([i * n + j] == [j * n + i]) so that a ball's row holds all its pairs.
-    std::vector<double> time_;
-    // 1 where time_ holds only a lower bound on the contact (same layout): the search is put off
-    // until the bound is the earliest of all events, and most never get that far.
-    std::vector<std::uint8_t> bound_;
-    // A bit per pair (both orders, rows of words_ words), set where the time is finite: a search
-    // walks only these to clear the pairs it no longer reaches, and a row's minimum is found
-    // among them.
-    std::size_t words_;
-    std::vector<std::uint64_t> finite_;
+    // A pair's time may be only a lower bound on its contact: the search is put off until the
+    // bound is the earliest of all events, and most never get that far.
+    PairTimes pairs_;
     // Per ball, the search that last gave its pair with the searched ball a time.
     std::vector<std::uint32_t> searched_;
     std::uint32_t search_ = 0;
@@ -206,15 +199,6 @@ private:
     }
 };
 
-template <class Visit> void EventSchedule::visit_finite(std::size_t i, Visit visit) const {
-    const std::uint64_t* row_bits = finite_.data() + i * words_;
-    for (std::size_t w = 0; w < words_; ++w) {
-        // A copy of the word: `visit` may clear bits of it.
-        for (std::uint64_t bits = row_bits[w]; bits != 0; bits &= bits - 1)
-            visit(w * 64 + static_cast<std::size_t>(std::countr_zero(bits)));
-    }
-}
-
 template <class Contact>
 void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact contact) {
     constexpr double infinity = std::numeric_limits<double>::infinity();
@@ -223,7 +207,7 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
     const Vec2 hi = reach_[i].max + Vec2{diameter_, diameter_};
     // A ball at rest can only be hit by a moving one.
     const std::uint8_t needs_motion = moving_[i] ? 0 : 1;
-    const double* row = time_.data() + i * n;
+    const double* row = pairs_.row(i);
     if (++search_ == 0) { // after 2^32 searches the old marks could match again
         std::fill(searched_.begin(), searched_.end(), 0);
         search_ = 1;
@@ -232,7 +216,7 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
         searched_[k] = search_;
         const ContactEstimate estimate = contact(k);
         // (The flag of a pair out of reach does not matter: it is never chosen.)
-        bound_[i * n + k] = bound_[k * n + i] = estimate.exact ? 0 : 1;
+        pairs_.set_bound(i, k, !estimate.exact);
         const double time = now + estimate.time;
         if (time != row[k])
             set_time(i, k, time, true);
@@ -259,7 +243,7 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
         }
     }
     // The pairs that held a contact and are out of reach now (the pair with `done` excepted).
-    visit_finite(i, [&](std::size_t k) {
+    pairs_.visit_finite(i, [&](std::size_t k) {
         if (k != done && searched_[k] != search_)
             set_time(i, k, infinity, true);
     });
@@ -289,18 +273,7 @@ inline void EventSchedule::set_table_time(std::size_t i, double time) {
 inline void EventSchedule::set_time(std::size_t i, std::size_t k, double time, bool row_i_later) {
     if (!(time < std::numeric_limits<double>::infinity()))
         time = std::numeric_limits<double>::infinity();
-    const std::size_t n = size();
-    time_[i * n + k] = time_[k * n + i] = time;
-    const std::uint64_t bit_k = std::uint64_t{1} << (k % 64), bit_i = std::uint64_t{1} << (i % 64);
-    std::uint64_t& word_ik = finite_[i * words_ + k / 64];
-    std::uint64_t& word_ki = finite_[k * words_ + i / 64];
-    if (time < std::numeric_limits<double>::infinity()) {
-        word_ik |= bit_k;
-        word_ki |= bit_i;
-    } else {
-        word_ik &= ~bit_k;
-        word_ki &= ~bit_i;
-    }
+    pairs_.set(i, k, time);
     if (!row_i_later)
         row_changed(i, k, time);
     row_changed(k, i, time);

@@ -79,6 +79,26 @@ struct World::Impl {
         schedule.earliest(); // brings the schedule up to date now rather than at the first step
     }
 
+    // A copy of `o`, a world of as many balls, into this one's memory (World::operator=). The
+    // scratch between events is not copied, nor the trajectory unless one of the two worlds has
+    // recorded: without, both are empty (World::record makes a new one for the physics of the
+    // moment), and a search copies worlds that never record before each of its shots.
+    void assign(const Impl& o) {
+        table = o.table;
+        params = o.params;
+        cloth = o.cloth;
+        pieces = o.pieces;
+        table_events = o.table_events;
+        schedule = o.schedule;
+        now = o.now;
+        events = o.events;
+        pending = o.pending;
+        recording = o.recording;
+        if (recorded || o.recorded)
+            trajectory = o.trajectory;
+        recorded = o.recorded;
+    }
+
     std::size_t count() const { return pieces.size(); }
 
     Ball state_now(std::size_t i) const {
@@ -359,7 +379,7 @@ World& World::operator=(const World& other) {
         return *this;
     if (impl_ && other.impl_ && impl_->count() == other.impl_->count()) {
         try {
-            *impl_ = *other.impl_;
+            impl_->assign(*other.impl_);
             return *this;
         } catch (...) {
             // Half copied: replaced whole below, or left to the exception if that fails too.
@@ -413,6 +433,10 @@ bool World::at_rest() const {
 }
 
 void World::record(bool on) {
+    // A world that has not recorded holds an empty trajectory, perhaps made for other physics
+    // (Impl::assign): the first recording starts a new one.
+    if (on && !impl_->recorded)
+        impl_->trajectory = Trajectory(impl_->params, impl_->count());
     impl_->recording = on;
     impl_->recorded = impl_->recorded || on;
     if (on) {
