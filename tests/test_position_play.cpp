@@ -1,7 +1,9 @@
 // Pro's position play (issue 27): a pot's chance falls with distance and cut and is nothing past
-// 80 degrees; a search's trials play to the bit what a game plays; a world reused for many shots
-// gives the bits of a fresh one; pro breaks and decides within its budget.
+// 80 degrees; a search's trials play to the bit what a game plays, and judge each call as it
+// does; a line of play is blocked where the plain rule says; a world reused for many shots gives
+// the bits of a fresh one; pro breaks and decides within its budget.
 #include "support/random.hpp"
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <termpool/computer.hpp>
 #include <termpool/game_registry.hpp>
@@ -9,6 +11,7 @@
 
 #include "core/event_schedule.hpp"
 #include "core/position_play.hpp"
+#include "core/shot_lines.hpp"
 #include "core/shot_trial.hpp"
 #include "rules_helpers.hpp"
 
@@ -79,6 +82,81 @@ TEST_CASE("a search's trials play what the game plays, to the bit", "[computer][
         CHECK(trials.after().balls() == fresh.balls());
     }
     CHECK(trials.work() > 40);
+}
+
+TEST_CASE("a search's trials judge each call as the game does, whatever call came before",
+          "[computer][position]") {
+    // Calls in a random order: the trials work out a call's plan once and keep it while the
+    // same call is played again.
+    ShotCall safety, ball_one, ball_two, push_out;
+    safety.call.safety = true;
+    ball_one.call = {1, 3, false};
+    ball_two.call = {2, 6, false};
+    push_out.push_out = true;
+    struct Case {
+        Game game;
+        std::vector<ShotCall> calls;
+    };
+    const Case cases[] = {
+        {position(GameType::eight_ball, spread({0, 1, 2, 3, 8, 9, 10, 11}), 1, Group::solids),
+         {{}, safety, ball_one, ball_two}},
+        {position(GameType::ten_ball, spread({0, 1, 2, 3, 4, 10}), 1, Group::open, false, true),
+         {{}, ball_one, push_out}},
+    };
+    Random rng(8);
+    for (const Case& c : cases) {
+        ShotTrial trials(c.game);
+        for (int k = 0; k < 60; ++k) {
+            const ShotCall& call = c.calls[rng.below(c.calls.size())];
+            const Strike strike{rng.uniform(0.5, 6), rng.uniform(0, 360), 0, 0};
+            Game fresh = c.game;
+            const Verdict want = fresh.play(strike, call);
+            const Verdict got = trials.play(strike, call);
+            INFO(game_type_name(c.game.type()) << " shot " << k);
+            CHECK(got.fouls == want.fouls);
+            CHECK(got.first_contact == want.first_contact);
+            CHECK(got.pocketed == want.pocketed);
+            CHECK(got.next_shooter == want.next_shooter);
+            CHECK(got.ball_in_hand == want.ball_in_hand);
+            CHECK(got.winner == want.winner);
+            CHECK(trials.after().balls() == fresh.balls());
+        }
+    }
+}
+
+TEST_CASE("a line of play is blocked exactly where a ball comes within 2R of it",
+          "[computer][position]") {
+    // The plain rule, every ball's nearest point on the segment, against path_blocked (which
+    // skips the balls outside the segment's box first), on lines and balls placed at random
+    // and, half of them, just either side of 2R from the line.
+    Random rng(12);
+    for (int k = 0; k < 4000; ++k) {
+        const Vec2 a{rng.uniform(0, 2.5), rng.uniform(0, 1.3)};
+        const Vec2 b = k % 10 == 0 ? a : Vec2{rng.uniform(0, 2.5), rng.uniform(0, 1.3)};
+        std::vector<Ball> balls;
+        for (int id = 0; id < 6; ++id) {
+            Ball ball;
+            ball.id = id;
+            const double u = rng.uniform(-0.2, 1.2);
+            const Vec2 on_line = a + (b - a) * u;
+            const Vec2 across = perpendicular(normalized(b - a));
+            ball.position = k % 2 ? Vec2{rng.uniform(0, 2.5), rng.uniform(0, 1.3)}
+                                  : on_line + across * (2 * R + rng.uniform(-1e-6, 1e-6));
+            ball.state = id == 5 ? MotionState::pocketed : MotionState::stationary;
+            balls.push_back(ball);
+        }
+        bool want = false;
+        const Vec2 ab = b - a;
+        for (const Ball& ball : balls) {
+            if (ball.state == MotionState::pocketed || ball.id == 0 || ball.id == 1)
+                continue;
+            const double len2 = length_squared(ab);
+            const double u = len2 > 0 ? std::clamp(dot(ball.position - a, ab) / len2, 0.0, 1.0) : 0;
+            want = want || length_squared(a + ab * u - ball.position) < 4 * R * R;
+        }
+        INFO("line " << k);
+        CHECK(path_blocked(balls, a, b, {0, 1}, R) == want);
+    }
 }
 
 TEST_CASE("a world reused for many shots gives the bits of a fresh one", "[physics][position]") {

@@ -119,12 +119,14 @@ struct Call {
     int ball = 0;        ///< the ball called, 0 for none
     int pocket = 0;      ///< its pocket 1..6
     bool safety = false; ///< the shooter called safety: the turn passes whatever drops
+    bool operator==(const Call&) const = default;
 };
 
 /// What the shooter declared for a shot besides the strike.
 struct ShotCall {
     Call call;             ///< 8-ball and 10-ball calls
     bool push_out = false; ///< 9-ball, 10-ball: this shot is a push-out
+    bool operator==(const ShotCall&) const = default;
 };
 
 /// What a shot meant.
@@ -377,6 +379,17 @@ public:
     /// placed, or after the end of the game is refused with a nothing-changed verdict where
     /// `next_shooter` is the current shooter.
     Verdict apply(const ShotCall& call, const ShotResult& result);
+
+    /// What apply() works out before it looks at a result: a search that judges many results
+    /// of one call from one game works it out once.
+    struct ShotPlan {
+        bool ready = false;       ///< ready_to_shoot()
+        std::vector<int> targets; ///< the balls the call may hit first (when ready)
+    };
+    /// The plan of a shot with `call` from the game as it stands.
+    ShotPlan plan(const ShotCall& call) const;
+    /// apply() with `plan`, which plan(call) gave on this game as it stands now.
+    Verdict apply(const ShotCall& call, const ShotResult& result, const ShotPlan& plan);
 
     /// Convenience: simulates `strike` from the current balls and applies it.
     Verdict play(const Strike& strike, const ShotCall& call, ShotResult* result = nullptr);

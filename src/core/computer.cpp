@@ -87,6 +87,11 @@ template <class Weight> double weighted_next_quality(const Game& game, Weight we
     return best_clear_pot(
         game, [&](int target, const Ball& cue, const Ball& object, int pocket, double best) {
             const Vec2 to_pocket = game.table().pockets[pocket - 1].position - object.position;
+            // The cue ball level with or past the object ball as seen from the pocket: a cut of
+            // 90 degrees or more (the ghost ball sits 2R further back still, far beyond any
+            // rounding), refused below too, here without the square roots.
+            if (dot(object.position - cue.position, to_pocket) <= 0)
+                return 0.0;
             const Vec2 towards_pocket = normalized(to_pocket);
             const Vec2 ghost = object.position - towards_pocket * (2 * R);
             const Vec2 line = ghost - cue.position;

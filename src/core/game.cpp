@@ -260,9 +260,21 @@ bool Game::ready_to_shoot() const {
            (state_.ball_in_hand == BallInHand::none || legal_placement(cue->position));
 }
 
+Game::ShotPlan Game::plan(const ShotCall& call) const {
+    ShotPlan plan;
+    plan.ready = ready_to_shoot();
+    if (plan.ready)
+        plan.targets = referee_->shot_targets(state_, call);
+    return plan;
+}
+
 Verdict Game::apply(const ShotCall& call, const ShotResult& result) {
+    return apply(call, result, plan(call));
+}
+
+Verdict Game::apply(const ShotCall& call, const ShotResult& result, const ShotPlan& plan) {
     GameState& s = state_;
-    if (!ready_to_shoot() || result.balls.size() != s.balls.size()) {
+    if (!plan.ready || result.balls.size() != s.balls.size()) {
         Verdict refused;
         refused.next_shooter = s.shooter;
         refused.player1_group = player1_group();
@@ -271,7 +283,7 @@ Verdict Game::apply(const ShotCall& call, const ShotResult& result) {
     }
 
     ShotFacts facts = ShotFacts::from(result.events);
-    facts.targets = referee_->shot_targets(s, call);
+    facts.targets = plan.targets;
     facts.prefer_legal_first_contact();
     referee_->before_shot(s);
     s.balls = result.balls;

@@ -18,9 +18,17 @@ bool path_blocked(const std::vector<Ball>& balls, Vec2 a, Vec2 b, std::pair<int,
                   double R) {
     const Vec2 ab = b - a;
     const double len2 = length_squared(ab);
+    // A ball outside the segment's box grown by 2R (and a nanometre for the rounding of the
+    // nearest point) is clear of it: most are, and skip the division.
+    const double reach = 2 * R + 1e-9;
+    const Vec2 lo{std::min(a.x, b.x) - reach, std::min(a.y, b.y) - reach};
+    const Vec2 hi{std::max(a.x, b.x) + reach, std::max(a.y, b.y) + reach};
     for (const Ball& ball : balls) {
         if (ball.state == MotionState::pocketed || ball.id == ignore.first ||
             ball.id == ignore.second)
+            continue;
+        if (ball.position.x < lo.x || ball.position.x > hi.x || ball.position.y < lo.y ||
+            ball.position.y > hi.y)
             continue;
         const double u = len2 > 0 ? std::clamp(dot(ball.position - a, ab) / len2, 0.0, 1.0) : 0;
         if (length_squared(a + ab * u - ball.position) < 4 * R * R)

@@ -8,6 +8,7 @@ ShotTrial::ShotTrial(const Game& game)
 
 void ShotTrial::rebase(const Game& game) {
     game_ = &game;
+    planned_call_.reset();
     base_.reset(game.balls());
 }
 
@@ -20,8 +21,12 @@ Verdict ShotTrial::play(const Strike& strike, const ShotCall& call) {
     simulate_shot(fresh_world(), strike, result_);
     // A shot's set-up (copying the world, judging it) costs about as much as eight events.
     work_ += result_.events.size() + 8;
+    if (planned_call_ != call) {
+        plan_ = game_->plan(call);
+        planned_call_ = call;
+    }
     after_ = *game_;
-    return after_.apply(call, result_);
+    return after_.apply(call, result_, plan_);
 }
 
 } // namespace termpool

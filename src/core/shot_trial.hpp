@@ -3,6 +3,7 @@
 // world is set out once and each shot starts from a copy of it, into memory kept from the shot
 // before, so that a search allocates nothing for the simulation of a sample.
 
+#include <optional>
 #include <termpool/rules.hpp>
 #include <termpool/simulator.hpp>
 
@@ -29,6 +30,9 @@ public:
 
 private:
     const Game* game_;
+    // The plan of the last call played (Game::plan): a search plays each call many times.
+    std::optional<ShotCall> planned_call_;
+    Game::ShotPlan plan_;
     World base_;
     World scratch_;
     ShotResult result_;
