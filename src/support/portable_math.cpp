@@ -4,7 +4,9 @@
 // quotient of two that the compiler folds with correct rounding.
 
 #include "portable_math.hpp"
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace termpool::portable {
@@ -35,6 +37,23 @@ constexpr double atan_half_lo = 2.2698777452961687e-17;
 constexpr double atan_one_hi = 0.7853981633974483;
 constexpr double atan_one_lo = 3.061616997868383e-17;
 constexpr double pi_over_180 = 0.017453292519943295;
+
+// 2^k, for the exponents of normal numbers (-1022 <= k <= 1023), from its bits.
+double power_of_two(int k) {
+    return std::bit_cast<double>(static_cast<std::uint64_t>(k + 1023) << 52);
+}
+
+// y 2^k for y in [1/2, 2): std::scalbn's result, which is exact where it is a normal number and
+// there a product with 2^k is the same, without the call into the C library.
+double scaled(double y, int k) {
+    return k > -1021 && k < 1023 ? y * power_of_two(k) : std::scalbn(y, k);
+}
+
+// The quarter turn of an integer-valued k, as by_quadrant takes it: k mod 4, by a cast where k
+// is well within a long long (the same residue), by the exact fmod beyond.
+long long quarter_turns(double k) {
+    return static_cast<long long>(std::fabs(k) < 0x1p52 ? k : std::fmod(k, 4.0));
+}
 
 // The nearest integer of x (halves away from zero), as a double; |x| < 2^52.
 double nearest_integer(double x) {
@@ -120,7 +139,7 @@ SinCos sin_cos(double x) {
         return {nan, nan};
     const double k = nearest_integer(x * two_over_pi);
     const double r = ((x - k * pio2_1) - k * pio2_2) - k * pio2_3;
-    return by_quadrant(r, static_cast<long long>(std::fmod(k, 4.0)));
+    return by_quadrant(r, quarter_turns(k));
 }
 
 // atan t for |t| <= 7/16: t - t^3/3 + t^5/5 - ... to t^61 (t^2 <= 0.19, so the next term is
@@ -143,7 +162,7 @@ double exp(double x) {
     if (x < -745.1332191019412)
         return 0;
     const Reduced red = reduce_ln2(x);
-    return std::scalbn(1.0 + expm1_kernel(red.r), red.k);
+    return scaled(1.0 + expm1_kernel(red.r), red.k);
 }
 
 double expm1(double x) {
@@ -157,9 +176,10 @@ double expm1(double x) {
         return expm1_kernel(x);
     const Reduced red = reduce_ln2(x);
     if (red.k > 56)
-        return std::scalbn(1.0 + expm1_kernel(red.r), red.k);
-    // 2^k (e^r - 1) + (2^k - 1): both terms exact, one rounding in the sum.
-    const double two_k = std::scalbn(1.0, red.k);
+        return scaled(1.0 + expm1_kernel(red.r), red.k);
+    // 2^k (e^r - 1) + (2^k - 1): both terms exact, one rounding in the sum. (Here x >= -40, so
+    // k >= -58.)
+    const double two_k = power_of_two(red.k);
     return two_k * expm1_kernel(red.r) + (two_k - 1.0);
 }
 
@@ -171,8 +191,13 @@ double log(double x) {
     if (x == infinity)
         return x;
     // x = 2^e m with m in [sqrt(1/2), sqrt(2)); then log m = 2 atanh(s), s = (m-1)/(m+1).
-    int e = std::ilogb(x);
-    double m = std::scalbn(x, -e);
+    // The exponent and the significand from the bits of a normal x (what ilogb and scalbn give,
+    // exactly), through the C library for a subnormal one.
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+    const int biased = static_cast<int>(bits >> 52);
+    int e = biased != 0 ? biased - 1023 : std::ilogb(x);
+    double m = biased != 0 ? std::bit_cast<double>((bits & 0x000fffffffffffff) | 0x3ff0000000000000)
+                           : std::scalbn(x, -e);
     if (m > 1.4142135623730951) {
         m *= 0.5;
         ++e;
@@ -219,13 +244,13 @@ SinCos sin_cos_degrees(double degrees) {
         return {nan, nan};
     // Whole turns first, by fmod, which is exact: any finite angle, 1e20 degrees too, points
     // where its exact remainder does (the quarter turns alone lose it once 90 k rounds, past
-    // about 10^16 degrees). Below a turn fmod returns the angle itself, and up to 10^15 degrees
-    // the quarter turns alone were exact already: those angles keep their bits (issue 28,
-    // tests/test_portable_math.cpp).
-    const double turn = std::fmod(degrees, 360.0);
+    // about 10^16 degrees). Below a turn fmod would return the angle itself (it is not called), and
+    // up to 10^15 degrees the quarter turns alone were exact already: those angles keep their bits
+    // (issue 28, tests/test_portable_math.cpp).
+    const double turn = std::fabs(degrees) < 360 ? degrees : std::fmod(degrees, 360.0);
     const double k = nearest_integer(turn / 90);
     const double r = (turn - 90 * k) * pi_over_180;
-    return by_quadrant(r, static_cast<long long>(std::fmod(k, 4.0)));
+    return by_quadrant(r, quarter_turns(k));
 }
 
 namespace {
