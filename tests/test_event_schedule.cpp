@@ -200,8 +200,9 @@ double box_coordinate(Random& rng, double spread, double step) {
 } // namespace
 
 TEST_CASE("event schedule: the earliest event as a plain scan finds it", "[core][schedule]") {
-    // Up to 32 balls test every box, 33 to 128 go through the strips, more through the grid;
-    // the tournament's leaves are a power of two (0 and 1 ball, 32, 64 and 128 fill them).
+    // Up to 128 balls test every box (four at a time with AVX2; without, 33 to 128 go through
+    // the strips), more go through the grid; the tournament's leaves are a power of two (0 and 1
+    // ball, 32, 64 and 128 fill them). The strips have a test of their own below.
     for (const std::size_t count : {0, 1, 2, 16, 32, 33, 40, 64, 65, 100, 128, 129, 200}) {
         for (std::uint64_t seed = 1; seed <= 3; ++seed) {
             // Room per ball as on a pool table, so that boxes meet often but not always.

@@ -1,8 +1,9 @@
 #pragma once
 // Boxes kept as separate coordinate arrays and tested against one box two at a time (a 128-bit
 // register's worth), or four where the processor has AVX2: which come near a ball's box is a few
-// vector compares rather than a loop over balls. With many balls the strips their boxes cover
-// (box_strips.hpp) pick the few to test. A lane's compare is the scalar compare, so the answer is
+// vector compares rather than a loop over balls. With many balls, given a strip width, the strips
+// their boxes cover (box_strips.hpp) pick the few to test (the schedule gives one only where
+// boxes are tested two at a time). A lane's compare is the scalar compare, so the answer is
 // the same on any target, with vector registers or without.
 
 #include <algorithm>
@@ -85,6 +86,15 @@ struct BoxColumns {
         return false;
 #endif
     }
+    /// Whether columns made on this processor test four boxes at a time (asked of the CPU).
+    static bool four_lanes_available() {
+#if defined(__x86_64__) && defined(__GNUC__)
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") != 0;
+#else
+        return false;
+#endif
+    }
 
     /// overlapping() two boxes at a time, whatever the processor.
     std::uint64_t overlapping_two_lanes(std::size_t first, Vec2 lo, Vec2 hi) const {
@@ -135,10 +145,7 @@ private:
     // Where the processor has AVX2 (asked once per set of columns, not per search), four boxes
     // at a time in a 256-bit register: the same compares, half the instructions. The build
     // targets x86-64's baseline, so this one function is compiled for AVX2 on its own.
-    bool four_lanes_ = [] {
-        __builtin_cpu_init();
-        return __builtin_cpu_supports("avx2") != 0;
-    }();
+    bool four_lanes_ = four_lanes_available();
 #endif
 };
 
@@ -185,7 +192,8 @@ public:
         clear();
     }
 
-    /// Up to this many balls, testing every box is cheaper than picking them by strips.
+    /// Up to this many balls, testing every box (two at a time) is cheaper than picking them by
+    /// strips.
     static constexpr std::size_t strips_above = 32;
 
     /// Every box empty, every ball at rest.

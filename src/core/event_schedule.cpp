@@ -9,10 +9,10 @@ namespace {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// Up to this many balls a search goes through the box lanes (box_lanes.hpp: every box, or the
-// strips above 32 balls); above, through the grid. On the bench's ball rows the lanes were the
-// cheaper up to about 150 balls, and with the strips the grid was as fast or faster at 256 and
-// 512.
+// Up to this many balls a search goes through the box lanes (box_lanes.hpp: every box, or,
+// without four lanes, the strips above 32 balls); above, through the grid. On the bench's ball rows
+// the lanes were the cheaper up to about 150 balls, and with the strips the grid was as fast or
+// faster at 256 and 512.
 constexpr std::size_t most_without_grid = 128;
 // The width of the strips that pick the boxes to test (box_strips.hpp), in ball diameters: a
 // ball at rest is in one strip or two on each axis. Measured with the bench's 128-ball row,
@@ -29,6 +29,15 @@ bool cells_from(double diameter) {
     return diameter > 0 && std::isfinite(diameter) && std::isfinite(inverse) && inverse > 0;
 }
 
+// The width of the lanes' strips, or 0 for none (every box tested). Where the processor tests
+// four boxes at a time, testing every one of up to 128 was the cheaper: on the bench's 64- and
+// 128-ball rows 10% and 3% fewer instructions than picking them by strips, and fewer mispredicted
+// branches. Two at a time, the strips were the cheaper (5% and 22% fewer).
+double strip_width(double diameter) {
+    return cells_from(diameter) && !BoxColumns::four_lanes_available() ? strip_diameters * diameter
+                                                                       : 0;
+}
+
 // `balls`, refused before anything is allocated for them when their indices do not fit.
 std::size_t checked(std::size_t balls) {
     if (balls > ScheduledEvent::max_balls)
@@ -41,9 +50,8 @@ std::size_t checked(std::size_t balls) {
 EventSchedule::EventSchedule(std::size_t balls, double diameter)
     : diameter_(diameter), many_(balls > most_without_grid && cells_from(diameter)),
       reach_(checked(balls), empty_box()), paths_(many_ ? balls : 0), moving_(balls),
-      lanes_(many_ ? 0 : balls, cells_from(diameter) ? strip_diameters * diameter : 0),
-      pairs_(balls), searched_(balls, 0), table_time_(balls, infinity),
-      row_min_time_(balls, infinity), row_min_partner_(balls, balls),
+      lanes_(many_ ? 0 : balls, strip_width(diameter)), pairs_(balls), searched_(balls, 0),
+      table_time_(balls, infinity), row_min_time_(balls, infinity), row_min_partner_(balls, balls),
       leaves_(std::bit_ceil(std::max<std::size_t>(balls, 1))), key_dirty_(balls, 0) {
     dirty_keys_.reserve(balls);
     // Boxes grown by a little more than a radius each overlap whenever they come within a

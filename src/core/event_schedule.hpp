@@ -5,9 +5,10 @@
 // earliest table event or row minimum of all, so that a change replays a few matches on its way
 // to the root. The pair search culls with the box each ball's centre stays in and whether it
 // moves; only the pairs holding a contact are walked, by a bit per pair. Which boxes a search
-// tests: up to 32 balls every box, two or four at a time without a branch; up to 128 the balls
-// whose boxes share a strip of the table across x and one across y with its box (box_strips.hpp);
-// above, a grid over the boxes, so that nothing in an event's work walks every ball.
+// tests: up to 128 balls every box, four at a time without a branch where the processor has AVX2;
+// two at a time without it, and from 33 balls only those whose boxes share a strip of the table
+// across x and one across y with its box (box_strips.hpp); above 128, a grid over the boxes, so
+// that nothing in an event's work walks every ball.
 
 #include <algorithm>
 #include <bit>
