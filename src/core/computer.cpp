@@ -87,15 +87,22 @@ template <class Weight> double weighted_next_quality(const Game& game, Weight we
     return best_clear_pot(
         game, [&](int target, const Ball& cue, const Ball& object, int pocket, double best) {
             const Vec2 to_pocket = game.table().pockets[pocket - 1].position - object.position;
-            // The cue ball level with or past the object ball as seen from the pocket: a cut of
-            // 90 degrees or more (the ghost ball sits 2R further back still, far beyond any
-            // rounding), refused below too, here without the square roots.
-            if (dot(object.position - cue.position, to_pocket) <= 0)
+            // The cut is at least the angle between the lines cue ball to object ball and object
+            // ball to pocket (the ghost ball sits 2R further back along the second): where that
+            // angle's cosine is below 0.33, or it is 90 degrees or more, the cut's is below 0.34
+            // far beyond any rounding, and the pot is refused here without the square roots.
+            const Vec2 to_object = object.position - cue.position;
+            const double along = dot(to_object, to_pocket);
+            if (along <= 0 ||
+                along * along < 0.33 * 0.33 * length_squared(to_object) * length_squared(to_pocket))
                 return 0.0;
-            const Vec2 towards_pocket = normalized(to_pocket);
+            // normalized() twice, keeping the lengths for the distance factor (the same bits).
+            const double pocket_distance = length(to_pocket);
+            const Vec2 towards_pocket = pocket_distance > 0 ? to_pocket / pocket_distance : Vec2{};
             const Vec2 ghost = object.position - towards_pocket * (2 * R);
             const Vec2 line = ghost - cue.position;
-            const double cut = dot(normalized(line), towards_pocket);
+            const double line_length = length(line);
+            const double cut = dot(line_length > 0 ? line / line_length : Vec2{}, towards_pocket);
             if (cut < 0.34)
                 return 0.0;
             // A weight of 1 leaves the product's bits as they were without it.
@@ -104,7 +111,7 @@ template <class Weight> double weighted_next_quality(const Game& game, Weight we
             // exponential, the dearest part (the margin covers its rounding).
             if (most * (1 + 1e-9) <= best)
                 return 0.0;
-            return most * portable::exp(-(length(line) + length(to_pocket)) / 2.5);
+            return most * portable::exp(-(line_length + pocket_distance) / 2.5);
         });
 }
 
