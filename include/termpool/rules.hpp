@@ -119,14 +119,14 @@ struct Call {
     int ball = 0;        ///< the ball called, 0 for none
     int pocket = 0;      ///< its pocket 1..6
     bool safety = false; ///< the shooter called safety: the turn passes whatever drops
-    bool operator==(const Call&) const = default;
+    bool operator==(const Call&) const = default; ///< the same ball, pocket and safety
 };
 
 /// What the shooter declared for a shot besides the strike.
 struct ShotCall {
-    Call call;             ///< 8-ball and 10-ball calls
-    bool push_out = false; ///< 9-ball, 10-ball: this shot is a push-out
-    bool operator==(const ShotCall&) const = default;
+    Call call;                                        ///< 8-ball and 10-ball calls
+    bool push_out = false;                            ///< 9-ball, 10-ball: this shot is a push-out
+    bool operator==(const ShotCall&) const = default; ///< the same call and push-out
 };
 
 /// What a shot meant.
