@@ -67,6 +67,7 @@ std::vector<int> EightBallReferee::legal_targets(const GameState& s) const {
     // One pass and one vector: the computer asks this of every table it weighs.
     const Group group = group_of(s.shooter);
     std::vector<int> targets;
+    targets.reserve(s.balls.size()); // one allocation, not one for each doubling
     bool any_on_table = false;
     for (const Ball& b : s.balls) {
         if (b.id == 0 || b.state == MotionState::pocketed)
