@@ -511,7 +511,7 @@ TEST_CASE("pair times: a copy holds exactly the other's pairs, whatever it held 
                     if (source.row(i)[k] < infinity)
                         CHECK(target.is_bound(i, k) == source.is_bound(i, k));
                     else
-                        CHECK(source.row(i)[k] == infinity); // NaN is kept as nothing
+                        CHECK(source.row(i)[k] == infinity); // set() keeps a NaN as nothing
                 }
             }
         }

@@ -14,6 +14,7 @@
 #include "core/shot_lines.hpp"
 #include "core/shot_trial.hpp"
 #include "rules_helpers.hpp"
+#include "snooker_helpers.hpp"
 
 using namespace termpool;
 using namespace termpool::test;
@@ -93,11 +94,20 @@ TEST_CASE("a search's trials judge each call as the game does, whatever call cam
     ball_one.call = {1, 3, false};
     ball_two.call = {2, 6, false};
     push_out.push_out = true;
+    // Snooker on a colour: the nomination decides the ball to hit first (the only referee
+    // whose targets depend on the call).
+    ShotCall yellow, black;
+    yellow.call.ball = snooker_yellow;
+    black.call.ball = snooker_black;
+    SnookerState on_colour;
+    on_colour.ball_on = BallOn::colour;
     struct Case {
         Game game;
         std::vector<ShotCall> calls;
     };
     const Case cases[] = {
+        {snooker_frame(colours_on_spots({1.6, 0.9}, {{1, {2.9, 0.5}}}), on_colour),
+         {{}, yellow, black}},
         {position(GameType::eight_ball, spread({0, 1, 2, 3, 8, 9, 10, 11}), 1, Group::solids),
          {{}, safety, ball_one, ball_two}},
         {position(GameType::ten_ball, spread({0, 1, 2, 3, 4, 10}), 1, Group::open, false, true),
@@ -122,17 +132,39 @@ TEST_CASE("a search's trials judge each call as the game does, whatever call cam
             CHECK(trials.after().balls() == fresh.balls());
         }
     }
+    // Two colours hit at once: the nomination picks the ball hit first, so that a plan kept
+    // from another call would show.
+    const double r = snooker_ball_radius;
+    const Game two = snooker_frame({snooker_ball(0, {1.0, 0.9}), snooker_ball(1, {3.0, 1.5}),
+                                    snooker_ball(snooker_yellow, {2.0, 0.9 + r}),
+                                    snooker_ball(snooker_green, {2.0, 0.9 - r})},
+                                   on_colour);
+    ShotTrial two_trials(two);
+    for (const int nominated : {snooker_yellow, snooker_green, snooker_yellow, snooker_green}) {
+        ShotCall call;
+        call.call.ball = nominated;
+        Game fresh = two;
+        const Verdict want = fresh.play({1, 0, 0, 0}, call);
+        const Verdict got = two_trials.play({1, 0, 0, 0}, call);
+        INFO("nominated " << nominated);
+        CHECK(want.first_contact == nominated);
+        CHECK(got.first_contact == want.first_contact);
+        CHECK(got.fouls == want.fouls);
+    }
 }
 
 TEST_CASE("a line of play is blocked exactly where a ball comes within 2R of it",
           "[computer][position]") {
     // The plain rule, every ball's nearest point on the segment, against path_blocked (which
     // skips the balls outside the segment's box first), on lines and balls placed at random
-    // and, half of them, just either side of 2R from the line.
+    // and, half of them, just either side of 2R from the line; on a table, and far out where a
+    // unit in the last place is metres; with the ball's radius, none, or a negative one.
     Random rng(12);
-    for (int k = 0; k < 4000; ++k) {
-        const Vec2 a{rng.uniform(0, 2.5), rng.uniform(0, 1.3)};
-        const Vec2 b = k % 10 == 0 ? a : Vec2{rng.uniform(0, 2.5), rng.uniform(0, 1.3)};
+    for (int k = 0; k < 6000; ++k) {
+        const double far = k % 3 == 2 ? 0x1p53 : 0;
+        const double radius = k % 5 == 3 ? 0.0 : k % 5 == 4 ? -0.5 : R;
+        const Vec2 a{far + rng.uniform(0, 2.5), rng.uniform(0, 1.3)};
+        const Vec2 b = k % 10 == 0 ? a : Vec2{far + rng.uniform(0, 2.5), rng.uniform(0, 1.3)};
         std::vector<Ball> balls;
         for (int id = 0; id < 6; ++id) {
             Ball ball;
@@ -140,8 +172,8 @@ TEST_CASE("a line of play is blocked exactly where a ball comes within 2R of it"
             const double u = rng.uniform(-0.2, 1.2);
             const Vec2 on_line = a + (b - a) * u;
             const Vec2 across = perpendicular(normalized(b - a));
-            ball.position = k % 2 ? Vec2{rng.uniform(0, 2.5), rng.uniform(0, 1.3)}
-                                  : on_line + across * (2 * R + rng.uniform(-1e-6, 1e-6));
+            ball.position = k % 2 ? Vec2{far + rng.uniform(0, 2.5), rng.uniform(0, 1.3)}
+                                  : on_line + across * (2 * radius + rng.uniform(-1e-6, 1e-6));
             ball.state = id == 5 ? MotionState::pocketed : MotionState::stationary;
             balls.push_back(ball);
         }
@@ -152,11 +184,17 @@ TEST_CASE("a line of play is blocked exactly where a ball comes within 2R of it"
                 continue;
             const double len2 = length_squared(ab);
             const double u = len2 > 0 ? std::clamp(dot(ball.position - a, ab) / len2, 0.0, 1.0) : 0;
-            want = want || length_squared(a + ab * u - ball.position) < 4 * R * R;
+            want = want || length_squared(a + ab * u - ball.position) < 4 * radius * radius;
         }
         INFO("line " << k);
-        CHECK(path_blocked(balls, a, b, {0, 1}, R) == want);
+        CHECK(path_blocked(balls, a, b, {0, 1}, radius) == want);
     }
+    // Where the nearest point's rounding lands on the ball: 2 m past the segment's end by the
+    // box, on it by the plain rule.
+    Ball beyond;
+    beyond.id = 2;
+    beyond.position = {0x1p53 + 4, 0};
+    CHECK(path_blocked({beyond}, {-1, 0}, {0x1p53 + 2, 0}, {0, 1}, R));
 }
 
 TEST_CASE("a world reused for many shots gives the bits of a fresh one", "[physics][position]") {

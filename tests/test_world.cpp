@@ -150,6 +150,15 @@ TEST_CASE("a world copied into another in the middle of a shot steps on as the o
                     copy.step();
                 copy = original;
                 World same = original; // into new memory
+                // Its trajectory, empty or not, is for the original's physics: a sliding piece
+                // added to a copy of it moves as one added to the original's does.
+                Trajectory from_copy = copy.trajectory(), from_same = same.trajectory();
+                Ball slider = rack[0];
+                slider.state = MotionState::sliding;
+                slider.velocity = {1, 0};
+                from_copy.add(0, 100, slider);
+                from_same.add(0, 100, slider);
+                CHECK(from_copy.sample(0, 100.5) == from_same.sample(0, 100.5));
                 // Recording from here on: a copy that had not recorded starts a trajectory of
                 // the original's physics.
                 copy.record(true);

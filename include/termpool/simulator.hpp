@@ -66,6 +66,8 @@ public:
     Trajectory(PhysicsParams params, std::size_t ball_count);
     /// Appends a piece for ball slot `index`; pieces of a slot come in time order.
     void add(std::size_t index, double start, const Ball& ball);
+    /// Empty again, for the model `params`, with as many slots (and their memory) as before.
+    void restart(const PhysicsParams& params);
     /// The state of every ball at `time` (seconds since the strike), without re-simulating.
     std::vector<Ball> sample(double time) const;
     /// The state of ball slot `index` at `time`; the slot must have a piece (balls with none

@@ -79,6 +79,22 @@ double score(const Verdict& v, int shooter) {
     return s;
 }
 
+// Whether a pot with the cue ball `to_object` behind the object ball and the pocket `to_pocket`
+// beyond it is cut thinner than a cosine of 0.34, told without a square root. The cut is at least
+// the angle between the two lines (the ghost ball sits 2R further back along the second), so a
+// cosine of that angle below 0.33 (about 71 degrees), or past 90 degrees, says so with a margin
+// far beyond the rounding. Only for a positive radius and lengths from a nanometre to a
+// kilometre, where the squares neither underflow nor overflow; otherwise the full test decides.
+bool surely_too_thin(Vec2 to_object, Vec2 to_pocket, double R) {
+    const double object_squared = length_squared(to_object);
+    const double pocket_squared = length_squared(to_pocket);
+    if (!(R > 0 && object_squared > 1e-18 && object_squared < 1e6 && pocket_squared > 1e-18 &&
+          pocket_squared < 1e6))
+        return false;
+    const double along = dot(to_object, to_pocket);
+    return along <= 0 || along * along < 0.33 * 0.33 * object_squared * pocket_squared;
+}
+
 // How good the shooter's next shot looks from here: the best legal ball and pocket with nothing
 // in the way, rated 0..1 by how full the cut is and how far the balls travel, times what the
 // ball is worth (`weight`).
@@ -87,14 +103,7 @@ template <class Weight> double weighted_next_quality(const Game& game, Weight we
     return best_clear_pot(
         game, [&](int target, const Ball& cue, const Ball& object, int pocket, double best) {
             const Vec2 to_pocket = game.table().pockets[pocket - 1].position - object.position;
-            // The cut is at least the angle between the lines cue ball to object ball and object
-            // ball to pocket (the ghost ball sits 2R further back along the second): where that
-            // angle's cosine is below 0.33, or it is 90 degrees or more, the cut's is below 0.34
-            // far beyond any rounding, and the pot is refused here without the square roots.
-            const Vec2 to_object = object.position - cue.position;
-            const double along = dot(to_object, to_pocket);
-            if (along <= 0 ||
-                along * along < 0.33 * 0.33 * length_squared(to_object) * length_squared(to_pocket))
+            if (surely_too_thin(object.position - cue.position, to_pocket, R))
                 return 0.0;
             // normalized() twice, keeping the lengths for the distance factor (the same bits).
             const double pocket_distance = length(to_pocket);

@@ -5,10 +5,12 @@
 // into a table of the same size writes only the finite pairs: a search copies a world at rest,
 // where there are none, before each of its shots.
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace termpool::core {

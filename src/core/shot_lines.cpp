@@ -3,6 +3,8 @@
 
 #include "../support/portable_math.hpp"
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace termpool {
@@ -16,11 +18,16 @@ const Ball* ball_in_play(const std::vector<Ball>& balls, int id) {
 
 bool path_blocked(const std::vector<Ball>& balls, Vec2 a, Vec2 b, std::pair<int, int> ignore,
                   double R) {
+    constexpr double infinity = std::numeric_limits<double>::infinity();
     const Vec2 ab = b - a;
     const double len2 = length_squared(ab);
-    // A ball outside the segment's box grown by 2R (and a nanometre for the rounding of the
-    // nearest point) is clear of it: most are, and skip the division.
-    const double reach = 2 * R + 1e-9;
+    // A ball outside the segment's box grown by 2R is clear of it: most are, and skip the
+    // division. The margin covers the rounding of the nearest point and of the squares, a few
+    // units in the last place of the largest coordinate and of R (a nanometre at least); a
+    // radius that is not positive grows no box, and every ball is tested.
+    const double largest =
+        std::max({std::fabs(a.x), std::fabs(a.y), std::fabs(b.x), std::fabs(b.y)});
+    const double reach = R > 0 ? 2 * R * (1 + 1e-12) + 1e-9 + 1e-12 * largest : infinity;
     const Vec2 lo{std::min(a.x, b.x) - reach, std::min(a.y, b.y) - reach};
     const Vec2 hi{std::max(a.x, b.x) + reach, std::max(a.y, b.y) + reach};
     for (const Ball& ball : balls) {

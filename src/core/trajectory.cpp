@@ -8,6 +8,12 @@ namespace termpool {
 Trajectory::Trajectory(PhysicsParams params, std::size_t ball_count)
     : params_(params), pieces_(ball_count) {}
 
+void Trajectory::restart(const PhysicsParams& params) {
+    params_ = params;
+    for (std::vector<Piece>& list : pieces_)
+        list.clear();
+}
+
 void Trajectory::add(std::size_t index, double start, const Ball& ball) {
     std::vector<Piece>& list = pieces_[index];
     // A later piece at the same instant replaces the earlier one (several events at one time).

@@ -80,9 +80,9 @@ struct World::Impl {
     }
 
     // A copy of `o`, a world of as many balls, into this one's memory (World::operator=). The
-    // scratch between events is not copied, nor the trajectory unless one of the two worlds has
-    // recorded: without, both are empty (World::record makes a new one for the physics of the
-    // moment), and a search copies worlds that never record before each of its shots.
+    // scratch between events is not copied, nor the trajectory's pieces unless one of the two
+    // worlds has recorded: without, both are empty, and only the physics they are for is taken
+    // (a search copies worlds that never record before each of its shots).
     void assign(const Impl& o) {
         table = o.table;
         params = o.params;
@@ -96,6 +96,8 @@ struct World::Impl {
         recording = o.recording;
         if (recorded || o.recorded)
             trajectory = o.trajectory;
+        else
+            trajectory.restart(o.params);
         recorded = o.recorded;
     }
 
@@ -433,10 +435,6 @@ bool World::at_rest() const {
 }
 
 void World::record(bool on) {
-    // A world that has not recorded holds an empty trajectory, perhaps made for other physics
-    // (Impl::assign): the first recording starts a new one.
-    if (on && !impl_->recorded)
-        impl_->trajectory = Trajectory(impl_->params, impl_->count());
     impl_->recording = on;
     impl_->recorded = impl_->recorded || on;
     if (on) {

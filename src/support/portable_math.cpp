@@ -49,8 +49,8 @@ double scaled(double y, int k) {
     return k > -1021 && k < 1023 ? y * power_of_two(k) : std::scalbn(y, k);
 }
 
-// The quarter turn of an integer-valued k, as by_quadrant takes it: k mod 4, by a cast where k
-// is well within a long long (the same residue), by the exact fmod beyond.
+// An integer-valued k as by_quadrant takes it (which looks only at its residue modulo 4): k
+// itself, cast, where it is well within a long long; beyond, its exact remainder by fmod.
 long long quarter_turns(double k) {
     return static_cast<long long>(std::fabs(k) < 0x1p52 ? k : std::fmod(k, 4.0));
 }
