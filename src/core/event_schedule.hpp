@@ -272,9 +272,7 @@ inline void EventSchedule::set_table_time(std::size_t i, double time) {
 }
 
 inline void EventSchedule::set_time(std::size_t i, std::size_t k, double time, bool row_i_later) {
-    if (!(time < std::numeric_limits<double>::infinity()))
-        time = std::numeric_limits<double>::infinity();
-    pairs_.set(i, k, time);
+    time = pairs_.set(i, k, time); // NaN and beyond kept as +infinity
     if (!row_i_later)
         row_changed(i, k, time);
     row_changed(k, i, time);

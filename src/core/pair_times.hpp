@@ -30,8 +30,9 @@ public:
 
     /// Ball i's row: the time of pair (i, k) at [k].
     const double* row(std::size_t i) const { return time_.data() + i * n_; }
-    /// Sets pair (i, k)'s time (a time not below +infinity, NaN too, is +infinity).
-    void set(std::size_t i, std::size_t k, double time);
+    /// Sets pair (i, k)'s time (a time not below +infinity, NaN too, is +infinity) and returns
+    /// the time kept.
+    double set(std::size_t i, std::size_t k, double time);
     /// Whether pair (i, k) holds only a lower bound on its contact; meaningful where its time is
     /// finite (every finite time is set with its flag).
     bool is_bound(std::size_t i, std::size_t k) const { return bound_[i * n_ + k] != 0; }
@@ -64,9 +65,10 @@ template <class Visit> void PairTimes::visit_finite(std::size_t i, Visit visit) 
     }
 }
 
-inline void PairTimes::set(std::size_t i, std::size_t k, double time) {
+inline double PairTimes::set(std::size_t i, std::size_t k, double time) {
     const bool finite = time < infinity;
-    time_[i * n_ + k] = time_[k * n_ + i] = finite ? time : infinity;
+    const double kept = finite ? time : infinity;
+    time_[i * n_ + k] = time_[k * n_ + i] = kept;
     const std::uint64_t bit_k = std::uint64_t{1} << (k % 64), bit_i = std::uint64_t{1} << (i % 64);
     std::uint64_t& word_ik = finite_[i * words_ + k / 64];
     std::uint64_t& word_ki = finite_[k * words_ + i / 64];
@@ -77,6 +79,7 @@ inline void PairTimes::set(std::size_t i, std::size_t k, double time) {
         word_ik &= ~bit_k;
         word_ki &= ~bit_i;
     }
+    return kept;
 }
 
 inline void PairTimes::clear() {
