@@ -103,8 +103,11 @@ struct World::Impl {
 
     std::size_t count() const { return pieces.size(); }
 
+    // A ball at rest is where its piece began, in every model (advance leaves it as it is): it
+    // is taken as it is, without the call (a sample's result asks for every ball).
     Ball state_now(std::size_t i) const {
-        return core::state_at(pieces[i], now, cloth.advance, params);
+        const MotionPiece& s = pieces[i];
+        return in_motion(s.ball) ? core::state_at(s, now, cloth.advance, params) : s.ball;
     }
 
     void set_piece(std::size_t i, const Ball& ball) {
@@ -229,7 +232,9 @@ struct World::Impl {
         core::resolve_ball_ball(a, b, params, cloth);
         set_piece(i, a);
         set_piece(j, b);
-        changed.assign({i, j});
+        changed.clear(); // (not assign({i, j}): that costs several times as much)
+        changed.push_back(i);
+        changed.push_back(j);
         escape_wedge(i, j, changed);
         escape_wedge(j, i, changed);
         refresh_changed();
@@ -267,9 +272,9 @@ struct World::Impl {
     // yet (other than with `reported`) become pending events, and the balls changed are added
     // to `changed`.
     void escape_wedge(std::size_t i, std::size_t reported, std::vector<std::size_t>& changed) {
-        Ball mover = pieces[i].ball;
-        if (!cloth.holds_slow_balls || !is_moving(mover))
+        if (!cloth.holds_slow_balls || !is_moving(pieces[i].ball))
             return;
+        Ball mover = pieces[i].ball;
         const double apart = 2 * params.ball_radius + core::wedge_touch_gap;
         std::vector<std::size_t>& near = wedge_near;
         std::vector<Ball>& held = wedge_held;
@@ -345,7 +350,8 @@ struct World::Impl {
             break;
         }
         set_piece(i, b);
-        changed.assign({i});
+        changed.clear();
+        changed.push_back(i);
         const bool contact = te.kind == TableEventKind::rail ||
                              te.kind == TableEventKind::jaw_line ||
                              te.kind == TableEventKind::jaw_point;
