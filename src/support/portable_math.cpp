@@ -4,6 +4,7 @@
 // quotient of two that the compiler folds with correct rounding.
 
 #include "portable_math.hpp"
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -144,13 +145,30 @@ SinCos sin_cos(double x) {
 
 // atan t for |t| <= 7/16: t - t^3/3 + t^5/5 - ... to t^61 (t^2 <= 0.19, so the next term is
 // below 2^-60 t).
+// The series' coefficients (-1)^i / (2i + 3) for i = 0..29 (-1/3 up to -1/61), worked out by
+// the compiler: divided at run time, they cost as much as the rest of the function.
+constexpr std::array<double, 30> atan_series = [] {
+    std::array<double, 30> c{};
+    for (int i = 0; i < 30; ++i)
+        c[static_cast<std::size_t>(i)] = (i % 2 == 0 ? -1.0 : 1.0) / (2 * i + 3);
+    return c;
+}();
 double atan_kernel(double t) {
     const double z = t * t;
-    double p = -1.0 / 61;
-    for (int n = 59; n >= 3; n -= 2)
-        p = (n % 4 == 1 ? 1.0 : -1.0) / n + z * p;
+    double p = atan_series[29];
+    for (std::size_t i = 29; i-- > 0;)
+        p = atan_series[i] + z * p;
     return t + (t * z) * p;
 }
+
+// The series' coefficients 2 / (2i + 3) for i = 0..11 (2/3 up to 2/25), worked out by the
+// compiler, as atan's are.
+constexpr std::array<double, 12> log_series = [] {
+    std::array<double, 12> c{};
+    for (int i = 0; i < 12; ++i)
+        c[static_cast<std::size_t>(i)] = 2.0 / (2 * i + 3);
+    return c;
+}();
 
 } // namespace
 
@@ -208,9 +226,9 @@ double log(double x) {
     // log m = 2 atanh(s) = 2s + s R with R = 2z/3 + 2z^2/5 + ... (z <= 0.0295, so the terms
     // past z^12 are below 2^-60), and 2s = f - s f, so log m = f - s (f - R): f is exact and the
     // rounded part is the small one.
-    double p = 2.0 / 25;
-    for (int n = 23; n >= 3; n -= 2)
-        p = 2.0 / n + z * p;
+    double p = log_series[11];
+    for (std::size_t i = 11; i-- > 0;)
+        p = log_series[i] + z * p;
     const double R = z * p;
     const double log_m = f - s * (f - R);
     const double k = e;
