@@ -135,16 +135,16 @@ SinCos by_quadrant(double r, long long k) {
     }
 }
 
-SinCos sin_cos(double x) {
-    if (!std::isfinite(x))
-        return {nan, nan};
+// x = r + k pi/2 with |r| <= pi/4 (a little more after rounding), x finite.
+struct Quadrant {
+    double r;
+    long long k;
+};
+Quadrant reduce_pio2(double x) {
     const double k = nearest_integer(x * two_over_pi);
-    const double r = ((x - k * pio2_1) - k * pio2_2) - k * pio2_3;
-    return by_quadrant(r, quarter_turns(k));
+    return {((x - k * pio2_1) - k * pio2_2) - k * pio2_3, quarter_turns(k)};
 }
 
-// atan t for |t| <= 7/16: t - t^3/3 + t^5/5 - ... to t^61 (t^2 <= 0.19, so the next term is
-// below 2^-60 t).
 // The series' coefficients (-1)^i / (2i + 3) for i = 0..29 (-1/3 up to -1/61), worked out by
 // the compiler: divided at run time, they cost as much as the rest of the function.
 constexpr std::array<double, 30> atan_series = [] {
@@ -153,6 +153,8 @@ constexpr std::array<double, 30> atan_series = [] {
         c[static_cast<std::size_t>(i)] = (i % 2 == 0 ? -1.0 : 1.0) / (2 * i + 3);
     return c;
 }();
+// atan t for |t| <= 7/16: t - t^3/3 + t^5/5 - ... to t^61 (t^2 <= 0.19, so the next term is
+// below 2^-60 t).
 double atan_kernel(double t) {
     const double z = t * t;
     double p = atan_series[29];
@@ -249,12 +251,37 @@ double log1p(double x) {
     return log(u) * (x / (u - 1.0));
 }
 
+// sin and cos alone work out only the series by_quadrant would take theirs from.
 double sin(double x) {
-    return sin_cos(x).sin;
+    if (!std::isfinite(x))
+        return nan;
+    const Quadrant q = reduce_pio2(x);
+    switch (q.k & 3) {
+    case 0:
+        return sin_kernel(q.r);
+    case 1:
+        return cos_kernel(q.r);
+    case 2:
+        return -sin_kernel(q.r);
+    default:
+        return -cos_kernel(q.r);
+    }
 }
 
 double cos(double x) {
-    return sin_cos(x).cos;
+    if (!std::isfinite(x))
+        return nan;
+    const Quadrant q = reduce_pio2(x);
+    switch (q.k & 3) {
+    case 0:
+        return cos_kernel(q.r);
+    case 1:
+        return -sin_kernel(q.r);
+    case 2:
+        return -cos_kernel(q.r);
+    default:
+        return sin_kernel(q.r);
+    }
 }
 
 SinCos sin_cos_degrees(double degrees) {
