@@ -492,26 +492,38 @@ TEST_CASE("pair times: a copy holds exactly the other's pairs, whatever it held 
                 pairs.set(i, j, roll < 0.3 ? infinity : roll < 0.35 ? std::nan("") : roll);
                 pairs.set_bound(i, j, rng.uniform() < 0.5);
             }
+            pairs.set(0, size - 1, 0.5); // one finite pair at least
         };
-        core::PairTimes source(n);
-        fill(source, n);
-        for (const std::size_t target_size : {n, n + 3}) {
-            core::PairTimes target(target_size);
-            fill(target, target_size);
-            target = source;
-            INFO(n << " balls into " << target_size);
-            for (std::size_t i = 0; i < n; ++i) {
-                std::vector<std::size_t> want, got;
-                source.visit_finite(i, [&](std::size_t k) { want.push_back(k); });
-                target.visit_finite(i, [&](std::size_t k) { got.push_back(k); });
-                CHECK(got == want);
-                for (std::size_t k = 0; k < n; ++k) {
-                    CHECK(target.row(i)[k] == source.row(i)[k]);
-                    CHECK(target.row(i)[k] == target.row(k)[i]);
-                    if (source.row(i)[k] < infinity)
-                        CHECK(target.is_bound(i, k) == source.is_bound(i, k));
-                    else
-                        CHECK(source.row(i)[k] == infinity); // set() keeps a NaN as nothing
+        // Both filled, and either with every time +infinity (a world at rest: the copy's
+        // shortcuts), the other filled.
+        for (const auto& [fill_source, fill_target] :
+             {std::pair{true, true}, std::pair{false, true}, std::pair{true, false}}) {
+            core::PairTimes source(n);
+            if (fill_source)
+                fill(source, n);
+            CHECK(source.any_finite() == fill_source);
+            for (const std::size_t target_size : {n, n + 3}) {
+                core::PairTimes target(target_size);
+                if (fill_target)
+                    fill(target, target_size);
+                CHECK(target.any_finite() == fill_target);
+                target = source;
+                CHECK(target.any_finite() == fill_source);
+                INFO(n << " balls into " << target_size << ", filled " << fill_source
+                       << fill_target);
+                for (std::size_t i = 0; i < n; ++i) {
+                    std::vector<std::size_t> want, got;
+                    source.visit_finite(i, [&](std::size_t k) { want.push_back(k); });
+                    target.visit_finite(i, [&](std::size_t k) { got.push_back(k); });
+                    CHECK(got == want);
+                    for (std::size_t k = 0; k < n; ++k) {
+                        CHECK(target.row(i)[k] == source.row(i)[k]);
+                        CHECK(target.row(i)[k] == target.row(k)[i]);
+                        if (source.row(i)[k] < infinity)
+                            CHECK(target.is_bound(i, k) == source.is_bound(i, k));
+                        else
+                            CHECK(source.row(i)[k] == infinity); // set() keeps a NaN as nothing
+                    }
                 }
             }
         }

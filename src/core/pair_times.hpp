@@ -44,6 +44,8 @@ public:
     template <class Visit> void visit_finite(std::size_t i, Visit visit) const;
     /// Every time +infinity again, keeping the memory.
     void clear();
+    /// Whether any pair's time is finite.
+    bool any_finite() const;
 
 private:
     static constexpr double infinity = std::numeric_limits<double>::infinity();
@@ -82,7 +84,16 @@ inline double PairTimes::set(std::size_t i, std::size_t k, double time) {
     return kept;
 }
 
+inline bool PairTimes::any_finite() const {
+    std::uint64_t any = 0;
+    for (const std::uint64_t word : finite_)
+        any |= word;
+    return any != 0;
+}
+
 inline void PairTimes::clear() {
+    if (!any_finite())
+        return; // (a world at rest: one pass over the bits, not one per row)
     for (std::size_t i = 0; i < n_; ++i)
         visit_finite(i, [&](std::size_t k) { time_[i * n_ + k] = infinity; });
     std::fill(finite_.begin(), finite_.end(), 0);
@@ -96,6 +107,8 @@ inline PairTimes& PairTimes::operator=(const PairTimes& other) {
         return *this = std::move(copy);
     }
     clear();
+    if (!other.any_finite())
+        return *this; // every time +infinity, as ours now are
     for (std::size_t i = 0; i < n_; ++i) {
         other.visit_finite(i, [&](std::size_t k) {
             time_[i * n_ + k] = other.time_[i * n_ + k];
