@@ -143,8 +143,8 @@ double pair_contact_time(const MotionPiece& a, const MotionPiece& b, double now,
 }
 
 template <class Law>
-TableEvent table_event(const MotionPiece& piece, const Box& reach, double now, const Table& table,
-                       const PhysicsParams& p) {
+TableSearch table_event(const MotionPiece& piece, const Box& reach, double now, const Table& table,
+                        const PhysicsParams& p) {
     return classic_table_event(piece, reach, now, table, motion<Law>(p));
 }
 

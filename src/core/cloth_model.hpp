@@ -67,9 +67,10 @@ struct ClothModel {
     double (*pair_contact_time)(const MotionPiece& a, const MotionPiece& b, double now,
                                 double horizon, const PhysicsParams& params);
     /// A moving ball's next event on its own: its transition or an earlier table contact,
-    /// searched where `reach` (the box of its piece up to then) comes near.
-    TableEvent (*table_event)(const MotionPiece& piece, const Box& reach, double now,
-                              const Table& table, const PhysicsParams& params);
+    /// searched where `reach` (the box of its piece up to then) comes near, at the piece's start
+    /// (`now`); and the box of its path up to the event.
+    TableSearch (*table_event)(const MotionPiece& piece, const Box& reach, double now,
+                               const Table& table, const PhysicsParams& params);
 };
 
 /// The model `friction` names: the one place the physics looks at the friction kind.

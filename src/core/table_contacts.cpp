@@ -93,8 +93,8 @@ struct EarliestEvent {
 // The search every model shares, with the model's own line and point solvers (`motion`): rails
 // and jaw lines as lines whose contact must fall on the segment, jaw points, capture lines.
 template <class Motion>
-TableEvent table_event_search(const MotionPiece& piece, const Motion& motion, const Box& reach,
-                              double now, const Table& table, const PhysicsParams& params) {
+TableSearch table_event_search(const MotionPiece& piece, const Motion& motion, const Box& reach,
+                               double now, const Table& table, const PhysicsParams& params) {
     EarliestEvent found(piece, now);
     const double R = params.ball_radius;
     const double horizon = piece.end - now;
@@ -136,19 +136,26 @@ TableEvent table_event_search(const MotionPiece& piece, const Motion& motion, co
             found.consider(motion.line(pocket.capture_point, pocket.capture_normal, 0, until_rail),
                            TableEventKind::capture, p);
     }
-    return found.best;
+    const TableEvent& best = found.best;
+    // The first rail hit came first (found.best's time less now is until_rail then): its box
+    // is to_rail. A pocket's contact came sooner: the box up to it.
+    if (best.kind == TableEventKind::transition)
+        return {best, reach};
+    if (best.kind == TableEventKind::rail)
+        return {best, to_rail};
+    return {best, motion.box(best.time - now)};
 }
 
 } // namespace
 
-TableEvent physical_table_event(const MotionPiece& piece, const Box& reach, double now,
-                                const Table& table, const PhysicsParams& params) {
+TableSearch physical_table_event(const MotionPiece& piece, const Box& reach, double now,
+                                 const Table& table, const PhysicsParams& params) {
     return table_event_search(piece, ParabolaMotion{path_from(piece, now)}, reach, now, table,
                               params);
 }
 
-TableEvent classic_table_event(const MotionPiece& piece, const Box& reach, double now,
-                               const Table& table, const ClassicMotion& motion) {
+TableSearch classic_table_event(const MotionPiece& piece, const Box& reach, double now,
+                                const Table& table, const ClassicMotion& motion) {
     const StraightMotion straight{state_at(piece, now, motion.advance, *motion.params), motion};
     return table_event_search(piece, straight, reach, now, table, *motion.params);
 }

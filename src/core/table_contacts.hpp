@@ -24,16 +24,26 @@ struct TableEvent {
     int feature = 0;
 };
 
+/// A moving ball's next event on its own, and the box its centre stays in up to it.
+struct TableSearch {
+    TableEvent event;
+    /// From `now` to the event: the search's `reach` for the transition at the piece's end,
+    /// otherwise the box of the path up to the contact, as the model's reach from the piece's
+    /// start gives it (the search is made at the start of a piece, and it has the box of the path
+    /// up to the first rail at hand; the world would otherwise work it out again).
+    Box to_event;
+};
+
 /// The physical model's next event of a moving ball: its transition at the piece's end, or an
 /// earlier table contact (polynomial roots along the parabola, searched only where `reach`, the
-/// box of the piece up to then, comes near).
-TableEvent physical_table_event(const MotionPiece& piece, const Box& reach, double now,
-                                const Table& table, const PhysicsParams& params);
+/// box of the piece up to then, comes near). `now` is the piece's start.
+TableSearch physical_table_event(const MotionPiece& piece, const Box& reach, double now,
+                                 const Table& table, const PhysicsParams& params);
 
 /// A classic model's next event of a moving ball: the same search along its straight line, the
 /// contacts solved exactly in each phase of its law (classic_contacts.hpp).
-TableEvent classic_table_event(const MotionPiece& piece, const Box& reach, double now,
-                               const Table& table, const ClassicMotion& motion);
+TableSearch classic_table_event(const MotionPiece& piece, const Box& reach, double now,
+                                const Table& table, const ClassicMotion& motion);
 
 /// The unit vector from the centre of a ball touching the rail or jaw line `seg` to the contact,
 /// as the search finds it (every model's): across the line.

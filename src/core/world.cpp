@@ -39,11 +39,14 @@ struct World::Impl {
     std::vector<std::size_t> changed;
     std::vector<std::size_t> wedge_near;
     std::vector<Ball> wedge_held;
+    // A moving ball's piece's length, from set_piece to the refresh_table_event that follows it
+    // (always, before any search), which sets the ball's box once it knows its next event.
+    std::vector<double> piece_duration;
 
     Impl(const Table& t, const PhysicsParams& p, std::vector<Ball> balls)
         : table(t), params(p), cloth(core::cloth_model(p.friction)), pieces(balls.size()),
           table_events(balls.size()), schedule(balls.size(), 2 * p.ball_radius),
-          trajectory(p, balls.size()) {
+          trajectory(p, balls.size()), piece_duration(balls.size()) {
         place(balls);
     }
 
@@ -55,6 +58,7 @@ struct World::Impl {
             Trajectory empty(params, balls.size());
             pieces.resize(balls.size());
             table_events.resize(balls.size());
+            piece_duration.resize(balls.size());
             schedule = std::move(resized);
             trajectory = std::move(empty);
             recorded = false;
@@ -119,23 +123,37 @@ struct World::Impl {
         s.acceleration = cloth.acceleration(ball, params);
         if (ball.state == MotionState::pocketed)
             schedule.set_reach(i, core::empty_box(), {});
-        else
+        else if (!is_moving(ball))
             schedule.set_reach(i, reach_of(s, duration), path_of(s, duration));
+        else
+            piece_duration[i] = duration; // its box: refresh_table_event, which follows
         schedule.set_moving(i, is_moving(ball));
         if (recording)
             trajectory.add(i, now, ball);
     }
 
-    // Finds ball i's next event on its own, then shrinks its box to the path up to a contact with
-    // the table: the ball is recomputed there anyway, so pairs need not look further, and a fast
-    // ball's box then spans the stretch it really travels rather than its whole slide.
+    // Finds ball i's next event on its own, just after set_piece(i) (now is the piece's start),
+    // and gives a moving ball the box of its path up to it: the ball is recomputed there anyway,
+    // so pairs need not look further, and a fast ball's box then spans the stretch it really
+    // travels rather than its whole slide.
     void refresh_table_event(std::size_t i) {
-        table_events[i] = next_table_event(i);
-        schedule.set_table_time(i, table_events[i].time);
         const MotionPiece& s = pieces[i];
-        if (is_moving(s.ball) && table_events[i].time < s.end)
-            schedule.set_reach(i, reach_of(s, table_events[i].time - s.start),
-                               path_of(s, table_events[i].time - s.start));
+        if (!is_moving(s.ball)) {
+            // A ball spinning in place stops spinning at its piece's end; one at rest waits.
+            table_events[i] = s.ball.state == MotionState::spinning
+                                  ? TableEvent{s.end, TableEventKind::transition, 0}
+                                  : TableEvent{};
+            schedule.set_table_time(i, table_events[i].time);
+            return;
+        }
+        const double duration = piece_duration[i];
+        const core::TableSearch found =
+            cloth.table_event(s, reach_of(s, duration), now, table, params);
+        table_events[i] = found.event;
+        schedule.set_table_time(i, found.event.time);
+        const bool sooner = found.event.time < s.end; // a contact before the transition
+        schedule.set_reach(i, found.to_event,
+                           path_of(s, sooner ? found.event.time - s.start : duration));
     }
 
     // The capsule of the piece's centre over its first `duration` seconds, where the schedule
@@ -150,16 +168,6 @@ struct World::Impl {
         if (!is_moving(b))
             return {b.position, b.position};
         return cloth.reach(s, duration, params);
-    }
-
-    TableEvent next_table_event(std::size_t i) const {
-        const MotionPiece& s = pieces[i];
-        if (!is_moving(s.ball)) {
-            if (s.ball.state == MotionState::spinning)
-                return {s.end, TableEventKind::transition, 0};
-            return {};
-        }
-        return cloth.table_event(s, schedule.reach(i), now, table, params);
     }
 
     // Recomputes the pair contacts of ball i, whose table event is already up to date. `done` is
