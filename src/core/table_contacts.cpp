@@ -1,6 +1,7 @@
 #include "table_contacts.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "classic_contacts.hpp"
 #include "contact_time.hpp"
@@ -110,7 +111,14 @@ TableSearch table_event_search(const MotionPiece& piece, const Motion& motion, c
     // to it: for a fast ball that path's box is far smaller than the whole slide's.
     const double until_rail = std::min(horizon, found.best.time - now);
     const Box to_rail = motion.box(until_rail);
-    const Capsule to_rail_path = motion.capsule(until_rail);
+    // The capsule of that path, worked out at the first jaw point in its box (most searches
+    // have none).
+    std::optional<Capsule> to_rail_path;
+    auto misses = [&](Vec2 point) {
+        if (!to_rail_path)
+            to_rail_path = motion.capsule(until_rail);
+        return capsule_misses(*to_rail_path, point, R);
+    };
     for (int p = 0; p < 6; ++p) {
         if (!near_pocket(table, to_rail, p, R))
             continue;
@@ -128,7 +136,7 @@ TableSearch table_event_search(const MotionPiece& piece, const Motion& motion, c
             const Vec2 jaw = table.jaw_points[point];
             // The box of a long diagonal path holds points far from it: the capsule culls
             // those before the quartic.
-            if (boxes_within(to_rail, {jaw, jaw}, R) && !capsule_misses(to_rail_path, jaw, R))
+            if (boxes_within(to_rail, {jaw, jaw}, R) && !misses(jaw))
                 found.consider(motion.point(jaw, R, until_rail), TableEventKind::jaw_point, point);
         }
         const Pocket& pocket = table.pockets[p];
