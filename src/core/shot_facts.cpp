@@ -1,6 +1,8 @@
 #include <termpool/shot_facts.hpp>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 
 namespace termpool {
 
@@ -53,7 +55,10 @@ std::vector<Foul> ShotFacts::common_fouls() const {
 
 ShotFacts ShotFacts::from(const std::vector<Event>& events) {
     ShotFacts f;
-    std::vector<int> railed;
+    // The object balls that met a cushion or jaw: a bit each for the ids a rack uses, a list for
+    // any others (no list, and no allocation, for a shot of the computer's search).
+    std::uint64_t railed_ids = 0;
+    std::vector<int> railed_others;
     double first_time = 0;
     for (const Event& e : events) {
         switch (e.kind) {
@@ -73,8 +78,11 @@ ShotFacts ShotFacts::from(const std::vector<Event>& events) {
         case EventKind::jaw:
             if (f.first_contact >= 0)
                 f.rail_after_contact = true;
-            if (e.ball != 0 && std::find(railed.begin(), railed.end(), e.ball) == railed.end())
-                railed.push_back(e.ball);
+            if (e.ball > 0 && e.ball < 64)
+                railed_ids |= std::uint64_t{1} << e.ball;
+            else if (e.ball != 0 && std::find(railed_others.begin(), railed_others.end(), e.ball) ==
+                                        railed_others.end())
+                railed_others.push_back(e.ball);
             break;
         case EventKind::pocket:
             f.pocketed.push_back(e.ball);
@@ -87,7 +95,7 @@ ShotFacts ShotFacts::from(const std::vector<Event>& events) {
             break;
         }
     }
-    f.balls_to_rail = static_cast<int>(railed.size());
+    f.balls_to_rail = std::popcount(railed_ids) + static_cast<int>(railed_others.size());
     return f;
 }
 
