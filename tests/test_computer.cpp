@@ -38,6 +38,56 @@ TEST_CASE("the computer places the cue ball only where the rules allow", "[compu
     }
 }
 
+TEST_CASE("the shot from the spot the computer chose is the one its placing found", "[computer]") {
+    Game game = position(GameType::eight_ball, spread({0, 1, 2, 8, 9, 10}), 1, Group::solids);
+    game.apply({}, hand_made(game, {hit(0, 9), rail(9)})); // player 2 has ball in hand
+    REQUIRE(game.ball_in_hand() != BallInHand::none);
+    for (const Level level : {Level::medium, Level::hard, Level::pro}) {
+        INFO(level_name(level));
+        ComputerPlayer computer(level, 3);
+        const Vec2 spot = computer.place_cue_ball(game);
+        Game placed = game;
+        REQUIRE(placed.place_cue_ball(spot));
+        const std::uint64_t simulated = computer.simulations();
+        const ComputerShot shot = computer.shot(placed);
+        // Pro searches a spot more quickly than a shot: it searches the shot again.
+        CHECK((computer.simulations() == simulated) == (level != Level::pro));
+        Game check = placed;
+        CHECK(check
+                  .apply(shot.call,
+                         simulate_shot(check.table(), check.params(), check.balls(), shot.planned))
+                  .foul == Foul::none);
+        // Kept for that shot only: the next decision from the same position searches.
+        computer.shot(placed);
+        CHECK(computer.simulations() > simulated);
+    }
+    // Another spot than the one chosen, or the position set up anew with a ball a nanometre
+    // away: each is searched.
+    ComputerPlayer computer(Level::medium, 3);
+    const Vec2 spot = computer.place_cue_ball(game);
+    std::vector<Game> others;
+    for (const Vec2 other : game.legal_placements(6)) {
+        if (!(other == spot)) {
+            others.push_back(game);
+            REQUIRE(others.back().place_cue_ball(other));
+            break;
+        }
+    }
+    Game placed = game;
+    REQUIRE(placed.place_cue_ball(spot));
+    std::vector<Ball> balls = placed.balls();
+    balls.back().position.x += 1e-9;
+    others.push_back(Game::from_position(GameType::eight_ball, placed.table(), placed.params(),
+                                         balls, placed.shooter(), placed.player1_group(), false));
+    REQUIRE(others.size() == 2);
+    for (const Game& other : others) {
+        REQUIRE(computer.place_cue_ball(game) == spot);
+        const std::uint64_t simulated = computer.simulations();
+        computer.shot(other);
+        CHECK(computer.simulations() > simulated);
+    }
+}
+
 TEST_CASE("a seeded computer decides the same way twice", "[computer]") {
     const Game game(GameType::eight_ball, nine_foot(), PhysicsParams{}, 1, 5);
     Game after_break = game;

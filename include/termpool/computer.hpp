@@ -5,6 +5,7 @@
 /// of its level.
 
 #include <cstdint>
+#include <optional>
 #include <termpool/level.hpp>
 #include <termpool/rules.hpp>
 
@@ -33,7 +34,9 @@ public:
     ComputerPlayer(Level level, std::uint64_t seed);
     /// The level.
     Level level() const { return level_; }
-    /// Where to put the cue ball when the game gives it ball in hand.
+    /// Where to put the cue ball when the game gives it ball in hand. The shot it found from
+    /// there is kept: `shot` of the game with the cue ball placed there plays it (with fresh
+    /// noise) rather than search the same position again.
     Vec2 place_cue_ball(const Game& game);
     /// The option to take when the game owes this player a choice.
     Choice choose(const Game& game);
@@ -71,6 +74,14 @@ private:
     // current decision's searches stop sampling (decision_budget).
     std::uint64_t work_ = 0;
     std::uint64_t budget_end_ = UINT64_MAX;
+    // The search of the spot place_cue_ball chose, for the shot from there (the next decision
+    // the game asks of this player), when it was searched as shot() would search it: in full,
+    // within its budget, and not the quicker search pro makes of a spot.
+    struct Placed {
+        Game game; // with the cue ball on the spot
+        ComputerShot shot;
+    };
+    std::optional<Placed> placed_;
 };
 
 } // namespace termpool

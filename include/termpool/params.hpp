@@ -117,6 +117,7 @@ struct FrictionModel {
     double decay_rate = 0;                      ///< K in 1/s (decay, combined)
     double deceleration = 0;                    ///< A in m/s^2 (constant, combined)
     double rest_speed = 0.005;                  ///< classic models: below this speed a ball stops
+    bool operator==(const FrictionModel&) const = default; ///< exact equality
 };
 
 /// Everything the simulator needs besides the table and the balls.
@@ -149,6 +150,8 @@ struct PhysicsParams {
     CollisionModel collision = CollisionModel::physical; ///< ball-ball model
     CushionModel cushion = CushionModel::physical;       ///< ball-cushion and ball-jaw model
     FrictionModel friction;                              ///< cloth model
+    /// Exact equality (the same physics to the bit, NaN excepted).
+    bool operator==(const PhysicsParams&) const = default;
 };
 
 /// The constants of PhysicsParams that a scenario's `param NAME VALUE` line, the Python module

@@ -110,6 +110,7 @@ struct SnookerState {
     bool free_ball = false;        ///< the shooter may nominate any ball as the ball on
     bool respotted_black = false;  ///< the scores were level at the end: re-spotted black
     int misses[2] = {0, 0};        ///< misses in a row of each player, the balls replaced
+    bool operator==(const SnookerState&) const = default; ///< exact equality
 };
 
 /// A called shot. Ball 0 means "not called": the referee calls the obvious shot for the
@@ -222,6 +223,8 @@ struct GameState {
     /// Puts ball `id` back on the foot spot, or the nearest free point behind it on the long
     /// string, or else in front of it (a pool ball spotted after it dropped).
     void spot_on_foot_string(int id);
+    /// Exact equality of every field (the balls to the bit).
+    bool operator==(const GameState&) const = default;
 };
 
 /// What a referee has written down besides the balls: the panel shows it, a game set up in the
@@ -232,6 +235,7 @@ struct ScoreSheet {
     bool push_out_allowed = false;     ///< 9-ball, 10-ball: a push-out may be declared now
     int fouls_in_a_row[2] = {0, 0};    ///< 9-ball, 10-ball: each player's fouls in a row
     SnookerState frame;                ///< snooker: the frame's points, breaks and ball on
+    bool operator==(const ScoreSheet&) const = default; ///< exact equality
 };
 
 struct GameRow;

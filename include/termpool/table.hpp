@@ -42,6 +42,7 @@ struct CushionSegment {
     Vec2 end;    ///< the other end
     Vec2 normal; ///< unit normal pointing towards the playing area
     int pocket;  ///< 0 for a rail, else the pocket (1..6) whose jaw this is
+    bool operator==(const CushionSegment&) const = default; ///< exact equality
 };
 
 /// One pocket: its mouth, jaws and the line behind which a ball centre is captured.
@@ -52,6 +53,7 @@ struct Pocket {
     Vec2 capture_normal; ///< unit normal of the capture line, pointing towards the table
     Vec2 region_min;     ///< box holding the jaws and the mouth, for quick rejection
     Vec2 region_max;     ///< upper corner of that box
+    bool operator==(const Pocket&) const = default; ///< exact equality
 };
 
 /// A table: the playing surface and everything a ball can hit or fall into.
@@ -74,6 +76,8 @@ struct Table {
     Vec2 head_spot() const { return {0.25 * length, 0.5 * width}; }
     /// x of the head string; the kitchen is x <= this.
     double head_string_x() const { return 0.25 * length; }
+    /// Exact equality (the same table to the bit, NaN excepted).
+    bool operator==(const Table&) const = default;
 };
 
 /// Geometry of the pocket mouths (WPA): widths between the points of the jaws, the angle between

@@ -475,7 +475,13 @@ Strike ComputerPlayer::noisy(const Strike& planned, const PhysicsParams& params,
 
 ComputerShot ComputerPlayer::shot(const Game& game) {
     budget_end_ = work_ + decision_budget;
-    ComputerShot s = search(game);
+    // The position place_cue_ball searched for its spot, to the bit (the same game, its score
+    // sheet too): that search's shot, as a search now would find it but for its noise.
+    const bool placed = placed_ && placed_->game.type() == game.type() &&
+                        placed_->game.state() == game.state() &&
+                        placed_->game.score_sheet() == game.score_sheet();
+    ComputerShot s = placed ? placed_->shot : search(game);
+    placed_.reset();
     s.strike = with_noise(s.planned, game.params());
     return s;
 }
@@ -582,6 +588,7 @@ Vec2 ComputerPlayer::place_break(const Game& game) {
 
 Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
     budget_end_ = work_ + decision_budget;
+    placed_.reset();
     if (game.is_break())
         return place_break(game);
     // Try a spread of legal spots; keep the one whose best shot scores highest.
@@ -590,15 +597,22 @@ Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
         spots = snooker_spots_to_search(game, std::move(spots), direction_sigma_deg(level_));
     Vec2 best_spot = spots.empty() ? Vec2{} : spots.front();
     double best = -1e18;
+    // Pro searches a spot more quickly than a shot (its leaves not played out).
+    const bool searched_as_shot = level_ != Level::pro;
     const LeavesNotPlayedOut quick(plays_leaves_out_);
     for (const Vec2 spot : spots) {
         Game trial = game;
         if (!trial.place_cue_ball(spot))
             continue;
-        const double s = search(trial).score;
-        if (s > best) {
-            best = s;
+        const ComputerShot found = search(trial);
+        if (found.score > best) {
+            best = found.score;
             best_spot = spot;
+            // In full only if no sample was refused for the budget: the work stayed below it.
+            if (searched_as_shot && work_ < budget_end_)
+                placed_ = Placed{std::move(trial), found};
+            else
+                placed_.reset();
         }
     }
     return best_spot;
@@ -610,6 +624,7 @@ bool ComputerPlayer::concedes(const Game& game) const {
 
 Choice ComputerPlayer::choose(const Game& game) {
     budget_end_ = work_ + decision_budget;
+    placed_.reset();
     // Each option is judged by the table it leaves: the best shot there for whoever shoots
     // next, good for this player if it shoots, bad if the opponent does. Breaking is worth a
     // little to the breaker.
