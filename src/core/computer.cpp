@@ -85,7 +85,8 @@ double score(const Verdict& v, int shooter) {
 // cosine of that angle below 0.33 (about 71 degrees), or past 90 degrees, says so with a margin
 // far beyond the rounding. Only for a positive radius and lengths from a nanometre to a
 // kilometre, where the squares neither underflow nor overflow; otherwise the full test decides.
-bool surely_too_thin(Vec2 to_object, Vec2 to_pocket, double R) {
+// (Inline: asked of every ball and pocket of every sample, it cost as much again as a call.)
+inline bool surely_too_thin(Vec2 to_object, Vec2 to_pocket, double R) {
     const double object_squared = length_squared(to_object);
     const double pocket_squared = length_squared(to_pocket);
     if (!(R > 0 && object_squared > 1e-18 && object_squared < 1e6 && pocket_squared > 1e-18 &&
