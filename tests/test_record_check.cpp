@@ -169,9 +169,13 @@ TEST_CASE("an edited race does not pass the check", "[record][check]") {
     header.race_to = 2;
     header.computers[0] = Level::hard;
     header.computers[1] = Level::hard;
+    // Twenty moves of the first rack at most, so that nothing the actions hold depends on who
+    // breaks the next: only the check can tell that the rule was edited.
     Match match = test::started(header, 3);
-    for (int i = 0; i < 20; ++i)
+    for (int i = 0; i < 20 && match.rack() == 1 && match.game().winner() == 0; ++i)
         REQUIRE(test::play_computer_move(match) == MatchError::none);
+    REQUIRE(match.rack() == 1);
+    REQUIRE(match.record().actions.size() >= 4);
     const std::string text = format_record(match.record());
     CHECK(replay_error(read(text)).empty());
     const std::string longer = edited(text, "\nrace 2\n", "\nrace 5\n");
