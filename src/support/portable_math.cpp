@@ -251,37 +251,37 @@ double log1p(double x) {
     return log(u) * (x / (u - 1.0));
 }
 
-// sin and cos alone work out only the series by_quadrant would take theirs from.
+namespace {
+
+// sin of r + k pi/2 from the one series it needs (by_quadrant works out both): cos x is the sin
+// of the next quadrant.
+double sin_by_quadrant(double r, long long k) {
+    switch (k & 3) {
+    case 0:
+        return sin_kernel(r);
+    case 1:
+        return cos_kernel(r);
+    case 2:
+        return -sin_kernel(r);
+    default:
+        return -cos_kernel(r);
+    }
+}
+
+} // namespace
+
 double sin(double x) {
     if (!std::isfinite(x))
         return nan;
     const Quadrant q = reduce_pio2(x);
-    switch (q.k & 3) {
-    case 0:
-        return sin_kernel(q.r);
-    case 1:
-        return cos_kernel(q.r);
-    case 2:
-        return -sin_kernel(q.r);
-    default:
-        return -cos_kernel(q.r);
-    }
+    return sin_by_quadrant(q.r, q.k);
 }
 
 double cos(double x) {
     if (!std::isfinite(x))
         return nan;
     const Quadrant q = reduce_pio2(x);
-    switch (q.k & 3) {
-    case 0:
-        return cos_kernel(q.r);
-    case 1:
-        return -sin_kernel(q.r);
-    case 2:
-        return -cos_kernel(q.r);
-    default:
-        return sin_kernel(q.r);
-    }
+    return sin_by_quadrant(q.r, q.k + 1);
 }
 
 SinCos sin_cos_degrees(double degrees) {
