@@ -145,12 +145,15 @@ Quadrant reduce_pio2(double x) {
     return {((x - k * pio2_1) - k * pio2_2) - k * pio2_3, quarter_turns(k)};
 }
 
-// The series' coefficients (-1)^i / (2i + 3) for i = 0..29 (-1/3 up to -1/61), worked out by
-// the compiler: divided at run time, they cost as much as the rest of the function.
+// The series' coefficients (-1)^(i+1) / (2i + 3) for i = 0..28 (-1/3, 1/5, ... 1/59), worked out
+// by the compiler: divided at run time, they cost as much as the rest of the function. The last,
+// for t^61, is -1/61: the series' own sign is +, but the loop these replaced began from -1/61,
+// and a term below 2^-60 t still moves a result's last bit now and then; kept, for those bits.
 constexpr std::array<double, 30> atan_series = [] {
     std::array<double, 30> c{};
-    for (int i = 0; i < 30; ++i)
+    for (int i = 0; i < 29; ++i)
         c[static_cast<std::size_t>(i)] = (i % 2 == 0 ? -1.0 : 1.0) / (2 * i + 3);
+    c[29] = -1.0 / 61;
     return c;
 }();
 // atan t for |t| <= 7/16: t - t^3/3 + t^5/5 - ... to t^61 (t^2 <= 0.19, so the next term is
