@@ -42,15 +42,16 @@ TEST_CASE("the shot from the spot the computer chose is the one its placing foun
     Game game = position(GameType::eight_ball, spread({0, 1, 2, 8, 9, 10}), 1, Group::solids);
     game.apply({}, hand_made(game, {hit(0, 9), rail(9)})); // player 2 has ball in hand
     REQUIRE(game.ball_in_hand() != BallInHand::none);
-    for (const Level level : {Level::medium, Level::hard, Level::pro}) {
+    for (const Level level : {Level::easy, Level::medium, Level::hard, Level::pro}) {
         INFO(level_name(level));
-        ComputerPlayer computer(level, 3);
-        const Vec2 spot = computer.place_cue_ball(game);
+        // As Match asks: the spot, the same game with the cue ball put there, its shot.
         Game placed = game;
+        ComputerPlayer computer(level, 3);
+        const Vec2 spot = computer.place_cue_ball(placed);
         REQUIRE(placed.place_cue_ball(spot));
         const std::uint64_t simulated = computer.simulations();
         const ComputerShot shot = computer.shot(placed);
-        // Pro searches a spot more quickly than a shot: it searches the shot again.
+        // Pro searches a spot at pool more quickly than a shot: it searches the shot again.
         CHECK((computer.simulations() == simulated) == (level != Level::pro));
         Game check = placed;
         CHECK(check
@@ -61,31 +62,34 @@ TEST_CASE("the shot from the spot the computer chose is the one its placing foun
         computer.shot(placed);
         CHECK(computer.simulations() > simulated);
     }
-    // Another spot than the one chosen, or the position set up anew with a ball a nanometre
-    // away: each is searched.
-    ComputerPlayer computer(Level::medium, 3);
-    const Vec2 spot = computer.place_cue_ball(game);
-    std::vector<Game> others;
-    for (const Vec2 other : game.legal_placements(6)) {
-        if (!(other == spot)) {
-            others.push_back(game);
-            REQUIRE(others.back().place_cue_ball(other));
-            break;
-        }
-    }
-    Game placed = game;
-    REQUIRE(placed.place_cue_ball(spot));
-    std::vector<Ball> balls = placed.balls();
-    balls.back().position.x += 1e-9;
-    others.push_back(Game::from_position(GameType::eight_ball, placed.table(), placed.params(),
-                                         balls, placed.shooter(), placed.player1_group(), false));
-    REQUIRE(others.size() == 2);
-    for (const Game& other : others) {
-        REQUIRE(computer.place_cue_ball(game) == spot);
+    // The same game with the cue ball put elsewhere (another of the spots, or a nanometre
+    // away), or a copy of it on the chosen spot: each is searched.
+    const auto searched = [&](const auto& put_elsewhere) {
+        Game placed = game;
+        ComputerPlayer computer(Level::medium, 3);
+        put_elsewhere(placed, computer.place_cue_ball(placed));
         const std::uint64_t simulated = computer.simulations();
-        computer.shot(other);
-        CHECK(computer.simulations() > simulated);
-    }
+        computer.shot(placed);
+        return computer.simulations() > simulated;
+    };
+    CHECK(searched([&](Game& placed, Vec2 spot) {
+        bool elsewhere = false;
+        for (const Vec2 other : game.legal_placements(6))
+            if (!elsewhere && !(other == spot))
+                elsewhere = placed.place_cue_ball(other);
+        REQUIRE(elsewhere);
+    }));
+    CHECK(searched([&](Game& placed, Vec2 spot) {
+        REQUIRE(placed.place_cue_ball({spot.x + 1e-9, spot.y}));
+    }));
+    Game original = game;
+    ComputerPlayer computer(Level::medium, 3);
+    const Vec2 spot = computer.place_cue_ball(original);
+    REQUIRE(original.place_cue_ball(spot));
+    const Game copy = original;
+    const std::uint64_t simulated = computer.simulations();
+    computer.shot(copy);
+    CHECK(computer.simulations() > simulated);
 }
 
 TEST_CASE("a seeded computer decides the same way twice", "[computer]") {

@@ -35,8 +35,8 @@ public:
     /// The level.
     Level level() const { return level_; }
     /// Where to put the cue ball when the game gives it ball in hand. The shot it found from
-    /// there is kept: `shot` of the game with the cue ball placed there plays it (with fresh
-    /// noise) rather than search the same position again.
+    /// there is kept: `shot` of this same game with the cue ball placed there (as Match asks
+    /// next) plays it, with fresh noise, rather than search the same position again.
     Vec2 place_cue_ball(const Game& game);
     /// The option to take when the game owes this player a choice.
     Choice choose(const Game& game);
@@ -76,9 +76,13 @@ private:
     std::uint64_t budget_end_ = UINT64_MAX;
     // The search of the spot place_cue_ball chose, for the shot from there (the next decision
     // the game asks of this player), when it was searched as shot() would search it: in full,
-    // within its budget, and not the quicker search pro makes of a spot.
+    // within its budget, and not the quicker search pro makes of a spot at pool.
     struct Placed {
-        Game game; // with the cue ball on the spot
+        // The game place_cue_ball was given, by its address (only compared: the referee keeps
+        // what a position does not show, a pool rack's turns towards a stalemate, and only the
+        // same game moved on by the placing alone is sure to hold what the search saw).
+        std::uintptr_t source = 0;
+        Game game; // a copy of it with the cue ball on the spot
         ComputerShot shot;
     };
     std::optional<Placed> placed_;

@@ -476,9 +476,11 @@ Strike ComputerPlayer::noisy(const Strike& planned, const PhysicsParams& params,
 
 ComputerShot ComputerPlayer::shot(const Game& game) {
     budget_end_ = work_ + decision_budget;
-    // The position place_cue_ball searched for its spot, to the bit (the same game, its score
-    // sheet too): that search's shot, as a search now would find it but for its noise.
-    const bool placed = placed_ && placed_->game.type() == game.type() &&
+    // The game place_cue_ball was given, now as it left its copy on the chosen spot (every field
+    // of its state and score sheet equal): that search's shot, as a search now would find it but
+    // for its noise.
+    const bool placed = placed_ && placed_->source == reinterpret_cast<std::uintptr_t>(&game) &&
+                        placed_->game.type() == game.type() &&
                         placed_->game.state() == game.state() &&
                         placed_->game.score_sheet() == game.score_sheet();
     ComputerShot s = placed ? placed_->shot : search(game);
@@ -611,7 +613,7 @@ Vec2 ComputerPlayer::place_cue_ball(const Game& game) {
             best_spot = spot;
             // In full only if no sample was refused for the budget: the work stayed below it.
             if (searched_as_shot && work_ < budget_end_)
-                placed_ = Placed{std::move(trial), found};
+                placed_ = Placed{reinterpret_cast<std::uintptr_t>(&game), std::move(trial), found};
             else
                 placed_.reset();
         }
