@@ -1,6 +1,7 @@
 #include "table_contacts.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "classic_contacts.hpp"
@@ -154,7 +155,76 @@ TableSearch table_event_search(const MotionPiece& piece, const Motion& motion, c
     return {best, motion.box(best.time - now)};
 }
 
+// Whether the search would cull every rail and pocket for a ball whose box is `box`: the culls
+// are monotone in the box (a box inside it is culled too, to the bit).
+bool culls_everything(const Table& table, const Box& box, double radius) {
+    for (int c = 0; c < 6; ++c)
+        if (box_reaches_line(box, table.cushions[c].start, table.cushions[c].normal, radius))
+            return false;
+    for (int p = 0; p < 6; ++p)
+        if (near_pocket(table, box, p, radius))
+            return false;
+    return true;
+}
+
+// `box` made smaller along `axis` (0: x, 1: y) until it is clear of every pocket's region
+// widened by `radius`, from the side each region lies on.
+Box clear_of_pockets(const Table& table, Box box, int axis, double radius) {
+    auto coord = [axis](Vec2& v) -> double& { return axis == 0 ? v.x : v.y; };
+    for (const Pocket& pocket : table.pockets) {
+        Box region{pocket.region_min, pocket.region_max};
+        if (!boxes_within(box, region, radius))
+            continue;
+        const double middle = 0.5 * (coord(box.min) + coord(box.max));
+        if (0.5 * (coord(region.min) + coord(region.max)) < middle)
+            coord(box.min) = std::max(coord(box.min), coord(region.max) + radius);
+        else
+            coord(box.max) = std::min(coord(box.max), coord(region.min) - radius);
+    }
+    return box;
+}
+
 } // namespace
+
+OpenField open_field(const Table& table, double radius) {
+    // Inside every rail's line by more than a radius.
+    Box inner{{-infinity, -infinity}, {infinity, infinity}};
+    for (int c = 0; c < 6; ++c) {
+        const CushionSegment& rail = table.cushions[c];
+        const Vec2 n = rail.normal;
+        if (n.x == 1 && n.y == 0)
+            inner.min.x = std::max(inner.min.x, rail.start.x + radius);
+        else if (n.x == -1 && n.y == 0)
+            inner.max.x = std::min(inner.max.x, rail.start.x - radius);
+        else if (n.x == 0 && n.y == 1)
+            inner.min.y = std::max(inner.min.y, rail.start.y + radius);
+        else if (n.x == 0 && n.y == -1)
+            inner.max.y = std::min(inner.max.y, rail.start.y - radius);
+        else
+            return {};
+    }
+    const double middle_x = 0.5 * (inner.min.x + inner.max.x);
+    Box left = inner, right = inner;
+    left.max.x = middle_x;
+    right.min.x = middle_x;
+    const Box candidates[] = {clear_of_pockets(table, inner, 1, radius),
+                              clear_of_pockets(table, left, 0, radius),
+                              clear_of_pockets(table, right, 0, radius)};
+    // Kept a micrometre inside what is checked: a reach in a box then has the search's own box
+    // of its path within the checked one.
+    constexpr double spare = 1e-6;
+    OpenField field;
+    for (const Box& candidate : candidates) {
+        const Box kept{candidate.min + Vec2{2 * spare, 2 * spare},
+                       candidate.max - Vec2{2 * spare, 2 * spare}};
+        const Box checked{kept.min - Vec2{spare, spare}, kept.max + Vec2{spare, spare}};
+        if (kept.min.x < kept.max.x && kept.min.y < kept.max.y && std::isfinite(kept.min.x) &&
+            std::isfinite(kept.max.x) && std::isfinite(kept.min.y) &&
+            std::isfinite(kept.max.y) && culls_everything(table, checked, radius))
+            field.boxes[field.count++] = kept;
+    }
+    return field;
+}
 
 TableSearch physical_table_event(const MotionPiece& piece, const Box& reach, double now,
                                  const Table& table, const PhysicsParams& params) {

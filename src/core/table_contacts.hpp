@@ -3,6 +3,7 @@
 // the table (a rail, a pocket's jaw line or jaw point, a pocket's capture line), under each cloth
 // model. Contacts between balls are kept apart (pair_contacts.hpp).
 
+#include <array>
 #include <limits>
 #include <termpool/params.hpp>
 #include <termpool/table.hpp>
@@ -44,6 +45,31 @@ TableSearch physical_table_event(const MotionPiece& piece, const Box& reach, dou
 /// contacts solved exactly in each phase of its law (classic_contacts.hpp).
 TableSearch classic_table_event(const MotionPiece& piece, const Box& reach, double now,
                                 const Table& table, const ClassicMotion& motion);
+
+/// Boxes of the table where a ball's centre meets nothing of it: no rail line within a radius,
+/// no pocket's region either. A moving ball whose reach lies in one of them has its transition
+/// for its next event on its own, as the search would find after culling every rail and pocket
+/// (most searches of a break: balls crossing the bed). Worked out once per table and ball size.
+struct OpenField {
+    std::array<Box, 3> boxes{}; ///< the long band between the pockets, and the two halves
+    int count = 0;              ///< how many of `boxes` hold
+    /// Whether `reach` lies in one of the boxes.
+    bool holds(const Box& reach) const {
+        for (int k = 0; k < count; ++k) {
+            const Box& o = boxes[k];
+            if (reach.min.x >= o.min.x && reach.max.x <= o.max.x && reach.min.y >= o.min.y &&
+                reach.max.y <= o.max.y)
+                return true;
+        }
+        return false;
+    }
+};
+
+/// The open field of a table for balls of `radius`: only boxes that the search's own culls
+/// reject, with a micrometre to spare (the search culls the pockets with the box of the path it
+/// works out again, which may differ from the world's reach in the last bits). Without
+/// axis-aligned rails, none.
+OpenField open_field(const Table& table, double radius);
 
 /// The unit vector from the centre of a ball touching the rail or jaw line `seg` to the contact,
 /// as the search finds it (every model's): across the line.

@@ -25,6 +25,7 @@ struct World::Impl {
     Table table;
     PhysicsParams params;
     core::ClothModel cloth; // chosen once, from params.friction
+    core::OpenField open_field; // of the table, for balls of params' radius
     std::vector<MotionPiece> pieces;
     std::vector<TableEvent> table_events; // each ball's next event on its own
     core::EventSchedule schedule;         // what happens next, and the pair contacts
@@ -44,7 +45,8 @@ struct World::Impl {
     std::vector<double> piece_duration;
 
     Impl(const Table& t, const PhysicsParams& p, std::vector<Ball> balls)
-        : table(t), params(p), cloth(core::cloth_model(p.friction)), pieces(balls.size()),
+        : table(t), params(p), cloth(core::cloth_model(p.friction)),
+          open_field(core::open_field(t, p.ball_radius)), pieces(balls.size()),
           table_events(balls.size()), schedule(balls.size(), 2 * p.ball_radius),
           trajectory(p, balls.size()), piece_duration(balls.size()) {
         place(balls);
@@ -91,6 +93,7 @@ struct World::Impl {
         table = o.table;
         params = o.params;
         cloth = o.cloth;
+        open_field = o.open_field;
         pieces = o.pieces;
         table_events = o.table_events;
         schedule = o.schedule;
@@ -147,8 +150,12 @@ struct World::Impl {
             return;
         }
         const double duration = piece_duration[i];
+        const core::Box reach = reach_of(s, duration);
+        // In the open field the search would cull everything and find the transition.
         const core::TableSearch found =
-            cloth.table_event(s, reach_of(s, duration), now, table, params);
+            open_field.holds(reach)
+                ? core::TableSearch{{s.end, TableEventKind::transition, 0}, reach}
+                : cloth.table_event(s, reach, now, table, params);
         table_events[i] = found.event;
         schedule.set_table_time(i, found.event.time);
         const bool sooner = found.event.time < s.end; // a contact before the transition
