@@ -79,7 +79,8 @@ TEST_CASE("a ball whose reach lies in the open field has its transition next, as
                     continue;
                 const double now = rng.uniform(0, 10);
                 const double duration = cloth.time_to_transition(b, params);
-                const core::MotionPiece piece{b, now, now + duration, cloth.acceleration(b, params)};
+                const core::MotionPiece piece{b, now, now + duration,
+                                              cloth.acceleration(b, params)};
                 const core::Box reach = cloth.reach(piece, duration, params);
                 const core::TableSearch found = cloth.table_event(piece, reach, now, table, params);
                 ++searched;

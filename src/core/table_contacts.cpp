@@ -219,8 +219,8 @@ OpenField open_field(const Table& table, double radius) {
                        candidate.max - Vec2{2 * spare, 2 * spare}};
         const Box checked{kept.min - Vec2{spare, spare}, kept.max + Vec2{spare, spare}};
         if (kept.min.x < kept.max.x && kept.min.y < kept.max.y && std::isfinite(kept.min.x) &&
-            std::isfinite(kept.max.x) && std::isfinite(kept.min.y) &&
-            std::isfinite(kept.max.y) && culls_everything(table, checked, radius))
+            std::isfinite(kept.max.x) && std::isfinite(kept.min.y) && std::isfinite(kept.max.y) &&
+            culls_everything(table, checked, radius))
             field.boxes[field.count++] = kept;
     }
     return field;

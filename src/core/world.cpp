@@ -24,7 +24,7 @@ using core::TableEventKind;
 struct World::Impl {
     Table table;
     PhysicsParams params;
-    core::ClothModel cloth; // chosen once, from params.friction
+    core::ClothModel cloth;     // chosen once, from params.friction
     core::OpenField open_field; // of the table, for balls of params' radius
     std::vector<MotionPiece> pieces;
     std::vector<TableEvent> table_events; // each ball's next event on its own
