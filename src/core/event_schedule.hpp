@@ -243,12 +243,21 @@ void EventSchedule::refresh(std::size_t i, std::size_t done, double now, Contact
                 search(base + static_cast<std::size_t>(std::countr_zero(reached)));
         }
     }
-    // The pairs that held a contact and are out of reach now (the pair with `done` excepted).
+    // The pairs that held a contact and are out of reach now (the pair with `done` excepted)
+    // are cleared, and the row's minimum is found among the others in the same walk (as
+    // rescan_row finds it: ascending, the lowest partner on ties).
+    double min_time = infinity;
+    std::size_t min_partner = n;
     pairs_.visit_finite(i, [&](std::size_t k) {
-        if (k != done && searched_[k] != search_)
+        if (k != done && searched_[k] != search_) {
             set_time(i, k, infinity, true);
+        } else if (row[k] < min_time) {
+            min_time = row[k];
+            min_partner = k;
+        }
     });
-    rescan_row(i);
+    row_min_time_[i] = min_time;
+    row_min_partner_[i] = min_partner;
     key_changed(i);
 }
 
