@@ -2,17 +2,18 @@
 // without the quartic's search. It must never say "apart" where first_contact_time finds a
 // contact (the simulation's bits rest on that), and it must say so for most near misses of a
 // ball rolling past another at rest, which is what it is for.
+#include "support/portable_math.hpp"
+#include "support/random.hpp"
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <limits>
-#include <numbers>
-#include <random>
 
 #include "core/contact_time.hpp"
 
 using termpool::Vec2;
 using termpool::core::clearly_apart;
+using termpool::core::first_contact_estimate;
 using termpool::core::first_contact_time;
 using termpool::core::pair_gap;
 using termpool::core::Path;
@@ -43,7 +44,7 @@ public:
         const double offset = distance_ + uniform(-0.002, 0.005);
         const double before = uniform(0, 1);
         Path a{{0, 0}, u * speed, {}, 0};
-        const int kind = static_cast<int>(uniform(0, 4));
+        const auto kind = random_.below(4);
         if (kind == 0) {
             a.acceleration = u * -deceleration; // rolling: along its velocity
         } else if (kind == 1) {
@@ -53,6 +54,10 @@ public:
             a.acceleration = u * -deceleration + side * (deceleration * uniform(-1e-15, 1e-15));
         }
         Path b{u * before + side * (uniform(0, 1) < 0.5 ? offset : -offset), {}, {}, 0};
+        // Somewhere on a 9 ft table (the test's margin grows with the coordinates).
+        const Vec2 at{uniform(0, 2.54), uniform(0, 1.27)};
+        a.position = a.position + at;
+        b.position = b.position + at;
         if (kind == 3) {
             const Vec2 w = direction();
             b.velocity = w * log_uniform(0.01, 3);
@@ -67,16 +72,16 @@ public:
     }
 
 private:
-    double uniform(double lo, double hi) {
-        return std::uniform_real_distribution<double>(lo, hi)(rng_);
+    double uniform(double lo, double hi) { return random_.uniform(lo, hi); }
+    double log_uniform(double lo, double hi) {
+        return lo * termpool::portable::exp(termpool::portable::log(hi / lo) * uniform(0, 1));
     }
-    double log_uniform(double lo, double hi) { return lo * std::pow(hi / lo, uniform(0, 1)); }
     Vec2 direction() {
-        const double angle = uniform(0, 2 * std::numbers::pi);
-        return {std::cos(angle), std::sin(angle)};
+        const double angle = uniform(0, 6.283185307179586);
+        return {termpool::portable::cos(angle), termpool::portable::sin(angle)};
     }
     double distance_;
-    std::mt19937_64 rng_{0xc1ea4a9a47ULL};
+    termpool::Random random_{0xc1ea4a9a47ULL}; // the same cases with every standard library
 };
 
 } // namespace
@@ -89,6 +94,13 @@ TEST_CASE("clearly_apart: never where the quartic finds a contact, and most near
         const Case c = cases.next();
         const double found = first_contact_time(pair_gap(c.a, c.b, 2 * R), c.horizon);
         const bool says_apart = clearly_apart(c.a, c.b, 2 * R, c.horizon);
+        // The pair search's estimate: the quadratic bound's answer, or no contact in its place.
+        const auto with = termpool::core::path_path_contact_estimate(c.a, c.b, 2 * R, c.horizon);
+        const auto without = first_contact_estimate(pair_gap(c.a, c.b, 2 * R), c.horizon);
+        const bool same = with.exact == without.exact && with.time == without.time;
+        const bool replaced = !without.exact && with.exact && with.time == infinity && says_apart;
+        if (!same && !replaced && ++wrong <= 5)
+            FAIL_CHECK("the estimate " << with.time << " against " << without.time);
         if (found < infinity) {
             ++contacts;
             if (says_apart && ++wrong <= 5)
@@ -115,9 +127,11 @@ TEST_CASE("clearly_apart: a ball rolling past another", "[polynomial]") {
     // Within the micrometres of its margin, or touching: the search decides.
     CHECK_FALSE(clearly_apart(rolling, past(2 * R + 1e-7), 2 * R, 2));
     CHECK_FALSE(clearly_apart(rolling, past(2 * R - 0.001), 2 * R, 2));
-    // No relative motion, or a horizon without end: no answer from it.
+    // No relative motion, a horizon without end, or a distance that is not one: no answer.
     CHECK_FALSE(clearly_apart(past(1), past(0), 2 * R, 2));
     CHECK_FALSE(clearly_apart(rolling, past(1), 2 * R, infinity));
+    CHECK_FALSE(clearly_apart(rolling, past(2 * R - 1e-5), -2 * R, 2));
+    CHECK_FALSE(clearly_apart(rolling, past(1), std::nan(""), 2));
 }
 
 TEST_CASE("path_point_contact_time: a jaw point is found as the quartic finds it", "[polynomial]") {

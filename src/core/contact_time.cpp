@@ -18,7 +18,8 @@ double path_line_contact_time(const Path& a, Vec2 point, Vec2 normal, double off
 
 double path_point_contact_time(const Path& a, Vec2 point, double radius, double horizon) {
     const Path fixed{point, {}, {}, horizon};
-    // The quartic's search would find nothing (most jaw points a path's capsule does not cull).
+    // The quartic's search would find nothing: most jaw points left by the capsule's cull are
+    // this far from the path.
     if (clearly_apart(a, fixed, radius, horizon))
         return std::numeric_limits<double>::infinity();
     return path_path_contact_time(a, fixed, radius, horizon);
