@@ -10,6 +10,8 @@
 #include <limits>
 
 #include "core/contact_time.hpp"
+#include "core/motion_piece.hpp"
+#include "core/pair_contacts.hpp"
 
 using termpool::Vec2;
 using termpool::core::clearly_apart;
@@ -30,6 +32,21 @@ struct Case {
     Path a, b;
     double horizon;
 };
+
+// clearly_apart with the size of a's coordinates for its `place`.
+bool told_apart(const Path& a, const Path& b, double distance, double horizon) {
+    return clearly_apart(a, b, distance, horizon, std::abs(a.position.x) + std::abs(a.position.y));
+}
+
+// A piece of motion whose path from time 0 is `path`.
+termpool::core::MotionPiece piece_of(const Path& path) {
+    termpool::core::MotionPiece piece;
+    piece.ball.position = path.position;
+    piece.ball.velocity = path.velocity;
+    piece.ball.state = termpool::MotionState::sliding;
+    piece.acceleration = path.acceleration;
+    return piece;
+}
 
 class Cases {
 public:
@@ -93,9 +110,12 @@ TEST_CASE("clearly_apart: never where the quartic finds a contact, and most near
     for (int n = 0; n < 200000; ++n) {
         const Case c = cases.next();
         const double found = first_contact_time(pair_gap(c.a, c.b, 2 * R), c.horizon);
-        const bool says_apart = clearly_apart(c.a, c.b, 2 * R, c.horizon);
+        const bool says_apart = told_apart(c.a, c.b, 2 * R, c.horizon);
         // The pair search's estimate: the quadratic bound's answer, or no contact in its place.
-        const auto with = termpool::core::path_path_contact_estimate(c.a, c.b, 2 * R, c.horizon);
+        termpool::PhysicsParams params;
+        params.ball_radius = R;
+        const auto with = termpool::core::physical_pair_contact(piece_of(c.a), piece_of(c.b), 0,
+                                                                c.horizon, params);
         const auto without = first_contact_estimate(pair_gap(c.a, c.b, 2 * R), c.horizon);
         const bool same = with.exact == without.exact && with.time == without.time;
         const bool replaced = !without.exact && with.exact && with.time == infinity && says_apart;
@@ -122,16 +142,16 @@ TEST_CASE("clearly_apart: a ball rolling past another", "[polynomial]") {
     // Rolling along x at 2 m/s, stopping in 2 s; the other ball at rest 1 m ahead.
     const Path rolling{{0, 0}, {2, 0}, {-1, 0}, 2};
     const auto past = [&](double sideways) { return Path{{1, sideways}, {}, {}, 2}; };
-    CHECK(clearly_apart(rolling, past(2 * R + 0.001), 2 * R, 2));
-    CHECK(clearly_apart(rolling, past(-(2 * R + 0.001)), 2 * R, 2));
+    CHECK(told_apart(rolling, past(2 * R + 0.001), 2 * R, 2));
+    CHECK(told_apart(rolling, past(-(2 * R + 0.001)), 2 * R, 2));
     // Within the micrometres of its margin, or touching: the search decides.
-    CHECK_FALSE(clearly_apart(rolling, past(2 * R + 1e-7), 2 * R, 2));
-    CHECK_FALSE(clearly_apart(rolling, past(2 * R - 0.001), 2 * R, 2));
+    CHECK_FALSE(told_apart(rolling, past(2 * R + 1e-7), 2 * R, 2));
+    CHECK_FALSE(told_apart(rolling, past(2 * R - 0.001), 2 * R, 2));
     // No relative motion, a horizon without end, or a distance that is not one: no answer.
-    CHECK_FALSE(clearly_apart(past(1), past(0), 2 * R, 2));
-    CHECK_FALSE(clearly_apart(rolling, past(1), 2 * R, infinity));
-    CHECK_FALSE(clearly_apart(rolling, past(2 * R - 1e-5), -2 * R, 2));
-    CHECK_FALSE(clearly_apart(rolling, past(1), std::nan(""), 2));
+    CHECK_FALSE(told_apart(past(1), past(0), 2 * R, 2));
+    CHECK_FALSE(told_apart(rolling, past(1), 2 * R, infinity));
+    CHECK_FALSE(told_apart(rolling, past(2 * R - 1e-5), -2 * R, 2));
+    CHECK_FALSE(told_apart(rolling, past(1), std::nan(""), 2));
 }
 
 TEST_CASE("path_point_contact_time: a jaw point is found as the quartic finds it", "[polynomial]") {

@@ -1,5 +1,8 @@
 #include "contact_time.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include "polynomial.hpp"
 
 namespace termpool::core {
@@ -20,7 +23,7 @@ double path_point_contact_time(const Path& a, Vec2 point, double radius, double 
     const Path fixed{point, {}, {}, horizon};
     // The quartic's search would find nothing: most jaw points left by the capsule's cull are
     // this far from the path.
-    if (clearly_apart(a, fixed, radius, horizon))
+    if (clearly_apart(a, fixed, radius, horizon, std::abs(a.position.x) + std::abs(a.position.y)))
         return std::numeric_limits<double>::infinity();
     return path_path_contact_time(a, fixed, radius, horizon);
 }

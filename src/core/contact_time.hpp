@@ -40,40 +40,42 @@ inline Polynomial4 pair_gap(const Path& a, const Path& b, double distance) {
 /// their separation across the relative velocity dv: along n = (-dv.y, dv.x), dr(t).n = dr.n +
 /// da.n t^2 / 2 (dv.n is 0), and |dr(t)| is at least |dr(t).n| / |dv|. Most balls that pass
 /// another at rest without touching are told so: a rolling ball's da is along its dv, and its
-/// sideways distance stays what it is. "Clearly" is by a micrometre for each metre of the scale
-/// (the paths' own coordinates, how far they go, and `distance`): beyond the rounding of this test,
-/// of the gap's quartic, and of the same paths brought to a later moment (a bound is searched
-/// from the moment it comes first), where first_contact_time never returns a time, so that the
-/// two give the same answer. false for a `distance` not at least 0, a horizon not finite, or
-/// scales where the squares below could leave the range of doubles.
-inline bool clearly_apart(const Path& a, const Path& b, double distance, double horizon) {
+/// sideways distance stays what it is. "Clearly" is by a margin beyond the rounding of this
+/// test, of the gap's quartic, and of the same paths brought to a later moment (a bound is
+/// searched from the moment it comes first), where first_contact_time never returns a time, so
+/// that the two give the same answer. `place` is at least |a.position.x| + |a.position.y| (b's
+/// coordinates are within a's and dr). false for a `distance` not at least 0, a horizon not
+/// finite, or scales where the squares below could leave the range of doubles.
+inline bool clearly_apart(const Path& a, const Path& b, double distance, double horizon,
+                          double place) {
     const Vec2 dr = a.position - b.position;
     const Vec2 dv = a.velocity - b.velocity;
     const Vec2 da = a.acceleration - b.acceleration;
     const double H2 = horizon * horizon;
     const double across = std::abs(cross(dr, dv)) - std::abs(cross(da, dv)) * (0.5 * H2);
-    const double scale = std::abs(a.position.x) + std::abs(a.position.y) + std::abs(b.position.x) +
-                         std::abs(b.position.y) + (std::abs(dv.x) + std::abs(dv.y)) * horizon +
-                         (std::abs(da.x) + std::abs(da.y)) * H2 + distance;
     const double speed_squared = length_squared(dv);
-    if (!(distance >= 0 && scale > 1e-100 && scale < 1e100 && speed_squared > 1e-200 &&
-          speed_squared < 1e200))
+    // Without the margin first: most pairs that meet are told here, before the rest.
+    if (!(across > 0 && across * across > distance * distance * speed_squared))
         return false;
-    const double clear = distance + 1e-6 * scale;
-    return across > 0 && across * across > clear * clear * speed_squared;
+    // The rounding of this test and of the gap's quartic grows with the paths' sizes, that of
+    // the paths brought to a later moment with their coordinates (a few units in the last place
+    // of each): a micrometre for each metre of the first, a picometre of the second.
+    const double scale = std::abs(dr.x) + std::abs(dr.y) +
+                         (std::abs(dv.x) + std::abs(dv.y)) * horizon +
+                         (std::abs(da.x) + std::abs(da.y)) * H2 + distance;
+    if (!(distance >= 0 && scale > 1e-100 && scale < 1e100 && place < 1e100 &&
+          speed_squared > 1e-200 && speed_squared < 1e200))
+        return false;
+    const double clear = distance + 1e-6 * scale + 1e-12 * place;
+    return across * across > clear * clear * speed_squared;
 }
 
 /// path_path_contact_time, or a lower bound on it (seconds from now as well) when that is much
-/// cheaper: see first_contact_estimate. A bound for two balls clearly_apart is taken as no
-/// contact: the search that would have found none when the bound came first is left out (in a
-/// computer's search, nearly half of those searches: a ball passing one at rest). Inline, as
-/// first_contact_estimate is: the pair search asks it of every pair in reach.
+/// cheaper: see first_contact_estimate. Inline, as first_contact_estimate is: the pair search
+/// asks it of every pair in reach.
 inline ContactEstimate path_path_contact_estimate(const Path& a, const Path& b, double distance,
                                                   double horizon) {
-    const ContactEstimate estimate = first_contact_estimate(pair_gap(a, b, distance), horizon);
-    if (!estimate.exact && clearly_apart(a, b, distance, horizon))
-        return {std::numeric_limits<double>::infinity(), true};
-    return estimate;
+    return first_contact_estimate(pair_gap(a, b, distance), horizon);
 }
 
 /// First time the centre comes within `offset` of the line through `point` (from the side

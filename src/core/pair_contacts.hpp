@@ -11,7 +11,8 @@
 namespace termpool::core {
 
 /// The physical model's contact of two pieces' balls (their parabolas' quartic), or a lower bound
-/// on it when that is much cheaper: see path_path_contact_estimate.
+/// on it when that is much cheaper (path_path_contact_estimate); no contact (+infinity, exact)
+/// in place of a bound for two balls clearly_apart.
 ContactEstimate physical_pair_contact(const MotionPiece& a, const MotionPiece& b, double now,
                                       double horizon, const PhysicsParams& params);
 
