@@ -4,7 +4,6 @@
 // horizon; a contact counts only while the two are approaching.
 
 #include <cmath>
-#include <limits>
 #include <termpool/ball.hpp>
 #include <termpool/params.hpp>
 #include <termpool/vec.hpp>
