@@ -98,15 +98,14 @@ inline ContactEstimate first_contact_estimate(const Polynomial4& poly, double ho
     // Near a double root of q its first root is ill-conditioned: then search at once.
     if (!(std::fabs(disc) > 1e-4 * b2))
         return {first_contact_time(poly, horizon), true};
-    if (disc < 0.0)
-        return {std::numeric_limits<double>::infinity(), true}; // q > 0 throughout, and f with it
-    // The first positive root of q, in the stable form 2 c0 / (-c1 + sqrt(disc)). Without a
-    // positive root (c1 >= 0 with q convex), f never reaches 0.
-    const double root_den = std::sqrt(disc) - c[1];
-    if (!(root_den > 0.0))
-        return {std::numeric_limits<double>::infinity(), true};
+    // No contact when q stays positive (disc < 0), has no positive root (c1 >= 0 with q convex:
+    // the denominator of the stable form 2 c0 / (-c1 + sqrt(disc)) is then not positive), or
+    // its first root is beyond the horizon. The three are told at once rather than one after
+    // the other: each is taken about as often as not, and a mispredicted branch costs more than
+    // the square root and division done for nothing (sqrt of at least 0: no call for errno).
+    const double root_den = std::sqrt(std::max(disc, 0.0)) - c[1];
     const double bound = 2.0 * c[0] / root_den;
-    if (bound > H)
+    if ((disc < 0.0) | !(root_den > 0.0) | (bound > H))
         return {std::numeric_limits<double>::infinity(), true};
     // The margin covers the rounding of the bound, which the conditioning test keeps within a
     // few hundred eps.
