@@ -100,9 +100,11 @@ inline ContactEstimate first_contact_estimate(const Polynomial4& poly, double ho
         return {first_contact_time(poly, horizon), true};
     // No contact when q stays positive (disc < 0), has no positive root (c1 >= 0 with q convex:
     // the denominator of the stable form 2 c0 / (-c1 + sqrt(disc)) is then not positive), or
-    // its first root is beyond the horizon. The three are told at once rather than one after
-    // the other: each is taken about as often as not, and a mispredicted branch costs more than
-    // the square root and division done for nothing (sqrt of at least 0: no call for errno).
+    // its first root is beyond the horizon. The three are one test rather than a branch after
+    // each step: each is taken about as often as not, and a mispredicted branch costs more than
+    // the square root and division done for nothing (GCC 12 still branches on the first before
+    // the square root, and joins the other two). The square root of at least 0 never calls the
+    // library for errno; a division by zero here is by a denominator the test refuses.
     const double root_den = std::sqrt(std::max(disc, 0.0)) - c[1];
     const double bound = 2.0 * c[0] / root_den;
     if ((disc < 0.0) | !(root_den > 0.0) | (bound > H))
