@@ -230,3 +230,35 @@ TEST_CASE("hall core: a name already in the hall is refused, however it is typed
     hall.tick();
     CHECK(hall.hello("ANN") != 0);
 }
+
+TEST_CASE("hall core: the name of a player away from a seat waits for them", "[hall][core]") {
+    FakeHall hall;
+    const auto [ann, bob, table] = hall.ann_and_bob_seated();
+    hall.play_one(ann, bob, table);
+    const std::string token = hall.token(bob);
+    hall.disconnect(bob);
+    hall.tick();
+    // Someone else cannot take "Bob" while his seat waits: he could not come back as Bob.
+    for (const char* same : {"Bob", "BOB"}) {
+        const int other = hall.connect();
+        hall.send(other, Hello{protocol_version, "", same});
+        const auto error = hall.find<Error>(other);
+        REQUIRE(error);
+        CHECK(error->code == ErrorCode::name_taken);
+        CHECK(error->text == "Bob holds a seat at table " + std::to_string(table) +
+                                 ": come in under another name");
+        CHECK(hall.closed(other));
+    }
+    // Bob himself, with his token, comes back under his name and sits again.
+    const int again = hall.hello("Bob", token);
+    REQUIRE(again != 0);
+    CHECK_FALSE(hall.closed(again));
+    hall.sit(again, table, 2);
+    CHECK(hall.core().match(table)->name(2) == "Bob");
+    // Gone again for longer than the away limit, his seat is freed and the name with it.
+    hall.disconnect(again);
+    hall.advance(ServerOptions{}.away_limit + 1s);
+    CHECK(hall.core().match(table)->name(2) != "Bob");
+    CHECK(hall.hello("BOB") != 0);
+    (void)ann;
+}

@@ -180,6 +180,18 @@ void HallCore::on_hello(Client& client, const Hello& hello, Clock::time_point no
             return send_and_close(client, ErrorCode::name_taken,
                                   "someone in the hall is called " + other.name +
                                       " already: come in under another name");
+    // A player away from a seat keeps the name it shows, so that no one else can take it and
+    // keep its owner out when they come back with their token (a name given with --name cannot
+    // be changed). The seat's away limit bounds how long.
+    for (const auto& [number, table] : tables_)
+        for (int s = 1; s <= 2; ++s) {
+            const SeatSlot& slot = table.seats[s - 1];
+            if (!slot.token_hash.empty() && !same_digest(slot.token_hash, hash) &&
+                name_key(table.match.name(s)) == key)
+                return send_and_close(client, ErrorCode::name_taken,
+                                      table.match.name(s) + " holds a seat at table " +
+                                          std::to_string(number) + ": come in under another name");
+        }
     if (others >= options_.max_clients && !evict_idle_lobby(hash, now))
         return send_and_close(client, ErrorCode::full, "the hall has all the clients it takes");
     // The same person again: the old connection gives way (its seats go away, then the
