@@ -568,6 +568,32 @@ TEST_CASE("socket trust: the folder, the socket file and the server must be this
               folder + ": the socket folder is not a directory (owned by " + describe_uid(me) +
                   ")");
     }
+    SECTION("the state folder: others may read it, not write to it") {
+        CHECK(judge_state_folder(folder, stat_of(S_IFDIR | 0700, me), me) == "");
+        CHECK(judge_state_folder(folder, stat_of(S_IFDIR | 0755, me), me) == "");
+        CHECK(judge_state_folder(folder, stat_of(S_IFDIR | 0750, me), me) == "");
+        CHECK(judge_state_folder(folder, stat_of(S_IFDIR | 0700, other), me) ==
+              folder + ": the state folder is owned by " + describe_uid(other) +
+                  ", not by this user (" + describe_uid(me) + ")");
+        for (const mode_t mode :
+             {mode_t{0770}, mode_t{0720}, mode_t{0702}, mode_t{0777}, mode_t{01777}}) {
+            INFO("mode " << std::oct << mode);
+            CHECK_THAT(judge_state_folder(folder, stat_of(S_IFDIR | mode, me), me),
+                       Catch::StartsWith(folder + ": the state folder is writable by ") &&
+                           Catch::Contains("make it private with chmod 700"));
+        }
+        CHECK_THAT(judge_state_folder(folder, stat_of(S_IFDIR | 0777, me), me),
+                   Catch::Contains("writable by others (mode 0777, owned by uid 1001"));
+        CHECK(judge_state_folder(folder, stat_of(S_IFREG | 0600, me), me) ==
+              folder + ": the state folder is not a directory (owned by " + describe_uid(me) + ")");
+    }
+    SECTION("a table file") {
+        const std::string table = folder + "/table-7.save";
+        CHECK(judge_table_file(table, stat_of(S_IFREG | 0600, me), me) == "");
+        CHECK(judge_table_file(table, stat_of(S_IFREG | 0666, other), me) ==
+              table + ": the table file is owned by " + describe_uid(other) +
+                  ", not by this user (" + describe_uid(me) + "); someone else put it there");
+    }
     SECTION("the socket file") {
         CHECK(judge_socket_file(socket, stat_of(S_IFSOCK | 0777, me), me) == "");
         CHECK(judge_socket_file(socket, stat_of(S_IFSOCK | 0777, other), me) ==

@@ -468,6 +468,24 @@ TEST_CASE("hall process: a second server on another socket is refused the same s
     CHECK(probe.connect(socket_of(dir.path())).empty());
 }
 
+TEST_CASE("hall process: a state folder others may write to is refused, the hall does not start",
+          "[hall][e2e]") {
+    TempDir dir("termpool-hall-proc");
+    const std::string state = dir.path() + "/state"; // start_hall's
+    REQUIRE(::mkdir(state.c_str(), 0700) == 0);
+    REQUIRE(::chmod(state.c_str(), 0777) == 0);
+    const std::string log = dir.path() + "/refused.log";
+    auto refused = run_termpool(
+        dir.path(), {"hall", "serve", "--socket", socket_of(dir.path()), "--state", state}, log);
+    CHECK(refused->wait_exit(kWait) == 1);
+    CHECK(file_text(log).find(state + ": the state folder is writable by others (mode 0777") !=
+          std::string::npos);
+    // Made private, it serves.
+    REQUIRE(::chmod(state.c_str(), 0700) == 0);
+    auto server = start_hall(dir.path());
+    CHECK(server->running());
+}
+
 TEST_CASE("hall process: hall who prints a running hall for its host, exits 1 with none",
           "[hall][e2e]") {
     TempDir dir("termpool-hall-who");

@@ -28,6 +28,7 @@
 #include "hall/hall_state.hpp"
 #include "hall/sha256.hpp"
 #include "hall/socket_dir.hpp"
+#include "hall/socket_trust.hpp"
 #include "match_helpers.hpp"
 #include "scoped_env.hpp"
 #include "temp_dir.hpp"
@@ -435,4 +436,26 @@ TEST_CASE("a damaged table file is moved aside as .bad, never over an older one,
     std::vector<std::string> problems;
     CHECK(load_tables(dir, problems).size() == 2);
     CHECK(problems.empty());
+}
+
+TEST_CASE("a table file someone else put in the state folder is not restored", "[hall]") {
+    TempDir tmp("termpool-hall");
+    const std::string dir = tmp.path();
+    const Match game = played(GameType::nine_ball, TableSize::seven_foot, 5, 1, 2);
+    REQUIRE(save_table(dir, table_of(1, game, seat_token_hash("a"), "")) == "");
+    std::vector<std::string> problems;
+    REQUIRE(load_tables(dir, problems).size() == 1); // this user's
+    CHECK(problems.empty());
+    // Read as another user would read it (only root could give the file away): it is theirs,
+    // not this user's, and goes aside.
+    const uid_t me = ::geteuid();
+    const uid_t someone = me + 1;
+    CHECK(load_tables(dir, problems, someone).empty());
+    REQUIRE(problems.size() == 1);
+    const std::string path = table_path(dir, 1);
+    CHECK(problems[0] == path + ": the table file is owned by " + describe_uid(me) +
+                             ", not by this user (" + describe_uid(someone) +
+                             "); someone else put it there (moved aside as " + path + ".bad)");
+    CHECK_FALSE(fs::exists(path));
+    CHECK(fs::exists(path + ".bad"));
 }

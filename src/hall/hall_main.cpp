@@ -18,6 +18,7 @@
 #include "hall/hall_who.hpp"
 #include "hall/server.hpp"
 #include "hall/socket_dir.hpp"
+#include "hall/socket_trust.hpp"
 
 namespace termpool::hall {
 
@@ -132,6 +133,9 @@ int serve(const std::vector<std::string>& args) {
     if (options.state_dir.empty())
         options.state_dir = default_state_dir();
     if (const std::string problem = make_directories(options.state_dir); !problem.empty())
+        return cannot_start(problem);
+    // Whoever else could write there could plant a table with a seat token of their own.
+    if (const std::string problem = check_state_folder(options.state_dir); !problem.empty())
         return cannot_start(problem);
     UniqueFd state_lock;
     if (const std::string problem = lock_state_dir(options.state_dir, state_lock); !problem.empty())

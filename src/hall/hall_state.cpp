@@ -5,6 +5,7 @@
 #include "files/keep_aside.hpp"
 #include "files/read_file.hpp"
 #include "hall/sha256.hpp"
+#include "hall/socket_trust.hpp"
 
 #include "support/text_lines.hpp"
 #include <algorithm>
@@ -196,7 +197,26 @@ void forget_table(const std::string& dir, int number) {
     remove_temporaries_of(path); // what a save killed midway left
 }
 
-std::vector<SavedTable> load_tables(const std::string& dir, std::vector<std::string>& problems) {
+namespace {
+
+// The text of the table file at `path`. Only the server writes here, never a link: one is
+// refused like a damaged file, and so is a file of someone else's (put there while the folder
+// was open to them).
+std::optional<std::string> read_table_file(const std::string& path, uid_t user,
+                                           std::string& problem) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) == 0) {
+        problem = judge_table_file(path, st, user);
+        if (!problem.empty())
+            return std::nullopt;
+    }
+    return read_whole_file(path, problem, max_save_bytes, Links::no_follow);
+}
+
+} // namespace
+
+std::vector<SavedTable> load_tables(const std::string& dir, std::vector<std::string>& problems,
+                                    uid_t user) {
     std::vector<int> numbers, left_temporaries;
     if (DIR* folder = ::opendir(dir.c_str())) {
         while (const dirent* entry = ::readdir(folder)) {
@@ -222,8 +242,7 @@ std::vector<SavedTable> load_tables(const std::string& dir, std::vector<std::str
     for (const int number : numbers) {
         const std::string path = table_path(dir, number);
         std::string problem;
-        // Only the server writes here, never a link: one is refused like a damaged file.
-        if (const auto text = read_whole_file(path, problem, max_save_bytes, Links::no_follow)) {
+        if (const auto text = read_table_file(path, user, problem)) {
             auto table = parse_table(*text, number);
             if (auto* saved = std::get_if<SavedTable>(&table)) {
                 tables.push_back(std::move(*saved));

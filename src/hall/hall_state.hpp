@@ -26,7 +26,9 @@
 
 #include <string>
 #include <string_view>
+#include <sys/types.h>
 #include <termpool/record.hpp>
+#include <unistd.h>
 #include <vector>
 
 namespace termpool::hall {
@@ -77,7 +79,9 @@ void forget_table(const std::string& dir, int number);
 /// over max_save_bytes ("FILE: N bytes, more than the M allowed", refused from its size) and a
 /// symbolic link (the server writes none). Temporary files of table files that killed saves
 /// left are removed (the caller is the folder's one server, so no save is running). Other
-/// names in the folder are left alone. A missing folder holds no tables.
-std::vector<SavedTable> load_tables(const std::string& dir, std::vector<std::string>& problems);
+/// names in the folder are left alone. A missing folder holds no tables. A table file not owned
+/// by `user` (this process's user unless given) is someone else's and is moved aside too.
+std::vector<SavedTable> load_tables(const std::string& dir, std::vector<std::string>& problems,
+                                    uid_t user = ::geteuid());
 
 } // namespace termpool::hall

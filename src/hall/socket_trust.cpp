@@ -48,18 +48,40 @@ std::string describe_uid(uid_t uid) {
     return text;
 }
 
-std::string judge_socket_folder(const std::string& folder, const struct stat& st, uid_t user) {
+namespace {
+
+// The judgement of a folder only `user` may change: `what` names it in messages, and
+// `forbidden` is the mode bits its group and others may not have.
+std::string judge_own_folder(const std::string& folder, const struct stat& st, uid_t user,
+                             const char* what, mode_t forbidden) {
     const std::string owner = "owned by " + describe_uid(st.st_uid);
     // A link could be pointed elsewhere after the check, by whoever owns the folder it is in.
     if (S_ISLNK(st.st_mode))
-        return folder + ": the socket folder is a symbolic link (" + owner + "), not a directory";
+        return folder + ": " + what + " is a symbolic link (" + owner + "), not a directory";
     if (!S_ISDIR(st.st_mode))
-        return folder + ": the socket folder is not a directory (" + owner + ")";
+        return folder + ": " + what + " is not a directory (" + owner + ")";
     if (st.st_uid != user)
-        return folder + ": the socket folder is " + owner + ", not by " + this_user(user);
-    if ((st.st_mode & (S_IRWXG | S_IRWXO)) != 0)
-        return folder + ": the socket folder is " + reached_by(st.st_mode) + " (mode " +
+        return folder + ": " + what + " is " + owner + ", not by " + this_user(user);
+    if ((st.st_mode & forbidden) != 0)
+        return folder + ": " + what + " is " + reached_by(st.st_mode) + " (mode " +
                octal_mode(st.st_mode) + ", " + owner + "); make it private with chmod 700";
+    return {};
+}
+
+} // namespace
+
+std::string judge_socket_folder(const std::string& folder, const struct stat& st, uid_t user) {
+    return judge_own_folder(folder, st, user, "the socket folder", S_IRWXG | S_IRWXO);
+}
+
+std::string judge_state_folder(const std::string& folder, const struct stat& st, uid_t user) {
+    return judge_own_folder(folder, st, user, "the state folder", S_IWGRP | S_IWOTH);
+}
+
+std::string judge_table_file(const std::string& path, const struct stat& st, uid_t user) {
+    if (st.st_uid != user)
+        return path + ": the table file is owned by " + describe_uid(st.st_uid) + ", not by " +
+               this_user(user) + "; someone else put it there";
     return {};
 }
 
@@ -90,6 +112,13 @@ std::string check_socket_path(const std::string& socket_path) {
     if (::lstat(socket_path.c_str(), &st) != 0)
         return errno == ENOENT ? std::string() : socket_path + ": " + std::strerror(errno);
     return judge_socket_file(socket_path, st, user);
+}
+
+std::string check_state_folder(const std::string& folder) {
+    struct stat st {};
+    if (::stat(folder.c_str(), &st) != 0)
+        return folder + ": " + std::strerror(errno);
+    return judge_state_folder(folder, st, ::geteuid());
 }
 
 std::string check_peer(int fd, const std::string& socket_path) {

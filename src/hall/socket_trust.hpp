@@ -25,6 +25,18 @@ std::string describe_uid(uid_t uid);
 /// user (uid 1001 (ann))").
 std::string judge_socket_folder(const std::string& folder, const struct stat& st, uid_t user);
 
+/// The state folder's stat `st` (through a link: a host may keep the hall's state elsewhere)
+/// judged for `user`: a directory owned by `user` that neither its group nor others may write
+/// to, since whoever can write there can plant a table file with a seat token of their own
+/// choosing, or hold the folder's lock so that no hall starts. Reading is left to the host.
+/// "" when good, else why not, in judge_socket_folder's words.
+std::string judge_state_folder(const std::string& folder, const struct stat& st, uid_t user);
+
+/// A table file's lstat `st` judged for `user`: owned by `user`; one that is someone else's
+/// was put there by them, and is not restored. "" or why not (what it is, a link or a file, is
+/// the reader's to judge).
+std::string judge_table_file(const std::string& path, const struct stat& st, uid_t user);
+
 /// The socket file's lstat `st` judged for `user`: a socket owned by `user`. "" or why not,
 /// naming the path and its owner.
 std::string judge_socket_file(const std::string& path, const struct stat& st, uid_t user);
@@ -37,6 +49,10 @@ std::string judge_peer(const std::string& path, uid_t peer, uid_t user);
 /// are now (lstat), judged for this user (geteuid). Nothing there yet (no folder, or no file)
 /// is no problem: "". Else why not.
 std::string check_socket_path(const std::string& socket_path);
+
+/// The state folder as it is now (stat, through a link), judged for this user (geteuid)
+/// before a server locks it and reads its tables. "" or why not.
+std::string check_state_folder(const std::string& folder);
 
 /// After connecting on `fd` to `socket_path`: the process at the other end runs as this user
 /// (geteuid; SO_PEERCRED gives the uid the server listened with). "" or why not.
