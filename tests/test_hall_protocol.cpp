@@ -379,3 +379,52 @@ TEST_CASE("hall protocol: a name in hello holds nothing invisible and no directi
         client_round_trip(Hello{protocol_version, "", name});
     }
 }
+
+TEST_CASE("hall protocol: a name in hello is at most 20 columns wide, as the prompt cuts it",
+          "[hall]") {
+    for (const std::string& name :
+         {std::string(20, 'W'), std::string("李小龍李小龍李小龍李"), // 10: 20 columns
+          std::string(19, 'a') + "\u0308"}) {
+        INFO(name);
+        client_round_trip(Hello{protocol_version, "", name});
+    }
+    for (const std::string& name :
+         {std::string(21, 'W'), std::string("李小龍李小龍李小龍李小"), // 11: 22
+          std::string(20, 'a') + "李"}) {
+        const std::string line = body(format_client(Hello{protocol_version, "", name}));
+        INFO(line);
+        const auto parsed = parse_client(line);
+        REQUIRE(std::holds_alternative<ProtocolError>(parsed));
+        CHECK(std::get<ProtocolError>(parsed).code == ErrorCode::syntax);
+        CHECK(std::get<ProtocolError>(parsed).text == "a name is at most 20 columns wide");
+    }
+}
+
+TEST_CASE("hall protocol: chat holds nothing invisible and nothing that turns the line around",
+          "[hall]") {
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {"rtl \u202Egnp.exe", "chat may not hold U+202E (it changes the direction of the text)"},
+        {"a\u2066b", "chat may not hold U+2066 (it changes the direction of the text)"},
+        {"zero\u200Bwidth", "chat may not hold U+200B (an invisible character)"},
+        {"one\u2028two", "chat may not hold U+2028 (an invisible character)"},
+        {"\uFEFFhi", "chat may not hold U+FEFF (an invisible character)"},
+        {"hi\U000E0041", "chat may not hold U+E0041 (an invisible character)"},
+    };
+    for (const auto& [text, why] : bad) {
+        const std::string line = body(format_client(Chat{text}));
+        INFO(line);
+        const auto parsed = parse_client(line);
+        REQUIRE(std::holds_alternative<ProtocolError>(parsed));
+        CHECK(std::get<ProtocolError>(parsed).code == ErrorCode::syntax);
+        CHECK(std::get<ProtocolError>(parsed).text == why);
+    }
+    // Any script, combining marks and emoji stay; so does chat the server sends (it sent only
+    // what it took, and a table kept from an older hall may hold a line it took then).
+    for (const std::string text : {"nice shot", "Zoe\u0308!", "שלום", "李小龍 🎱", "gg ✓"}) {
+        INFO(text);
+        client_round_trip(Chat{text});
+    }
+    const auto shown = parse_server(body(format_server(ChatShown{1, "Ann", "zero\u200Bwidth"})));
+    REQUIRE(std::holds_alternative<ServerMessage>(shown));
+    CHECK(std::holds_alternative<ChatShown>(std::get<ServerMessage>(shown)));
+}

@@ -1,9 +1,13 @@
 // The hall's lobby frame: what a player reads there at the common sizes, and that no size,
-// however small or odd, writes outside the grid or loses the keys.
+// however small or odd, writes outside the grid or loses the keys; and what a hall table's chat
+// entry lets through.
 #include <catch2/catch.hpp>
 #include <string>
 
+#include "match_helpers.hpp"
+#include "tui/hall_driver.hpp"
 #include "tui/lobby_view.hpp"
+#include "tui/terminal.hpp"
 
 using namespace termpool;
 using namespace termpool::tui;
@@ -195,4 +199,42 @@ TEST_CASE("a click on the lobby's list picks the table drawn on that row, scroll
         CHECK(lobby_table_at(v, 24, 2) == -1); // the header
     }
     CHECK(lobby_table_at(v, 5, 3) == -1); // too small to draw a list
+}
+
+TEST_CASE("hall table: chat typed at the terminal leaves out what the hall refuses", "[tui]") {
+    GameRecord header;
+    header.setup.game = GameType::nine_ball;
+    header.names[0] = "Ann";
+    header.names[1] = "Bob";
+    std::vector<std::string> sent;
+    TableLink link;
+    link.seat = 1;
+    link.chat = [&](const std::string& line) {
+        sent.push_back(line);
+        return true;
+    };
+    HallDriver driver(test::started(header), link);
+    const Layout layout;
+    const ScreenFacts screen;
+    const auto key = [&](int k) {
+        Input in;
+        in.kind = Input::Kind::key;
+        in.key = k;
+        driver.handle(in, layout, screen);
+    };
+    const auto type = [&](const std::string& text) {
+        Input in;
+        in.kind = Input::Kind::text;
+        in.text = text;
+        driver.handle(in, layout, screen);
+    };
+    key('\t');
+    // A direction override, a zero-width space, a line separator and a C1 control are
+    // dropped as typed; letters, marks and emoji stay.
+    for (const std::string typed : {"g", "\u202E", "g", "\u200B", " ", "\u2028", "\u00e9", "\u0301",
+                                    "\xc2\x85", "\U0001F3B1"})
+        type(typed);
+    key(key_enter);
+    REQUIRE(sent.size() == 1);
+    CHECK(sent[0] == "gg \u00e9\u0301\U0001F3B1");
 }

@@ -28,4 +28,14 @@ bool is_hidden_character(char32_t cp);
 /// at its ends are the callers' (`valid_player_name`).
 std::optional<std::string> name_characters_problem(std::string_view name);
 
+/// The same rule for any text a person sends to be shown to others, a chat line: nothing hidden
+/// in it, nothing that turns the line it is shown on around or breaks it. What is wrong, said
+/// of `subject` ("chat is not valid UTF-8", "chat may not hold U+200B (an invisible
+/// character)"), or nothing.
+std::optional<std::string> shown_text_problem(std::string_view text, std::string_view subject);
+
+/// The widest name, in terminal columns (a CJK character counts two): the prompt cuts a name
+/// to it, and the hall refuses a wider one in hello.
+inline constexpr int max_name_columns = 20;
+
 } // namespace termpool

@@ -38,11 +38,15 @@ bool is_hidden_character(char32_t cp) {
     return after != std::begin(hidden) && cp <= std::prev(after)->last;
 }
 
-std::optional<std::string> name_characters_problem(std::string_view name) {
-    for (std::size_t i = 0; i < name.size();) {
+namespace {
+
+// The first problem of `text`: `invalid` for bad UTF-8, or "HOLDER may not hold U+XXXX (why)".
+std::optional<std::string> characters_problem(std::string_view text, std::string_view invalid,
+                                              std::string_view holder) {
+    for (std::size_t i = 0; i < text.size();) {
         char32_t cp = 0;
-        if (!decode_utf8(name, i, cp))
-            return "the name is not valid UTF-8";
+        if (!decode_utf8(text, i, cp))
+            return std::string(invalid);
         if (!is_hidden_character(cp))
             continue;
         char code[16];
@@ -51,9 +55,19 @@ std::optional<std::string> name_characters_problem(std::string_view name) {
         const char* what = is_control(cp)        ? " (a control character)"
                            : is_bidi_control(cp) ? " (it changes the direction of the text)"
                                                  : " (an invisible character)";
-        return std::string("a name may not hold ") + code + what;
+        return std::string(holder) + " may not hold " + code + what;
     }
     return std::nullopt;
+}
+
+} // namespace
+
+std::optional<std::string> name_characters_problem(std::string_view name) {
+    return characters_problem(name, "the name is not valid UTF-8", "a name");
+}
+
+std::optional<std::string> shown_text_problem(std::string_view text, std::string_view subject) {
+    return characters_problem(text, std::string(subject) + " is not valid UTF-8", subject);
 }
 
 } // namespace termpool

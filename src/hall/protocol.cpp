@@ -6,6 +6,7 @@
 #include <cmath>
 #include <termpool/match.hpp>
 #include <termpool/name_characters.hpp>
+#include <termpool/text_width.hpp>
 #include <vector>
 
 namespace termpool::hall {
@@ -467,6 +468,9 @@ std::variant<ClientMessage, ProtocolError> parse_client(std::string_view line) {
         if (r.ok())
             if (auto problem = name_characters_problem(m.name))
                 r.fail(std::move(*problem));
+        // As wide as the prompt lets a name be, so that the lobby and the table show it whole.
+        if (r.ok() && display_width(m.name) > max_name_columns)
+            r.fail("a name is at most " + std::to_string(max_name_columns) + " columns wide");
         return wrap(finish(r, m));
     }
     if (kind == "create") {
@@ -514,6 +518,11 @@ std::variant<ClientMessage, ProtocolError> parse_client(std::string_view line) {
         if (r.ok() && !valid_chat_text(m.text))
             r.fail("chat is 1 to " + std::to_string(max_chat_chars) +
                    " characters of text, no control characters");
+        // What a person says is held to a name's rule: nothing hidden, nothing that turns the
+        // line around or breaks it. (Chat the server sends is not: it sent only what it took.)
+        if (r.ok())
+            if (auto problem = shown_text_problem(m.text, "chat"))
+                r.fail(std::move(*problem));
         return wrap(finish(r, m));
     }
     if (kind == "computer") {

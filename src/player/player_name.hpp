@@ -4,11 +4,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <termpool/name_characters.hpp> // max_name_columns
 
 namespace termpool {
-
-/// Longest name, in terminal columns (a CJK character counts two).
-inline constexpr int max_name_columns = 20;
 
 /// The name to use for `input`: spaces trimmed at both ends, cut to `max_name_columns` columns
 /// between characters. Returns nothing with an empty `error` when the input is blank (keep the

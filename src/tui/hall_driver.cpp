@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <termpool/game_registry.hpp>
+#include <termpool/name_characters.hpp>
 #include <termpool/race.hpp>
 #include <termpool/text_width.hpp>
 
@@ -152,13 +153,11 @@ std::optional<TableNews> HallDriver::take() {
 std::optional<DriverReply> HallDriver::handle(const Input& in, const Layout&,
                                               const ScreenFacts& screen) {
     if (chat_entry_) {
-        // The server refuses C1 controls (U+0080 to U+009F, UTF-8 C2 80 to C2 9F) as well.
-        const auto c1 = [](const std::string& t) {
-            return t.size() == 2 && static_cast<unsigned char>(t[0]) == 0xC2 &&
-                   static_cast<unsigned char>(t[1]) < 0xA0;
-        };
+        // What the server refuses is not typed: C1 controls, and characters that hide or turn
+        // the line around (a chat line is held to a name's rule).
         const auto fits = [&](const std::string& typed) {
-            return !c1(typed) && code_points(chat_entry_->text) + code_points(typed) <= chat_chars;
+            return !shown_text_problem(typed, "chat") &&
+                   code_points(chat_entry_->text) + code_points(typed) <= chat_chars;
         };
         if (chat_entry_->edit(in, fits) || in.kind != Input::Kind::key)
             return DriverReply{};
