@@ -4,6 +4,7 @@
 #include <termpool/record.hpp>
 #include <variant>
 
+#include "tui/help_text.hpp"
 #include "tui/messages.hpp"
 #include "tui/rack_log.hpp"
 
@@ -125,4 +126,37 @@ TEST_CASE("the rack's log grows shot by shot as the rebuilt one would read", "[t
     log.add(next_rack, record);
     CHECK(log.lines(2).size() == 1);
     CHECK(log.lines(1).empty());
+}
+
+TEST_CASE("the rack's log pages by the rows its lines take once wrapped", "[tui][messages]") {
+    // Thirty shots whose lines are wider than a 100-column screen's box: each takes two rows,
+    // so a page of a 32-row screen holds half as many as it has rows, and every line is on one
+    // page, in order.
+    std::vector<std::string> lines;
+    for (int i = 1; i <= 30; ++i)
+        lines.push_back(std::to_string(i) + ". " + std::string(90, 'x') + " " +
+                        std::string(20, 'y'));
+    const int width = 100, height = 32;
+    const std::vector<std::size_t> starts = log_page_starts(lines, width, height);
+    REQUIRE(starts.size() >= 2);
+    CHECK(starts.front() == 0);
+    for (std::size_t page = 0; page < starts.size(); ++page) {
+        const std::size_t end = page + 1 < starts.size() ? starts[page + 1] : lines.size();
+        REQUIRE(end > starts[page]);
+        std::size_t rows = 0;
+        for (std::size_t i = starts[page]; i < end; ++i) {
+            const std::size_t wrapped = box_lines(lines[i], width - 4).size();
+            CHECK(wrapped == 2);
+            rows += wrapped;
+        }
+        // With its border, title, blank lines and footer, the box fits the screen.
+        CHECK(static_cast<int>(rows) + 6 <= height - 3);
+    }
+    CHECK(starts.size() == 3); // 11 shots a page (22 of 23 rows), 11, then 8
+    // Short lines take a row each; no lines still make one page.
+    CHECK(log_page_starts(std::vector<std::string>(23, "1. Ann: nothing pocketed"), 100, 32) ==
+          std::vector<std::size_t>{0});
+    CHECK(log_page_starts(std::vector<std::string>(24, "1. Ann: nothing pocketed"), 100, 32) ==
+          std::vector<std::size_t>{0, 23});
+    CHECK(log_page_starts({}, 100, 32) == std::vector<std::size_t>{0});
 }

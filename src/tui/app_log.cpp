@@ -46,19 +46,10 @@ void App::open_log() {
     log_page_ = 0;
 }
 
-namespace {
-
-// Lines of the log a page holds on this screen: the box's border, title and footer aside.
-int log_rows(int height) {
-    return std::max(3, height - 9);
-}
-
-} // namespace
-
 std::string App::log_page_text() const {
     const std::vector<std::string>& lines = *log_;
-    const int rows = log_rows(term_.height());
-    const int pages = std::max(1, (static_cast<int>(lines.size()) + rows - 1) / rows);
+    const std::vector<std::size_t> starts = log_page_starts(lines, term_.width(), term_.height());
+    const int pages = static_cast<int>(starts.size());
     const int page = std::min(log_page_, pages - 1);
     std::string text = !driver_->referee()
                            ? "Practice: no referee, no log"
@@ -66,8 +57,10 @@ std::string App::log_page_text() const {
                                  std::to_string(driver_->match().rack()) + ": the shots";
     if (lines.empty() && driver_->referee())
         text += "\n\nNo shot yet";
-    for (int i = page * rows; i < std::min(static_cast<int>(lines.size()), (page + 1) * rows); ++i)
-        text += "\n" + lines[static_cast<std::size_t>(i)];
+    const std::size_t end =
+        page + 1 < pages ? starts[static_cast<std::size_t>(page) + 1] : lines.size();
+    for (std::size_t i = starts[static_cast<std::size_t>(page)]; i < end; ++i)
+        text += "\n" + lines[i];
     text += "\n\n";
     if (pages > 1)
         text += "page " + std::to_string(page + 1) + "/" + std::to_string(pages) +
@@ -78,8 +71,8 @@ std::string App::log_page_text() const {
 bool App::handle_log(const Input& in) {
     if (!log_)
         return false;
-    const int rows = log_rows(term_.height());
-    const int last = std::max(0, (static_cast<int>(log_->size()) - 1) / rows);
+    const int last =
+        static_cast<int>(log_page_starts(*log_, term_.width(), term_.height()).size()) - 1;
     const int key = in.kind == Input::Kind::key ? in.key : 0;
     const std::string& t = in.text;
     if (t == " " || t == "j" || key == key_page_down || key == key_down)

@@ -2,9 +2,11 @@
 
 #include "tui/rack_log.hpp"
 
+#include <algorithm>
 #include <termpool/game_registry.hpp>
 #include <termpool/match.hpp>
 
+#include "tui/help_text.hpp"
 #include "tui/messages.hpp"
 #include "tui/pocket_cells.hpp"
 
@@ -56,6 +58,28 @@ std::vector<std::string> rack_log(const GameRecord& record, int rack) {
     if (!std::holds_alternative<Match>(Match::replay(record, record.actions.size(), heard)))
         return {};
     return lines;
+}
+
+std::vector<std::size_t> log_page_starts(const std::vector<std::string>& lines, int width,
+                                         int height) {
+    // Rows for shots: the border (2), the title and the blank line after it, the blank line and
+    // the footer at the end, and three rows to spare so that the box can stand clear of the
+    // balls.
+    const int rows = std::max(3, height - 9);
+    // The box is as wide as its widest line, up to the screen less its border and a space
+    // either side (draw_box): a line is wrapped only at that width.
+    const int inner = std::max(1, width - 4);
+    std::vector<std::size_t> starts{0};
+    int used = 0;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        const int need = std::max(1, static_cast<int>(box_lines(lines[i], inner).size()));
+        if (used > 0 && used + need > rows) {
+            starts.push_back(i);
+            used = 0;
+        }
+        used += need;
+    }
+    return starts;
 }
 
 void RackLog::rebuild(const GameRecord& record, int rack) {
