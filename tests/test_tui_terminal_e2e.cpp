@@ -1,5 +1,5 @@
 // The terminal side of the real binary in tmux: a terminal that goes away, and a terminal
-// (vt100) whose mouse reports curses cannot decode.
+// (vt100) whose mouse reports curses cannot decode, and one (dumb) that cannot move the cursor.
 #include <catch2/catch.hpp>
 #include <chrono>
 #include <csignal>
@@ -101,4 +101,19 @@ TEST_CASE("vt100: no mouse tracking, a stray click report does not shoot, the sc
     const std::string after = t.screen();
     CHECK(after.find("[ shoot ]") == std::string::npos);
     CHECK(after.find("open table") == std::string::npos);
+}
+
+TEST_CASE("a terminal that cannot move the cursor (TERM=dumb) is refused with a message",
+          "[tui][e2e]") {
+    const ScratchDir dir("termpool-dumb");
+    Tmux t;
+    t.start(game_command(dir, "--player1 Ann --player2 Bob", "dumb"));
+    REQUIRE(t.wait_for_text("cannot move the cursor"));
+    CHECK(exit_status(dir.status_file()) == "1");
+    const std::string screen = t.screen();
+    CHECK(screen.find("termpool: this terminal (TERM=dumb) cannot move the cursor, which the game "
+                      "needs") != std::string::npos);
+    // Refused before a game began: nothing was saved, and the table was never written out.
+    CHECK(file_text(dir.save()).empty());
+    CHECK(screen.find("on table") == std::string::npos);
 }

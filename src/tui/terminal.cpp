@@ -240,6 +240,17 @@ Terminal::Terminal(bool ascii, bool no_colour) {
     screen_ = newterm(nullptr, stdout, stdin);
     if (!screen_)
         throw std::runtime_error("cannot use this terminal (is TERM set?)");
+    // A terminal that cannot put the cursor where it is told (TERM=dumb, a printing terminal)
+    // would get the frames written one after another, and the player would see nothing of use.
+    if (!has_string_capability("cup")) {
+        endwin();
+        delscreen(screen_);
+        screen_ = nullptr;
+        const char* term = std::getenv("TERM");
+        throw std::runtime_error(std::string("this terminal (TERM=") + (term ? term : "") +
+                                 ") cannot move the cursor, which the game needs: run it in "
+                                 "one that can (TERM=xterm-256color, screen, vt100, ...)");
+    }
     if (!std::getenv("ESCDELAY"))
         set_escdelay(100);
     const bool colour_wanted = !no_colour && !std::getenv("NO_COLOR") && has_colors();
