@@ -39,6 +39,26 @@ TEST_CASE("the player's foul stays on screen while the computer places and plays
     CHECK(t.screen().find("Foul: wrong ball first") != std::string::npos);
 }
 
+TEST_CASE("after the other player's foul, the player with ball in hand is told to place it",
+          "[tui][e2e]") {
+    const ScratchDir dir("termpool-verdicts");
+    Tmux t;
+    // Two players at this terminal: Ann fouls on the break as above, and Bob, whose turn it is
+    // here, reads why he has ball in hand and what to do with it.
+    t.start(game_command(
+        dir, "--game 9ball --player1 Ann --player2 Bob --seed 1 --race 1 --assist guided"));
+    REQUIRE(t.wait_for_text("place the cue ball"));
+    t.keys("Enter");
+    REQUIRE(t.wait_for_text("[ shoot ]"));
+    t.repeat("Left", 60);
+    t.keys("Space");
+    REQUIRE(t.wait_for_text("Ann shoots"));
+    t.keys("x");
+    REQUIRE(t.wait_for_text("Foul: wrong ball first"));
+    // ("... Bob has ball in hand; Bob: place the" and "cue ball anywhere" on the next row.)
+    CHECK(t.wait_for_text("Bob has ball in hand; Bob: place the"));
+}
+
 TEST_CASE("l opens the rack's log with each shot's verdict", "[tui][e2e]") {
     const ScratchDir dir("termpool-verdicts");
     Tmux t;

@@ -86,9 +86,14 @@ void App::compose_mode(const PlacingMode& placing, View& v) const {
     // Told to the player here, said of another seat; in snooker the D is named.
     const std::string where = ball_in_hand_words(g.ball_in_hand());
     const std::string ball = "the cue ball" + (where.empty() ? "" : " " + where);
+    const std::string placing_words = driver_->may_act() ? name(g.shooter()) + ": place " + ball
+                                                         : name(g.shooter()) + " places " + ball;
     if (said().empty())
-        v.message = driver_->may_act() ? name(g.shooter()) + ": place " + ball
-                                       : name(g.shooter()) + " places " + ball;
+        v.message = placing_words;
+    else if (driver_->may_act() && !g.is_break())
+        // The verdict said why ("... has ball in hand"); the player here is told what to do, as
+        // the break's words tell the breaker.
+        v.message += "; " + placing_words;
 }
 
 void App::compose_mode(const OverMode&, View& v) const {
