@@ -2,11 +2,16 @@
 // verdict line while the computer places and plays, the computer's shot leaves the player's
 // power as it was, `l` opens the rack's log, and a replay shows each shot's verdict.
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <fstream>
 #include <string>
+#include <termpool/match.hpp>
+#include <termpool/record.hpp>
 
+#include "match_helpers.hpp"
 #include "tmux_session.hpp"
 
+using namespace termpool;
 using namespace tmux_session;
 
 namespace {
@@ -69,6 +74,49 @@ TEST_CASE("l opens the rack's log with each shot's verdict", "[tui][e2e]") {
     CHECK(t.screen().find("wrong ball first") != std::string::npos);
     t.keys("Escape");
     CHECK(t.wait_gone("Rack 1: the shots"));
+}
+
+TEST_CASE("a long rack's log pages whole at 100x32", "[tui][e2e]") {
+    // A snooker frame of 24 actions, made by the easy computer in both seats and saved for two
+    // players: its log's lines are wider than the box and wrap, two rows a shot.
+    const ScratchDir dir("termpool-verdicts");
+    GameRecord header;
+    header.setup.game = GameType::snooker;
+    header.setup.table = TableSize::snooker;
+    header.seed = 3;
+    header.names[0] = "Ann";
+    header.names[1] = "Bob";
+    header.computers[0] = Level::easy;
+    header.computers[1] = Level::easy;
+    Match match = termpool::test::started(header, 3);
+    for (int i = 0; i < 24 && match.pending().kind != Pending::over; ++i)
+        REQUIRE(termpool::test::play_computer_move(match) == MatchError::none);
+    REQUIRE(match.pending().kind != Pending::over);
+    GameRecord record = match.record();
+    record.computers[0].reset();
+    record.computers[1].reset();
+    REQUIRE(std::system(("mkdir -p " + dir.path + "/termpool").c_str()) == 0);
+    std::ofstream(dir.save()) << format_record(record);
+    Tmux t;
+    t.start(game_command(dir, "--resume"));
+    REQUIRE(t.wait_for_text("Ann"));
+    t.keys("l");
+    REQUIRE(t.wait_for_text("Frame 1: the shots"));
+    // The box is whole: its footer and bottom corners are on the screen, on every page.
+    for (int page = 1;; ++page) {
+        INFO("page " << page);
+        REQUIRE(t.wait_for_text("page " + std::to_string(page) + "/"));
+        const std::string screen = t.screen();
+        CHECK(screen.find("Esc closes") != std::string::npos);
+        CHECK(screen.find("\u2570") != std::string::npos); // bottom-left corner
+        CHECK(screen.find("\u256F") != std::string::npos); // bottom-right corner
+        if (screen.find("k back") != std::string::npos)
+            break;
+        REQUIRE(page < 10);
+        t.keys("Space");
+    }
+    t.keys("Escape");
+    CHECK(t.wait_gone("Frame 1: the shots"));
 }
 
 TEST_CASE("the computer's shot leaves the player's power as it was", "[tui][e2e]") {
