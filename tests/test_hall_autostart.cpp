@@ -29,6 +29,7 @@
 
 #include "child_process.hpp"
 #include "file_helpers.hpp"
+#include "files/atomic_file.hpp"
 #include "hall/autostart.hpp"
 #include "hall/client.hpp"
 #include "hall/hall_lock.hpp"
@@ -580,7 +581,7 @@ TEST_CASE("socket trust: the folder, the socket file and the server must be this
             INFO("mode " << std::oct << mode);
             CHECK_THAT(judge_state_folder(folder, stat_of(S_IFDIR | mode, me), me),
                        Catch::StartsWith(folder + ": the state folder is writable by ") &&
-                           Catch::Contains("make it private with chmod 700"));
+                           Catch::EndsWith("let no one else write to it: chmod go-w"));
         }
         CHECK_THAT(judge_state_folder(folder, stat_of(S_IFDIR | 0777, me), me),
                    Catch::Contains("writable by others (mode 0777, owned by uid 1001"));
@@ -648,6 +649,15 @@ TEST_CASE("connect_or_start: a hall whose folder or socket is not this user's al
                    Catch::StartsWith(dir.path() + "/link: the socket folder is a symbolic link"));
         CHECK(refused);
         CHECK_FALSE(accepted_any(listener));
+    }
+    SECTION("a state folder others may write to: no hall is started on it") {
+        const std::string state = dir.path() + "/state/termpool/hall"; // default_state_dir()
+        REQUIRE(make_directories(state) == "");
+        REQUIRE(::chmod(state.c_str(), 0777) == 0);
+        CHECK(reach_hall(client, dir.path() + "/run/hall.sock", binary(), log, &refused) ==
+              state + ": the state folder is writable by others (mode 0777, owned by " +
+                  describe_uid(::geteuid()) + "); let no one else write to it: chmod go-w");
+        CHECK(refused);
     }
     SECTION("a folder or a socket owned by another user (as root: given to uid 65534)") {
         if (::geteuid() != 0) {

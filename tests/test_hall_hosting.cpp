@@ -246,7 +246,8 @@ TEST_CASE("hall core: the name of a player away from a seat waits for them", "[h
         REQUIRE(error);
         CHECK(error->code == ErrorCode::name_taken);
         CHECK(error->text == "Bob holds a seat at table " + std::to_string(table) +
-                                 ": come in under another name");
+                                 ": if it is yours, come in as Bob exactly; if not, under "
+                                 "another name");
         CHECK(hall.closed(other));
     }
     // Bob himself, with his token, comes back under his name and sits again.
@@ -261,4 +262,54 @@ TEST_CASE("hall core: the name of a player away from a seat waits for them", "[h
     CHECK(hall.core().match(table)->name(2) != "Bob");
     CHECK(hall.hello("BOB") != 0);
     (void)ann;
+}
+
+TEST_CASE("hall core: a token whose seat shows the name comes in under it, even where another "
+          "token's seat shows it too (a state folder from before the rule)",
+          "[hall][core]") {
+    test::TempDir dir("termpool-hosting");
+    ServerOptions options;
+    options.state_dir = dir.path();
+    std::string fay_token;
+    {
+        FakeHall hall(options);
+        const int fay = hall.hello("Fay");
+        const int ann = hall.hello("Ann");
+        fay_token = hall.token(fay);
+        const int table = hall.create(fay);
+        hall.sit(fay, table, 1);
+        hall.sit(ann, table, 2);
+        hall.play_one(fay, ann, table);
+        hall.disconnect(fay);
+        hall.disconnect(ann);
+        REQUIRE(hall.core().save_all() == 0);
+    }
+    // What an older hall let happen: a second Fay, another token, at a seat of table 2.
+    std::vector<std::string> problems;
+    std::vector<SavedTable> saved = load_tables(dir.path(), problems);
+    REQUIRE(saved.size() == 1);
+    SavedTable second = saved[0];
+    second.number = 2;
+    const std::string other_token = "0123456789abcdef0123456789abcdef";
+    second.seat_tokens[0] = seat_token_hash(other_token);
+    second.seat_tokens[1] = "";
+    REQUIRE(save_table(dir.path(), second) == "");
+    FakeHall hall(options);
+    hall.restore();
+    REQUIRE(hall.core().table_count() == 2);
+    // Each Fay comes in with her own token (one at a time: two connected under one name
+    // are still refused), and each is told her own seat.
+    const int first = hall.hello("Fay", fay_token);
+    CHECK(hall.find<Yours>(first));
+    hall.disconnect(first);
+    const int second_fay = hall.hello("Fay", other_token);
+    CHECK_FALSE(hall.closed(second_fay));
+    hall.disconnect(second_fay);
+    // A third token still meets the door.
+    const int third = hall.connect();
+    hall.send(third, Hello{protocol_version, "", "Fay"});
+    const auto error = hall.find<Error>(third);
+    REQUIRE(error);
+    CHECK(error->code == ErrorCode::name_taken);
+    CHECK(hall.closed(third));
 }

@@ -88,6 +88,32 @@ TEST_CASE("hall limits: one name cannot fill the hall, with a new token per hell
     hall.sit(ann, table, 1);
 }
 
+TEST_CASE("hall limits: tables one name created are counted under a new token too",
+          "[hall][core][limits]") {
+    // Mallory creates a table, never sits, and goes; someone watching keeps the waiting table.
+    // No seat keeps her name, so a new token comes in under it, and is held to her tables.
+    ServerOptions options;
+    FakeHall hall(options);
+    for (int i = 0; i < options.max_tables_per_person; ++i) {
+        const int mallory = hall.hello("Mallory");
+        const int table = hall.create(mallory);
+        const int watcher = hall.hello("W" + std::to_string(i));
+        hall.send(watcher, Watch{table});
+        hall.tick();
+        hall.disconnect(mallory);
+        REQUIRE(hall.core().match(table));
+    }
+    const int again = hall.hello("MALLORY");
+    hall.send(again, Create{GameType::eight_ball, TableSize::seven_foot, 1});
+    const auto error = hall.find<Error>(again);
+    REQUIRE(error);
+    CHECK(error->code == ErrorCode::full);
+    CHECK(error->text == "you hold " + std::to_string(options.max_tables_per_person) +
+                             " tables already, the most one person may: finish or leave one");
+    // Under another name she is another person.
+    CHECK(hall.create(hall.hello("Nora")) != 0);
+}
+
 TEST_CASE("hall limits: the last free tables are kept for people who hold none",
           "[hall][core][limits]") {
     ServerOptions options;

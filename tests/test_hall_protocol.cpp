@@ -418,9 +418,13 @@ TEST_CASE("hall protocol: chat holds nothing invisible and nothing that turns th
         CHECK(std::get<ProtocolError>(parsed).code == ErrorCode::syntax);
         CHECK(std::get<ProtocolError>(parsed).text == why);
     }
-    // Any script, combining marks and emoji stay; so does chat the server sends (it sent only
-    // what it took, and a table kept from an older hall may hold a line it took then).
-    for (const std::string text : {"nice shot", "Zoe\u0308!", "שלום", "李小龍 🎱", "gg ✓"}) {
+    // Any script, combining marks and emoji stay, with the joiners and variation selectors
+    // they are written with (a family, a red heart, a Persian word with a zero-width non-joiner);
+    // so does chat the server sends (it sent only what it took, and a table kept from an older
+    // hall may hold a line it took then).
+    for (const std::string text : {"nice shot", "Zoe\u0308!", "שלום", "李小龍 🎱", "gg ✓",
+                                   "\U0001F468\u200D\U0001F469\u200D\U0001F467", "\u2764\uFE0F",
+                                   "\u0645\u06CC\u200C\u062E\u0648\u0627\u0647\u0645"}) {
         INFO(text);
         client_round_trip(Chat{text});
     }

@@ -29,9 +29,10 @@ bool is_hidden_character(char32_t cp);
 std::optional<std::string> name_characters_problem(std::string_view name);
 
 /// The same rule for any text a person sends to be shown to others, a chat line: nothing hidden
-/// in it, nothing that turns the line it is shown on around or breaks it. What is wrong, said
-/// of `subject` ("chat is not valid UTF-8", "chat may not hold U+200B (an invisible
-/// character)"), or nothing.
+/// in it, nothing that turns the line it is shown on around or breaks it; but the joiners
+/// (U+200C, U+200D) and variation selectors (U+FE00 to U+FE0F) that emoji sequences and some
+/// scripts are written with pass. What is wrong, said of `subject` ("chat is not valid UTF-8",
+/// "chat may not hold U+200B (an invisible character)"), or nothing.
 std::optional<std::string> shown_text_problem(std::string_view text, std::string_view subject);
 
 /// The widest name, in terminal columns (a CJK character counts two): the prompt cuts a name

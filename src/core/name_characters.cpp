@@ -40,14 +40,22 @@ bool is_hidden_character(char32_t cp) {
 
 namespace {
 
-// The first problem of `text`: `invalid` for bad UTF-8, or "HOLDER may not hold U+XXXX (why)".
+// The joiners and variation selectors: invisible, but what emoji sequences ("❤️", a family)
+// and scripts such as Persian are written with; harmless in a line of text, though a name,
+// which must not look like another, holds none.
+bool joins_or_selects(char32_t cp) {
+    return cp == 0x200C || cp == 0x200D || (cp >= 0xFE00 && cp <= 0xFE0F);
+}
+
+// The first problem of `text`: `invalid` for bad UTF-8, or "HOLDER may not hold U+XXXX (why)";
+// with `text_marks`, joiners and variation selectors pass.
 std::optional<std::string> characters_problem(std::string_view text, std::string_view invalid,
-                                              std::string_view holder) {
+                                              std::string_view holder, bool text_marks) {
     for (std::size_t i = 0; i < text.size();) {
         char32_t cp = 0;
         if (!decode_utf8(text, i, cp))
             return std::string(invalid);
-        if (!is_hidden_character(cp))
+        if (!is_hidden_character(cp) || (text_marks && joins_or_selects(cp)))
             continue;
         char code[16];
         std::snprintf(code, sizeof code, "U+%04X", static_cast<unsigned>(cp));
@@ -63,11 +71,11 @@ std::optional<std::string> characters_problem(std::string_view text, std::string
 } // namespace
 
 std::optional<std::string> name_characters_problem(std::string_view name) {
-    return characters_problem(name, "the name is not valid UTF-8", "a name");
+    return characters_problem(name, "the name is not valid UTF-8", "a name", false);
 }
 
 std::optional<std::string> shown_text_problem(std::string_view text, std::string_view subject) {
-    return characters_problem(text, std::string(subject) + " is not valid UTF-8", subject);
+    return characters_problem(text, std::string(subject) + " is not valid UTF-8", subject, true);
 }
 
 } // namespace termpool

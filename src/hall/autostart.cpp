@@ -288,6 +288,13 @@ HallReach connect_or_start(HallClient& client, const std::string& socket_path,
         error = problem;
         return reach;
     }
+    // So is a state folder others may write to: a server started on it would only refuse it,
+    // again at every retry, and the player would wait for nothing.
+    if (std::string problem = check_state_folder(default_state_dir()); !problem.empty()) {
+        error = problem;
+        reach.refused = true;
+        return reach;
+    }
     const std::string log = started_hall_log_path();
     const std::vector<std::string> args = {self_exe,      "hall", "serve", "--socket", socket_path,
                                            "--idle-exit", "60",   "--log", log};

@@ -33,7 +33,8 @@ struct HallReach {
     /// answered.
     std::string started_log;
     /// The socket's folder or file, or the server that answered, is not this user's alone
-    /// (hall/socket_trust.hpp): nothing was sent there, and trying again would not help.
+    /// (hall/socket_trust.hpp), or the state folder a started hall would use is not: nothing
+    /// was sent there, and trying again would not help.
     bool refused = false;
 };
 

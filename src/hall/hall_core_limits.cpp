@@ -12,19 +12,9 @@
 
 namespace termpool::hall {
 
-namespace {
-
-// Two names of one person: equal however typed (name_key: case, width, composition). (A new
-// token per hello gives no more tables; a new name per hello is a new person, kept out by the
-// reserve below.)
-bool same_name(const std::string& a, const std::string& b) {
-    return !a.empty() && name_key(a) == name_key(b);
-}
-
-} // namespace
-
 // A table `client` holds: one not over that they created or hold a seat of (there or away),
-// by their token or their name.
+// by their token or their name (same_name: a new token per hello gives no more tables; a new
+// name per hello is a new person, kept out by the reserve below).
 bool HallCore::holds(const Table& table, const Client& client) const {
     if (over(table))
         return false; // it goes when the last person leaves it

@@ -180,18 +180,35 @@ void HallCore::on_hello(Client& client, const Hello& hello, Clock::time_point no
             return send_and_close(client, ErrorCode::name_taken,
                                   "someone in the hall is called " + other.name +
                                       " already: come in under another name");
-    // A player away from a seat keeps the name it shows, so that no one else can take it and
-    // keep its owner out when they come back with their token (a name given with --name cannot
-    // be changed). The seat's away limit bounds how long.
+    // A seat held by a token keeps the name it shows while its owner is away (until the away
+    // limit, or archive_after for a table nobody is at), so that no one else can take the name
+    // and keep the owner out when they come back with their token: under --name they can come
+    // in under no other. A token that holds a seat showing the name itself comes in: a state
+    // folder from before this rule may hold the name at seats of two tokens.
+    const Table* taken_at = nullptr;
+    int taken_seat = 0;
+    bool own_seat = false;
     for (const auto& [number, table] : tables_)
         for (int s = 1; s <= 2; ++s) {
             const SeatSlot& slot = table.seats[s - 1];
-            if (!slot.token_hash.empty() && !same_digest(slot.token_hash, hash) &&
-                name_key(table.match.name(s)) == key)
-                return send_and_close(client, ErrorCode::name_taken,
-                                      table.match.name(s) + " holds a seat at table " +
-                                          std::to_string(number) + ": come in under another name");
+            if (slot.token_hash.empty() || !same_name(table.match.name(s), hello.name))
+                continue;
+            if (same_digest(slot.token_hash, hash)) {
+                own_seat = true;
+            } else if (!taken_at) {
+                taken_at = &table;
+                taken_seat = s;
+            }
         }
+    if (taken_at && !own_seat) {
+        const std::string& shown = taken_at->match.name(taken_seat);
+        // The client keeps a token under the name exactly as typed: the owner finds theirs
+        // under that spelling.
+        return send_and_close(client, ErrorCode::name_taken,
+                              shown + " holds a seat at table " + std::to_string(taken_at->number) +
+                                  ": if it is yours, come in as " + shown +
+                                  " exactly; if not, under another name");
+    }
     if (others >= options_.max_clients && !evict_idle_lobby(hash, now))
         return send_and_close(client, ErrorCode::full, "the hall has all the clients it takes");
     // The same person again: the old connection gives way (its seats go away, then the

@@ -43,4 +43,8 @@ std::string name_key(std::string_view name) {
     return out;
 }
 
+bool same_name(std::string_view a, std::string_view b) {
+    return !a.empty() && name_key(a) == name_key(b);
+}
+
 } // namespace termpool::hall

@@ -13,4 +13,8 @@ namespace termpool::hall {
 /// UTF-8 (a name the protocol would refuse) is its own key.
 std::string name_key(std::string_view name);
 
+/// Whether two names are one person's: equal however typed (their name_key); an empty name is
+/// nobody's.
+bool same_name(std::string_view a, std::string_view b);
+
 } // namespace termpool::hall

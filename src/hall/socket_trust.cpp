@@ -50,10 +50,10 @@ std::string describe_uid(uid_t uid) {
 
 namespace {
 
-// The judgement of a folder only `user` may change: `what` names it in messages, and
-// `forbidden` is the mode bits its group and others may not have.
+// The judgement of a folder only `user` may change: `what` names it in messages, `forbidden`
+// is the mode bits its group and others may not have, and `remedy` says how to take them away.
 std::string judge_own_folder(const std::string& folder, const struct stat& st, uid_t user,
-                             const char* what, mode_t forbidden) {
+                             const char* what, mode_t forbidden, const char* remedy) {
     const std::string owner = "owned by " + describe_uid(st.st_uid);
     // A link could be pointed elsewhere after the check, by whoever owns the folder it is in.
     if (S_ISLNK(st.st_mode))
@@ -64,18 +64,20 @@ std::string judge_own_folder(const std::string& folder, const struct stat& st, u
         return folder + ": " + what + " is " + owner + ", not by " + this_user(user);
     if ((st.st_mode & forbidden) != 0)
         return folder + ": " + what + " is " + reached_by(st.st_mode) + " (mode " +
-               octal_mode(st.st_mode) + ", " + owner + "); make it private with chmod 700";
+               octal_mode(st.st_mode) + ", " + owner + "); " + remedy;
     return {};
 }
 
 } // namespace
 
 std::string judge_socket_folder(const std::string& folder, const struct stat& st, uid_t user) {
-    return judge_own_folder(folder, st, user, "the socket folder", S_IRWXG | S_IRWXO);
+    return judge_own_folder(folder, st, user, "the socket folder", S_IRWXG | S_IRWXO,
+                            "make it private with chmod 700");
 }
 
 std::string judge_state_folder(const std::string& folder, const struct stat& st, uid_t user) {
-    return judge_own_folder(folder, st, user, "the state folder", S_IWGRP | S_IWOTH);
+    return judge_own_folder(folder, st, user, "the state folder", S_IWGRP | S_IWOTH,
+                            "let no one else write to it: chmod go-w");
 }
 
 std::string judge_table_file(const std::string& path, const struct stat& st, uid_t user) {

@@ -5,8 +5,10 @@
 /// Another local user who makes /tmp/termpool-UID first (or any folder on a --socket path)
 /// could otherwise listen there, take the token and show a lobby of their own. The folder and
 /// file are looked at (lstat) before connecting, the server's uid (SO_PEERCRED) after, before
-/// anything is sent. The judgements are pure functions of what lstat and SO_PEERCRED give, so
-/// that an owner other than oneself can be tested without root.
+/// anything is sent. The state folder and its table files are judged here too, by the same
+/// rule of ownership: whoever else could write there could plant a seat token. The judgements
+/// are pure functions of what lstat and SO_PEERCRED give, so that an owner other than oneself
+/// can be tested without root.
 
 #include <string>
 #include <sys/stat.h>
