@@ -103,6 +103,15 @@ TEST_CASE("without a terminal the game says so and prints nothing else", "[cli][
     CHECK(o.out.find('\033') == std::string::npos);
 }
 
+TEST_CASE("a bad hall --name says why on one line, without the usage", "[cli][usage]") {
+    const ScratchDir dir("termpool-usage");
+    const Output o = run_in(dir, "sh -c \"'" + termpool_binary() +
+                                     "' hall --name \"$(printf 'Eve\\342\\200\\256')\" 2>&1\"");
+    CHECK(o.status == 2);
+    CHECK(o.out == "termpool hall: --name: a name may not hold U+202E (it changes the direction "
+                   "of the text) (termpool hall --help: usage)\n");
+}
+
 TEST_CASE("a command the program suggests names it so that it runs where the player is",
           "[cli][usage]") {
     const ScratchDir dir("termpool-self");

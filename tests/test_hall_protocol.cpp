@@ -409,6 +409,8 @@ TEST_CASE("hall protocol: chat holds nothing invisible and nothing that turns th
         {"one\u2028two", "chat may not hold U+2028 (an invisible character)"},
         {"\uFEFFhi", "chat may not hold U+FEFF (an invisible character)"},
         {"hi\U000E0041", "chat may not hold U+E0041 (an invisible character)"},
+        {" ", "chat of nothing but spaces says nothing"},
+        {"    ", "chat of nothing but spaces says nothing"},
     };
     for (const auto& [text, why] : bad) {
         const std::string line = body(format_client(Chat{text}));

@@ -272,6 +272,20 @@ TEST_CASE("three hall terminals: a table created, a seat taken, a watcher, the r
     CHECK(server->running());
 }
 
+TEST_CASE("leaving a table whose game has not started says no seat waits", "[hall][tui][e2e]") {
+    TempDir dir("termpool-hall-tui");
+    auto server = serve(dir.path());
+    Tmux ann;
+    open_terminal(ann, dir.path(), "Ann", 100, 32);
+    create_table(ann);
+    // No action yet: the hall frees the seat as she leaves, and her lobby must not promise it.
+    ann.keys("q");
+    REQUIRE(ann.wait_for_text("Leave the table?"));
+    ann.keys("y");
+    REQUIRE(ann.wait_for_text("Back in the lobby from table 1"));
+    CHECK(ann.screen().find("waits for you") == std::string::npos);
+}
+
 TEST_CASE("hall faults: a terminal killed mid-shot takes its seat back, a server killed "
           "mid-game is started again by the terminals and the game goes on",
           "[hall][tui][e2e]") {

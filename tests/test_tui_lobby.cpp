@@ -237,4 +237,10 @@ TEST_CASE("hall table: chat typed at the terminal leaves out what the hall refus
     key(key_enter);
     REQUIRE(sent.size() == 1);
     CHECK(sent[0] == "gg \u00e9\u0301\U0001F3B1");
+    // Nothing but spaces is not sent: Enter closes the line, as an empty one.
+    key('\t');
+    type(" ");
+    type(" ");
+    key(key_enter);
+    CHECK(sent.size() == 1);
 }

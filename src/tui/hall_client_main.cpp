@@ -47,9 +47,10 @@ int run_hall(const std::vector<std::string>& args) {
             std::string error;
             const auto name = clean_player_name(value, error);
             if (!name) {
-                std::fprintf(stderr, "termpool hall: --name: %s\n\n%s%s",
-                             error.empty() ? "the name is blank" : error.c_str(), usage,
-                             hall::hall_usage());
+                // The reason alone, on one line: under an SSH forced command the usage would
+                // push it off the screen.
+                std::fprintf(stderr, "termpool hall: --name: %s (termpool hall --help: usage)\n",
+                             error.empty() ? "the name is blank" : error.c_str());
                 return 2;
             }
             options.name = *name;

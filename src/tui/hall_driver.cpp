@@ -161,8 +161,9 @@ std::optional<DriverReply> HallDriver::handle(const Input& in, const Layout&,
         };
         if (chat_entry_->edit(in, fits) || in.kind != Input::Kind::key)
             return DriverReply{};
-        if (in.key == key_enter && !chat_entry_->text.empty() && link_.chat &&
-            !link_.chat(chat_entry_->text)) {
+        // A line of nothing but spaces says nothing: Enter closes it unsent, as an empty one.
+        const bool says_something = chat_entry_->text.find_first_not_of(' ') != std::string::npos;
+        if (in.key == key_enter && says_something && link_.chat && !link_.chat(chat_entry_->text)) {
             chat_entry_->error = "one line a second: Enter again";
             return DriverReply{};
         }
