@@ -98,13 +98,16 @@ bool shortened_name(const std::string& word, const View& v) {
     return false;
 }
 
-// A message cut short at the end of its rows, visibly: a whole word of it and an ellipsis.
+// A message or a chat line cut short at the end of its rows, visibly: a whole word of it and
+// an ellipsis.
 bool message_cut_visibly(const std::string& word, const View& v) {
     if (word.size() < ellipsis.size() ||
         word.compare(word.size() - ellipsis.size(), ellipsis.size(), ellipsis) != 0)
         return false;
     std::set<std::string> message_words;
     add_words(message_words, v.message);
+    for (const std::string& line : v.chat)
+        add_words(message_words, line);
     const std::string start = word.substr(0, word.size() - ellipsis.size());
     return start.empty() || message_words.count(bare(start)) > 0;
 }
@@ -291,4 +294,22 @@ TEST_CASE("a message longer than its rows ends in an ellipsis after a whole word
     CHECK(cut_words(v, 80, 24).empty());
     // With room for it all, nothing is marked.
     CHECK(panel_text(v, 200, 60).find(ellipsis) == std::string::npos);
+}
+
+TEST_CASE("a chat line cut short in the panel ends in an ellipsis, never looks whole",
+          "[tui][panel]") {
+    View v = nine_ball_view();
+    v.message = "Ann to shoot";
+    v.chat = {"Ann: bob fell off his chair laughing at that last shot of his"};
+    // 60x20: the panel below the table keeps one row for the newest chat line.
+    const std::string panel = panel_text(v, 60, 20);
+    CAPTURE(panel);
+    REQUIRE(panel.find("Ann: bob") != std::string::npos);
+    CHECK(panel.find("shot of his") == std::string::npos);
+    CHECK(panel.find(ellipsis) != std::string::npos);
+    // With room for it, the line is whole and unmarked.
+    const std::string roomy = panel_text(v, 200, 60);
+    CAPTURE(roomy);
+    CHECK(roomy.find("shot of his") != std::string::npos);
+    CHECK(roomy.find(ellipsis) == std::string::npos);
 }

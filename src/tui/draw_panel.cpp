@@ -358,13 +358,16 @@ int legend_rows(const Frame& f, int width) {
     return rows == INT_MAX ? 0 : rows;
 }
 
-// The last lines of the chat that fit in `rows` at `width`, oldest first.
-std::vector<Line> chat_tail(const View& v, int width, int rows) {
+// The last lines of the chat that fit in `rows` at `width`, oldest first. A line cut short
+// keeps its start (who said it) and ends in an ellipsis: nothing looks whole that is not.
+std::vector<Line> chat_tail(const View& v, int width, int rows, bool utf8) {
     std::vector<Line> tail;
     for (auto it = v.chat.rbegin(); it != v.chat.rend() && rows > 0; ++it) {
         std::vector<Line> lines = wrapped(*it, width, dim);
-        if (static_cast<int>(lines.size()) > rows)
-            lines.resize(static_cast<std::size_t>(rows)); // its start: who said it
+        if (static_cast<int>(lines.size()) > rows) {
+            lines.resize(static_cast<std::size_t>(rows));
+            mark_cut(lines.back(), width, utf8);
+        }
         rows -= static_cast<int>(lines.size());
         tail.insert(tail.begin(), lines.begin(), lines.end());
     }
@@ -478,7 +481,7 @@ void draw_side_panel(const Frame& f) {
     // The chat has what the legend at its smallest leaves, under a blank row.
     if (!v.chat.empty() && limit - y >= 2) {
         ++y;
-        put_lines(chat_tail(v, width, limit - y));
+        put_lines(chat_tail(v, width, limit - y, p.utf8()));
     }
     y = std::min(y, limit);
     draw_legend(f, x, y, width, hint_row - y);
@@ -618,7 +621,7 @@ void draw_below_panel(const Frame& f) {
             draw_line(p, mid_x, y++, message[static_cast<std::size_t>(i)], mid_w);
         for (int i = 0; i < call_rows; ++i)
             draw_line(p, mid_x, y++, call[static_cast<std::size_t>(i)], mid_w);
-        for (const Line& line : chat_tail(v, mid_w, l.panel_y + rows - y))
+        for (const Line& line : chat_tail(v, mid_w, l.panel_y + rows - y, f.paint.utf8()))
             draw_line(p, mid_x, y++, line, mid_w);
     }
     if (face)
