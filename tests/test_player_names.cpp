@@ -93,3 +93,17 @@ TEST_CASE("name_key: one key for a name however it is typed", "[names]") {
     CHECK(name_key("") == "");
     CHECK(name_key("\uFDFA").size() > 18); // the longest expansion NFKC knows
 }
+
+TEST_CASE("a name prompt takes keys up to the widest name, and no further", "[names]") {
+    CHECK(name_has_room("", "A"));
+    CHECK(name_has_room(std::string(19, 'a'), "b"));
+    CHECK_FALSE(name_has_room(std::string(20, 'a'), "b"));
+    // Wide characters count two columns; spaces at the ends are trimmed, as the name will be.
+    CHECK(name_has_room("李小龍李小龍李小龍", "李"));        // 20 columns
+    CHECK_FALSE(name_has_room("李小龍李小龍李小龍李", "a")); // 21
+    CHECK(name_has_room("   " + std::string(17, 'a'), "b"));
+    CHECK(name_has_room(std::string(20, 'a'), " ")); // a space at the end goes with the trim
+    // What the prompt stops at is what clean_player_name would keep whole.
+    std::string error;
+    CHECK(clean_player_name(std::string(20, 'a'), error) == std::string(20, 'a'));
+}

@@ -43,4 +43,9 @@ std::optional<std::string> clean_player_name(std::string_view input, std::string
     return std::string(name);
 }
 
+bool name_has_room(std::string_view text, std::string_view typed) {
+    const std::string name = std::string(text) + std::string(typed);
+    return display_width(trim_spaces(name)) <= max_name_columns;
+}
+
 } // namespace termpool

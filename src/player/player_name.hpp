@@ -14,4 +14,8 @@ namespace termpool {
 /// character or an invisible or direction-changing one (`name_characters_problem`).
 std::optional<std::string> clean_player_name(std::string_view input, std::string& error);
 
+/// Whether `typed` may follow `text` at a name prompt: the name it makes, spaces trimmed, stays
+/// within `max_name_columns`, so that the prompt stops taking keys where the name would be cut.
+bool name_has_room(std::string_view text, std::string_view typed);
+
 } // namespace termpool

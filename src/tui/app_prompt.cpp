@@ -9,7 +9,9 @@
 namespace termpool::tui {
 
 void App::handle_text_entry(const Input& in) {
-    if (entry_.edit(in) || in.kind != Input::Kind::key)
+    // Keys past the widest name are not taken: the name would be cut there.
+    const auto room = [&](const std::string& typed) { return name_has_room(entry_.text, typed); };
+    if (entry_.edit(in, room) || in.kind != Input::Kind::key)
         return;
     if (in.key == key_enter) {
         take_name();
