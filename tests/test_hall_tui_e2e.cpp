@@ -286,6 +286,29 @@ TEST_CASE("leaving a table whose game has not started says no seat waits", "[hal
     CHECK(ann.screen().find("waits for you") == std::string::npos);
 }
 
+TEST_CASE("a name the hall refuses brings the prompt back, to come in under another",
+          "[hall][tui][e2e]") {
+    TempDir dir("termpool-hall-tui");
+    auto server = serve(dir.path());
+    Tmux ann, other;
+    open_terminal(ann, dir.path(), "Ann", 100, 32);
+    other.start("env " + account_env(dir.path()) + " " + termpool_binary() + " hall --socket " +
+                    dir.path() + "/hall.sock",
+                100, 32);
+    REQUIRE(other.wait_for_text("Your name:"));
+    CHECK(other.screen().find("No tables yet") == std::string::npos); // not in the hall yet
+    other.keys("-l ANN");
+    other.keys("Enter");
+    REQUIRE(other.wait_for_text("someone in the hall is called Ann already"));
+    const std::string refused = other.screen();
+    CHECK(refused.find("Your name:") != std::string::npos);
+    CHECK(refused.find("trying again") == std::string::npos);
+    other.keys("-l Bea");
+    other.keys("Enter");
+    CHECK(other.wait_for_text("Welcome, Bea."));
+    CHECK(ann.wait_for_text("Bea"));
+}
+
 TEST_CASE("hall faults: a terminal killed mid-shot takes its seat back, a server killed "
           "mid-game is started again by the terminals and the game goes on",
           "[hall][tui][e2e]") {

@@ -110,6 +110,8 @@ void HallSession::lost_connection(const std::string& why) {
     welcomed_ = false;
     if (stopped_)
         return; // the message says why, and r tries again
+    if (form_ == Form::name)
+        return; // the name was refused: the prompt asks again, and nothing is tried meanwhile
     if (app_ && table_ != 0) {
         rejoin_table_ = table_;
         rejoin_seat_ = seat_;

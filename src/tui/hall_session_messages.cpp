@@ -44,6 +44,19 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
             driver_->refused(words);
         else
             message_ = "The hall said: " + words;
+        if (m->code == hall::ErrorCode::name_taken && !options_.name) {
+            // A name typed at the prompt: the prompt asks again, the hall's words under it
+            // (under --name there is no other to give, and the session stops below).
+            client_.disconnect();
+            welcomed_ = false;
+            token_.clear(); // a token goes with its name: the next name looks up its own
+            name_.clear();
+            form_ = Form::name;
+            entry_.clear();
+            entry_.error = words;
+            message_.clear();
+            return;
+        }
         if (m->code == hall::ErrorCode::replaced || m->code == hall::ErrorCode::version ||
             m->code == hall::ErrorCode::name_taken) {
             // Trying again would only throw the other terminal out (or meet the same

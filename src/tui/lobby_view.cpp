@@ -159,7 +159,10 @@ Grid render_lobby(const LobbyView& v, const Capabilities& caps, int width, int h
     const int message_rows = 2, people_rows = 2;
     p.text(1, 2, header_row(seat_w, extras), dim, width - 2);
     if (v.tables.empty()) {
-        p.text(1, list_top, "No tables yet: c creates one.", {}, width - 2);
+        // Before the hall has answered there is nothing to tell of its tables.
+        p.text(1, list_top,
+               v.connected ? "No tables yet: c creates one." : "Not in the hall yet: no tables.",
+               {}, width - 2);
     } else {
         const int count = static_cast<int>(v.tables.size());
         const int selected = std::clamp(v.selected, 0, count - 1);
