@@ -309,7 +309,6 @@ TEST_CASE("hall process: serve refuses a socket folder others may write to, and 
     const std::vector<std::vector<std::string>> bad = {
         {"hall", "--bogus"},
         {"hall", "--name"},
-        {"hall", "--name", "bad\x01name"},
         {"hall", "frobnicate"},
         {"hall", "serve", "--bogus", "1"},
         {"hall", "serve", "stray"},
@@ -330,6 +329,14 @@ TEST_CASE("hall process: serve refuses a socket folder others may write to, and 
         CHECK(said.find("usage: termpool hall serve") != std::string::npos);
         CHECK(server->gone());
     }
+    // A name it cannot take is said on one line, without the usage that would push the reason
+    // off the screen (under an SSH forced command, the player's only view of it).
+    std::ofstream(log, std::ios::trunc).close();
+    auto named = run_termpool(dir.path(), {"hall", "--name", "bad\x01name"}, log);
+    CHECK(named->wait_exit(kWait) == 2);
+    CHECK(file_text(log) == "termpool hall: --name: a name may not hold U+0001 (a control "
+                            "character) (termpool hall --help: usage)\n");
+    CHECK(named->gone());
 }
 
 TEST_CASE("hall process: a thousand connects and disconnects, the server's memory stays put",
