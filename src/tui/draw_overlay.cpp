@@ -18,15 +18,22 @@ struct Box {
     bool holds(int cx, int cy) const { return cx >= x && cy >= y && cx < x + w && cy < y + h; }
 };
 
-int covered(const Box& b, const std::vector<std::pair<int, int>>& keep) {
-    return static_cast<int>(std::count_if(
-        keep.begin(), keep.end(), [&](const auto& c) { return b.holds(c.first, c.second); }));
+// The cells of `keep` box `b` covers, and one more when it covers row `row`: a box keeps off
+// the row where it can, but not at the cost of a ball.
+int covered_cells(const Box& b, const std::vector<std::pair<int, int>>& keep, int row) {
+    const int on_row = b.y <= row && row < b.y + b.h ? 1 : 0;
+    return on_row + static_cast<int>(std::count_if(keep.begin(), keep.end(), [&](const auto& c) {
+               return b.holds(c.first, c.second);
+           }));
 }
 
 // Where a box of w x h goes: centred if that covers none of `keep`, else centred on the panel,
-// else the place covering the fewest, nearest the centre.
+// else the place covering the fewest, nearest the centre. The last row, which holds the keys'
+// hint (and the legend below a narrow table), is kept as a cell of `keep` is.
 Box place_box(const Frame& f, int w, int h, const std::vector<std::pair<int, int>>& keep) {
     const Painter& p = f.paint;
+    const int hint_row = p.height() - 1;
+    const auto covered = [&](const Box& b) { return covered_cells(b, keep, hint_row); };
     // A box as wide as the screen keeps off the last row: the terminal's bottom-right cell is
     // never written (it would scroll some terminals), and the box's corner would be missing.
     const int lowest = p.height() - h - (w >= p.width() ? 1 : 0);
@@ -35,13 +42,13 @@ Box place_box(const Frame& f, int w, int h, const std::vector<std::pair<int, int
                    std::clamp(y, 0, std::max(0, lowest)), w, h};
     };
     const Box centred = clamp_box((p.width() - w) / 2, (p.height() - h) / 2);
-    if (covered(centred, keep) == 0)
+    if (covered(centred) == 0)
         return centred;
     const Layout& l = f.layout;
     const Box panel = clamp_box(l.panel_x + (l.panel_width - w) / 2,
-                                l.panel_below ? l.panel_y + l.panel_height - h
+                                l.panel_below ? l.panel_y + l.panel_height - 1 - h
                                               : l.panel_y + (l.panel_height - h) / 2);
-    if (covered(panel, keep) == 0)
+    if (covered(panel) == 0)
         return panel;
     Box best = centred;
     long best_cost = LONG_MAX;
@@ -50,7 +57,7 @@ Box place_box(const Frame& f, int w, int h, const std::vector<std::pair<int, int
             const Box b{x, y, w, h};
             // Distance in screen terms, a row being two columns tall.
             const long dx = x - centred.x, dy = 2L * (y - centred.y);
-            const long cost = covered(b, keep) * 1000000L + dx * dx + dy * dy;
+            const long cost = covered(b) * 1000000L + dx * dx + dy * dy;
             if (cost < best_cost)
                 best_cost = cost, best = b;
         }
