@@ -16,11 +16,13 @@ using namespace tmux_session;
 
 namespace {
 
-// 9-ball, seed 1, against the computer: Ann turns the cue 60 degrees off the aim guided opens
-// the break with and breaks, hitting a wrong ball first; the animation is skipped.
-void foul_on_the_break(const Tmux& t, const ScratchDir& dir) {
-    t.start(game_command(
-        dir, "--game 9ball --player1 Ann --vs-computer --seed 1 --race 1 --assist guided"));
+// 9-ball, seed 1, Ann against `opponent` (the computer, or a second player at this terminal):
+// Ann turns the cue 60 degrees off the aim guided opens the break with and breaks, hitting a
+// wrong ball first; the animation is skipped.
+void foul_on_the_break(const Tmux& t, const ScratchDir& dir,
+                       const std::string& opponent = "--vs-computer") {
+    t.start(game_command(dir, "--game 9ball --player1 Ann " + opponent +
+                                  " --seed 1 --race 1 --assist guided"));
     REQUIRE(t.wait_for_text("place the cue ball"));
     t.keys("Enter");
     REQUIRE(t.wait_for_text("[ shoot ]"));
@@ -50,16 +52,7 @@ TEST_CASE("after the other player's foul, the player with ball in hand is told t
     Tmux t;
     // Two players at this terminal: Ann fouls on the break as above, and Bob, whose turn it is
     // here, reads why he has ball in hand and what to do with it.
-    t.start(game_command(
-        dir, "--game 9ball --player1 Ann --player2 Bob --seed 1 --race 1 --assist guided"));
-    REQUIRE(t.wait_for_text("place the cue ball"));
-    t.keys("Enter");
-    REQUIRE(t.wait_for_text("[ shoot ]"));
-    t.repeat("Left", 60);
-    t.keys("Space");
-    REQUIRE(t.wait_for_text("Ann shoots"));
-    t.keys("x");
-    REQUIRE(t.wait_for_text("Foul: wrong ball first"));
+    foul_on_the_break(t, dir, "--player2 Bob");
     // ("... Bob has ball in hand; Bob: place the" and "cue ball anywhere" on the next row.)
     CHECK(t.wait_for_text("Bob has ball in hand; Bob: place the"));
 }
