@@ -291,6 +291,25 @@ TEST_CASE("hall lock: one holder at a time, the file kept private", "[hall][auto
                Catch::Contains("cannot open the hall's lock"));
 }
 
+TEST_CASE("hall lock: a lock file someone else made is said to be theirs, not another hall's",
+          "[hall][autostart]") {
+    // Only root can give a file away (as anyone else, the test says why it did not run).
+    if (::geteuid() != 0)
+        FAIL("run as root to give the lock file to another user (uid 65534)");
+    TempDir dir("termpool-autostart");
+    const std::string state = dir.path();
+    {
+        UniqueFd made;
+        REQUIRE(lock_state_dir(state, made) == "");
+    }
+    REQUIRE(::chown((state + "/hall.lock").c_str(), 65534, 65534) == 0);
+    UniqueFd held;
+    CHECK(lock_state_dir(state, held) ==
+          state + "/hall.lock: the hall's lock is owned by " + describe_uid(65534) +
+              ", not by this user (" + describe_uid(0) + "); someone else put it there: remove it");
+    CHECK_FALSE(held);
+}
+
 TEST_CASE("hall serve: a second server on a locked socket says so and exits 1",
           "[hall][e2e][autostart]") {
     TempDir dir("termpool-autostart");
@@ -658,6 +677,16 @@ TEST_CASE("connect_or_start: a hall whose folder or socket is not this user's al
               state + ": the state folder is writable by others (mode 0777, owned by " +
                   describe_uid(::geteuid()) + "); let no one else write to it: chmod go-w");
         CHECK(refused);
+    }
+    SECTION("a link in the place of the started hall's log: not followed, nothing started") {
+        const std::string state = dir.path() + "/state/termpool/hall"; // default_state_dir()
+        REQUIRE(make_directories(state) == "");
+        const std::string victim = dir.path() + "/victim";
+        REQUIRE(::symlink(victim.c_str(), (state + "/hall.log").c_str()) == 0);
+        CHECK_THAT(reach_hall(client, dir.path() + "/run/hall.sock", binary(), log, &refused),
+                   Catch::StartsWith(state + "/hall.log: cannot open the log: ") &&
+                       Catch::Contains(std::strerror(ELOOP)));
+        CHECK(::access(victim.c_str(), F_OK) != 0);
     }
     SECTION("a folder or a socket owned by another user (as root: given to uid 65534)") {
         if (::geteuid() != 0) {

@@ -359,7 +359,7 @@ TEST_CASE("hall protocol: a name in hello holds nothing invisible and no directi
         {"Ann\u200E", "U+200E (it changes the direction of the text)"},
         {"Ann\u200F", "U+200F (it changes the direction of the text)"},
         {"Ann\u061C", "U+061C (it changes the direction of the text)"},
-        {"Ann\u2028", "U+2028 (an invisible character)"},
+        {"Ann\u2028", "U+2028 (a line or paragraph separator)"},
         {"Ann\u0600", "U+0600 (an invisible character)"},
         {"Ann\u0085", "no control characters"},
         {"Ann\x1b", "no control characters"},
@@ -406,11 +406,14 @@ TEST_CASE("hall protocol: chat holds nothing invisible and nothing that turns th
         {"rtl \u202Egnp.exe", "chat may not hold U+202E (it changes the direction of the text)"},
         {"a\u2066b", "chat may not hold U+2066 (it changes the direction of the text)"},
         {"zero\u200Bwidth", "chat may not hold U+200B (an invisible character)"},
-        {"one\u2028two", "chat may not hold U+2028 (an invisible character)"},
+        {"one\u2028two", "chat may not hold U+2028 (a line or paragraph separator)"},
         {"\uFEFFhi", "chat may not hold U+FEFF (an invisible character)"},
         {"hi\U000E0041", "chat may not hold U+E0041 (an invisible character)"},
-        {" ", "chat of nothing but spaces says nothing"},
-        {"    ", "chat of nothing but spaces says nothing"},
+        {" ", "chat of nothing that shows says nothing"},
+        {"    ", "chat of nothing that shows says nothing"},
+        {"\u00A0\u3000\u2003", "chat of nothing that shows says nothing"},
+        {"\u0301\u0301\u0301", "chat of nothing that shows says nothing"},
+        {"\u200D\u200D\uFE0F", "chat of nothing that shows says nothing"},
     };
     for (const auto& [text, why] : bad) {
         const std::string line = body(format_client(Chat{text}));

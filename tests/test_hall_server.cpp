@@ -634,7 +634,7 @@ TEST_CASE("hall server: idle_exit: a game on disk does not keep the hall; the ne
         CHECK(server.table_count() == 1);
     }
     INFO(sink.text());
-    CHECK(sink.text().find("(1 tables wait in the state folder)") != std::string::npos);
+    CHECK(sink.text().find("(1 table in the state folder)") != std::string::npos);
     struct stat st {};
     REQUIRE(::stat(file.c_str(), &st) == 0);
     CHECK(st.st_mtime == changed);

@@ -41,6 +41,10 @@ TEST_CASE("a typed name with a hidden or direction character is refused, and say
         {"A\x07nn", "a name may not hold U+0007 (a control character)"},
         {"A\xc2\x9bnn", "a name may not hold U+009B (a control character)"},
         {"A\xffnn", "the name is not valid UTF-8"},
+        // Nothing that shows: wide or no-break spaces, marks with nothing to mark.
+        {"\u00A0", "a name needs a character that shows"},
+        {"\u3000\u2003", "a name needs a character that shows"},
+        {"\u0301\u0301", "a name needs a character that shows"},
     };
     for (const auto& [name, why] : bad) {
         INFO(name);
@@ -83,6 +87,10 @@ TEST_CASE("name_key: one key for a name however it is typed", "[names]") {
     CHECK(name_key("\uFB01sh") == name_key("FISH"));
     CHECK(name_key("Ann\u2460") == name_key("ann1"));
     CHECK(name_key("Stra\u00DFe") == name_key("STRASSE"));
+    // Spaces of any width or kind, at the ends or run together, are one space or none.
+    for (const std::string same : {"Ann\u00A0", "\u3000Ann", "Ann\u2003", "\u205FAnn\u202F"})
+        CHECK(name_key(same) == ann);
+    CHECK(name_key("Ann\u00A0\u2003Lee") == name_key("ann lee"));
     // Different names stay different.
     CHECK(name_key("Ann") != name_key("Anne"));
     CHECK(name_key("Ann") != name_key("Anna"));

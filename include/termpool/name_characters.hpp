@@ -35,6 +35,10 @@ std::optional<std::string> name_characters_problem(std::string_view name);
 /// "chat may not hold U+200B (an invisible character)"), or nothing.
 std::optional<std::string> shown_text_problem(std::string_view text, std::string_view subject);
 
+/// Whether every character of `text` may be in such a line (shown_text_problem but for the
+/// line as a whole showing something): what a chat entry lets a key type.
+bool text_characters_allowed(std::string_view text);
+
 /// The widest name, in terminal columns (a CJK character counts two): the prompt cuts a name
 /// to it, and the hall refuses a wider one in hello.
 inline constexpr int max_name_columns = 20;

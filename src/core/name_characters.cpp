@@ -47,14 +47,25 @@ bool joins_or_selects(char32_t cp) {
     return cp == 0x200C || cp == 0x200D || (cp >= 0xFE00 && cp <= 0xFE0F);
 }
 
-// The first problem of `text`: `invalid` for bad UTF-8, or "HOLDER may not hold U+XXXX (why)";
-// with `text_marks`, joiners and variation selectors pass.
+// Unicode's space separators (Zs): blank however wide, as a space is.
+bool is_space_separator(char32_t cp) {
+    return cp == 0x0020 || cp == 0x00A0 || cp == 0x1680 || (cp >= 0x2000 && cp <= 0x200A) ||
+           cp == 0x202F || cp == 0x205F || cp == 0x3000;
+}
+
+// The first problem of `text`: `invalid` for bad UTF-8, "HOLDER may not hold U+XXXX (why)",
+// or `blank` (unless empty) when nothing of it shows (only spaces of any width, marks and
+// joiners: a name or a line that would read as nobody's or as nothing); with `text_marks`,
+// joiners and variation selectors pass.
 std::optional<std::string> characters_problem(std::string_view text, std::string_view invalid,
-                                              std::string_view holder, bool text_marks) {
+                                              std::string_view holder, std::string_view blank,
+                                              bool text_marks) {
+    bool shows = false;
     for (std::size_t i = 0; i < text.size();) {
         char32_t cp = 0;
         if (!decode_utf8(text, i, cp))
             return std::string(invalid);
+        shows = shows || (codepoint_width(cp) > 0 && !is_space_separator(cp));
         if (!is_hidden_character(cp) || (text_marks && joins_or_selects(cp)))
             continue;
         char code[16];
@@ -62,20 +73,29 @@ std::optional<std::string> characters_problem(std::string_view text, std::string
         // Said apart, as each is refused for its own reason.
         const char* what = is_control(cp)        ? " (a control character)"
                            : is_bidi_control(cp) ? " (it changes the direction of the text)"
-                                                 : " (an invisible character)";
+                           : cp == 0x2028 || cp == 0x2029 ? " (a line or paragraph separator)"
+                                                          : " (an invisible character)";
         return std::string(holder) + " may not hold " + code + what;
     }
+    if (!shows && !text.empty() && !blank.empty())
+        return std::string(blank);
     return std::nullopt;
 }
 
 } // namespace
 
 std::optional<std::string> name_characters_problem(std::string_view name) {
-    return characters_problem(name, "the name is not valid UTF-8", "a name", false);
+    return characters_problem(name, "the name is not valid UTF-8", "a name",
+                              "a name needs a character that shows", false);
 }
 
 std::optional<std::string> shown_text_problem(std::string_view text, std::string_view subject) {
-    return characters_problem(text, std::string(subject) + " is not valid UTF-8", subject, true);
+    return characters_problem(text, std::string(subject) + " is not valid UTF-8", subject,
+                              std::string(subject) + " of nothing that shows says nothing", true);
+}
+
+bool text_characters_allowed(std::string_view text) {
+    return !characters_problem(text, "-", "-", "", true);
 }
 
 } // namespace termpool

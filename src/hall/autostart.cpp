@@ -200,7 +200,10 @@ pid_t start_detached(const std::vector<std::string>& args, const std::string& lo
         return 0;
     }
     const UniqueFd log = above_stdio(
-        ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | O_NOCTTY, 0600));
+        // O_NOFOLLOW: the server's --log refuses a link, and so does the log it is started
+        // with (a link left in the state folder would have its lines appended elsewhere).
+        ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | O_NOCTTY | O_NOFOLLOW,
+               0600));
     if (!log) {
         error = log_path + ": cannot open the log: " + std::strerror(errno);
         return 0;

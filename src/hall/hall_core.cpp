@@ -205,8 +205,8 @@ bool HallCore::idle_for_good(Clock::time_point now) {
     if (options_.idle_exit.count() <= 0 || now - *idle_since_ < options_.idle_exit)
         return false;
     log("no connection for " + std::to_string(options_.idle_exit.count()) +
-        " s and every table saved: exiting (" + std::to_string(tables_.size()) +
-        " tables wait in the state folder)");
+        " s and every table saved: exiting (" + serving::tables_count(tables_.size()) +
+        " in the state folder)");
     return true;
 }
 

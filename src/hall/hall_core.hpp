@@ -85,6 +85,11 @@ inline constexpr std::size_t recent_hashes_kept = 16;
 // How many chat lines a table keeps for whoever sits or watches next (Table::chat).
 inline constexpr std::size_t chat_lines_kept = 50;
 
+// "1 table", "3 tables": the log's counts of tables.
+inline std::string tables_count(std::size_t n) {
+    return std::to_string(n) + (n == 1 ? " table" : " tables");
+}
+
 // A table: its match (the authority on the game), its seats, and the bookkeeping of its
 // computer searches and saves.
 struct Table {

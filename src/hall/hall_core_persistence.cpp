@@ -70,8 +70,7 @@ void HallCore::restore(Clock::time_point now, std::chrono::system_clock::time_po
         numbers.push_back(number);
     for (const int number : numbers)
         forget_if_idle(tables_.at(number));
-    log("restored " + std::to_string(tables_.size()) +
-        (tables_.size() == 1 ? " table" : " tables"));
+    log("restored " + serving::tables_count(tables_.size()));
     for (auto& [number, table] : tables_)
         think(table, now);
 }

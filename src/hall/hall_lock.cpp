@@ -4,6 +4,10 @@
 #include <cstring>
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "hall/socket_trust.hpp"
 
 namespace termpool::hall {
 
@@ -20,6 +24,15 @@ std::string take_lock(const std::string& path, const std::string& busy, UniqueFd
     UniqueFd fd(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NOCTTY, 0600));
     if (!fd)
         return path + ": cannot open the hall's lock: " + std::strerror(errno);
+    // A lock file someone else made is one they can hold open, flocked, for as long as they
+    // like, and no hall would start: it is said so, not taken for another hall.
+    struct stat st {};
+    if (::fstat(fd.get(), &st) != 0)
+        return path + ": cannot look at the hall's lock: " + std::strerror(errno);
+    if (st.st_uid != ::geteuid())
+        return path + ": the hall's lock is owned by " + describe_uid(st.st_uid) + ", not by " +
+               "this user (" + describe_uid(::geteuid()) +
+               "); someone else put it there: remove it";
     while (::flock(fd.get(), LOCK_EX | LOCK_NB) != 0) {
         if (errno == EINTR)
             continue;

@@ -40,7 +40,17 @@ std::string name_key(std::string_view name) {
     if (U_FAILURE(status))
         return std::string(name);
     out.resize(static_cast<std::size_t>(out_length));
-    return out;
+    // NFKC makes a space of every wide or no-break space; trimmed at the ends and run together
+    // inside, they do not tell two names apart ("Fay" and "Fay" with a no-break space after).
+    std::string key;
+    for (const char c : out) {
+        if (c == ' ' && (key.empty() || key.back() == ' '))
+            continue;
+        key += c;
+    }
+    if (!key.empty() && key.back() == ' ')
+        key.pop_back();
+    return key;
 }
 
 bool same_name(std::string_view a, std::string_view b) {

@@ -518,10 +518,9 @@ std::variant<ClientMessage, ProtocolError> parse_client(std::string_view line) {
         if (r.ok() && !valid_chat_text(m.text))
             r.fail("chat is 1 to " + std::to_string(max_chat_chars) +
                    " characters of text, no control characters");
-        if (r.ok() && m.text.find_first_not_of(' ') == std::string::npos)
-            r.fail("chat of nothing but spaces says nothing");
         // What a person says is held to a name's rule: nothing hidden, nothing that turns the
-        // line around or breaks it. (Chat the server sends is not: it sent only what it took.)
+        // line around or breaks it, and something that shows. (Chat the server sends is not:
+        // it sent only what it took.)
         if (r.ok())
             if (auto problem = shown_text_problem(m.text, "chat"))
                 r.fail(std::move(*problem));

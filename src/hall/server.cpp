@@ -134,8 +134,7 @@ int Server::run() {
     s.core.log_figures();
     const std::size_t tables = s.core.table_count();
     if (unsaved == 0) {
-        s.core.log("stopped with " + std::to_string(tables) + (tables == 1 ? " table" : " tables") +
-                   " saved");
+        s.core.log("stopped with " + serving::tables_count(tables) + " saved");
         return 0;
     }
     s.core.log("stopped: " + std::to_string(unsaved) + " of " + std::to_string(tables) +

@@ -21,6 +21,8 @@ std::string_view trim_spaces(std::string_view s) {
 
 std::optional<std::string> clean_player_name(std::string_view input, std::string& error) {
     error.clear();
+    if (trim_spaces(input).empty())
+        return std::nullopt; // blank: the current name stays
     // Control characters would move the cursor or change the terminal's state when the name
     // is drawn; invisible and direction-changing ones make two names look alike, or turn the
     // line they are shown on around.

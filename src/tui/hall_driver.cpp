@@ -156,13 +156,14 @@ std::optional<DriverReply> HallDriver::handle(const Input& in, const Layout&,
         // What the server refuses is not typed: C1 controls, and characters that hide or turn
         // the line around (a chat line is held to a name's rule).
         const auto fits = [&](const std::string& typed) {
-            return !shown_text_problem(typed, "chat") &&
+            return text_characters_allowed(typed) &&
                    code_points(chat_entry_->text) + code_points(typed) <= chat_chars;
         };
         if (chat_entry_->edit(in, fits) || in.kind != Input::Kind::key)
             return DriverReply{};
-        // A line of nothing but spaces says nothing: Enter closes it unsent, as an empty one.
-        const bool says_something = chat_entry_->text.find_first_not_of(' ') != std::string::npos;
+        // A line of nothing that shows (spaces, marks) says nothing: Enter closes it unsent, as
+        // an empty one.
+        const bool says_something = !shown_text_problem(chat_entry_->text, "chat");
         if (in.key == key_enter && says_something && link_.chat && !link_.chat(chat_entry_->text)) {
             chat_entry_->error = "one line a second: Enter again";
             return DriverReply{};
