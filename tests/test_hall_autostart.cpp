@@ -607,6 +607,22 @@ TEST_CASE("socket trust: the folder, the socket file and the server must be this
         CHECK(judge_state_folder(folder, stat_of(S_IFREG | 0600, me), me) ==
               folder + ": the state folder is not a directory (owned by " + describe_uid(me) + ")");
     }
+    SECTION("the folders above the state folder") {
+        const std::string above = "/srv/shared";
+        CHECK(judge_folder_above(above, stat_of(S_IFDIR | 0755, me), me) == "");
+        CHECK(judge_folder_above(above, stat_of(S_IFDIR | 0755, 0), me) == "");
+        CHECK(judge_folder_above(above, stat_of(S_IFDIR | 01777, 0), me) == ""); // as /tmp
+        CHECK(judge_folder_above(above, stat_of(S_IFDIR | 0755, other), me) ==
+              above + ": a folder above the state folder is owned by " + describe_uid(other) +
+                  ", who could put another in its place; keep the state in a folder of your own");
+        CHECK(judge_folder_above(above, stat_of(S_IFDIR | 0777, 0), me) ==
+              above +
+                  ": a folder above the state folder is writable by others (mode 0777), so that "
+                  "the state folder could be swapped under the hall; keep the state in a folder "
+                  "of your own");
+        CHECK_THAT(judge_folder_above(above, stat_of(S_IFDIR | 0775, me), me),
+                   Catch::Contains("writable by its group (mode 0775)"));
+    }
     SECTION("a table file") {
         const std::string table = folder + "/table-7.save";
         CHECK(judge_table_file(table, stat_of(S_IFREG | 0600, me), me) == "");

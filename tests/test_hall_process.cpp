@@ -492,6 +492,30 @@ TEST_CASE("hall process: a state folder others may write to is refused, the hall
     CHECK(server->running());
 }
 
+TEST_CASE("hall process: a state folder inside a folder others may write to is refused; one "
+          "reached through a link is used where it really is",
+          "[hall][e2e]") {
+    TempDir dir("termpool-hall-proc");
+    // Without the sticky bit, anyone could rename the state folder away and put theirs there.
+    const std::string open = dir.path() + "/open";
+    REQUIRE(::mkdir(open.c_str(), 0700) == 0);
+    REQUIRE(::chmod(open.c_str(), 0777) == 0);
+    const std::string log = dir.path() + "/refused.log";
+    auto refused = run_termpool(
+        dir.path(),
+        {"hall", "serve", "--socket", socket_of(dir.path()), "--state", open + "/state"}, log);
+    CHECK(refused->wait_exit(kWait) == 1);
+    CHECK(file_text(log).find(open + ": a folder above the state folder is writable by others "
+                                     "(mode 0777)") != std::string::npos);
+    // With the sticky bit (as /tmp has) only the state folder's owner may rename it.
+    REQUIRE(::chmod(open.c_str(), 01777) == 0);
+    // A link to the state folder: the lock is taken in the folder it points to.
+    REQUIRE(::symlink((open + "/state").c_str(), (dir.path() + "/state").c_str()) == 0);
+    auto server = start_hall(dir.path());
+    CHECK(server->running());
+    CHECK(std::filesystem::exists(open + "/state/hall.lock"));
+}
+
 TEST_CASE("hall process: hall who prints a running hall for its host, exits 1 with none",
           "[hall][e2e]") {
     TempDir dir("termpool-hall-who");

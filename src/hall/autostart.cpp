@@ -293,7 +293,8 @@ HallReach connect_or_start(HallClient& client, const std::string& socket_path,
     }
     // So is a state folder others may write to: a server started on it would only refuse it,
     // again at every retry, and the player would wait for nothing.
-    if (std::string problem = check_state_folder(default_state_dir()); !problem.empty()) {
+    std::string state = default_state_dir();
+    if (std::string problem = check_state_folder(state); !problem.empty()) {
         error = problem;
         reach.refused = true;
         return reach;

@@ -134,7 +134,8 @@ int serve(const std::vector<std::string>& args) {
         options.state_dir = default_state_dir();
     if (const std::string problem = make_directories(options.state_dir); !problem.empty())
         return cannot_start(problem);
-    // Whoever else could write there could plant a table with a seat token of their own.
+    // Whoever else could write there could plant a table with a seat token of their own; the
+    // folder is used by its resolved path from here on.
     if (const std::string problem = check_state_folder(options.state_dir); !problem.empty())
         return cannot_start(problem);
     UniqueFd state_lock;

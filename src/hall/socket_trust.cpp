@@ -1,7 +1,9 @@
 #include "hall/socket_trust.hpp"
 
 #include <cerrno>
+#include <climits>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <pwd.h>
 #include <sys/socket.h>
@@ -116,11 +118,43 @@ std::string check_socket_path(const std::string& socket_path) {
     return judge_socket_file(socket_path, st, user);
 }
 
-std::string check_state_folder(const std::string& folder) {
-    struct stat st {};
-    if (::stat(folder.c_str(), &st) != 0)
+std::string judge_folder_above(const std::string& folder, const struct stat& st, uid_t user) {
+    if (st.st_uid != user && st.st_uid != 0)
+        return folder + ": a folder above the state folder is owned by " + describe_uid(st.st_uid) +
+               ", who could put another in its place; keep the state in a folder of your own";
+    if ((st.st_mode & (S_IWGRP | S_IWOTH)) != 0 && (st.st_mode & S_ISVTX) == 0)
+        return folder + ": a folder above the state folder is " + reached_by(st.st_mode) +
+               " (mode " + octal_mode(st.st_mode) +
+               "), so that the state folder could be swapped under the hall; keep the state in a "
+               "folder of your own";
+    return {};
+}
+
+std::string check_state_folder(std::string& folder) {
+    // The folder as it really is, links resolved once: the hall uses this path from now on,
+    // so that a link repointed later takes nothing with it.
+    char real[PATH_MAX];
+    if (::realpath(folder.c_str(), real) == nullptr)
         return folder + ": " + std::strerror(errno);
-    return judge_state_folder(folder, st, ::geteuid());
+    const std::string resolved = real;
+    struct stat st {};
+    if (::lstat(resolved.c_str(), &st) != 0)
+        return resolved + ": " + std::strerror(errno);
+    const uid_t user = ::geteuid();
+    if (std::string problem = judge_state_folder(resolved, st, user); !problem.empty())
+        return problem;
+    // Each folder above: whoever may rename entries in one (its owner, or anyone who may write
+    // to it without the sticky bit /tmp has) could swap the state folder for one of theirs.
+    for (std::string above = resolved; above != "/";) {
+        const std::size_t slash = above.find_last_of('/');
+        above = slash == 0 ? "/" : above.substr(0, slash);
+        if (::lstat(above.c_str(), &st) != 0)
+            return above + ": " + std::strerror(errno);
+        if (std::string problem = judge_folder_above(above, st, user); !problem.empty())
+            return problem;
+    }
+    folder = resolved;
+    return {};
 }
 
 std::string check_peer(int fd, const std::string& socket_path) {

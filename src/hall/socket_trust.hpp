@@ -52,9 +52,17 @@ std::string judge_peer(const std::string& path, uid_t peer, uid_t user);
 /// is no problem: "". Else why not.
 std::string check_socket_path(const std::string& socket_path);
 
-/// The state folder as it is now (stat, through a link), judged for this user (geteuid)
-/// before a server locks it and reads its tables. "" or why not.
-std::string check_state_folder(const std::string& folder);
+/// A folder above the state folder (lstat `st`) judged for `user`: owned by `user` or root, and
+/// not writable by its group or others unless it has the sticky bit (as /tmp has), since
+/// whoever may rename entries in it could swap the state folder under the hall (OpenSSH judges
+/// the folders above authorized_keys so). "" or why not.
+std::string judge_folder_above(const std::string& folder, const struct stat& st, uid_t user);
+
+/// The state folder as it is now, judged for this user (geteuid) before a server locks it and
+/// reads its tables: `folder` resolved through its links (realpath), the folder itself by
+/// judge_state_folder and every folder above it by judge_folder_above. On success `folder`
+/// becomes the resolved path, which the caller uses from then on; "" or why not.
+std::string check_state_folder(std::string& folder);
 
 /// After connecting on `fd` to `socket_path`: the process at the other end runs as this user
 /// (geteuid; SO_PEERCRED gives the uid the server listened with). "" or why not.
