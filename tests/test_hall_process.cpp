@@ -509,11 +509,21 @@ TEST_CASE("hall process: a state folder inside a folder others may write to is r
                                      "(mode 0777)") != std::string::npos);
     // With the sticky bit (as /tmp has) only the state folder's owner may rename it.
     REQUIRE(::chmod(open.c_str(), 01777) == 0);
-    // A link to the state folder: the lock is taken in the folder it points to.
+    // A link to the state folder: the lock is taken in the folder it points to, and the link
+    // pointed elsewhere after the start takes nothing with it: the next save goes where the
+    // folder really is.
     REQUIRE(::symlink((open + "/state").c_str(), (dir.path() + "/state").c_str()) == 0);
     auto server = start_hall(dir.path());
     CHECK(server->running());
     CHECK(std::filesystem::exists(open + "/state/hall.lock"));
+    const std::string elsewhere = dir.path() + "/elsewhere";
+    REQUIRE(::mkdir(elsewhere.c_str(), 0700) == 0);
+    REQUIRE(::unlink((dir.path() + "/state").c_str()) == 0);
+    REQUIRE(::symlink(elsewhere.c_str(), (dir.path() + "/state").c_str()) == 0);
+    HallClient ann = connected(dir.path(), "Ann");
+    const int table = create_table(ann);
+    CHECK(std::filesystem::exists(table_path(open + "/state", table)));
+    CHECK_FALSE(std::filesystem::exists(table_path(elsewhere, table)));
 }
 
 TEST_CASE("hall process: hall who prints a running hall for its host, exits 1 with none",

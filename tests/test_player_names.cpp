@@ -62,6 +62,12 @@ TEST_CASE("a typed name with a hidden or direction character is refused, and say
         CHECK(apply_config("\nplayer2 = " + name + "\n", options, warnings) ==
               "2: player2: " + why);
     }
+    // Ten ideographic spaces fill the 20 columns: the letter after them is cut off, and what is
+    // left shows nothing.
+    std::string cut_error;
+    CHECK_FALSE(clean_player_name("\u3000\u3000\u3000\u3000\u3000\u3000\u3000\u3000\u3000\u3000X",
+                                  cut_error));
+    CHECK(cut_error == "a name needs a character that shows");
     for (const std::string good : {"Ann", "Zoë", "Zoe\u0308", "李小龍", "محمد", "🎱"}) {
         INFO(good);
         std::string error;

@@ -304,9 +304,13 @@ TEST_CASE("a chat line cut short in the panel ends in an ellipsis, never looks w
     // 60x20: the panel below the table keeps one row for the newest chat line.
     const std::string panel = panel_text(v, 60, 20);
     CAPTURE(panel);
-    REQUIRE(panel.find("Ann: bob") != std::string::npos);
+    const std::size_t said = panel.find("Ann: bob");
+    REQUIRE(said != std::string::npos);
     CHECK(panel.find("shot of his") == std::string::npos);
-    CHECK(panel.find(ellipsis) != std::string::npos);
+    // The chat's last row shown ends in the ellipsis: the only one in the panel (the message is
+    // whole), after the chat's start.
+    CHECK(panel.find(ellipsis) == panel.rfind(ellipsis));
+    CHECK(panel.find(ellipsis, said) != std::string::npos);
     // With room for it, the line is whole and unmarked.
     const std::string roomy = panel_text(v, 200, 60);
     CAPTURE(roomy);

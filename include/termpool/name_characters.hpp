@@ -23,24 +23,27 @@ bool is_bidi_control(char32_t cp);
 bool is_hidden_character(char32_t cp);
 
 /// What is wrong with the characters of `name` as a person's name, in words that name the
-/// first bad character ("a name may not hold U+202E (it changes the direction of the text)");
-/// nothing when it is valid UTF-8 without hidden characters. The length and the spaces
-/// at its ends are the callers' (`valid_player_name`).
+/// first bad character ("a name may not hold U+202E (it changes the direction of the text)"),
+/// or "a name needs a character that shows" when nothing of it does (spaces of any width,
+/// marks alone); nothing when it is valid UTF-8 without hidden characters and something shows.
+/// The length and the spaces at its ends are the callers' (`valid_player_name`).
 std::optional<std::string> name_characters_problem(std::string_view name);
 
 /// The same rule for any text a person sends to be shown to others, a chat line: nothing hidden
-/// in it, nothing that turns the line it is shown on around or breaks it; but the joiners
-/// (U+200C, U+200D) and variation selectors (U+FE00 to U+FE0F) that emoji sequences and some
-/// scripts are written with pass. What is wrong, said of `subject` ("chat is not valid UTF-8",
-/// "chat may not hold U+200B (an invisible character)"), or nothing.
+/// in it, nothing that turns the line it is shown on around or breaks it, and something that
+/// shows; but the joiners (U+200C, U+200D) and variation selectors (U+FE00 to U+FE0F) that
+/// emoji sequences and some scripts are written with pass. What is wrong, said of `subject`
+/// ("chat is not valid UTF-8", "chat may not hold U+200B (an invisible character)", "chat of
+/// nothing that shows says nothing"), or nothing.
 std::optional<std::string> shown_text_problem(std::string_view text, std::string_view subject);
 
 /// Whether every character of `text` may be in such a line (shown_text_problem but for the
 /// line as a whole showing something): what a chat entry lets a key type.
 bool text_characters_allowed(std::string_view text);
 
-/// The widest name, in terminal columns (a CJK character counts two): the prompt cuts a name
-/// to it, and the hall refuses a wider one in hello.
+/// The widest name, in terminal columns (a CJK character counts two): the prompts take no key
+/// past it, a name given on the command line is cut to it, and the hall refuses a wider one in
+/// hello.
 inline constexpr int max_name_columns = 20;
 
 } // namespace termpool

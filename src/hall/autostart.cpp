@@ -299,7 +299,8 @@ HallReach connect_or_start(HallClient& client, const std::string& socket_path,
         reach.refused = true;
         return reach;
     }
-    const std::string log = started_hall_log_path();
+    // In the folder as it really is (its links resolved above), as the server will use it.
+    const std::string log = state + "/hall.log";
     const std::vector<std::string> args = {self_exe,      "hall", "serve", "--socket", socket_path,
                                            "--idle-exit", "60",   "--log", log};
     const auto until = Clock::now() + hall_start_wait;

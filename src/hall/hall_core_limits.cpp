@@ -39,13 +39,14 @@ int HallCore::tables_held(const Client& client) const {
 std::string HallCore::create_refusal(const Client& client) const {
     const int held = tables_held(client);
     if (held >= options_.max_tables_per_person)
-        return "you hold " + std::to_string(held) +
-               " tables already, the most one person may: finish or leave one";
+        return "you hold " + serving::tables_count(static_cast<std::size_t>(held)) +
+               " already, the most one person may: finish or leave one";
     const int reserve = std::min(options_.reserved_tables, (options_.max_tables + 9) / 10);
     const int free_tables = options_.max_tables - static_cast<int>(tables_.size());
     if (held > 0 && free_tables <= reserve)
-        return "the last " + std::to_string(reserve) +
-               " tables are kept for people who hold none, and you hold " + std::to_string(held);
+        return (reserve == 1 ? std::string("the last table is")
+                             : "the last " + std::to_string(reserve) + " tables are") +
+               " kept for people who hold none, and you hold " + std::to_string(held);
     return {};
 }
 
@@ -55,8 +56,8 @@ std::string HallCore::sit_refusal(const Table& table, const Client& client) cons
         return {};
     const int held = tables_held(client);
     if (held >= options_.max_tables_per_person)
-        return "you hold " + std::to_string(held) +
-               " tables already, the most one person may: finish or leave one";
+        return "you hold " + serving::tables_count(static_cast<std::size_t>(held)) +
+               " already, the most one person may: finish or leave one";
     return {};
 }
 

@@ -20,19 +20,26 @@ namespace {
 // Takes the exclusive lock on the file `path` without waiting; `busy` is the answer when
 // another process holds it.
 std::string take_lock(const std::string& path, const std::string& busy, UniqueFd& held) {
+    // A lock file someone else made is one they can hold open, flocked, for as long as they
+    // like, and no hall would start: it is said so, not taken for another hall. (Looked at
+    // before it is opened: their file is seldom ours to open.)
+    const auto theirs = [&](uid_t owner) {
+        return path + ": the hall's lock is owned by " + describe_uid(owner) + ", not by " +
+               "this user (" + describe_uid(::geteuid()) +
+               "); someone else put it there: remove it";
+    };
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) == 0 && st.st_uid != ::geteuid())
+        return theirs(st.st_uid);
     // O_NOFOLLOW: a link put in the lock's place is refused, not followed.
     UniqueFd fd(::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW | O_NOCTTY, 0600));
     if (!fd)
         return path + ": cannot open the hall's lock: " + std::strerror(errno);
-    // A lock file someone else made is one they can hold open, flocked, for as long as they
-    // like, and no hall would start: it is said so, not taken for another hall.
-    struct stat st {};
+    // Made between the look and the open by someone else: the same answer.
     if (::fstat(fd.get(), &st) != 0)
         return path + ": cannot look at the hall's lock: " + std::strerror(errno);
     if (st.st_uid != ::geteuid())
-        return path + ": the hall's lock is owned by " + describe_uid(st.st_uid) + ", not by " +
-               "this user (" + describe_uid(::geteuid()) +
-               "); someone else put it there: remove it";
+        return theirs(st.st_uid);
     while (::flock(fd.get(), LOCK_EX | LOCK_NB) != 0) {
         if (errno == EINTR)
             continue;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <grp.h>
 #include <pwd.h>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -77,9 +78,34 @@ std::string judge_socket_folder(const std::string& folder, const struct stat& st
                             "make it private with chmod 700");
 }
 
-std::string judge_state_folder(const std::string& folder, const struct stat& st, uid_t user) {
-    return judge_own_folder(folder, st, user, "the state folder", S_IWGRP | S_IWOTH,
+std::string judge_state_folder(const std::string& folder, const struct stat& st, uid_t user,
+                               bool private_group) {
+    // Writing by the user's own private group is writing by the user (Debian's rule for the
+    // folders sshd judges): with umask 002, mkdir -p makes such folders group-writable.
+    const mode_t forbidden = private_group ? S_IWOTH : S_IWGRP | S_IWOTH;
+    return judge_own_folder(folder, st, user, "the state folder", forbidden,
                             "let no one else write to it: chmod go-w");
+}
+
+bool is_private_group(gid_t group, uid_t user) {
+    std::vector<char> buffer(16384);
+    passwd account{};
+    passwd* found_account = nullptr;
+    if (::getpwuid_r(user, &account, buffer.data(), buffer.size(), &found_account) != 0 ||
+        !found_account || account.pw_gid != group || !account.pw_name)
+        return false;
+    const std::string name = account.pw_name;
+    std::vector<char> group_buffer(65536);
+    struct group entry {};
+    struct group* found_group = nullptr;
+    if (::getgrgid_r(group, &entry, group_buffer.data(), group_buffer.size(), &found_group) != 0 ||
+        !found_group)
+        return false;
+    // Its members by name: none, or only the user.
+    for (char** member = entry.gr_mem; member && *member; ++member)
+        if (name != *member)
+            return false;
+    return true;
 }
 
 std::string judge_table_file(const std::string& path, const struct stat& st, uid_t user) {
@@ -118,11 +144,13 @@ std::string check_socket_path(const std::string& socket_path) {
     return judge_socket_file(socket_path, st, user);
 }
 
-std::string judge_folder_above(const std::string& folder, const struct stat& st, uid_t user) {
+std::string judge_folder_above(const std::string& folder, const struct stat& st, uid_t user,
+                               bool private_group) {
     if (st.st_uid != user && st.st_uid != 0)
         return folder + ": a folder above the state folder is owned by " + describe_uid(st.st_uid) +
                ", who could put another in its place; keep the state in a folder of your own";
-    if ((st.st_mode & (S_IWGRP | S_IWOTH)) != 0 && (st.st_mode & S_ISVTX) == 0)
+    const mode_t forbidden = private_group ? S_IWOTH : S_IWGRP | S_IWOTH;
+    if ((st.st_mode & forbidden) != 0 && (st.st_mode & S_ISVTX) == 0)
         return folder + ": a folder above the state folder is " + reached_by(st.st_mode) +
                " (mode " + octal_mode(st.st_mode) +
                "), so that the state folder could be swapped under the hall; keep the state in a "
@@ -141,7 +169,9 @@ std::string check_state_folder(std::string& folder) {
     if (::lstat(resolved.c_str(), &st) != 0)
         return resolved + ": " + std::strerror(errno);
     const uid_t user = ::geteuid();
-    if (std::string problem = judge_state_folder(resolved, st, user); !problem.empty())
+    if (std::string problem =
+            judge_state_folder(resolved, st, user, is_private_group(st.st_gid, user));
+        !problem.empty())
         return problem;
     // Each folder above: whoever may rename entries in one (its owner, or anyone who may write
     // to it without the sticky bit /tmp has) could swap the state folder for one of theirs.
@@ -150,7 +180,9 @@ std::string check_state_folder(std::string& folder) {
         above = slash == 0 ? "/" : above.substr(0, slash);
         if (::lstat(above.c_str(), &st) != 0)
             return above + ": " + std::strerror(errno);
-        if (std::string problem = judge_folder_above(above, st, user); !problem.empty())
+        if (std::string problem =
+                judge_folder_above(above, st, user, is_private_group(st.st_gid, user));
+            !problem.empty())
             return problem;
     }
     folder = resolved;

@@ -27,12 +27,19 @@ std::string describe_uid(uid_t uid);
 /// user (uid 1001 (ann))").
 std::string judge_socket_folder(const std::string& folder, const struct stat& st, uid_t user);
 
-/// The state folder's stat `st` (through a link: a host may keep the hall's state elsewhere)
-/// judged for `user`: a directory owned by `user` that neither its group nor others may write
-/// to, since whoever can write there can plant a table file with a seat token of their own
-/// choosing, or hold the folder's lock so that no hall starts. Reading is left to the host.
-/// "" when good, else why not, in judge_socket_folder's words.
-std::string judge_state_folder(const std::string& folder, const struct stat& st, uid_t user);
+/// The state folder's lstat `st` (its path resolved first: check_state_folder) judged for
+/// `user`: a directory owned by `user` that neither its group (unless it is the user's
+/// `private_group`) nor others may write to, since whoever can write there can plant a table
+/// file with a seat token of their own choosing, or hold the folder's lock so that no hall
+/// starts. Reading is left to the host. "" when good, else why not, in judge_socket_folder's
+/// words.
+std::string judge_state_folder(const std::string& folder, const struct stat& st, uid_t user,
+                               bool private_group = false);
+
+/// Whether `group` is `user`'s own private group: the user's primary group, with no member but
+/// the user (the user private groups of Debian and Ubuntu, under whose umask 002 folders are
+/// made group-writable). Writing allowed to it is writing allowed to the user alone.
+bool is_private_group(gid_t group, uid_t user);
 
 /// A table file's lstat `st` judged for `user`: owned by `user`; one that is someone else's
 /// was put there by them, and is not restored. "" or why not (what it is, a link or a file, is
@@ -53,10 +60,12 @@ std::string judge_peer(const std::string& path, uid_t peer, uid_t user);
 std::string check_socket_path(const std::string& socket_path);
 
 /// A folder above the state folder (lstat `st`) judged for `user`: owned by `user` or root, and
-/// not writable by its group or others unless it has the sticky bit (as /tmp has), since
-/// whoever may rename entries in it could swap the state folder under the hall (OpenSSH judges
-/// the folders above authorized_keys so). "" or why not.
-std::string judge_folder_above(const std::string& folder, const struct stat& st, uid_t user);
+/// not writable by its group (unless it is the user's `private_group`) or others unless it has
+/// the sticky bit (as /tmp has), since whoever may rename entries in it could swap the state
+/// folder under the hall (Debian's sshd judges the folders above authorized_keys so). "" or
+/// why not.
+std::string judge_folder_above(const std::string& folder, const struct stat& st, uid_t user,
+                               bool private_group = false);
 
 /// The state folder as it is now, judged for this user (geteuid) before a server locks it and
 /// reads its tables: `folder` resolved through its links (realpath), the folder itself by

@@ -42,6 +42,11 @@ std::optional<std::string> clean_player_name(std::string_view input, std::string
     const std::string_view name = trim_spaces(cut);
     if (name.empty())
         return std::nullopt;
+    // Cutting can leave only what does not show (wide spaces before the first letter).
+    if (auto problem = name_characters_problem(name)) {
+        error = std::move(*problem);
+        return std::nullopt;
+    }
     return std::string(name);
 }
 

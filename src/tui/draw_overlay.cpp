@@ -18,11 +18,13 @@ struct Box {
     bool holds(int cx, int cy) const { return cx >= x && cy >= y && cx < x + w && cy < y + h; }
 };
 
-// The cells of `keep` box `b` covers, and one more when it covers row `row`: a box keeps off
-// the row where it can, but not at the cost of a ball.
+// What box `b` covers, as a cost: two for each cell of `keep`, one for row `row`. A box keeps
+// off the row where it can, but never at the cost of a ball: one ball more costs more than the
+// row, however near the place.
 int covered_cells(const Box& b, const std::vector<std::pair<int, int>>& keep, int row) {
     const int on_row = b.y <= row && row < b.y + b.h ? 1 : 0;
-    return on_row + static_cast<int>(std::count_if(keep.begin(), keep.end(), [&](const auto& c) {
+    return on_row +
+           2 * static_cast<int>(std::count_if(keep.begin(), keep.end(), [&](const auto& c) {
                return b.holds(c.first, c.second);
            }));
 }

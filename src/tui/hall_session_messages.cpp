@@ -44,9 +44,10 @@ void HallSession::dispatch(const hall::ServerMessage& message) {
             driver_->refused(words);
         else
             message_ = "The hall said: " + words;
-        if (m->code == hall::ErrorCode::name_taken && !options_.name) {
-            // A name typed at the prompt: the prompt asks again, the hall's words under it
-            // (under --name there is no other to give, and the session stops below).
+        if (m->code == hall::ErrorCode::name_taken && !options_.name && !ever_connected_) {
+            // A name typed at the prompt, refused at the first hello: the prompt asks again,
+            // the hall's words under it. (Under --name there is no other to give; on a
+            // reconnect a table may be on screen: the session stops below, as before.)
             client_.disconnect();
             welcomed_ = false;
             token_.clear(); // a token goes with its name: the next name looks up its own
