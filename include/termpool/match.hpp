@@ -162,6 +162,9 @@ public:
     PendingAction pending() const;
     /// The player who must act (1 or 2), 0 once the match is over.
     int to_act() const { return pending().player; }
+    /// True once an action has been taken and until the match is over: a game a player who
+    /// leaves would come back to (the hall keeps such a player's seat).
+    bool under_way() const { return !record_.actions.empty() && pending().kind != Pending::over; }
     /// True when the player to act is a computer.
     bool computer_to_act() const;
     /// Who breaks the next rack, once the current one is won: 1 or 2 (0 before).

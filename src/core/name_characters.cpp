@@ -95,7 +95,9 @@ std::optional<std::string> shown_text_problem(std::string_view text, std::string
 }
 
 bool text_characters_allowed(std::string_view text) {
-    return !characters_problem(text, "-", "-", "", true);
+    // Only whether there is a problem is asked: no words, and no blank rule (a key alone may be
+    // a space).
+    return !characters_problem(text, "", "", "", true);
 }
 
 } // namespace termpool

@@ -183,8 +183,8 @@ std::string own_executable() {
     return self.ends_with(" (deleted)") ? "/proc/self/exe" : self;
 }
 
-std::string started_hall_log_path() {
-    return default_state_dir() + "/hall.log";
+std::string started_hall_log_path(const std::string& state) {
+    return state + "/hall.log";
 }
 
 pid_t start_detached(const std::vector<std::string>& args, const std::string& log_path,
@@ -300,7 +300,7 @@ HallReach connect_or_start(HallClient& client, const std::string& socket_path,
         return reach;
     }
     // In the folder as it really is (its links resolved above), as the server will use it.
-    const std::string log = state + "/hall.log";
+    const std::string log = started_hall_log_path(state);
     const std::vector<std::string> args = {self_exe,      "hall", "serve", "--socket", socket_path,
                                            "--idle-exit", "60",   "--log", log};
     const auto until = Clock::now() + hall_start_wait;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hall/client.hpp"
+#include "hall/hall_state.hpp"
 
 namespace termpool::hall {
 
@@ -22,8 +23,9 @@ inline constexpr std::chrono::milliseconds hall_start_wait{5000};
 /// client, wherever it was started from; "" when the system does not tell.
 std::string own_executable();
 
-/// The log of a hall started in the background: hall.log in default_state_dir().
-std::string started_hall_log_path();
+/// The log of a hall started in the background: hall.log in its state folder `state` (by
+/// default default_state_dir(); connect_or_start gives it resolved, as the server uses it).
+std::string started_hall_log_path(const std::string& state = default_state_dir());
 
 /// What connect_or_start came to.
 struct HallReach {

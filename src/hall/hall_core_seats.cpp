@@ -117,7 +117,7 @@ void HallCore::leave_table(Client& client, Clock::time_point now, int staying) {
         // A seat in a game under way waits for its owner (for away_limit at most); before
         // the first action, or once the match is over, a leave or a drop frees it, so
         // that a table nobody plays at does not stay.
-        if (!started(*table) || over(*table)) {
+        if (!table->match.under_way()) {
             slot.token_hash.clear();
             table->match.rename(seat, default_name(seat));
         } else {

@@ -78,12 +78,20 @@ std::string judge_socket_folder(const std::string& folder, const struct stat& st
                             "make it private with chmod 700");
 }
 
+// Who may not write to the state folder or a folder above it: others, and its group unless
+// that is the user's own private group (Debian's rule for the folders sshd judges: with umask
+// 002, mkdir -p makes such folders group-writable, and its group is the user alone).
+namespace {
+
+mode_t writers_refused(bool private_group) {
+    return private_group ? S_IWOTH : S_IWGRP | S_IWOTH;
+}
+
+} // namespace
+
 std::string judge_state_folder(const std::string& folder, const struct stat& st, uid_t user,
                                bool private_group) {
-    // Writing by the user's own private group is writing by the user (Debian's rule for the
-    // folders sshd judges): with umask 002, mkdir -p makes such folders group-writable.
-    const mode_t forbidden = private_group ? S_IWOTH : S_IWGRP | S_IWOTH;
-    return judge_own_folder(folder, st, user, "the state folder", forbidden,
+    return judge_own_folder(folder, st, user, "the state folder", writers_refused(private_group),
                             "let no one else write to it: chmod go-w");
 }
 
@@ -149,8 +157,7 @@ std::string judge_folder_above(const std::string& folder, const struct stat& st,
     if (st.st_uid != user && st.st_uid != 0)
         return folder + ": a folder above the state folder is owned by " + describe_uid(st.st_uid) +
                ", who could put another in its place; keep the state in a folder of your own";
-    const mode_t forbidden = private_group ? S_IWOTH : S_IWGRP | S_IWOTH;
-    if ((st.st_mode & forbidden) != 0 && (st.st_mode & S_ISVTX) == 0)
+    if ((st.st_mode & writers_refused(private_group)) != 0 && (st.st_mode & S_ISVTX) == 0)
         return folder + ": a folder above the state folder is " + reached_by(st.st_mode) +
                " (mode " + octal_mode(st.st_mode) +
                "), so that the state folder could be swapped under the hall; keep the state in a "

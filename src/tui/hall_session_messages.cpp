@@ -209,10 +209,8 @@ void HallSession::enter_table(Match match) {
 void HallSession::leave_table() {
     if (table_ != 0) {
         send(hall::Leave{});
-        // The hall keeps a seat only in a game under way: before the first action, and once
-        // the match is over, leaving frees it (HallCore::leave_table).
-        const bool kept = seat_ != 0 && driver_ && !driver_->match().record().actions.empty() &&
-                          driver_->match().pending().kind != Pending::over;
+        // The hall keeps a seat only in a game under way (HallCore::leave_table).
+        const bool kept = seat_ != 0 && driver_ && driver_->match().under_way();
         message_ = "Back in the lobby from table " + std::to_string(table_) +
                    (kept ? " (a seat in a game under way waits for you)" : "");
     }
